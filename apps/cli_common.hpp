@@ -1,0 +1,37 @@
+#pragma once
+// Helpers shared by the subcommands: option groups, validation, output, plotting.
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "blockdyn/integrate/hybrid_integrator.hpp"
+#include "blockdyn/model/block_params.hpp"
+
+namespace blockdyn::cli {
+
+// Thrown for invalid user input: main prints "error: <what>" and exits with status 2.
+struct UsageError : std::invalid_argument {
+  using std::invalid_argument::invalid_argument;
+};
+
+// --r --mu --k bound to p (defaults kept unless given).
+void add_block_options(CLI::App& app, BlockParams& p);
+// --rtol --atol bound to o.
+void add_tolerance_options(CLI::App& app, IntegratorOptions& o);
+
+// Writes JSON to `path` atomically, or to stdout when path is "-" or empty.
+void emit_json(const nlohmann::ordered_json& j, const std::string& path);
+
+// Directory holding the matplotlib scripts (env BLOCKDYN_PYTHON_DIR overrides).
+std::string python_dir();
+// Runs /usr/bin/python3 <python_dir>/<script> args...; throws on failure.
+void run_python(const std::string& script, const std::vector<std::string>& args);
+
+// Throws UsageError unless v is finite and in [lo, hi] (inclusive flags).
+void require_range(const std::string& field, double v, double lo, double hi, bool lo_incl = true,
+                   bool hi_incl = true);
+
+}  // namespace blockdyn::cli

@@ -1,0 +1,31 @@
+// blockdyn command-line program: subcommands register themselves in apps/cmd_*.cpp.
+#include <CLI/CLI.hpp>
+
+#include <algorithm>
+#include <iostream>
+#include <stdexcept>
+
+#include "blockdyn/version.hpp"
+#include "cli_common.hpp"
+#include "cli_registry.hpp"
+
+int main(int argc, char** argv) {
+  CLI::App app{"blockdyn: nonsmooth dynamics of rigid blocks on a Winkler foundation"};
+  app.set_version_flag("--version", std::string(blockdyn::kVersion) + " (" + blockdyn::kGitDescribe + ")");
+  app.require_subcommand(1);
+  auto& reg = blockdyn::cli::command_registry();
+  std::sort(reg.begin(), reg.end(), [](const auto& a, const auto& b) { return a.order < b.order; });
+  for (const auto& c : reg) c.add(app);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e);
+  } catch (const std::invalid_argument& e) {
+    std::cerr << "error: " << e.what() << "\n";
+    return 2;
+  } catch (const std::exception& e) {
+    std::cerr << "error: " << e.what() << "\n";
+    return 1;
+  }
+  return 0;
+}

@@ -1,0 +1,31 @@
+#include <benchmark/benchmark.h>
+
+#include "blockdyn/model/initial_conditions.hpp"
+#include "blockdyn/simulation.hpp"
+
+using namespace blockdyn;
+
+// Issue 2 benchmark: ic1, r = 0.2, mu = 0.2, to t = 30, k = 1e4, 1e6, 1e8.
+static void BM_Ic1(benchmark::State& state) {
+  const BlockParams p{0.2, 0.2, double(state.range(0))};
+  SimulationOptions o;
+  o.t_end = 30;
+  o.track_energy = false;
+  o.record_events = false;
+  SimulationResult r;
+  for (auto _ : state) {
+    r = simulate(p, {}, ic1(p), o);
+    benchmark::DoNotOptimize(r.t_final);
+  }
+  const double sec_per_run = 1.0;  // placeholder for counters below (per-iteration averages)
+  (void)sec_per_run;
+  state.counters["steps"] = double(r.stats.accepted);
+  state.counters["rhs_evals"] = double(r.stats.rhs_evals);
+  state.counters["ns_per_step"] =
+      benchmark::Counter(double(r.stats.accepted), benchmark::Counter::kIsIterationInvariantRate |
+                                                       benchmark::Counter::kInvert);
+  state.counters["ns_per_rhs"] =
+      benchmark::Counter(double(r.stats.rhs_evals), benchmark::Counter::kIsIterationInvariantRate |
+                                                        benchmark::Counter::kInvert);
+}
+BENCHMARK(BM_Ic1)->Arg(10000)->Arg(1000000)->Arg(100000000)->Unit(benchmark::kMillisecond);

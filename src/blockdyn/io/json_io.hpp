@@ -1,0 +1,27 @@
+#pragma once
+// JSON views of parameters, options, states and results (nlohmann::json). Doubles are written
+// with full round-trip precision by nlohmann's serializer.
+#include <nlohmann/json.hpp>
+
+#include "blockdyn/model/ground_motion.hpp"
+#include "blockdyn/simulation.hpp"
+#include "blockdyn/units/physical_units.hpp"
+
+namespace blockdyn {
+
+nlohmann::ordered_json to_json(const BlockParams& p);
+nlohmann::ordered_json to_json(const GroundMotion& g);
+nlohmann::ordered_json to_json(const IntegratorOptions& o);
+nlohmann::ordered_json state_json(const BlockStateVec& z);          // x, y, w, vx, vy, vw
+nlohmann::ordered_json state_json(const BlockStateVec& z, const UnitScales& s);  // physical units
+nlohmann::ordered_json to_json(const Energy& e);
+nlohmann::ordered_json to_json(const EventRecord& e);
+nlohmann::ordered_json run_info();  // program version, for every output
+// Everything `simulate --json` prints (physical block and scales optional).
+nlohmann::ordered_json result_json(const BlockParams& p, const GroundMotion& g, const SimulationOptions& o,
+                           const SimulationResult& r, const PhysicalBlock* phys = nullptr);
+
+// Prints JSON with non-finite numbers as null (JSON has no inf/nan).
+std::string dump_json(const nlohmann::ordered_json& j, int indent = 2);
+
+}  // namespace blockdyn

@@ -1,0 +1,173 @@
+#include "blockdyn/io/scenario.hpp"
+
+#include <toml++/toml.h>
+
+#include <cmath>
+#include <fstream>
+#include <set>
+#include <sstream>
+#include <stdexcept>
+
+#include "blockdyn/model/initial_conditions.hpp"
+
+namespace blockdyn {
+
+namespace {
+
+[[noreturn]] void fail(const std::string& where, const std::string& msg) {
+  throw std::invalid_argument(where + ": " + msg);
+}
+
+void check_keys(const toml::table& t, const std::string& where, const std::set<std::string>& allowed) {
+  for (const auto& [k, v] : t) {
+    const std::string key(k.str());
+    if (!allowed.count(key)) {
+      std::string list;
+      for (const auto& a : allowed) list += (list.empty() ? "" : ", ") + a;
+      fail(where, "unknown key '" + key + "' (allowed: " + list + ")");
+    }
+  }
+}
+
+std::optional<double> num(const toml::table& t, const std::string& where, const char* key) {
+  const toml::node* n = t.get(key);
+  if (!n) return std::nullopt;
+  std::optional<double> v = n->value<double>();
+  if (!v) fail(where + "." + key, "must be a number");
+  if (!std::isfinite(*v)) fail(where + "." + key, "must be finite");
+  return v;
+}
+
+void read(const toml::table& t, const std::string& where, const char* key, double& out) {
+  if (auto v = num(t, where, key)) out = *v;
+}
+
+std::optional<std::string> str(const toml::table& t, const std::string& where, const char* key) {
+  const toml::node* n = t.get(key);
+  if (!n) return std::nullopt;
+  auto v = n->value<std::string>();
+  if (!v) fail(where + "." + key, "must be a string");
+  return v;
+}
+
+const toml::table* sub(const toml::table& t, const std::string& where, const char* key) {
+  const toml::node* n = t.get(key);
+  if (!n) return nullptr;
+  if (!n->is_table()) fail(where + "." + key, "must be a table");
+  return n->as_table();
+}
+
+void read_component(const toml::table& t, const std::string& where, GroundComponent& c) {
+  check_keys(t, where, {"constant", "amplitude", "frequency", "phase", "t_start", "duration"});
+  read(t, where, "constant", c.constant);
+  read(t, where, "amplitude", c.amplitude);
+  read(t, where, "frequency", c.frequency);
+  read(t, where, "phase", c.phase);
+  read(t, where, "t_start", c.t_start);
+  read(t, where, "duration", c.duration);
+}
+
+}  // namespace
+
+Scenario parse_scenario(const std::string& text, const std::string& source) {
+  toml::table root;
+  try {
+    root = toml::parse(text, source);
+  } catch (const toml::parse_error& e) {
+    std::ostringstream os;
+    os << source << ":" << e.source().begin.line << ": " << e.description();
+    throw std::invalid_argument(os.str());
+  }
+  Scenario s;
+  check_keys(root, source, {"block", "physical", "initial", "run", "ground", "output"});
+  if (const auto* b = sub(root, source, "block")) {
+    check_keys(*b, "block", {"r", "mu", "k"});
+    read(*b, "block", "r", s.params.r);
+    read(*b, "block", "mu", s.params.mu);
+    read(*b, "block", "k", s.params.k);
+  }
+  if (const auto* p = sub(root, source, "physical")) {
+    check_keys(*p, "physical", {"height", "width", "mass", "density", "thickness", "subgrade_modulus",
+                                "line_stiffness", "g", "mu"});
+    PhysicalBlock pb;
+    pb.mu = s.params.mu;
+    read(*p, "physical", "height", pb.height);
+    read(*p, "physical", "width", pb.width);
+    read(*p, "physical", "g", pb.g);
+    read(*p, "physical", "mu", pb.mu);
+    pb.mass = num(*p, "physical", "mass");
+    pb.density = num(*p, "physical", "density");
+    pb.thickness = num(*p, "physical", "thickness");
+    pb.subgrade_modulus = num(*p, "physical", "subgrade_modulus");
+    pb.line_stiffness = num(*p, "physical", "line_stiffness");
+    s.physical = pb;
+    s.params = to_nondimensional(pb);
+  }
+  if (const auto* i = sub(root, source, "initial")) {
+    check_keys(*i, "initial", {"set", "w0", "x0", "y0", "vx0", "vy0", "vw0"});
+    if (auto v = str(*i, "initial", "set")) s.initial.set = *v;
+    s.initial.w0 = num(*i, "initial", "w0");
+    s.initial.x0 = num(*i, "initial", "x0");
+    s.initial.y0 = num(*i, "initial", "y0");
+    s.initial.vx0 = num(*i, "initial", "vx0");
+    s.initial.vy0 = num(*i, "initial", "vy0");
+    s.initial.vw0 = num(*i, "initial", "vw0");
+  }
+  if (const auto* r = sub(root, source, "run")) {
+    check_keys(*r, "run", {"t_end", "t_start", "rtol", "atol", "output_interval", "max_steps", "event_samples"});
+    read(*r, "run", "t_end", s.options.t_end);
+    read(*r, "run", "t_start", s.options.t_start);
+    read(*r, "run", "rtol", s.options.integrator.rtol);
+    read(*r, "run", "atol", s.options.integrator.atol);
+    read(*r, "run", "output_interval", s.output_interval);
+    if (auto v = num(*r, "run", "max_steps")) s.options.integrator.max_steps = long(*v);
+    if (auto v = num(*r, "run", "event_samples")) s.options.integrator.event_samples = int(*v);
+  }
+  if (const auto* g = sub(root, source, "ground")) {
+    check_keys(*g, "ground", {"horizontal", "vertical"});
+    if (const auto* h = sub(*g, "ground", "horizontal")) read_component(*h, "ground.horizontal", s.ground.horizontal);
+    if (const auto* v = sub(*g, "ground", "vertical")) read_component(*v, "ground.vertical", s.ground.vertical);
+  }
+  if (const auto* o = sub(root, source, "output")) {
+    check_keys(*o, "output", {"trajectory", "plot", "units"});
+    if (auto v = str(*o, "output", "trajectory")) s.trajectory = *v;
+    if (auto v = str(*o, "output", "plot")) s.plot = *v;
+    if (auto v = str(*o, "output", "units")) s.units = *v;
+  }
+  return s;
+}
+
+Scenario load_scenario(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw std::invalid_argument("scenario file '" + path + "' cannot be read");
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return parse_scenario(ss.str(), path);
+}
+
+BlockStateVec initial_state(const Scenario& s) {
+  const InitialSpec& in = s.initial;
+  BlockStateVec z{};
+  if (in.set == "ic1") {
+    z = ic1(s.params, in.w0);
+  } else if (in.set == "ic2") {
+    z = ic2(s.params);
+    if (in.w0) z[kW] = *in.w0;
+  } else if (in.set == "custom") {
+    z[kW] = in.w0.value_or(0.0);
+    z[kH] = in.y0 ? *in.y0 - 0.5 : -1.0 / s.params.k;
+    z[kX] = 0.0;
+  } else {
+    throw std::invalid_argument("initial.set = '" + in.set + "' is not one of: ic1, ic2, custom");
+  }
+  if (in.x0) z[kX] = *in.x0;
+  if (in.y0) z[kH] = *in.y0 - 0.5;
+  if (in.vx0) z[kVX] = *in.vx0;
+  if (in.vy0) z[kVY] = *in.vy0;
+  if (in.vw0) z[kVW] = *in.vw0;
+  for (double v : z)
+    if (!std::isfinite(v)) throw std::invalid_argument("initial state: non-finite value");
+  return z;
+}
+
+}  // namespace blockdyn

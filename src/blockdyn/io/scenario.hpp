@@ -1,0 +1,39 @@
+#pragma once
+// A simulation scenario: everything one `blockdyn simulate` run needs, readable from TOML so
+// runs are reproducible from a file. Unknown keys are errors (a typo must not be ignored).
+#include <optional>
+#include <string>
+
+#include "blockdyn/model/ground_motion.hpp"
+#include "blockdyn/simulation.hpp"
+#include "blockdyn/units/physical_units.hpp"
+
+namespace blockdyn {
+
+struct InitialSpec {
+  std::string set = "ic1";  // ic1 | ic2 | custom
+  std::optional<double> w0;  // ic1 tilt override, or custom w
+  // custom (and overrides applied on top of ic1/ic2)
+  std::optional<double> x0, y0, vx0, vy0, vw0;
+};
+
+struct Scenario {
+  BlockParams params;
+  std::optional<PhysicalBlock> physical;  // when given, params are derived from it
+  GroundMotion ground;
+  InitialSpec initial;
+  SimulationOptions options;
+  double output_interval = 0.01;
+  std::string trajectory;  // CSV path, empty: none
+  std::string plot;        // PNG path, empty: none
+  std::string units = "nondim";  // nondim | physical (adds physical columns / fields)
+};
+
+// Reads a TOML scenario; throws std::invalid_argument with the offending key on error.
+Scenario load_scenario(const std::string& path);
+Scenario parse_scenario(const std::string& toml_text, const std::string& source_name);
+
+// The initial state vector the scenario asks for (validated against the model).
+BlockStateVec initial_state(const Scenario& s);
+
+}  // namespace blockdyn

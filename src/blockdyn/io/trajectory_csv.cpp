@@ -1,0 +1,76 @@
+#include "blockdyn/io/trajectory_csv.hpp"
+
+#include <cmath>
+#include <cstdio>
+
+namespace blockdyn {
+
+TrajectoryCsvSink::TrajectoryCsvSink(std::ostream& out, double interval, std::optional<UnitScales> s)
+    : out_(out), interval_(interval), scales_(s) {}
+
+void TrajectoryCsvSink::on_start(const WinklerBlock& m, double t, const BlockMode& mode,
+                                 const BlockStateVec& z) {
+  out_ << "t,x,y,w,vx,vy,vw,mode,side,event,Rx,Ry,E_kin_x,E_kin_y,E_rot,E_grav,E_springs,E_total,"
+          "W_friction,W_nonpotential,W_ground,energy_balance";
+  if (scales_) out_ << ",t_s,x_m,y_m,vx_m_per_s,vy_m_per_s,vw_rad_per_s,Rx_N,Ry_N,E_total_J";
+  out_ << '\n';
+  t0_ = t;
+  n_out_ = 0;
+  next_t_ = t;
+  row(m, t, mode, z, "start");
+  n_out_ = 1;
+  next_t_ = t0_ + interval_;
+}
+
+void TrajectoryCsvSink::on_segment(const WinklerBlock& m, const DenseSegment<kStateDim>& seg,
+                                   double t0, double t1, const BlockMode& mode) {
+  if (interval_ <= 0) {
+    BlockStateVec z;
+    seg.eval(t1, z);
+    m.complete(mode, z);
+    row(m, t1, mode, z, "");
+    return;
+  }
+  // Output instants t0_ + n * interval (computed from n, so no drift accumulates).
+  // Instants up to t0 were written by earlier segments, so each one is written once.
+  while (next_t_ <= t1) {
+    BlockStateVec z;
+    seg.eval(next_t_, z);
+    m.complete(mode, z);
+    row(m, next_t_, mode, z, "");
+    ++n_out_;
+    next_t_ = t0_ + double(n_out_) * interval_;
+  }
+}
+
+void TrajectoryCsvSink::on_event(const WinklerBlock& m, const EventRecord& e) {
+  row(m, e.t, e.to, e.z, to_string(e.kind));
+}
+
+void TrajectoryCsvSink::row(const WinklerBlock& m, double t, const BlockMode& mode,
+                            const BlockStateVec& z, const char* event) {
+  const BlockForces f = m.forces(t, mode, z);
+  const Energy e = energy(m.params(), z);
+  const double balance = e.total() - z[kWorkFriction] - z[kWorkNonPotential] - z[kWorkGround];
+  char buf[1024];
+  int n = std::snprintf(buf, sizeof buf,
+                        "%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%s,%d,%s,%.17g,%.17g,%.17g,%.17g,"
+                        "%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g",
+                        t, z[kX], z[kH] + 0.5, z[kW], z[kVX], z[kVY], z[kVW], to_string(mode.regime),
+                        mode.side, event, f.Rx, f.Ry, e.kinetic_x, e.kinetic_y, e.rotation, e.gravity,
+                        e.springs, e.total(), z[kWorkFriction], z[kWorkNonPotential], z[kWorkGround],
+                        balance);
+  out_.write(buf, n);
+  if (scales_) {
+    const UnitScales& s = *scales_;
+    n = std::snprintf(buf, sizeof buf, ",%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g",
+                      t * s.time, z[kX] * s.length, (z[kH] + 0.5) * s.length, z[kVX] * s.velocity,
+                      z[kVY] * s.velocity, z[kVW] * s.angular_velocity, f.Rx * s.force, f.Ry * s.force,
+                      e.total() * s.energy);
+    out_.write(buf, n);
+  }
+  out_ << '\n';
+  ++rows_;
+}
+
+}  // namespace blockdyn

@@ -1,0 +1,15 @@
+#include <gtest/gtest.h>
+
+#include "blockdyn/model/initial_conditions.hpp"
+#include "blockdyn/simulation.hpp"
+
+using namespace blockdyn;
+
+TEST(Smoke, Ic1RunsToEnd) {
+  const BlockParams p{0.2, 0.2, 1e5};
+  SimulationOptions o;
+  o.t_end = 5;
+  const auto r = simulate(p, {}, ic1(p), o);
+  EXPECT_EQ(r.status, SimStatus::TEnd);
+  EXPECT_GT(r.ihor, 0);
+}
