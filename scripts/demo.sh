@@ -1,0 +1,10 @@
+#!/usr/bin/env bash
+# From a fresh Debian 12 machine: install dependencies, build, and run the demo simulation
+# (writes out/demo_trajectory.csv, out/demo.png/.svg and out/demo.json).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+bash scripts/install-deps.sh
+bash scripts/build.sh
+mkdir -p out
+./build/blockdyn simulate examples/demo.toml --json-out out/demo.json
+echo "wrote out/demo_trajectory.csv, out/demo.png, out/demo.svg, out/demo.json"
