@@ -1,6 +1,7 @@
 #include "blockdyn/simulation.hpp"
 
 #include <cmath>
+#include <sstream>
 #include <stdexcept>
 
 namespace blockdyn {
@@ -18,7 +19,9 @@ const char* to_string(SimStatus s) {
 
 void validate(const SimulationOptions& o) {
   auto bad = [](const std::string& f, const std::string& range, double v) {
-    throw std::invalid_argument(f + " = " + std::to_string(v) + " is out of range: must be " + range);
+    std::ostringstream os;
+    os << f << " = " << v << " is out of range: must be " << range;
+    throw std::invalid_argument(os.str());
   };
   if (!std::isfinite(o.t_start) || o.t_start < 0) bad("t-start", "finite and >= 0", o.t_start);
   if (!std::isfinite(o.t_end) || o.t_end <= o.t_start) bad("t-end", "finite and > t-start", o.t_end);

@@ -5,12 +5,16 @@
 // A model supplies (see HybridModel below): the state size, a Mode type, right-hand sides per
 // mode, event functions that must stay >= 0 while a mode is valid, and the transition map
 // applied when one of them becomes negative. The integrator knows nothing about blocks.
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <concepts>
 #include <cstddef>
 #include <limits>
 #include <optional>
+#include <utility>
+
+#include <boost/math/tools/minima.hpp>
 
 #include "blockdyn/integrate/dopri5.hpp"
 #include "blockdyn/integrate/root_bracket.hpp"
@@ -103,6 +107,7 @@ class HybridIntegrator {
     Events g_start;
     model_.events(t, mode, z, g_start);
     armed_.fill(true);
+    reset_falling(g_start, -1);
     double h = initial_step(mode);
     double err_old = 1e-4;
     int zero_time_events = 0;
@@ -145,10 +150,22 @@ class HybridIntegrator {
       }
       // An event inside the step: keep the trajectory up to it, apply the transition, restart.
       const double te = hit->t;
-      if (te > t && !obs.on_step(seg, t, te, mode)) return RunStatus::ObserverStop;
+      State ze = z;
+      if (te > t) {
+        // The accepted step straddles the event, where the right-hand side is usually not
+        // smooth (forces switch on or off), so its interpolant is least accurate exactly there.
+        // One fresh step from t to te stays on the smooth side and gives the event state the
+        // accuracy of an ordinary step end.
+        State k7e;
+        const double err_e = stepper_.attempt(f, t, te - t, z, k1, ze, k7e, stats_);
+        if (std::isfinite(err_e)) {
+          stepper_.dense(t, te - t, z, ze, k1, k7e, seg);
+        } else {
+          seg.eval(te, ze);
+        }
+        if (!obs.on_step(seg, t, te, mode)) return RunStatus::ObserverStop;
+      }
       zero_time_events = (te == t) ? zero_time_events + 1 : 0;
-      State ze;
-      seg.eval(te, ze);
       model_.complete(mode, ze);
       const Transition<Mode> tr = model_.transition(te, mode, ze, hit->index);
       EventInfo<Mode, N> info{te, ze, mode, tr.next, hit->index, tr.kind, tr.stop};
@@ -164,6 +181,7 @@ class HybridIntegrator {
       if (!obs.on_event(info)) return RunStatus::ObserverStop;
       model_.events(t, mode, z, g_start);
       armed_.fill(true);
+      reset_falling(g_start, hit->index);
       if (zero_time_events >= opt_.chatter_limit) {
         const auto held = model_.resolve_chatter(t, mode, z);
         if (!held) return RunStatus::Chatter;
@@ -174,6 +192,7 @@ class HybridIntegrator {
         if (!obs.on_event(hold)) return RunStatus::ObserverStop;
         model_.events(t, mode, z, g_start);
         for (std::size_t i = 0; i < NE; ++i) armed_[i] = g_start[i] > 0.0;
+        reset_falling(g_start, -1);
         zero_time_events = 0;
       }
       f(t, z, k1);
@@ -194,48 +213,115 @@ class HybridIntegrator {
   }
 
   // Checks the event functions at `event_samples` points of the step; returns the earliest root.
+  // Besides sign changes between samples it looks for excursions below zero that start and end
+  // between two samples (a brief flight, a short slide): wherever the samples of a function
+  // have a local minimum, the minimum is located on the dense output and checked.
   std::optional<Hit> scan_events(const DenseSegment<N>& seg, double t0, double t1,
                                  const State& y1, const Mode& mode, const Events& g0) {
-    Events g_prev = g0, g;
-    double t_prev = t0;
+    const int S = std::clamp(opt_.event_samples, 1, kMaxSamples);
+    std::array<double, kMaxSamples + 1> ts;
+    std::array<Events, kMaxSamples + 1> gs;
+    ts[0] = t0;
+    gs[0] = g0;
     State y;
-    const int S = opt_.event_samples;
     for (int j = 1; j <= S; ++j) {
-      const double tj = (j == S) ? t1 : t0 + (t1 - t0) * double(j) / S;
+      ts[j] = (j == S) ? t1 : t0 + (t1 - t0) * double(j) / S;
       if (j == S) {
         y = y1;
       } else {
-        seg.eval(tj, y);
+        seg.eval(ts[j], y);
       }
       model_.complete(mode, y);
-      model_.events(tj, mode, y, g);
-      std::optional<Hit> best;
-      for (std::size_t i = 0; i < NE; ++i) {
-        if (!armed_[i] || !(g[i] < 0.0)) continue;
-        auto gi = [&](double tt) {
-          State yy;
-          seg.eval(tt, yy);
-          model_.complete(mode, yy);
-          Events ge;
-          model_.events(tt, mode, yy, ge);
-          return ge[i];
-        };
-        const double tr = locate_root(gi, t_prev, tj, g_prev[i], g[i]);
-        if (!best || tr < best->t) best = Hit{tr, int(i)};
-      }
-      if (best) return best;
-      g_prev = g;
-      t_prev = tj;
+      model_.events(ts[j], mode, y, gs[j]);
     }
-    g_last_ = g;
-    return std::nullopt;
+    auto g_all = [&](double tt, Events& ge) {
+      State yy;
+      seg.eval(tt, yy);
+      model_.complete(mode, yy);
+      model_.events(tt, mode, yy, ge);
+    };
+    // Falling into the step end: one more value just before t1 tells whether a minimum lies
+    // inside the last interval (the next step could not see it).
+    bool any_falling_end = false;
+    for (std::size_t i = 0; i < NE; ++i)
+      any_falling_end |= armed_[i] && gs[S][i] > 0.0 && gs[S][i] < gs[S - 1][i];
+    Events g_before_end{};
+    if (any_falling_end) g_all(t1 - 1e-3 * (t1 - ts[S - 1]), g_before_end);
+
+    std::optional<Hit> best;
+    std::array<bool, NE> falling_next{};
+    for (std::size_t i = 0; i < NE; ++i) {
+      if (!armed_[i]) continue;
+      auto gi = [&](double tt) {
+        Events ge;
+        g_all(tt, ge);
+        return ge[i];
+      };
+      std::optional<double> root;
+      bool falling = falling_[i];
+      for (int j = 1; j <= S && !root; ++j) {
+        if (best && ts[j - 1] >= best->t) break;
+        const double ga = gs[j - 1][i], gb = gs[j][i];
+        if (gb < 0.0) {
+          double lo = ts[j - 1], glo = ga;
+          if (glo <= 0.0) {  // zero at a restart point: it fires there unless it rises first
+            const auto mx = minimum(lo, ts[j], [&](double tt) { return -gi(tt); });
+            if (-mx.second > 0.0) {
+              lo = mx.first;
+              glo = -mx.second;
+            }
+          }
+          root = locate_root(gi, lo, ts[j], glo, gb);
+        } else if (falling && ga > 0.0 && gb > ga) {
+          const int a = (j >= 2) ? j - 2 : 0;
+          root = dip_root(gi, ts[a], ts[j], gs[a][i]);
+        }
+        falling = gb < ga;
+      }
+      if (!root && any_falling_end && gs[S][i] > 0.0 && gs[S][i] < gs[S - 1][i]) {
+        if (g_before_end[i] < gs[S][i]) {  // rising again at the end: minimum inside
+          root = dip_root(gi, ts[S - 1], t1, gs[S - 1][i]);
+        } else {
+          falling_next[i] = true;
+        }
+      }
+      if (root && (!best || *root < best->t)) best = Hit{*root, int(i)};
+    }
+    if (!best) {
+      g_last_ = gs[S];
+      falling_ = falling_next;
+    }
+    return best;
   }
 
+  // Minimum of g on [a, b] (Brent): (location, value).
+  template <class G>
+  static std::pair<double, double> minimum(double a, double b, G&& g) {
+    std::uintmax_t iters = 60;
+    return boost::math::tools::brent_find_minima(g, a, b, 26, iters);
+  }
+
+  // Root of g before its minimum on [a, b] if that minimum is below zero (g(a) = ga > 0).
+  template <class G>
+  static std::optional<double> dip_root(G&& g, double a, double b, double ga) {
+    const auto mn = minimum(a, b, g);
+    if (!(mn.second < 0.0)) return std::nullopt;
+    return locate_root(g, a, mn.first, ga, mn.second);
+  }
+
+  // After a restart the slope of each event function is unknown: treat every one that is
+  // clearly positive as possibly falling, except the one that just fired (it starts at zero).
+  void reset_falling(const Events& g_start, int fired) {
+    for (std::size_t i = 0; i < NE; ++i) falling_[i] = int(i) != fired && g_start[i] > 0.0;
+  }
+
+  static constexpr int kMaxSamples = 64;
   const Model& model_;
   IntegratorOptions opt_;
   Dopri5<N> stepper_;
   StepperStats stats_;
   std::array<bool, NE> armed_{};
+  std::array<bool, NE> falling_{};  // event function still decreasing at the last step end
   Events g_last_{};
 };
 

@@ -2,6 +2,7 @@
 
 #include <boost/math/tools/roots.hpp>
 #include <cmath>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 
@@ -35,10 +36,11 @@ double static_height(const BlockParams& p, double w, double Ry) {
 
 BlockStateVec ic1(const BlockParams& p, std::optional<double> w0_opt) {
   const double w0 = w0_opt.value_or(0.5 * p.alpha());
-  if (!std::isfinite(w0) || std::fabs(w0) > p.alpha() || w0 == 0.0)
-    throw std::invalid_argument("w0 = " + std::to_string(w0) +
-                                " is out of range: must satisfy 0 < |w0| <= alpha = atan(r) = " +
-                                std::to_string(p.alpha()));
+  if (!std::isfinite(w0) || std::fabs(w0) > p.alpha() || w0 == 0.0) {
+    std::ostringstream os;
+    os << "w0 = " << w0 << " is out of range: ic1 needs 0 < |w0| <= alpha = atan(r) = " << p.alpha();
+    throw std::invalid_argument(os.str());
+  }
   const double a = std::fabs(w0);
   const RigidGroundBlock rigid(p);
   const double Ry0 = rigid.rest_reaction(a);

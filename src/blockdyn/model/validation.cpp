@@ -1,4 +1,5 @@
 #include <cmath>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 
@@ -9,9 +10,11 @@ namespace blockdyn {
 
 namespace {
 void require(bool ok, const std::string& field, const std::string& range, double v) {
-  if (!ok)
-    throw std::invalid_argument(field + " = " + std::to_string(v) + " is out of range: must be " +
-                                range);
+  if (!ok) {
+    std::ostringstream os;
+    os << field << " = " << v << " is out of range: must be " << range;
+    throw std::invalid_argument(os.str());
+  }
 }
 bool finite(double v) { return std::isfinite(v); }
 }  // namespace

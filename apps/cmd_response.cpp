@@ -1,0 +1,148 @@
+// `blockdyn response`: long-term response of one block (thesis sec. 4.4): response type, metrics,
+// swings (lengths, swing-averaged energies), phase portraits, plot.
+#include <cstdio>
+#include <memory>
+
+#include "blockdyn/analysis/response_type.hpp"
+#include "blockdyn/io/atomic_file.hpp"
+#include "blockdyn/io/json_io.hpp"
+#include "chaos_cli.hpp"
+#include "cli_registry.hpp"
+
+namespace blockdyn::cli {
+namespace {
+
+struct ResponseFlags {
+  BlockParams p;
+  IntegratorOptions integ;
+  IcFlags ic;
+  ResponseOptions opt;
+  std::string csv_prefix, plot, json_out;
+  bool json = false;
+};
+
+nlohmann::ordered_json metrics_json(const ResponseMetrics& m) {
+  nlohmann::ordered_json j;
+  j["status"] = to_string(m.status);
+  j["t_final"] = m.t_final;
+  j["late_start"] = m.late_start;
+  j["overturn_time"] = m.overturn_time ? nlohmann::ordered_json(*m.overturn_time) : nlohmann::ordered_json();
+  j["first_flight_time"] = m.first_flight_time ? nlohmann::ordered_json(*m.first_flight_time) : nlohmann::ordered_json();
+  j["energy_initial"] = m.e0;
+  j["energy_final"] = m.e_final;
+  j["energy_rest"] = m.e_rest;
+  j["work_friction"] = m.work_friction;
+  j["dissipated_fraction"] = m.dissipated_fraction;
+  j["max_abs_energy_balance_error"] = m.max_abs_energy_error;
+  j["ihor"] = m.ihor;
+  j["takeoffs"] = m.takeoffs;
+  j["late_takeoffs"] = m.late_takeoffs;
+  j["flight_fraction"] = m.flight_fraction;
+  j["late_flight_fraction"] = m.late_flight_fraction;
+  j["swings"] = m.swings;
+  j["late_swings"] = m.late_swings;
+  j["early_swing_length"] = m.early_swing_length;
+  j["late_swing_length"] = m.late_swing_length;
+  j["late_swing_length_cv"] = m.late_swing_length_cv;
+  j["early_average_energy"] = to_json(m.early_average);
+  j["late_average_energy"] = to_json(m.late_average);
+  j["early_rotation_share"] = m.early_rotation_share;
+  j["late_rotation_share"] = m.late_rotation_share;
+  return j;
+}
+
+void write_csv(const std::string& path, const std::function<void(std::ostream&)>& fill) {
+  AtomicFile f(path);
+  fill(f.stream());
+  f.commit();
+}
+
+void run(const CLI::App& s, ResponseFlags& f) {
+  validate(f.p);
+  f.opt.integrator = f.integ;
+  validate(f.opt);
+  SimulationOptions check;
+  check.t_end = f.opt.t_end;
+  check.integrator = f.integ;
+  validate(check);
+  const BlockStateVec z0 = ic_state(s, f.ic, f.p);
+  const bool want_series = !f.csv_prefix.empty() || !f.plot.empty();
+  if (!want_series) f.opt.phase_dt = 0.0;
+  const ResponseRun run = run_response(f.p, {}, z0, f.opt);
+
+  std::string prefix = f.csv_prefix;
+  const bool temp = prefix.empty() && !f.plot.empty();
+  if (temp) prefix = temp_path("response", "");
+  if (!prefix.empty()) {
+    write_csv(prefix + "_swings.csv", [&](std::ostream& o) { write_swings_csv(o, run.swings); });
+    write_csv(prefix + "_phase.csv", [&](std::ostream& o) { write_phase_csv(o, run.phase); });
+  }
+  if (!f.plot.empty()) {
+    char title[256];
+    std::snprintf(title, sizeof title, "r=%g k=%g mu=%g %s: %s", f.p.r, f.p.k, f.p.mu, f.ic.ic.c_str(),
+                  to_string(run.report.type));
+    run_python("plot_response.py", {prefix + "_swings.csv", prefix + "_phase.csv", f.plot, title});
+    if (temp) {
+      std::remove((prefix + "_swings.csv").c_str());
+      std::remove((prefix + "_phase.csv").c_str());
+    }
+  }
+
+  nlohmann::ordered_json j;
+  j["run_info"] = run_info();
+  j["params"] = to_json(f.p);
+  j["initial"] = ic_json(f.ic, z0);
+  j["integrator"] = to_json(f.integ);
+  j["options"] = {{"t_end", f.opt.t_end},
+                  {"late_fraction", f.opt.late_fraction},
+                  {"quadrature_dt", f.opt.quadrature_dt},
+                  {"phase_dt", f.opt.phase_dt},
+                  {"settle_dissipation", f.opt.criteria.settle_dissipation},
+                  {"vertical_trend", f.opt.criteria.vertical_trend},
+                  {"early_swings", f.opt.criteria.early_swings}};
+  j["type"] = to_string(run.report.type);
+  j["reason"] = run.report.reason;
+  j["metrics"] = metrics_json(run.report.metrics);
+  if (!f.json_out.empty()) emit_json(j, f.json_out);
+  if (f.json) {
+    emit_json(j, "-");
+  } else {
+    const ResponseMetrics& m = run.report.metrics;
+    std::printf("response: %s (%s)\n", to_string(run.report.type), run.report.reason.c_str());
+    std::printf("status: %s at t = %.10g, swings: %ld, take-offs: %ld (late %ld)\n", to_string(m.status), m.t_final,
+                m.swings, m.takeoffs, m.late_takeoffs);
+    std::printf("energy: E0 = %.10g, dissipated fraction = %.4g, balance error = %.3g\n", m.e0,
+                m.dissipated_fraction, m.max_abs_energy_error);
+  }
+}
+
+void add(CLI::App& app) {
+  auto f = std::make_shared<ResponseFlags>();
+  f->opt.phase_dt = 0.05;
+  CLI::App* s = app.add_subcommand("response", "long-term response: type, swings, swing-averaged energies, phase portraits");
+  add_block_options(*s, f->p);
+  add_tolerance_options(*s, f->integ);
+  add_ic_options(*s, f->ic);
+  s->add_option("--t-end", f->opt.t_end, "final time (> 0)")->capture_default_str();
+  s->add_option("--late-fraction", f->opt.late_fraction, "late window starts at this fraction of t-end, in [0, 1)")
+      ->capture_default_str();
+  s->add_option("--quadrature-dt", f->opt.quadrature_dt, "largest sample spacing of the swing averages (> 0)")
+      ->capture_default_str();
+  s->add_option("--phase-dt", f->opt.phase_dt, "phase-portrait sampling interval (>= 0)")->capture_default_str();
+  s->add_option("--settle-dissipation", f->opt.criteria.settle_dissipation,
+                "settle down if friction dissipated at least this fraction of the available energy, in (0, 1)")
+      ->capture_default_str();
+  s->add_option("--vertical-trend", f->opt.criteria.vertical_trend,
+                "rock to vertical if the late rotational share <= this times the early one, in (0, 1)")
+      ->capture_default_str();
+  s->add_option("--csv-prefix", f->csv_prefix, "write PREFIX_swings.csv and PREFIX_phase.csv");
+  s->add_option("--plot", f->plot, "write the phase portraits and swing-averaged energies (PNG + SVG)");
+  s->add_flag("--json", f->json, "print the JSON summary on stdout");
+  s->add_option("--json-out", f->json_out, "also write the JSON summary to this file");
+  s->callback([s, f] { run(*s, *f); });
+}
+
+RegisterCommand reg(50, add);
+
+}  // namespace
+}  // namespace blockdyn::cli

@@ -1,0 +1,243 @@
+// `blockdyn sweep`: a grid of runs over k, r (or 1/r), mu and initial conditions, from a TOML
+// definition and/or flags; threads, MPI, resumable journal, progress, CSV + JSON sidecar, plot.
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <memory>
+
+#include "blockdyn/analysis/parallel_map.hpp"
+#include "blockdyn/analysis/sweep_runner.hpp"
+#include "blockdyn/analysis/sweep_toml.hpp"
+#include "blockdyn/io/json_io.hpp"
+#include "cli_common.hpp"
+#include "cli_registry.hpp"
+#include "mpi_sweep.hpp"
+
+namespace blockdyn::cli {
+namespace {
+
+struct SweepFlags {
+  std::string file;
+  std::string k, r, inv_r, mu, ic;
+  double w0 = 0, w0_over_alpha = 0, x0 = 0, y0 = 0, vx0 = 0, vy0 = 0, vw0 = 0;
+  double t_end = 30;
+  IntegratorOptions integ;
+  long max_steps = 0, stop_at_ihor = 0;
+  bool stop_at_first_flight = false, no_energy = false;
+  std::vector<std::string> metrics;
+  std::string output, plot, plot_column, progress = "auto";
+  double progress_interval = 10;
+  int threads = 0;
+  bool resume = false, overwrite = false, quiet = false, list_metrics = false, dry_run = false;
+};
+
+bool given(const CLI::App& s, const std::string& name) { return s.count(name) > 0; }
+
+std::vector<std::string> split_list(const std::string& s) {
+  std::vector<std::string> out;
+  std::string cur;
+  for (char c : s) {
+    if (c == ',') {
+      out.push_back(cur);
+      cur.clear();
+    } else if (c != ' ') {
+      cur += c;
+    }
+  }
+  out.push_back(cur);
+  return out;
+}
+
+SweepSpec build_spec(const CLI::App& s, const SweepFlags& f) {
+  SweepSpec sp = f.file.empty() ? SweepSpec{} : load_sweep(f.file);
+  if (given(s, "--r") && given(s, "--inv-r")) throw UsageError("--r and --inv-r: give only one aspect-ratio axis");
+  if (given(s, "--k")) sp.k = parse_axis("k", f.k, AxisSpacing::Log);
+  if (given(s, "--r")) sp.r = parse_axis("r", f.r, AxisSpacing::Linear);
+  if (given(s, "--inv-r")) sp.r = parse_axis("inv_r", f.inv_r, AxisSpacing::Linear);
+  if (given(s, "--mu")) sp.mu = parse_axis("mu", f.mu, AxisSpacing::Linear);
+  if (given(s, "--ic")) sp.initial.sets = split_list(f.ic);
+  if (given(s, "--w0") && given(s, "--w0-over-alpha")) throw UsageError("--w0 and --w0-over-alpha: give only one");
+  if (given(s, "--w0")) {
+    sp.initial.w0 = f.w0;
+    sp.initial.w0_over_alpha.reset();
+  }
+  if (given(s, "--w0-over-alpha")) {
+    sp.initial.w0_over_alpha = f.w0_over_alpha;
+    sp.initial.w0.reset();
+  }
+  if (given(s, "--x0")) sp.initial.x0 = f.x0;
+  if (given(s, "--y0")) sp.initial.y0 = f.y0;
+  if (given(s, "--vx0")) sp.initial.vx0 = f.vx0;
+  if (given(s, "--vy0")) sp.initial.vy0 = f.vy0;
+  if (given(s, "--vw0")) sp.initial.vw0 = f.vw0;
+  if (given(s, "--t-end")) sp.options.t_end = f.t_end;
+  if (given(s, "--rtol")) sp.options.integrator.rtol = f.integ.rtol;
+  if (given(s, "--atol")) sp.options.integrator.atol = f.integ.atol;
+  if (given(s, "--max-steps")) sp.options.integrator.max_steps = f.max_steps;
+  if (given(s, "--stop-at-first-flight")) sp.options.stop_at_first_flight = f.stop_at_first_flight;
+  if (given(s, "--stop-at-ihor")) sp.options.stop_at_ihor = f.stop_at_ihor;
+  if (given(s, "--no-energy")) sp.options.track_energy = false;
+  if (given(s, "--metric")) sp.metrics = f.metrics;
+  if (given(s, "--output")) sp.output = f.output;
+  if (given(s, "--plot")) sp.plot = f.plot;
+  if (given(s, "--plot-column")) sp.plot_column = f.plot_column;
+  validate(sp);
+  if (sp.output.empty()) throw UsageError("output: the CSV path is empty");
+  return sp;
+}
+
+// Axes with more than one value become plot axes (k first); the others are held at one value.
+void plot(const SweepSpec& sp, const SweepPaths& paths) {
+  std::vector<const SweepAxis*> numeric = {&sp.k, &sp.r, &sp.mu};
+  std::vector<std::string> args = {paths.csv, sp.plot};
+  std::vector<const SweepAxis*> varying;
+  for (const SweepAxis* a : numeric) {
+    if (a->values.size() > 1 && varying.size() < 2) {
+      varying.push_back(a);
+    } else {
+      args.push_back("--where");
+      args.push_back(a->name + "=" + format_double(a->values.front()));
+    }
+  }
+  if (sp.initial.sets.size() > 1) {
+    args.push_back("--where");
+    args.push_back("ic=" + sp.initial.sets.front());
+  }
+  if (varying.empty()) throw UsageError("plot: the sweep has no axis with more than one value");
+  const char* axis_flag[2] = {"--x", "--y"};
+  const char* log_flag[2] = {"--logx", "--logy"};
+  for (std::size_t i = 0; i < varying.size(); ++i) {
+    args.push_back(axis_flag[i]);
+    args.push_back(varying[i]->name);
+    const auto& v = varying[i]->values;
+    const bool log = (varying[i]->is_range && varying[i]->spacing == AxisSpacing::Log) ||
+                     (v.front() > 0 && v.back() / v.front() >= 100.0);
+    if (log) args.push_back(log_flag[i]);
+  }
+  args.push_back("--column");
+  args.push_back(sp.plot_column.empty() ? "first_flight_time" : sp.plot_column);
+  args.push_back("--t-end");
+  args.push_back(format_double(sp.options.t_end));
+  run_python("plot_sweep.py", args);
+}
+
+void list_metrics() {
+  for (const auto& m : metric_catalog()) {
+    const auto cols = m.make()->columns();
+    std::string c;
+    for (const auto& x : cols) c += (c.empty() ? "" : ",") + x;
+    std::printf("%-14s %s\n               columns: %s\n", m.name.c_str(), m.description.c_str(), c.c_str());
+  }
+}
+
+void run(const CLI::App& s, const SweepFlags& f) {
+  if (f.list_metrics) {
+    list_metrics();
+    return;
+  }
+  if (f.resume && f.overwrite) throw UsageError("--resume and --overwrite: give only one");
+  require_range("threads", f.threads, 0, 4096);
+  require_range("progress-interval", f.progress_interval, 0.0, 1e9, false);
+  const SweepSpec sp = build_spec(s, f);
+  const SweepEvaluator ev(sp);
+  if (!sp.plot_column.empty()) {
+    const auto& c = ev.columns();
+    if (std::find(c.begin(), c.end(), sp.plot_column) == c.end())
+      throw UsageError("plot-column = '" + sp.plot_column + "' is not a column of this sweep (see --dry-run)");
+  }
+  if (f.dry_run) {
+    nlohmann::ordered_json j;
+    j["run"] = run_info();
+    j["point_count"] = ev.size();
+    j["fingerprint"] = ev.fingerprint();
+    j["columns"] = ev.columns();
+    j["outputs"] = {{"csv", sweep_paths(sp.output).csv}, {"sidecar", sweep_paths(sp.output).sidecar},
+                    {"journal", sweep_paths(sp.output).journal}};
+    j["definition"] = definition_json(sp);
+    emit_json(j, "-");
+    return;
+  }
+  SweepRunOptions o;
+  o.threads = f.threads;
+  o.resume = f.resume;
+  o.overwrite = f.overwrite;
+  o.progress = f.quiet ? ProgressMode::None : parse_progress_mode(f.progress);
+  o.progress_interval = f.progress_interval;
+  SweepOutcome out;
+  int ranks = 1;
+  if (launched_by_mpi()) {
+    if (!mpi_built() && launcher_world_size() > 1)
+      throw UsageError("this blockdyn was built without MPI: run it without mpirun, or rebuild with Open MPI");
+    if (mpi_built()) {
+      const MpiSweepResult res = run_sweep_mpi(ev, o);
+      if (!res.root) return;  // only rank 0 reports
+      out = res.outcome;
+      ranks = res.ranks;
+    } else {
+      out = run_sweep(ev, o);
+    }
+  } else {
+    out = run_sweep(ev, o);
+  }
+  if (!sp.plot.empty()) plot(sp, out.paths);
+  if (f.quiet) return;
+  if (out.was_complete) {
+    std::printf("sweep: %zu points already complete in %s (nothing recomputed)\n", out.points, out.paths.csv.c_str());
+    return;
+  }
+  std::printf("sweep: %zu points (%zu computed, %zu resumed, %zu errors) in %.3g s, %.3g points/s, %d rank(s)\n",
+              out.points, out.computed, out.resumed, out.errors, out.wall_seconds,
+              out.wall_seconds > 0 ? double(out.computed) / out.wall_seconds : 0.0, ranks);
+  std::printf("wrote %s and %s\n", out.paths.csv.c_str(), out.paths.sidecar.c_str());
+}
+
+void add(CLI::App& app) {
+  auto f = std::make_shared<SweepFlags>();
+  CLI::App* s = app.add_subcommand(
+      "sweep", "parameter sweep over k, r (or 1/r), mu and initial conditions (threads, MPI, resumable)");
+  s->footer(
+      "Axis values: a list \"v1,v2,...\" or a range \"min:max:points[:log|:lin]\" (k: log by default).\n"
+      "Points are numbered index = k_i + n_k*(r_i + n_r*(mu_i + n_mu*ic_i)). See docs/sweep.md.");
+  s->add_option("definition", f->file, "TOML sweep definition (flags given as well override it)")
+      ->check(CLI::ExistingFile);
+  s->add_option("--k", f->k, "stiffness axis, e.g. 1e2:1e8:40 (log) or 1e4,1e5");
+  s->add_option("--r", f->r, "aspect-ratio axis r = width/height, e.g. 0.1:1:10 or 0.2");
+  s->add_option("--inv-r", f->inv_r, "slenderness axis 1/r, e.g. 1:20:30");
+  s->add_option("--mu", f->mu, "friction axis, e.g. 0.2 or 0.1,0.2,0.3");
+  s->add_option("--ic", f->ic, "initial-condition sets, comma-separated: ic1, ic2, custom");
+  s->add_option("--w0", f->w0, "initial tilt w0 (ic1 tilt; ic2/custom: w)");
+  s->add_option("--w0-over-alpha", f->w0_over_alpha, "initial tilt as a fraction of alpha = atan(r), in [-1, 1]");
+  s->add_option("--x0", f->x0, "initial x (overrides the set)");
+  s->add_option("--y0", f->y0, "initial y (overrides the set)");
+  s->add_option("--vx0", f->vx0, "initial x' (overrides the set)");
+  s->add_option("--vy0", f->vy0, "initial y' (overrides the set)");
+  s->add_option("--vw0", f->vw0, "initial w' (overrides the set)");
+  s->add_option("--t-end", f->t_end, "final time of every run (default 30)");
+  add_tolerance_options(*s, f->integ);
+  s->add_option("--max-steps", f->max_steps, "step limit per run (> 0)");
+  s->add_flag("--stop-at-first-flight", f->stop_at_first_flight, "stop each run at its first take-off");
+  s->add_option("--stop-at-ihor", f->stop_at_ihor, "stop each run once ihor reaches N (0: never)");
+  s->add_flag("--no-energy", f->no_energy, "do not track the energy balance (max_abs_energy_error left empty)");
+  s->add_option("--metric", f->metrics, "extra per-point columns by name (repeatable; see --list-metrics)");
+  s->add_flag("--list-metrics", f->list_metrics, "list the available metrics and exit");
+  s->add_option("-o,--output", f->output, "output CSV (default sweep.csv); sidecar .json and .journal beside it");
+  s->add_option("--threads", f->threads, "worker threads per process (0: all cores; under MPI: cores per rank)")
+      ->capture_default_str();
+  s->add_flag("--resume", f->resume, "continue an interrupted sweep from its journal (recomputes nothing done)");
+  s->add_flag("--overwrite", f->overwrite, "discard existing output/journal and start over");
+  s->add_option("--progress", f->progress, "progress on stderr: auto (bar on a terminal, else lines), bar, plain, none")
+      ->capture_default_str();
+  s->add_option("--progress-interval", f->progress_interval, "seconds between plain progress lines")
+      ->capture_default_str();
+  s->add_flag("--quiet", f->quiet, "no progress and no summary");
+  s->add_flag("--dry-run", f->dry_run, "print the definition, point count and columns as JSON; compute nothing");
+  s->add_option("--plot", f->plot, "plot (PNG, SVG beside it): 1-D line or 2-D map of --plot-column");
+  s->add_option("--plot-column", f->plot_column, "column to plot (default first_flight_time)");
+  s->callback([s, f] { run(*s, *f); });
+}
+
+RegisterCommand reg(20, add);
+
+}  // namespace
+}  // namespace blockdyn::cli

@@ -1,0 +1,58 @@
+"""Arm and energy landscape of the static equilibria (thesis Figs 4.35-4.36).
+
+Usage: plot_equilibria.py LANDSCAPE.csv OUT.png  (reads LANDSCAPE.csv.json for the equilibria)
+Writes OUT.png and OUT.svg.
+"""
+import json
+import os
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
+
+
+def main(csv_path, out_png):
+    data = np.genfromtxt(csv_path, delimiter=",", names=True)
+    with open(csv_path + ".json") as f:
+        meta = json.load(f)
+    r, k = meta["params"]["r"], meta["params"]["k"]
+    alpha = meta["params"]["alpha"]
+    eqs = meta["equilibria"]
+
+    fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(10, 4))
+    # The thesis plots the restoring arm (positive = pushes back upright), i.e. -(x_R - x).
+    ax1.plot(data["w"], -data["arm"], "k-", lw=1.2)
+    ax1.axhline(0.0, color="0.6", lw=0.8)
+    ax1.set_xlabel("w")
+    ax1.set_ylabel("restoring arm  -(x_R - x)")
+    ax1.set_title(f"arm, r = {r:g}, k = {k:g}")
+    ax2.plot(data["w"], data["energy"], "k-", lw=1.2, label="-int arm dw (thesis energy)")
+    ax2.plot(data["w"], data["potential"], "C1--", lw=1.0, label="springs + gravity V + y")
+    ax2.set_xlabel("w")
+    ax2.set_ylabel("energy (m g a)")
+    ax2.set_title(f"energy, r = {r:g}, k = {k:g}")
+    energy_at = np.interp([e["w"] for e in eqs], data["w"], data["energy"])
+    for e, en in zip(eqs, energy_at):
+        style = dict(marker="o", ms=6, color="C0", ls="none")
+        style["mfc"] = "C0" if e["stable"] else "white"
+        ax1.plot([e["w"]], [0.0], **style)
+        ax2.plot([e["w"]], [en], **style)
+    for ax in (ax1, ax2):
+        ax.axvline(alpha, color="0.5", ls=":", lw=0.8)
+        ax.set_xlim(0.0, alpha * 1.02)
+    ax2.plot([], [], "o", color="C0", label="stable")
+    ax2.plot([], [], "o", color="C0", mfc="white", label="unstable")
+    ax2.legend(fontsize=8)
+    fig.tight_layout()
+    stem = os.path.splitext(out_png)[0]
+    fig.savefig(stem + ".png", dpi=110)
+    fig.savefig(stem + ".svg")
+
+
+if __name__ == "__main__":
+    if len(sys.argv) != 3:
+        sys.exit(__doc__)
+    main(sys.argv[1], sys.argv[2])

@@ -1,0 +1,149 @@
+// Validation of the energy bookkeeping (issue 2, item 4). Without friction and with at most one
+// corner submerged (or the block upright) the model is conservative: E stays at E0 to the
+// integration tolerance. With friction and two submerged corners E changes, and the balance
+// E - E0 - W_friction - W_nonpotential closes to a drift that shrinks with the tolerance.
+// Friction can only take energy out: its accumulated work never increases.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "blockdyn/model/initial_conditions.hpp"
+#include "blockdyn/simulation.hpp"
+
+using namespace blockdyn;
+
+namespace {
+
+// Tracks |E - E0| while at most one corner is submerged, and whether the non-potential work
+// stays exactly zero there.
+struct OneCornerEnergy : SimulationSink {
+  double e0 = 0, max_dev = 0;
+  long samples = 0;
+  bool two_seen = false, nonpot_moved = false;
+  void on_segment(const WinklerBlock& m, const DenseSegment<kStateDim>& seg, double, double t1,
+                  const BlockMode& mode) override {
+    BlockStateVec z;
+    seg.eval(t1, z);
+    m.complete(mode, z);
+    if (m.forces(t1, mode, z).corners_below > 1) two_seen = true;
+    if (two_seen) return;
+    ++samples;
+    max_dev = std::fmax(max_dev, std::fabs(energy(m.params(), z).total() - e0));
+    nonpot_moved |= z[kWorkNonPotential] != 0.0;
+  }
+};
+
+// Friction work at every step boundary: never positive, never increasing. Also counts how
+// often two corners are submerged.
+struct FrictionWork : SimulationSink {
+  double last = 0, max_increase = -1, max_value = -1;
+  long steps = 0, two = 0;
+  void on_segment(const WinklerBlock& m, const DenseSegment<kStateDim>& seg, double t0, double t1,
+                  const BlockMode& mode) override {
+    BlockStateVec a, b;
+    seg.eval(t0, a);
+    seg.eval(t1, b);
+    m.complete(mode, b);
+    max_increase = std::fmax(max_increase, b[kWorkFriction] - a[kWorkFriction]);
+    max_increase = std::fmax(max_increase, b[kWorkFriction] - last);
+    max_value = std::fmax(max_value, b[kWorkFriction]);
+    last = b[kWorkFriction];
+    ++steps;
+    two += m.forces(t1, mode, b).corners_below == 2;
+  }
+};
+
+SimulationOptions opts(double t_end, double rtol) {
+  SimulationOptions o;
+  o.t_end = t_end;
+  o.integrator.rtol = rtol;
+  o.integrator.atol = rtol * 1e-2;
+  return o;
+}
+
+}  // namespace
+
+TEST(Energy, ConservedWithoutFrictionOnOneCorner) {
+  // ic1 (r = 0.3, k = 1e5, mu = 0): the block rocks on its lowest corner down to w = 0; only
+  // the last instants before w = 0 have a second corner in the springs.
+  const BlockParams p{0.3, 0.0, 1e5};
+  double dev[2];
+  int i = 0;
+  for (double rtol : {1e-8, 1e-11}) {
+    OneCornerEnergy sink;
+    sink.e0 = energy(p, ic1(p)).total();
+    SimulationOptions o = opts(5.0, rtol);
+    o.stop_at_ihor = 1;
+    const SimulationResult r = simulate(p, {}, ic1(p), o, &sink);
+    ASSERT_EQ(r.status, SimStatus::EarlyStop);
+    EXPECT_GT(sink.samples, 100);
+    EXPECT_TRUE(sink.two_seen);
+    EXPECT_FALSE(sink.nonpot_moved);
+    EXPECT_EQ(r.work_friction(), 0.0);
+    EXPECT_LT(sink.max_dev, 10 * rtol * sink.e0) << rtol;
+    dev[i++] = sink.max_dev;
+  }
+  EXPECT_GT(dev[0] / dev[1], 100.0);  // the drift is integration error
+}
+
+TEST(Energy, ConservedWithoutFrictionUpright) {
+  // Upright block bouncing vertically (see test_vertical_oscillation for the closed form) for
+  // 80 flights: the energy error grows at most linearly with the number of submerged phases
+  // and falls with the tolerance.
+  const BlockParams p{0.5, 0.0, 1e5};
+  BlockStateVec z0{};
+  z0[kH] = -3.0 / p.k;
+  double dev[2];
+  int i = 0;
+  for (double rtol : {1e-10, 1e-12}) {
+    const SimulationResult r = simulate(p, {}, z0, opts(2.0, rtol));
+    const long flights = r.event_counts[int(EventKind::Takeoff)];
+    EXPECT_EQ(flights, 83);  // 2.0 / T with T = 4 pi / (3 sqrt k) + 2 sqrt(3 / k)
+    EXPECT_LT(r.max_abs_energy_change, 10 * rtol * flights * r.initial_energy.total());
+    EXPECT_EQ(r.max_abs_energy_change, r.max_abs_energy_error);  // no friction, no wall term
+    dev[i++] = r.max_abs_energy_change;
+  }
+  EXPECT_GT(dev[0] / dev[1], 30.0);
+}
+
+TEST(Energy, BalanceClosesWithFrictionAndTwoCorners) {
+  // ic1 (r = 0.5, mu = 0.2, k = 1e4): contact, slides, flights; two corners submerged for a
+  // good part of the time, so the non-potential torque does work.
+  const BlockParams p{0.5, 0.2, 1e4};
+  SimulationResult r[2];
+  FrictionWork fw[2];
+  const double rtols[2] = {1e-8, 1e-11};
+  for (int i = 0; i < 2; ++i) {
+    r[i] = simulate(p, {}, ic1(p), opts(10.0, rtols[i]), &fw[i]);
+    ASSERT_EQ(r[i].status, SimStatus::TEnd);
+    EXPECT_GT(r[i].event_counts[int(EventKind::SlideToContact)], 5);
+    EXPECT_GT(r[i].event_counts[int(EventKind::Takeoff)], 5);
+    EXPECT_GT(fw[i].two, fw[i].steps / 5);  // two corners in at least 20% of the steps
+    // Friction dissipates a large part of the energy...
+    EXPECT_LT(r[i].work_friction(), -0.5 * r[i].initial_energy.total());
+    EXPECT_GT(r[i].max_abs_energy_change, 0.5 * r[i].initial_energy.total());
+    // ...and never puts any back, at any step.
+    EXPECT_LE(fw[i].max_increase, 0.0);
+    EXPECT_LE(fw[i].max_value, 0.0);
+  }
+  // The closed balance is integration error: it shrinks with the tolerance.
+  EXPECT_LT(r[1].max_abs_energy_error, 1e-9);
+  EXPECT_LT(r[1].max_abs_energy_error, r[0].max_abs_energy_error / 100);
+  // The non-potential work is a real term of the balance, far above its closure error.
+  EXPECT_GT(std::fabs(r[1].work_nonpotential()), 50 * r[1].max_abs_energy_error);
+  // The same physics at both tolerances: the works agree to the looser one's accuracy.
+  EXPECT_NEAR(r[0].work_friction(), r[1].work_friction(), 1e-6);
+}
+
+TEST(Energy, FrictionWorkNeverPositiveWithImpulseStart) {
+  // ic2 on a soft foundation (k = 1e3): many slides and stops, both corners in the springs.
+  const BlockParams p{0.5, 0.2, 1e3};
+  FrictionWork fw;
+  const SimulationResult r = simulate(p, {}, ic2(p), opts(10.0, 1e-10), &fw);
+  ASSERT_EQ(r.status, SimStatus::TEnd);
+  EXPECT_GT(r.event_counts[int(EventKind::SlideToContact)] + r.event_counts[int(EventKind::SlideReversal)], 10);
+  EXPECT_LE(fw.max_increase, 0.0);
+  EXPECT_LE(fw.max_value, 0.0);
+  EXPECT_LT(r.work_friction(), 0.0);
+  EXPECT_LT(r.max_abs_energy_error, 1e-8 * r.initial_energy.total() + 1e-9);
+}

@@ -1,0 +1,232 @@
+// Event precision (issue 2, item 6): event times are stable under tightening of the tolerance,
+// the event functions vanish at the recorded event states, and events that follow each other
+// closely (two different events, or a brief flight between samples) are all found, in order,
+// at their closed-form times.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <functional>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "blockdyn/model/initial_conditions.hpp"
+#include "blockdyn/simulation.hpp"
+
+using namespace blockdyn;
+
+namespace {
+
+SimulationOptions opts(double t_end, double rtol) {
+  SimulationOptions o;
+  o.t_end = t_end;
+  o.integrator.rtol = rtol;
+  o.integrator.atol = rtol * 1e-2;
+  return o;
+}
+
+// Root of f on [a, b] by bisection (f(a), f(b) of opposite signs); independent of the code.
+double bisect(const std::function<double(double)>& f, double a, double b) {
+  const bool neg_a = f(a) < 0;
+  for (int i = 0; i < 200; ++i) {
+    const double m = 0.5 * (a + b);
+    if (m <= a || m >= b) break;
+    ((f(m) < 0) == neg_a ? a : b) = m;
+  }
+  return 0.5 * (a + b);
+}
+
+}  // namespace
+
+TEST(Events, TimesStableUnderTighterTolerance) {
+  // ic1 (r = 0.5, mu = 0.2, k = 1e4) over t in [0, 3]: contact, slides, w = 0 passages, flights.
+  const BlockParams p{0.5, 0.2, 1e4};
+  const SimulationResult ref = simulate(p, {}, ic1(p), opts(3.0, 1e-13));
+  ASSERT_GE(ref.events.size(), 15u);
+  std::map<EventKind, int> kinds;
+  for (const EventRecord& e : ref.events) ++kinds[e.kind];
+  EXPECT_GE(kinds.size(), 6u);  // a varied sequence
+  for (double rtol : {1e-8, 1e-10}) {
+    const SimulationResult r = simulate(p, {}, ic1(p), opts(3.0, rtol));
+    ASSERT_EQ(r.events.size(), ref.events.size()) << rtol;
+    double worst = 0;
+    for (std::size_t i = 0; i < r.events.size(); ++i) {
+      ASSERT_EQ(r.events[i].kind, ref.events[i].kind) << i;
+      worst = std::fmax(worst, std::fabs(r.events[i].t - ref.events[i].t) / std::fmax(1.0, ref.events[i].t));
+    }
+    // Global error accumulated over ~20 events and several flights: within 100 x rtol.
+    EXPECT_LT(worst, 100 * rtol) << rtol;
+  }
+}
+
+namespace {
+
+// For every event, the event function that fired, evaluated on the trajectory that led to it.
+struct EventResiduals : SimulationSink {
+  DenseSegment<kStateDim> last{};
+  BlockMode last_mode{};
+  double last_t1 = -1;
+  std::map<EventKind, double> worst;
+  std::map<EventKind, int> count;
+  int skipped = 0;
+  void on_segment(const WinklerBlock&, const DenseSegment<kStateDim>& seg, double, double t1,
+                  const BlockMode& mode) override {
+    last = seg;
+    last_mode = mode;
+    last_t1 = t1;
+  }
+  void on_event(const WinklerBlock& m, const EventRecord& e) override {
+    if (last_t1 != e.t || last_mode.regime != e.from.regime || last_mode.side != e.from.side) {
+      ++skipped;  // a second event at the same instant: no trajectory piece in its mode
+      return;
+    }
+    BlockStateVec z;  // state before the transition
+    last.eval(e.t, z);
+    m.complete(e.from, z);
+    const BlockParams& p = m.params();
+    double g;
+    switch (e.kind) {
+      case EventKind::Takeoff:
+      case EventKind::Landing: g = corner_heights(p.r, z[kH], z[kW]).lowest * p.k; break;  // depth scale 1/k
+      case EventKind::WZero: g = z[kW]; break;
+      case EventKind::SlideReversal:
+      case EventKind::SlideToContact: g = z[kVX] + corner_arms(p.r, z[kW], e.from.side).B * z[kVW]; break;
+      case EventKind::ContactToSlide: g = m.forces(e.t, e.from, z).margin; break;
+      default: return;
+    }
+    worst[e.kind] = std::fmax(worst[e.kind], std::fabs(g));
+    ++count[e.kind];
+  }
+};
+
+}  // namespace
+
+TEST(Events, EventFunctionsVanishAtEventStates) {
+  for (const BlockParams& p : {BlockParams{0.3, 0.2, 1e5}, BlockParams{0.5, 0.2, 1e4}}) {
+    EventResiduals s;
+    const SimulationResult r = simulate(p, {}, ic1(p), opts(10.0, 1e-10), &s);
+    ASSERT_EQ(r.status, SimStatus::TEnd);
+    EXPECT_LE(s.skipped, 2);
+    for (EventKind k : {EventKind::Takeoff, EventKind::Landing, EventKind::WZero,
+                        EventKind::SlideToContact, EventKind::ContactToSlide})
+      EXPECT_GT(s.count[k], 3) << to_string(k) << " r = " << p.r;
+    // Lowest-corner height in units of the static sink 1/k; v_P and the friction margin in
+    // units of the block's own velocity and weight; w in radians.
+    EXPECT_LT(s.worst[EventKind::Takeoff], 1e-8);
+    EXPECT_LT(s.worst[EventKind::Landing], 1e-8);
+    EXPECT_LT(s.worst[EventKind::WZero], 1e-13);
+    EXPECT_LT(s.worst[EventKind::SlideToContact], 1e-9);
+    EXPECT_LT(s.worst[EventKind::SlideReversal], 1e-9);
+    EXPECT_LT(s.worst[EventKind::ContactToSlide], 1e-9);
+  }
+}
+
+namespace {
+
+// A block in free flight: h = h0 - t^2/2, w = w0 + om t, x' = 0. Lowest-corner height
+// h + 1/2 - B(|w|) with B(a) = (cos a + r sin a)/2.
+struct Flight {
+  double r, h0, w0, om;
+  double w(double t) const { return w0 + om * t; }
+  double lowest(double t) const {
+    const double a = std::fabs(w(t));
+    return h0 - 0.5 * t * t + 0.5 - 0.5 * (std::cos(a) + r * std::sin(a));
+  }
+  double w_zero() const { return -w0 / om; }
+  // First landing after t_from (lowest() > 0 there).
+  double landing(double t_from) const {
+    double b = t_from;
+    while (lowest(b) > 0) b += 1e-3;
+    return bisect([&](double t) { return lowest(t); }, t_from, b);
+  }
+};
+
+BlockStateVec flight_state(const Flight& f) {
+  BlockStateVec z{};
+  z[kH] = f.h0;
+  z[kW] = f.w0;
+  z[kVW] = f.om;
+  return z;
+}
+
+}  // namespace
+
+TEST(Events, WZeroJustBeforeLandingBothFound) {
+  // Tilted block falling while it rotates back through upright: w = 0 is reached 1e-7 before
+  // the corner would land upright; the new lowest corner (w < 0) lands some 1e-7 later.
+  const BlockParams p{0.5, 0.2, 1e5};
+  Flight f{p.r, 1e-3, 0.0, -0.05};
+  const double t_upright = std::sqrt(2 * f.h0);
+  f.w0 = -f.om * (t_upright - 1e-7);
+  ASSERT_GT(f.lowest(0), 0);
+  const double tc = f.w_zero(), tl = f.landing(tc);
+  ASSERT_GT(tl - tc, 1e-8);
+  ASSERT_LT(tl - tc, 1e-6);
+  for (double rtol : {1e-6, 1e-10}) {
+    const SimulationResult r = simulate(p, {}, flight_state(f), opts(0.1, rtol));
+    ASSERT_GE(r.events.size(), 2u);
+    EXPECT_EQ(r.events[0].kind, EventKind::WZero);
+    EXPECT_EQ(r.events[1].kind, EventKind::Landing);
+    EXPECT_EQ(r.events[1].from.side, -1);
+    // Flight is integrated exactly (polynomial); the times are as good as the root finder.
+    EXPECT_NEAR(r.events[0].t, tc, 1e-14);
+    EXPECT_NEAR(r.events[1].t, tl, 1e-13);
+    EXPECT_EQ(r.ihor, 1);
+  }
+}
+
+TEST(Events, LandingJustBeforeWZeroBothFound) {
+  // The same fall, with the tilt reaching zero 2e-7 after the corner lands: the landing comes
+  // first; the springs barely act in 2e-7 (depth ~1e-9), so w = 0 stays at -w0/om.
+  const BlockParams p{0.5, 0.2, 1e5};
+  Flight f{p.r, 1e-3, 0.0, -0.05};
+  // Choose w0 so that the tilt vanishes 2e-7 after the landing (bisection on w0).
+  auto gap = [&](double w0) {
+    Flight g = f;
+    g.w0 = w0;
+    return g.w_zero() - g.landing(0.0) - 2e-7;
+  };
+  f.w0 = bisect(gap, 1e-4, 3.5e-3);
+  const double tl = f.landing(0.0), tc = f.w_zero();
+  ASSERT_NEAR(tc - tl, 2e-7, 1e-12);
+  for (double rtol : {1e-6, 1e-10}) {
+    const SimulationResult r = simulate(p, {}, flight_state(f), opts(0.1, rtol));
+    ASSERT_GE(r.events.size(), 2u);
+    EXPECT_EQ(r.events[0].kind, EventKind::Landing);
+    EXPECT_EQ(r.events[0].from.side, +1);
+    EXPECT_EQ(r.events[1].kind, EventKind::WZero);
+    EXPECT_NEAR(r.events[0].t, tl, 1e-13);
+    EXPECT_NEAR(r.events[1].t, tc, 1e-12);
+  }
+}
+
+TEST(Events, BriefFlightsBetweenSamplesAreNotSkipped) {
+  // Upright block released from rest with compression (1 + beta)/k: it flies only if beta > 1,
+  // for 2 v = 2 sqrt((beta^2 - 1)/k), rising (beta^2 - 1)/(2k) above the surface. For beta close
+  // to 1 the flights are far shorter than the integration steps (~1e-4).
+  const BlockParams p{0.5, 0.0, 1e5};
+  const double om = std::sqrt(p.k);
+  for (double eps : {1e-2, 1e-4, 1e-6}) {
+    const double beta = 1 + eps;
+    const double phi = std::acos(-1 / beta);  // take-off phase
+    const double v = std::sqrt(beta * beta - 1) / om;
+    const double T = 2 * phi / om + 2 * v;
+    BlockStateVec z0{};
+    z0[kH] = -(1 + beta) / p.k;
+    const SimulationResult r = simulate(p, {}, z0, opts(0.2, 1e-10));
+    std::vector<double> expect;
+    for (int n = 0; phi / om + n * T < 0.2; ++n) {
+      expect.push_back(phi / om + n * T);
+      if (phi / om + n * T + 2 * v < 0.2) expect.push_back(phi / om + n * T + 2 * v);
+    }
+    ASSERT_EQ(r.events.size(), expect.size()) << "eps = " << eps;
+    for (std::size_t i = 0; i < expect.size(); ++i) {
+      EXPECT_EQ(r.events[i].kind, i % 2 == 0 ? EventKind::Takeoff : EventKind::Landing);
+      // Near the threshold the crossings are ill-conditioned: an amplitude error dh shifts them
+      // by dh / v. Allow dh = 2 rtol (2/k) per period elapsed (the amplitude is 2/k).
+      const double dh = 2 * 1e-10 * (2 / p.k) * double(i / 2 + 1);
+      EXPECT_NEAR(r.events[i].t, expect[i], dh / v + 1e-9 * expect[i]) << eps << " " << i;
+    }
+    if (eps <= 1e-6) EXPECT_LT(2 * v, 0.2 / r.stats.accepted);  // shorter than a mean step
+  }
+}

@@ -1,0 +1,130 @@
+// Convergence of the Winkler model to the rigid block on rigid ground (thesis sec. 3.3, "second
+// test", Table 3.2; issue 2, item 5): ic1 with w0 = 0.8, r = 2, mu = 0.3. The block starts in
+// contact, its lowest corner starts sliding left, stops and slides right. The time s_r of that
+// slide reversal in the Winkler model approaches the R-R model's as k grows, monotonically.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+#include "blockdyn/model/initial_conditions.hpp"
+#include "blockdyn/model/rigid_ground_block.hpp"
+#include "blockdyn/simulation.hpp"
+
+using namespace blockdyn;
+
+namespace {
+
+constexpr double kW0 = 0.8;
+constexpr double kR = 2.0;
+constexpr double kMu = 0.3;
+
+struct RigidTimes {
+  double contact_to_slide = NAN, reversal = NAN;
+  int slide_sign = 0, reversed_sign = 0;
+  bool started_in_contact = false;
+};
+
+RigidTimes rigid_reference() {
+  const BlockParams p{kR, kMu, 1.0};  // k plays no role in the rigid model
+  const RigidGroundBlock model(p);
+  RigidGroundBlock::State z{corner_arms(kR, kW0, 1).A, kW0, 0.0, 0.0};  // pivot at x = 0, at rest
+  RigidMode mode = model.initial_mode(z);
+  RigidTimes out;
+  out.started_in_contact = mode.contact;
+  struct Obs {
+    RigidTimes* out;
+    bool on_step(const DenseSegment<4>&, double, double, const RigidMode&) { return true; }
+    bool on_event(const EventInfo<RigidMode, 4>& e) {
+      if (e.kind == RigidGroundBlock::kContactToSlide && std::isnan(out->contact_to_slide)) {
+        out->contact_to_slide = e.t;
+        out->slide_sign = e.to.friction_sign;
+      }
+      if (e.kind == RigidGroundBlock::kSlideReversal && std::isnan(out->reversal)) {
+        out->reversal = e.t;
+        out->reversed_sign = e.to.friction_sign;
+      }
+      return true;
+    }
+  } obs{&out};
+  IntegratorOptions o;
+  o.rtol = 1e-12;
+  o.atol = 1e-14;
+  HybridIntegrator<RigidGroundBlock> integ(model, o);
+  double t = 0;
+  const RunStatus s = integ.run(t, 10.0, mode, z, obs);
+  EXPECT_EQ(s, RunStatus::ModelStop);  // the R-R model stops at w = 0 (no impact treatment)
+  return out;
+}
+
+// Stops the Winkler run at the first slide reversal.
+struct UntilReversal : SimulationSink {
+  bool done = false;
+  void on_event(const WinklerBlock&, const EventRecord& e) override {
+    done |= e.kind == EventKind::SlideReversal;
+  }
+  bool keep_going() const override { return !done; }
+};
+
+struct WinklerTimes {
+  double contact_to_slide = NAN, reversal = NAN;
+  int slide_sign = 0, reversed_sign = 0;
+  Regime start{};
+};
+
+WinklerTimes winkler(double k) {
+  const BlockParams p{kR, kMu, k};
+  SimulationOptions o;
+  o.t_end = 3.0;
+  UntilReversal sink;
+  const SimulationResult r = simulate(p, {}, ic1(p, kW0), o, &sink);
+  WinklerTimes out;
+  out.start = r.initial_mode.regime;
+  for (const EventRecord& e : r.events) {
+    if (e.kind == EventKind::ContactToSlide && std::isnan(out.contact_to_slide)) {
+      out.contact_to_slide = e.t;
+      out.slide_sign = e.to.friction_sign;
+    }
+    if (e.kind == EventKind::SlideReversal && std::isnan(out.reversal)) {
+      out.reversal = e.t;
+      out.reversed_sign = e.to.friction_sign;
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+TEST(RigidConvergence, RigidModelSequence) {
+  const RigidTimes rr = rigid_reference();
+  EXPECT_TRUE(rr.started_in_contact);
+  ASSERT_FALSE(std::isnan(rr.contact_to_slide));
+  ASSERT_FALSE(std::isnan(rr.reversal));
+  EXPECT_LT(rr.contact_to_slide, rr.reversal);
+  EXPECT_EQ(rr.slide_sign, +1);     // corner slides left: friction points right
+  EXPECT_EQ(rr.reversed_sign, -1);  // then slides right
+}
+
+TEST(RigidConvergence, SlideReversalTimeConvergesMonotonically) {
+  const RigidTimes rr = rigid_reference();
+  std::vector<double> d_rev, d_slide;
+  for (double k : {1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9}) {
+    const WinklerTimes w = winkler(k);
+    EXPECT_EQ(w.start, Regime::Contact) << k;
+    ASSERT_FALSE(std::isnan(w.reversal)) << k;
+    EXPECT_LT(w.contact_to_slide, w.reversal);
+    EXPECT_EQ(w.slide_sign, +1) << k;
+    EXPECT_EQ(w.reversed_sign, -1) << k;
+    d_rev.push_back(std::fabs(w.reversal - rr.reversal));
+    d_slide.push_back(std::fabs(w.contact_to_slide - rr.contact_to_slide));
+  }
+  for (std::size_t i = 1; i < d_rev.size(); ++i) {
+    EXPECT_LT(d_rev[i], d_rev[i - 1]) << "k = 1e" << i + 3;
+    EXPECT_LT(d_slide[i], d_slide[i - 1]) << "k = 1e" << i + 3;
+    // The onset of sliding converges like the springs' time scale 1/sqrt(k).
+    EXPECT_GT(d_slide[i - 1] / d_slide[i], 2.8) << "k = 1e" << i + 3;
+    EXPECT_LT(d_slide[i - 1] / d_slide[i], 3.6) << "k = 1e" << i + 3;
+  }
+  EXPECT_LT(d_rev.back(), 1e-5 * rr.reversal * 2);
+  EXPECT_LT(d_slide.back(), 3e-5 * rr.contact_to_slide);
+}
