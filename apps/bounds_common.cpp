@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <sstream>
 
 #include "blockdyn/io/atomic_file.hpp"
@@ -70,8 +71,10 @@ std::vector<double> parse_list(const std::string& field, const std::string& text
 
 std::string num(double v) {
   if (std::isnan(v)) return "nan";
+  // Shortest of %.15g / %.17g that reads back exactly (0.2 stays 0.2).
   char b[32];
-  std::snprintf(b, sizeof b, "%.17g", v);
+  std::snprintf(b, sizeof b, "%.15g", v);
+  if (std::strtod(b, nullptr) != v) std::snprintf(b, sizeof b, "%.17g", v);
   return b;
 }
 

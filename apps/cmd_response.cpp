@@ -129,6 +129,12 @@ void add(CLI::App& app) {
   s->add_option("--quadrature-dt", f->opt.quadrature_dt, "largest sample spacing of the swing averages (> 0)")
       ->capture_default_str();
   s->add_option("--phase-dt", f->opt.phase_dt, "phase-portrait sampling interval (>= 0)")->capture_default_str();
+  s->add_option("--steady-flight-fraction", f->opt.criteria.steady_flight_fraction,
+                "steady rocking if the late flight fraction is below this, in (0, 1)")
+      ->capture_default_str();
+  s->add_option("--settle-rotation-share", f->opt.criteria.settle_rotation_share,
+                "settle down needs a late rotational share of kinetic energy below this, in (0, 1)")
+      ->capture_default_str();
   s->add_option("--settle-dissipation", f->opt.criteria.settle_dissipation,
                 "settle down if friction dissipated at least this fraction of the available energy, in (0, 1)")
       ->capture_default_str();

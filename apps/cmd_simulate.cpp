@@ -128,8 +128,7 @@ void run(const CLI::App& s, const SimulateFlags& f) {
 void add(CLI::App& app) {
   auto f = std::make_shared<SimulateFlags>();
   CLI::App* s = app.add_subcommand("simulate", "integrate one block from initial conditions (flags or a TOML scenario)");
-  s->add_option("scenario", f->scenario_file, "TOML scenario file (flags given as well override it)")
-      ->check(CLI::ExistingFile);
+  s->add_option("scenario", f->scenario_file, "TOML scenario file (flags given as well override it)");
   add_block_options(*s, f->p);
   add_tolerance_options(*s, f->integ);
   s->add_option("--ic", f->ic, "initial conditions: ic1 (tilted, at rest), ic2 (upright, impulse), custom")

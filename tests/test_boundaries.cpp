@@ -2,7 +2,12 @@
 // boundaries of the thesis checked against their definitions (not against stored numbers).
 #include <gtest/gtest.h>
 
+#include <sys/wait.h>
+
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
 
 #include "blockdyn/analysis/boundary_search.hpp"
 #include "blockdyn/analysis/flight.hpp"
@@ -224,6 +229,7 @@ TEST(FlightTime, StopsAtFirstFlightWithItsIhor) {
   EXPECT_FALSE(none.flew);
   EXPECT_EQ(none.status, SimStatus::TEnd);
   EXPECT_DOUBLE_EQ(none.time, o.t_end);
+  EXPECT_DOUBLE_EQ(none.t_final, o.t_end);
 }
 
 // ---------------------------------------------------------------- stability
@@ -324,4 +330,66 @@ TEST(StabilityBlowup, R2BelowR3AndOverturnsRegardlessOfK) {
   const IcChoice ic{IcChoice::Set::Ic2};
   for (double k : {30.0, 1e3, 1e5, 1e6})
     EXPECT_TRUE(overturns_while_ihor_below({0.9 * r2.result.lo, mu, k}, ic, 2, o)) << k;
+}
+
+// ---------------------------------------------------------------- command line
+
+namespace {
+
+// Exit status of `blockdyn <args>` and its stderr.
+int cli_status(const std::string& args, std::string* err = nullptr) {
+  const std::string errfile = testing::TempDir() + "bounds_cli_err.txt";
+  const int rc = std::system((std::string(BLOCKDYN_CLI) + " " + args + " >/dev/null 2>" + errfile).c_str());
+  if (err) {
+    std::FILE* f = std::fopen(errfile.c_str(), "r");
+    char buf[512] = {0};
+    if (f) {
+      const std::size_t n = std::fread(buf, 1, sizeof buf - 1, f);
+      buf[n] = 0;
+      std::fclose(f);
+    }
+    *err = buf;
+  }
+  return WIFEXITED(rc) ? WEXITSTATUS(rc) : -1;
+}
+
+}  // namespace
+
+TEST(BoundaryCli, BadInputExitsWithStatus2NamingTheField) {
+  std::string err;
+  EXPECT_EQ(cli_status("flight-time --r -1", &err), 2);
+  EXPECT_NE(err.find("r = -1"), std::string::npos) << err;
+  EXPECT_EQ(cli_status("flight-boundary --ic ic3", &err), 2);
+  EXPECT_NE(err.find("ic = 'ic3'"), std::string::npos) << err;
+  EXPECT_EQ(cli_status("flight-boundary --ic ic2 --high-criterion w_negative", &err), 2);
+  EXPECT_NE(err.find("high-criterion"), std::string::npos) << err;
+  EXPECT_EQ(cli_status("stability-curve --ic ic1 --which k2", &err), 2);
+  EXPECT_NE(err.find("which"), std::string::npos) << err;
+  EXPECT_EQ(cli_status("blowup --mu-list 0,x", &err), 2);
+  EXPECT_NE(err.find("mu-list"), std::string::npos) << err;
+  EXPECT_EQ(cli_status("overturn --k-min 100 --k-max 10", &err), 2);
+  EXPECT_NE(err.find("k-max"), std::string::npos) << err;
+  EXPECT_EQ(cli_status("kmin --ic ic1:1.5", &err), 2);
+  EXPECT_NE(err.find("ic1:1.5"), std::string::npos) << err;
+}
+
+TEST(BoundaryCli, StabilityCurveJsonIsIndependentOfThreads) {
+  const std::string dir = testing::TempDir();
+  const std::string base = "stability-curve --ic ic2 --mu 0.2 --r-min 0.15 --r-max 0.3 --points 3 --per-decade 3 "
+                           "--rel-tol 0.05 --k-hi 1e5";
+  ASSERT_EQ(cli_status(base + " --threads 1 --csv " + dir + "bounds_t1.csv"), 0);
+  ASSERT_EQ(cli_status(base + " --threads 2 --csv " + dir + "bounds_t2.csv"), 0);
+  auto slurp = [](const std::string& p) {
+    std::FILE* f = std::fopen(p.c_str(), "r");
+    std::string s;
+    if (!f) return s;
+    char buf[4096];
+    for (std::size_t n; (n = std::fread(buf, 1, sizeof buf, f)) > 0;) s.append(buf, n);
+    std::fclose(f);
+    return s;
+  };
+  const std::string a = slurp(dir + "bounds_t1.csv"), b = slurp(dir + "bounds_t2.csv");
+  EXPECT_FALSE(a.empty());
+  EXPECT_EQ(a, b);
+  EXPECT_FALSE(slurp(dir + "bounds_t1.csv.json").empty());
 }

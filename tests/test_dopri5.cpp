@@ -304,6 +304,8 @@ TEST(HybridIntegrator, BriefExcursionBetweenSamplesIsNotSkipped) {
     EXPECT_NEAR(rec.times[1], M_PI / 2 + half, tol) << depth;
     // For the shallowest dip the excursion is shorter than the spacing of the event samples
     // (else the test would prove nothing).
-    if (depth <= 1e-8) EXPECT_LT(2 * half, 3.0 / integ.stats().accepted / o.event_samples);
+    if (depth <= 1e-8) {
+      EXPECT_LT(2 * half, 3.0 / integ.stats().accepted / o.event_samples);
+    }
   }
 }

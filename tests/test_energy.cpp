@@ -6,6 +6,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
+#include <string>
 
 #include "blockdyn/model/initial_conditions.hpp"
 #include "blockdyn/simulation.hpp"
@@ -13,6 +15,13 @@
 using namespace blockdyn;
 
 namespace {
+
+// Measured numbers go to the test report (--gtest_output=json) for docs/validation.md.
+inline void record(const char* key, double v) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.10g", v);
+  ::testing::Test::RecordProperty(key, buf);
+}
 
 // Tracks |E - E0| while at most one corner is submerged, and whether the non-potential work
 // stays exactly zero there.
@@ -81,6 +90,8 @@ TEST(Energy, ConservedWithoutFrictionOnOneCorner) {
     EXPECT_FALSE(sink.nonpot_moved);
     EXPECT_EQ(r.work_friction(), 0.0);
     EXPECT_LT(sink.max_dev, 10 * rtol * sink.e0) << rtol;
+    record(("one_corner_max_dE_rtol" + std::to_string(int(std::lround(-std::log10(rtol))))).c_str(), sink.max_dev);
+    record("one_corner_E0", sink.e0);
     dev[i++] = sink.max_dev;
   }
   EXPECT_GT(dev[0] / dev[1], 100.0);  // the drift is integration error
@@ -101,6 +112,8 @@ TEST(Energy, ConservedWithoutFrictionUpright) {
     EXPECT_EQ(flights, 83);  // 2.0 / T with T = 4 pi / (3 sqrt k) + 2 sqrt(3 / k)
     EXPECT_LT(r.max_abs_energy_change, 10 * rtol * flights * r.initial_energy.total());
     EXPECT_EQ(r.max_abs_energy_change, r.max_abs_energy_error);  // no friction, no wall term
+    record(("upright_max_dE_rtol" + std::to_string(int(std::lround(-std::log10(rtol))))).c_str(),
+           r.max_abs_energy_change);
     dev[i++] = r.max_abs_energy_change;
   }
   EXPECT_GT(dev[0] / dev[1], 30.0);
@@ -126,6 +139,14 @@ TEST(Energy, BalanceClosesWithFrictionAndTwoCorners) {
     EXPECT_LE(fw[i].max_increase, 0.0);
     EXPECT_LE(fw[i].max_value, 0.0);
   }
+  for (int i = 0; i < 2; ++i) {
+    const std::string t = "rtol" + std::to_string(int(std::lround(-std::log10(rtols[i])))) + "_";
+    record((t + "balance_error").c_str(), r[i].max_abs_energy_error);
+    record((t + "max_dE").c_str(), r[i].max_abs_energy_change);
+    record((t + "W_friction").c_str(), r[i].work_friction());
+    record((t + "W_nonpotential").c_str(), r[i].work_nonpotential());
+  }
+  record("E0", r[0].initial_energy.total());
   // The closed balance is integration error: it shrinks with the tolerance.
   EXPECT_LT(r[1].max_abs_energy_error, 1e-9);
   EXPECT_LT(r[1].max_abs_energy_error, r[0].max_abs_energy_error / 100);

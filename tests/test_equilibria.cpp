@@ -97,7 +97,10 @@ TEST(EquilRestingHeight, CarriesTheWeightAtEveryTilt) {
         const double h = resting_height(P(r, k), w);
         const RegionIntegrals g = region_integrals(r, h, w);
         EXPECT_NEAR(k / r * g.area, 1.0, 1e-11) << "r=" << r << " k=" << k << " w=" << w;
-        EXPECT_LE(g.corners_below, 2);
+        // At most two corners below; at k = 2, r = 1, w = alpha the third corner sits exactly
+        // on the surface, so its height is compared with a rounding allowance.
+        const CornerHeights c = corner_heights(r, h, w);
+        EXPECT_GE(std::max(c.other_bottom, c.upper_pivot_side), -1e-14) << "r=" << r << " k=" << k;
       }
 }
 

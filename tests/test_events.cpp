@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <functional>
 #include <map>
 #include <string>
@@ -16,6 +17,13 @@
 using namespace blockdyn;
 
 namespace {
+
+// Measured numbers go to the test report (--gtest_output=json) for docs/validation.md.
+inline void record(const char* key, double v) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.10g", v);
+  ::testing::Test::RecordProperty(key, buf);
+}
 
 SimulationOptions opts(double t_end, double rtol) {
   SimulationOptions o;
@@ -54,6 +62,7 @@ TEST(Events, TimesStableUnderTighterTolerance) {
       ASSERT_EQ(r.events[i].kind, ref.events[i].kind) << i;
       worst = std::fmax(worst, std::fabs(r.events[i].t - ref.events[i].t) / std::fmax(1.0, ref.events[i].t));
     }
+    record(rtol < 1e-9 ? "worst_dt_rtol10" : "worst_dt_rtol8", worst);
     // Global error accumulated over ~20 events and several flights: within 100 x rtol.
     EXPECT_LT(worst, 100 * rtol) << rtol;
   }
@@ -107,6 +116,8 @@ TEST(Events, EventFunctionsVanishAtEventStates) {
     const SimulationResult r = simulate(p, {}, ic1(p), opts(10.0, 1e-10), &s);
     ASSERT_EQ(r.status, SimStatus::TEnd);
     EXPECT_LE(s.skipped, 2);
+    const std::string tag = p.r == 0.3 ? "r03_" : "r05_";
+    for (const auto& [k, v] : s.worst) record((tag + to_string(k)).c_str(), v);
     for (EventKind k : {EventKind::Takeoff, EventKind::Landing, EventKind::WZero,
                         EventKind::SlideToContact, EventKind::ContactToSlide})
       EXPECT_GT(s.count[k], 3) << to_string(k) << " r = " << p.r;
@@ -227,6 +238,8 @@ TEST(Events, BriefFlightsBetweenSamplesAreNotSkipped) {
       const double dh = 2 * 1e-10 * (2 / p.k) * double(i / 2 + 1);
       EXPECT_NEAR(r.events[i].t, expect[i], dh / v + 1e-9 * expect[i]) << eps << " " << i;
     }
-    if (eps <= 1e-6) EXPECT_LT(2 * v, 0.2 / r.stats.accepted);  // shorter than a mean step
+    if (eps <= 1e-6) {
+      EXPECT_LT(2 * v, 0.2 / r.stats.accepted);  // shorter than a mean step
+    }
   }
 }

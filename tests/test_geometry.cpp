@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <cmath>
 #include <random>
 #include <vector>
@@ -16,6 +17,13 @@
 using namespace blockdyn;
 
 namespace {
+
+// Measured numbers go to the test report (--gtest_output=json) for docs/validation.md.
+inline void record(const char* key, double v) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.10g", v);
+  ::testing::Test::RecordProperty(key, buf);
+}
 
 // ---- Independent reference -------------------------------------------------------------
 // The rectangle's corners from a plain rotation; the envelope y_low(X) as the lowest crossing
@@ -155,6 +163,9 @@ TEST(Geometry, ClosedFormsMatchIndependentEnvelopeOnRandomPoses) {
     worst_moment = std::max(worst_moment, std::fabs(c.moment - ref.moment) / (ref.area * width));
     worst_s2 = std::max(worst_s2, std::fabs(c.s2 - ref.s2) / ref.s2);
   }
+  record("worst_rel_area", worst_area);
+  record("worst_rel_moment", worst_moment);
+  record("worst_rel_s2", worst_s2);
   EXPECT_EQ(n1, 2000);
   EXPECT_EQ(n2, 2000);
   EXPECT_LT(worst_area, 1e-10);
@@ -307,7 +318,9 @@ TEST(Geometry, NonPotentialTorqueIsTorquePlusEnergyGradient) {
       EXPECT_NEAR(f.torque_nonpot, f.torque + dVdw, 1e-7 * scale) << q.r << " " << q.w << " " << q.d;
       if (std::fabs(f.torque_nonpot) > 1e-3 * scale) ++two_nonzero;
     }
-    if (q.submerged == 2) EXPECT_NE(f.torque_nonpot, 0.0);
+    if (q.submerged == 2) {
+      EXPECT_NE(f.torque_nonpot, 0.0);
+    }
   }
   EXPECT_GT(two_nonzero, 100);  // the mismatch is a real effect, not rounding
 }

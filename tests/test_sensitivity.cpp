@@ -4,6 +4,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
+#include <string>
 
 #include "blockdyn/model/initial_conditions.hpp"
 #include "blockdyn/simulation.hpp"
@@ -11,6 +13,13 @@
 using namespace blockdyn;
 
 namespace {
+
+// Measured numbers go to the test report (--gtest_output=json) for docs/validation.md.
+inline void record(const char* key, double v) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.10g", v);
+  ::testing::Test::RecordProperty(key, buf);
+}
 
 // Records the state at a given time from the dense output.
 struct SampleAt : SimulationSink {
@@ -48,6 +57,17 @@ TEST(Sensitivity, Table51TwoNearbyStartsSeparate) {
   ASSERT_EQ(a.status, SimStatus::TEnd);
   ASSERT_EQ(b.status, SimStatus::TEnd);
 
+  for (int i = 0; i < 2; ++i) {
+    const SimulationResult& s = i == 0 ? a : b;
+    const std::string run = i == 0 ? "ic1_" : "ic1_vy1e-10_";
+    record((run + "first_flight").c_str(), s.first_flight_time.value_or(NAN));
+    record((run + "w20").c_str(), s.final_state[kW]);
+    record((run + "y20").c_str(), s.final_state[kH] + 0.5);
+    record((run + "ihor20").c_str(), double(s.ihor));
+    record((run + "max_energy_error").c_str(), s.max_abs_energy_error);
+    record((run + "max_energy_change").c_str(), s.max_abs_energy_change);
+    record((run + "E0").c_str(), s.initial_energy.total());
+  }
   // Same first flight (the perturbation shifts it by ~1e-10).
   ASSERT_TRUE(a.first_flight_time && b.first_flight_time);
   EXPECT_NEAR(*a.first_flight_time, *b.first_flight_time, 1e-9);

@@ -12,6 +12,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
+#include <string>
 #include <vector>
 
 #include "blockdyn/simulation.hpp"
@@ -19,6 +21,13 @@
 using namespace blockdyn;
 
 namespace {
+
+// Measured numbers go to the test report (--gtest_output=json) for docs/validation.md.
+inline void record(const char* key, double v) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.10g", v);
+  ::testing::Test::RecordProperty(key, buf);
+}
 
 struct Closed {
   double k, om, v, t_off, T;
@@ -117,6 +126,9 @@ void run_case(double mu) {
   EXPECT_EQ(n_off, expect_off);
   EXPECT_EQ(n_land, expect_land);
   EXPECT_EQ(expect_off, 8);
+  record("worst_rel_event_time", worst);
+  record("max_h_error_times_k", sink.max_h_err * p.k);
+  record("max_dE", r.max_abs_energy_change);
   // Default tolerance rtol = 1e-10: event times to a few 1e-10 relative after eight periods.
   EXPECT_LT(worst, 1e-9);
 
@@ -161,6 +173,7 @@ TEST(VerticalOscillation, EventTimesConvergeWithTolerance) {
     const EventRecord& last = r.events.back();
     ASSERT_EQ(last.kind, EventKind::Landing);
     err.push_back(std::fabs(last.t - c.landing(7)) / c.landing(7));
+    record(("last_landing_rel_err_rtol" + std::to_string(int(std::lround(-std::log10(rtol))))).c_str(), err.back());
     EXPECT_LT(err.back(), 20 * rtol) << rtol;
   }
   EXPECT_GT(err[0] / err[1], 20.0);

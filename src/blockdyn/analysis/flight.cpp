@@ -61,7 +61,8 @@ FirstFlight first_flight(const BlockParams& p, const IcChoice& ic, const StudyRu
   f.k = p.k;
   f.status = res.status;
   f.flew = res.first_flight_time.has_value();
-  f.time = f.flew ? *res.first_flight_time : res.t_final;
+  f.time = f.flew ? *res.first_flight_time : o.t_end;
+  f.t_final = res.t_final;
   f.ihor = f.flew ? res.ihor_at_first_flight : res.ihor;
   return f;
 }

@@ -24,8 +24,11 @@ namespace blockdyn {
 struct FirstFlight {
   double r = 0, k = 0;
   bool flew = false;
-  double time = 0;  // first take-off time, or when the run ended without flight
-  long ihor = 0;    // ihor at first flight, or at the end of the run
+  // First take-off time; without flight t_end (the thesis's convention for "no flight", also
+  // when the block overturned first: the motion is over and it never flew).
+  double time = 0;
+  double t_final = 0;  // when the run ended
+  long ihor = 0;       // ihor at first flight, or at the end of the run
   SimStatus status = SimStatus::TEnd;  // EarlyStop when stopped at the flight
 };
 

@@ -28,7 +28,11 @@ void validate(const ResponseOptions& o) {
   if (!std::isfinite(o.quadrature_dt) || o.quadrature_dt <= 0) bad("quadrature-dt", "finite and > 0", o.quadrature_dt);
   if (!std::isfinite(o.phase_dt) || o.phase_dt < 0) bad("phase-dt", "finite and >= 0", o.phase_dt);
   const auto& c = o.criteria;
+  if (!(c.steady_flight_fraction > 0 && c.steady_flight_fraction < 1))
+    bad("steady-flight-fraction", "in (0, 1)", c.steady_flight_fraction);
   if (!(c.settle_dissipation > 0 && c.settle_dissipation < 1)) bad("settle-dissipation", "in (0, 1)", c.settle_dissipation);
+  if (!(c.settle_rotation_share > 0 && c.settle_rotation_share < 1))
+    bad("settle-rotation-share", "in (0, 1)", c.settle_rotation_share);
   if (!(c.vertical_trend > 0 && c.vertical_trend < 1)) bad("vertical-trend", "in (0, 1)", c.vertical_trend);
   if (c.early_swings < 1) bad("early-swings", ">= 1", c.early_swings);
 }
@@ -130,12 +134,13 @@ ResponseReport classify(const BlockParams& p, const ResponseMetrics& m, const Re
   if (m.status == SimStatus::Overturned) return set(ResponseType::Overturned, fmt("overturned at t = %.6g", *m.overturn_time));
   if (m.status != SimStatus::TEnd && m.status != SimStatus::EarlyStop)
     return set(ResponseType::Failed, std::string("run ended with status ") + to_string(m.status));
-  if (m.late_takeoffs == 0)
-    return set(ResponseType::SteadyRocking, fmt("no take-off after t = %.6g", m.late_start));
-  if (p.mu > 0 && m.dissipated_fraction >= c.settle_dissipation)
+  if (m.late_flight_fraction < c.steady_flight_fraction)
+    return set(ResponseType::SteadyRocking,
+               fmt("late flight fraction %.3g < %.3g", m.late_flight_fraction, c.steady_flight_fraction));
+  if (p.mu > 0 && m.dissipated_fraction >= c.settle_dissipation && m.late_rotation_share < c.settle_rotation_share)
     return set(ResponseType::SettleDown,
-               fmt("flies late; friction dissipated %.3g of the available energy (>= %.3g)", m.dissipated_fraction,
-                   c.settle_dissipation));
+               fmt("flies late; friction dissipated %.3g of the available energy, late rotational share %.3g",
+                   m.dissipated_fraction, m.late_rotation_share));
   if (m.early_rotation_share > 0 && m.late_rotation_share <= c.vertical_trend * m.early_rotation_share)
     return set(ResponseType::RockToVertical,
                fmt("flies late; rotational share of kinetic energy fell from %.3g to %.3g", m.early_rotation_share,

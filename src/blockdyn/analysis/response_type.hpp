@@ -2,14 +2,16 @@
 // Long-term response classification (thesis sec. 4.4): steady rocking, settle down, zero-friction
 // rock-flight, rock to vertical, plus overturned. The decision uses measurable quantities only
 // (see classify() and docs/response.md):
-//   1. the run overturned                                    -> overturned
-//   2. no take-off in the late window [late_start, t_end]    -> steady rocking
-//   3. mu > 0 and most of the available energy was dissipated -> settle down
-//   4. the swing-averaged rotational share of the kinetic energy (rotation / (rotation + y'))
-//      fell from the first swings to the late window by a large factor, with the heave share
-//      rising (energy flows from rocking into vertical motion)  -> rock to vertical
-//   5. mu == 0 (energy conserved, flying, no trend)            -> zero-friction rock-flight
-//   otherwise                                                  -> unclassified
+//   1. the run overturned                                         -> overturned
+//   2. the block (almost) never flies in the late window [late_start, t_end]:
+//      flight fraction of that window < steady_flight_fraction   -> steady rocking
+//   3. mu > 0, friction dissipated most of the available energy E0 - E_rest, and the rocking
+//      has died out (late rotational share of kinetic energy small)  -> settle down
+//   4. the swing-averaged rotational share of the kinetic energy, rotation / (rotation + y'),
+//      fell from the first swings to the late window by a large factor (energy flows from
+//      rocking into heave)                                        -> rock to vertical
+//   5. mu == 0 (energy conserved, flying, no such trend)          -> zero-friction rock-flight
+//   otherwise                                                     -> unclassified
 #include <optional>
 #include <string>
 #include <vector>
@@ -23,11 +25,15 @@ enum class ResponseType { SteadyRocking, SettleDown, ZeroFrictionRockFlight, Roc
 const char* to_string(ResponseType t);
 
 struct ResponseCriteria {
+  // Steady rocking: the thesis's "almost never flies" - late flight fraction below this.
+  double steady_flight_fraction = 0.05;
   // Settle down: fraction of the available energy E0 - E_rest lost to friction (the thesis: the
-  // swing-averaged total energy drops by at least an order of magnitude).
+  // swing-averaged total energy drops by at least an order of magnitude) ...
   double settle_dissipation = 0.5;
+  // ... and late rotational share of the kinetic energy below this (rocking eliminated).
+  double settle_rotation_share = 0.1;
   // Rock to vertical: late rotational share <= this factor times the early share.
-  double vertical_trend = 0.5;
+  double vertical_trend = 0.7;
   int early_swings = 2;  // swings averaged for the early shares
 };
 

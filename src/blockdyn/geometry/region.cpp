@@ -5,24 +5,33 @@
 
 namespace blockdyn {
 
-CornerArms corner_arms(double r, double w, int side) {
-  const double c = std::cos(w), sn = std::sin(w);
-  return {0.5 * (r * c - side * sn), 0.5 * (c + side * r * sn)};
+Tilt make_tilt(double w) {
+  double sn, c;
+  ::sincos(std::fabs(w), &sn, &c);
+  // 1 - cos = sin^2 / (1 + cos): no cancellation near w = 0, and cos > 0 here.
+  return {w, sn, c, sn * sn / (1.0 + c), (w > 0.0) - (w < 0.0)};
 }
+
+CornerArms corner_arms(double r, const Tilt& t, int side) {
+  const double sw = t.sign * t.s;  // sin w
+  return {0.5 * (r * t.c - side * sw), 0.5 * (t.c + side * r * sw)};
+}
+
+CornerArms corner_arms(double r, double w, int side) { return corner_arms(r, make_tilt(w), side); }
 
 double one_minus_cos(double w) {
   const double s = std::sin(0.5 * w);
   return 2.0 * s * s;
 }
 
-CornerHeights corner_heights(double r, double h, double w) {
-  const double a = std::fabs(w);
-  const double sn = std::sin(a);
-  const double omc = one_minus_cos(a);
+CornerHeights corner_heights(double r, double h, const Tilt& t) {
   // y = h + 1/2; corner offsets from the centre: lowest -(cos + r sin)/2, other bottom
   // (r sin - cos)/2, upper on the pivot side (cos - r sin)/2. The 1/2 is folded in exactly.
-  return {h - 0.5 * (r * sn - omc), h + 0.5 * (r * sn + omc), h + 0.5 * (2.0 - omc - r * sn)};
+  const double rs = r * t.s;
+  return {h - 0.5 * (rs - t.omc), h + 0.5 * (rs + t.omc), h + 0.5 * (2.0 - t.omc - rs)};
 }
+
+CornerHeights corner_heights(double r, double h, double w) { return corner_heights(r, h, make_tilt(w)); }
 
 namespace {
 
@@ -49,9 +58,12 @@ void add_segment(double a, double sa, double b, double sb, Accum& acc) {
 }  // namespace
 
 RegionIntegrals region_integrals(double r, double h, double w) {
-  const double a = std::fabs(w);
-  const double c = std::cos(a), sn = std::sin(a);
-  const CornerHeights y = corner_heights(r, h, a);
+  return region_integrals(r, h, make_tilt(w));
+}
+
+RegionIntegrals region_integrals(double r, double h, const Tilt& t) {
+  const double c = t.c, sn = t.s;
+  const CornerHeights y = corner_heights(r, h, t);
   // Envelope for tilt a >= 0, abscissae about the centre: upper-left corner -> lower-left
   // (lowest) -> lower-right corner.
   const double x_ul = -0.5 * (r * c + sn), x_ll = -0.5 * (r * c - sn), x_lr = 0.5 * (r * c + sn);
@@ -61,7 +73,7 @@ RegionIntegrals region_integrals(double r, double h, double w) {
   add_segment(x_ll, s_ll, x_lr, s_lr, acc);
   RegionIntegrals out;
   out.area = acc.area;
-  out.moment = (w < 0.0) ? -acc.moment : acc.moment;
+  out.moment = (t.sign < 0) ? -acc.moment : acc.moment;
   out.s2 = acc.s2;
   out.depth_pivot_end = std::max(0.0, s_ul);
   out.depth_far_end = std::max(0.0, s_lr);

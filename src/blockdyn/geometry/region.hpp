@@ -26,6 +26,18 @@ struct CornerArms {
   double B;  // (cos w + s r sin w) / 2
 };
 
+// The trigonometry of a tilt, computed once per state (one sincos) and shared by all the
+// geometry below. Valid for |w| < pi/2 (the model stops at |w| = alpha < pi/2).
+struct Tilt {
+  double w;    // signed tilt
+  double s;    // sin|w|
+  double c;    // cos w
+  double omc;  // 1 - cos w, without cancellation
+  int sign;    // sign of w (0 at w = 0)
+};
+Tilt make_tilt(double w);
+
+CornerArms corner_arms(double r, const Tilt& t, int side);
 CornerArms corner_arms(double r, double w, int side);
 
 // 1 - cos(w) without cancellation.
@@ -36,9 +48,11 @@ double one_minus_cos(double w);
 struct CornerHeights {
   double lowest, other_bottom, upper_pivot_side;
 };
+CornerHeights corner_heights(double r, double h, const Tilt& t);
 CornerHeights corner_heights(double r, double h, double w);
 
 // Region integrals for a block of aspect ratio r with centre height h = y - 1/2 and tilt w.
+RegionIntegrals region_integrals(double r, double h, const Tilt& t);
 RegionIntegrals region_integrals(double r, double h, double w);
 
 // Brute-force midpoint quadrature of the same integrals from the envelope s(X) (tests only).

@@ -165,8 +165,12 @@ BlockStateVec initial_state(const Scenario& s) {
   if (in.vx0) z[kVX] = *in.vx0;
   if (in.vy0) z[kVY] = *in.vy0;
   if (in.vw0) z[kVW] = *in.vw0;
-  for (double v : z)
-    if (!std::isfinite(v)) throw std::invalid_argument("initial state: non-finite value");
+  // Name the offending component (order of StateIndex: x, h = y - 1/2, w, x', y', w').
+  const char* names[6] = {"x0", "y0", "w0", "vx0", "vy0", "vw0"};
+  for (std::size_t i = 0; i < 6; ++i)
+    if (!std::isfinite(z[i]))
+      throw std::invalid_argument(std::string("initial.") + names[i] + " = " + std::to_string(z[i]) +
+                                  " is out of range: must be finite");
   return z;
 }
 

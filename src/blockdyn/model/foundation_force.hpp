@@ -14,8 +14,8 @@ struct FoundationForce {
   int corners_below = 0;
 };
 
-inline FoundationForce foundation_force(const BlockParams& p, double h, double w) {
-  const RegionIntegrals g = region_integrals(p.r, h, w);
+inline FoundationForce foundation_force(const BlockParams& p, double h, const Tilt& t) {
+  const RegionIntegrals g = region_integrals(p.r, h, t);
   const double kr = p.k / p.r;
   FoundationForce f;
   f.Ry = kr * g.area;
@@ -24,9 +24,13 @@ inline FoundationForce foundation_force(const BlockParams& p, double h, double w
   // rotation on the clipped envelope, with the moving wall at each submerged Region end.
   const double a = g.depth_far_end, b = g.depth_pivot_end;
   const double mismatch = kr / 6.0 * (a * a * a - b * b * b);
-  f.torque_nonpot = (w > 0.0) ? mismatch : (w < 0.0 ? -mismatch : 0.0);
+  f.torque_nonpot = t.sign * mismatch;
   f.corners_below = g.corners_below;
   return f;
+}
+
+inline FoundationForce foundation_force(const BlockParams& p, double h, double w) {
+  return foundation_force(p, h, make_tilt(w));
 }
 
 }  // namespace blockdyn

@@ -40,16 +40,20 @@ int WinklerBlock::first_break_after(double t) const {
 }
 
 BlockForces WinklerBlock::forces(double t, const Mode& m, const State& z) const {
+  return forces(t, m, z, make_tilt(z[kW]));
+}
+
+BlockForces WinklerBlock::forces(double t, const Mode& m, const State& z, const Tilt& tilt) const {
   BlockForces f;
   const double a_h = ah(t), a_v = av(t);
+  const CornerArms arm = corner_arms(p_.r, tilt, m.side);
   if (m.regime == Regime::Flight) {
     f.ax = -a_h;
     f.ay = -1.0 - a_v;
-    f.v_corner = z[kVX] + corner_arms(p_.r, z[kW], m.side).B * z[kVW];
+    f.v_corner = z[kVX] + arm.B * z[kVW];
     return f;
   }
-  const FoundationForce ff = foundation_force(p_, z[kH], z[kW]);
-  const CornerArms arm = corner_arms(p_.r, z[kW], m.side);
+  const FoundationForce ff = foundation_force(p_, z[kH], tilt);
   f.Ry = ff.Ry;
   f.torque = ff.torque;
   f.torque_nonpot = ff.torque_nonpot;
@@ -62,6 +66,7 @@ BlockForces WinklerBlock::forces(double t, const Mode& m, const State& z) const 
     f.ax = st.Rx - a_h;
     f.margin = friction_margin(p_.mu, ff.Ry, st.Rx);
     f.v_corner = 0.0;
+    f.vx = -arm.B * z[kVW];
   } else {
     f.Rx = m.friction_sign * p_.mu * ff.Ry;
     f.ax = f.Rx - a_h;
@@ -75,7 +80,7 @@ void WinklerBlock::rhs(double t, const Mode& m, const State& z, State& dz) const
   const BlockForces f = forces(t, m, z);
   const bool contact = m.regime == Regime::Contact;
   // In contact x and x' follow from w (complete()); only 4 mechanical states are integrated.
-  const double vx = contact ? -corner_arms(p_.r, z[kW], m.side).B * z[kVW] : z[kVX];
+  const double vx = contact ? f.vx : z[kVX];
   dz[kX] = contact ? 0.0 : z[kVX];
   dz[kH] = z[kVY];
   dz[kW] = z[kVW];
@@ -96,15 +101,16 @@ void WinklerBlock::complete(const Mode& m, State& z) const {
 
 void WinklerBlock::events(double t, const Mode& m, const State& z,
                           std::array<double, kNumEvents>& g) const {
-  const CornerHeights ch = corner_heights(p_.r, z[kH], z[kW]);
+  const Tilt tilt = make_tilt(z[kW]);
+  const CornerHeights ch = corner_heights(p_.r, z[kH], tilt);
   g[kEvOverturn] = alpha_ - m.side * z[kW];
   g[kEvInvalid] = std::max(ch.other_bottom, ch.upper_pivot_side);  // third-lowest corner
   g[kEvSurface] = (m.regime == Regime::Flight) ? ch.lowest : -ch.lowest;
   g[kEvWZero] = m.side * z[kW];
   if (m.regime == Regime::Contact) {
-    g[kEvFriction] = forces(t, m, z).margin;
+    g[kEvFriction] = forces(t, m, z, tilt).margin;
   } else if (m.regime == Regime::Slide && p_.mu > 0.0) {
-    g[kEvFriction] = -m.friction_sign * (z[kVX] + corner_arms(p_.r, z[kW], m.side).B * z[kVW]);
+    g[kEvFriction] = -m.friction_sign * (z[kVX] + corner_arms(p_.r, tilt, m.side).B * z[kVW]);
   } else {
     g[kEvFriction] = 1.0;
   }
@@ -196,9 +202,26 @@ Transition<WinklerBlock::Mode> WinklerBlock::transition(double t, const Mode& m,
 std::optional<Transition<WinklerBlock::Mode>> WinklerBlock::resolve_chatter(double t, const Mode& m,
                                                                             const State& z) const {
   if (m.regime == Regime::Flight) return std::nullopt;
-  // Grazing stop: v_P and the friction margin vanish together. Hold the corner.
+  // Grazing: v_P and the friction margin vanish together. Hold the corner, unless the contact
+  // margin is falling (Ry -> 0 just before a take-off): then holding fails again at once, and the
+  // corner must slip in the direction the stick reaction pushes (the only consistent mode).
   Mode c{Regime::Contact, m.side, 0, z[kX] - m.side * corner_arms(p_.r, z[kW], m.side).A, m.next_break};
-  (void)t;
+  State zc = z;
+  complete(c, zc);
+  const BlockForces f0 = forces(t, c, zc);
+  if (p_.mu > 0.0) {
+    State dz;
+    rhs(t, c, zc, dz);
+    const double dt = 1e-6 * step_hint(c);
+    State z1 = zc;
+    for (std::size_t i = 0; i < kDim; ++i) z1[i] += dt * dz[i];
+    complete(c, z1);
+    const double margin1 = forces(t + dt, c, z1).margin;
+    if (margin1 < 0.0 && margin1 < f0.margin && f0.Rx != 0.0) {
+      const Mode s{Regime::Slide, m.side, sign_of(f0.Rx), 0.0, m.next_break};
+      return Transition<Mode>{s, false, int(EventKind::ContactToSlide)};
+    }
+  }
   return Transition<Mode>{c, false, int(EventKind::GrazingHold)};
 }
 

@@ -30,6 +30,7 @@ struct BlockForces {
   double ax = 0, ay = 0, aw = 0;  // x'', y'', w''
   double v_corner = 0;            // horizontal velocity of the lowest corner
   double margin = 0;              // mu Ry - |Rx| in contact
+  double vx = 0;                  // x' implied by the contact constraint (contact only)
   int corners_below = 0;
 };
 
@@ -54,6 +55,7 @@ class WinklerBlock {
   State abs_tol_scale() const;
 
   BlockForces forces(double t, const Mode& m, const State& z) const;
+  BlockForces forces(double t, const Mode& m, const State& z, const Tilt& tilt) const;
   // The mode a state starts in (regime, lowest corner, friction direction).
   Mode initial_mode(double t, const State& z) const;
   // Empty if the state is inside the model; otherwise a description of why not.
