@@ -33,6 +33,7 @@ nlohmann::ordered_json metrics_json(const ResponseMetrics& m) {
   j["energy_rest"] = m.e_rest;
   j["work_friction"] = m.work_friction;
   j["dissipated_fraction"] = m.dissipated_fraction;
+  j["late_dissipated_fraction"] = m.late_dissipated_fraction;
   j["max_abs_energy_balance_error"] = m.max_abs_energy_error;
   j["ihor"] = m.ihor;
   j["takeoffs"] = m.takeoffs;
@@ -91,7 +92,7 @@ void run(const CLI::App& s, ResponseFlags& f) {
   nlohmann::ordered_json j;
   j["run_info"] = run_info();
   j["params"] = to_json(f.p);
-  j["initial"] = ic_json(f.ic, z0);
+  j["initial"] = ic_json(f.ic, z0, f.p);
   j["integrator"] = to_json(f.integ);
   j["options"] = {{"t_end", f.opt.t_end},
                   {"late_fraction", f.opt.late_fraction},
@@ -140,6 +141,9 @@ void add(CLI::App& app) {
       ->capture_default_str();
   s->add_option("--vertical-trend", f->opt.criteria.vertical_trend,
                 "rock to vertical if the late rotational share <= this times the early one, in (0, 1)")
+      ->capture_default_str();
+  s->add_option("--conserved-dissipation", f->opt.criteria.conserved_dissipation,
+                "mu > 0: rock to vertical if the late-window dissipation is below this fraction, in (0, 1)")
       ->capture_default_str();
   s->add_option("--csv-prefix", f->csv_prefix, "write PREFIX_swings.csv and PREFIX_phase.csv");
   s->add_option("--plot", f->plot, "write the phase portraits and swing-averaged energies (PNG + SVG)");

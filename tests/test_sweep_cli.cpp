@@ -29,14 +29,11 @@ std::size_t journal_rows(const std::string& path) {
   return n >= 2 ? n - 2 : 0;  // identification line and header
 }
 
-bool running(pid_t pid) {
-  int st = 0;
-  return ::waitpid(pid, &st, WNOHANG) == 0;
-}
-
 struct Watch {
   std::size_t rows_while_running = 0;  // rows seen in the journal while the run was alive
   bool csv_absent_then = false;
+  bool reaped = false;  // the process ended (and was reaped) before enough rows appeared
+  int status = 0;
 };
 
 // Polls the journal of a spawned sweep until it holds `min_rows` rows while the process lives.
@@ -46,7 +43,10 @@ Watch watch_journal(pid_t pid, const std::string& journal, const std::string& cs
   while (std::chrono::steady_clock::now() < deadline) {
     const std::size_t rows = journal_rows(journal);
     const bool csv_absent = !exists(csv);
-    if (!running(pid)) break;
+    if (::waitpid(pid, &w.status, WNOHANG) != 0) {
+      w.reaped = true;
+      break;
+    }
     if (rows >= min_rows) {
       w.rows_while_running = rows;
       w.csv_absent_then = csv_absent;
@@ -62,11 +62,13 @@ void start_and_kill(const std::vector<std::string>& args, const std::string& dir
   const pid_t pid = spawn_cli(args, dir);
   ASSERT_GT(pid, 0);
   const Watch w = watch_journal(pid, dir + "/" + csv + ".journal", dir + "/" + csv, 3);
+  int st = w.status;
+  if (!w.reaped) {
+    ASSERT_EQ(::kill(pid, SIGKILL), 0);
+    ASSERT_EQ(::waitpid(pid, &st, 0), pid);
+  }
   ASSERT_GE(w.rows_while_running, 3u) << "the sweep finished or failed before it could be interrupted: "
                                       << slurp(dir + "/spawn.err");
-  ASSERT_EQ(::kill(pid, SIGKILL), 0);
-  int st = 0;
-  ASSERT_EQ(::waitpid(pid, &st, 0), pid);
   ASSERT_TRUE(WIFSIGNALED(st));
   EXPECT_FALSE(exists(dir + "/" + csv));
   EXPECT_LT(journal_rows(dir + "/" + csv + ".journal"), 72u);
@@ -75,11 +77,12 @@ void start_and_kill(const std::vector<std::string>& args, const std::string& dir
 }  // namespace
 
 TEST(SweepCli, RowsAppearBeforeTheEnd) {
-  const std::string dir = make_tmpdir("sweep-incr");
+  const sweep_test::TmpDir tmp("sweep-incr");
+  const std::string& dir = tmp.path;
   const pid_t pid = spawn_cli(with(long_sweep("s.csv", "1"), {"--progress", "plain"}), dir);
   const Watch w = watch_journal(pid, dir + "/s.csv.journal", dir + "/s.csv", 2);
-  int st = 0;
-  ASSERT_EQ(::waitpid(pid, &st, 0), pid);
+  int st = w.status;
+  if (!w.reaped) ASSERT_EQ(::waitpid(pid, &st, 0), pid);
   ASSERT_TRUE(WIFEXITED(st) && WEXITSTATUS(st) == 0) << slurp(dir + "/spawn.err");
   EXPECT_GE(w.rows_while_running, 2u);
   EXPECT_TRUE(w.csv_absent_then);
@@ -92,7 +95,8 @@ TEST(SweepCli, RowsAppearBeforeTheEnd) {
 }
 
 TEST(SweepCli, KilledSweepResumesToIdenticalBytes) {
-  const std::string dir = make_tmpdir("sweep-kill");
+  const sweep_test::TmpDir tmp("sweep-kill");
+  const std::string& dir = tmp.path;
   const CliResult ref = run_cli(with(long_sweep("ref.csv", "2"), {"--quiet"}), dir);
   ASSERT_EQ(ref.code, 0) << ref.err;
   start_and_kill(long_sweep("s.csv", "1"), dir, "s.csv");
@@ -116,7 +120,8 @@ TEST(SweepCli, MpiTwoRanksMatchOneProcessAndResume) {
   const std::string mpirun =
       "OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1 "
       "mpirun -np 2 --oversubscribe --allow-run-as-root";
-  const std::string dir = make_tmpdir("sweep-mpi");
+  const sweep_test::TmpDir tmp("sweep-mpi");
+  const std::string& dir = tmp.path;
   const CliResult one = run_cli(with(long_sweep("one.csv", "1"), {"--quiet"}), dir);
   ASSERT_EQ(one.code, 0) << one.err;
   const CliResult two = run_cli(with(long_sweep("two.csv", "1"), {"--progress", "none"}), dir, mpirun);
@@ -134,7 +139,8 @@ TEST(SweepCli, MpiTwoRanksMatchOneProcessAndResume) {
 }
 
 TEST(SweepCli, BadDefinitionsExitWithStatus2) {
-  const std::string dir = make_tmpdir("sweep-bad");
+  const sweep_test::TmpDir tmp("sweep-bad");
+  const std::string& dir = tmp.path;
   struct Case {
     std::string toml;                 // written to bad.toml if non-empty
     std::vector<std::string> flags;
@@ -172,7 +178,8 @@ TEST(SweepCli, BadDefinitionsExitWithStatus2) {
 }
 
 TEST(SweepCli, TomlDefinitionDryRunAndPlots) {
-  const std::string dir = make_tmpdir("sweep-toml");
+  const sweep_test::TmpDir tmp("sweep-toml");
+  const std::string& dir = tmp.path;
   std::ofstream(dir + "/map.toml") << "[axes]\nk = '1e2:1e5:4'\ninv_r = [2, 5]\nmu = 0.2\n"
                                       "[initial]\nset = 'ic2'\n[run]\nt_end = 4\n"
                                       "[output]\ncsv = 'map.csv'\nmetrics = ['event_counts']\n";

@@ -46,7 +46,8 @@ std::vector<std::string> split_csv_line(const std::string& line) {
 }  // namespace
 
 TEST(SweepRun, BitIdenticalForOneAndTwoThreads) {
-  const std::string dir = sweep_test::make_tmpdir("sweep-threads");
+  const sweep_test::TmpDir tmp("sweep-threads");
+  const std::string& dir = tmp.path;
   const SweepEvaluator e1(small_spec(dir + "/t1.csv")), e2(small_spec(dir + "/t2.csv"));
   const SweepOutcome o1 = run_sweep(e1, quiet(1));
   const SweepOutcome o2 = run_sweep(e2, quiet(2));
@@ -107,12 +108,12 @@ struct CountingSink : SimulationSink {
 struct CountingMetric : PointMetric {
   std::vector<std::string> columns() const override { return {"segments", "segment_time", "label"}; }
   bool needs_events() const override { return true; }
-  std::unique_ptr<SimulationSink> make_sink(const SweepPoint&) const override { return std::make_unique<CountingSink>(); }
-  void compute(const SweepPoint&, const SimulationResult& r, const SimulationSink* sink,
+  std::unique_ptr<SimulationSink> make_sink(const PointContext&) const override { return std::make_unique<CountingSink>(); }
+  void compute(const PointContext& ctx, const SimulationResult& r, const SimulationSink* sink,
                std::vector<MetricValue>& out) const override {
     const auto& s = static_cast<const CountingSink&>(*sink);
     out.emplace_back((long long)s.segments);
-    out.emplace_back(s.time - (r.t_final - 0.0));
+    out.emplace_back(s.time - (r.t_final - ctx.options.t_start));
     out.emplace_back(std::string("n,\"") + std::to_string(r.events.size()) + "\"");
   }
 };
@@ -158,7 +159,8 @@ TEST(SweepRun, MetricsAddColumnsAndSeeTheTrajectory) {
 }
 
 TEST(SweepRun, ResumeKeepsJournalRowsAndRecomputesTheRest) {
-  const std::string dir = sweep_test::make_tmpdir("sweep-resume");
+  const sweep_test::TmpDir tmp("sweep-resume");
+  const std::string& dir = tmp.path;
   const SweepEvaluator full(small_spec(dir + "/full.csv"));
   run_sweep(full, quiet(2));
   const std::string reference = slurp(dir + "/full.csv");
@@ -192,7 +194,8 @@ TEST(SweepRun, ResumeKeepsJournalRowsAndRecomputesTheRest) {
 
 TEST(SweepRun, ResumeTrustsFinishedRows) {
   // A row in the journal is taken as is: tamper with one and it reaches the CSV unchanged.
-  const std::string dir = sweep_test::make_tmpdir("sweep-trust");
+  const sweep_test::TmpDir tmp("sweep-trust");
+  const std::string& dir = tmp.path;
   const SweepEvaluator ev(small_spec(dir + "/s.csv"));
   std::string row = ev.row(4).text;
   const std::string tampered = row.substr(0, row.size() - 1) + "0\n";  // rhs_evals * 10
@@ -207,7 +210,8 @@ TEST(SweepRun, ResumeTrustsFinishedRows) {
 }
 
 TEST(SweepRun, JournalOfAnotherDefinitionIsRefused) {
-  const std::string dir = sweep_test::make_tmpdir("sweep-other");
+  const sweep_test::TmpDir tmp("sweep-other");
+  const std::string& dir = tmp.path;
   SweepSpec a = small_spec(dir + "/s.csv");
   const SweepEvaluator ea(a);
   { SweepJournal j(dir + "/s.csv.journal", ea.fingerprint(), ea.header(), ea.size(), false); }

@@ -1,6 +1,7 @@
 #pragma once
 // Helpers for the sweep tests: temporary directories, files, and running the CLI.
 #include <fcntl.h>
+#include <gtest/gtest.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -18,6 +19,20 @@ inline std::string make_tmpdir(const std::string& tag) {
   if (!::mkdtemp(tmpl.data())) throw std::runtime_error("mkdtemp failed");
   return tmpl;
 }
+
+// A temporary directory removed at scope exit unless the test failed (kept for inspection).
+struct TmpDir {
+  std::string path;
+  explicit TmpDir(const std::string& tag) : path(make_tmpdir(tag)) {}
+  ~TmpDir() {
+    if (!::testing::Test::HasFailure()) {
+      std::error_code ec;
+      std::filesystem::remove_all(path, ec);
+    }
+  }
+  TmpDir(const TmpDir&) = delete;
+  TmpDir& operator=(const TmpDir&) = delete;
+};
 
 inline std::string slurp(const std::string& path) {
   std::ifstream in(path, std::ios::binary);

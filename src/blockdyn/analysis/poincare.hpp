@@ -18,6 +18,9 @@ struct PoincarePoint {
   double y = 0, vy = 0, vw = 0, x = 0, vx = 0;
   Regime regime = Regime::Slide;  // regime the block continues in
   double energy = 0;  // total energy at the crossing
+  // Work done since the start by friction and by the non-potential part of the thesis's
+  // foundation torque: energy - E0 - these = integration error.
+  double work_friction = 0, work_nonpotential = 0;
 };
 
 enum class CrossingDirection { Both, Positive, Negative };  // sign of w' at the crossing

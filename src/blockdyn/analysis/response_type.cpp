@@ -35,6 +35,8 @@ void validate(const ResponseOptions& o) {
     bad("settle-rotation-share", "in (0, 1)", c.settle_rotation_share);
   if (!(c.vertical_trend > 0 && c.vertical_trend < 1)) bad("vertical-trend", "in (0, 1)", c.vertical_trend);
   if (c.early_swings < 1) bad("early-swings", ">= 1", c.early_swings);
+  if (!(c.conserved_dissipation > 0 && c.conserved_dissipation < 1))
+    bad("conserved-dissipation", "in (0, 1)", c.conserved_dissipation);
 }
 
 namespace {
@@ -82,7 +84,12 @@ ResponseMetrics compute_metrics(const BlockParams& p, const SimulationResult& r,
   m.e_rest = -0.5 / p.k;
   m.work_friction = r.work_friction();
   const double avail = m.e0 - m.e_rest;
-  m.dissipated_fraction = avail > 0 ? -m.work_friction / avail : 0.0;
+  m.dissipated_fraction = avail > 0 ? (0.0 - m.work_friction) / avail : 0.0;  // 0 - w: no "-0"
+  if (acc.reached_late()) {
+    const double avail_late = acc.late_energy() - m.e_rest;
+    m.late_dissipated_fraction =
+        avail_late > 0 ? -(m.work_friction - acc.late_work_friction()) / avail_late : 0.0;
+  }
   m.max_abs_energy_error = r.max_abs_energy_error;
   m.ihor = r.ihor;
   m.takeoffs = acc.takeoffs();
@@ -149,6 +156,12 @@ ResponseReport classify(const BlockParams& p, const ResponseMetrics& m, const Re
     return set(ResponseType::ZeroFrictionRockFlight,
                fmt("mu = 0, flies late, rotational share %.3g -> %.3g (no trend to vertical)", m.early_rotation_share,
                    m.late_rotation_share));
+  if (m.late_dissipated_fraction < c.conserved_dissipation)
+    return set(ResponseType::RockToVertical,
+               fmt("mu > 0, flies late, energy almost conserved late (dissipated %.3g of it); rotational share "
+                   "ratio %.3g",
+                   m.late_dissipated_fraction,
+                   m.early_rotation_share > 0 ? m.late_rotation_share / m.early_rotation_share : 0.0));
   return set(ResponseType::Unclassified,
              fmt("mu > 0, flies late, dissipated %.3g, rotational share ratio %.3g", m.dissipated_fraction,
                  m.early_rotation_share > 0 ? m.late_rotation_share / m.early_rotation_share : 0.0));

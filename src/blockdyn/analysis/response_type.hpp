@@ -11,6 +11,9 @@
 //      fell from the first swings to the late window by a large factor (energy flows from
 //      rocking into heave)                                        -> rock to vertical
 //   5. mu == 0 (energy conserved, flying, no such trend)          -> zero-friction rock-flight
+//   6. mu > 0, flying, and energy almost conserved over the late window (the thesis's table:
+//      rock to vertical = flight, no steady state, energy almost conserved; the trend of 4 can
+//      take longer than t_end to show)                            -> rock to vertical
 //   otherwise                                                     -> unclassified
 #include <optional>
 #include <string>
@@ -35,6 +38,9 @@ struct ResponseCriteria {
   // Rock to vertical: late rotational share <= this factor times the early share.
   double vertical_trend = 0.7;
   int early_swings = 2;  // swings averaged for the early shares
+  // Rock to vertical with mu > 0: friction work in the late window below this fraction of the
+  // energy available there.
+  double conserved_dissipation = 0.1;
 };
 
 struct ResponseMetrics {
@@ -44,6 +50,7 @@ struct ResponseMetrics {
   double e0 = 0, e_final = 0, e_rest = 0;  // e_rest = -1/(2k): the block at rest upright
   double work_friction = 0;
   double dissipated_fraction = 0;  // -W_friction / (E0 - E_rest)
+  double late_dissipated_fraction = 0;  // the same over the late window, relative to E(late_start)
   double max_abs_energy_error = 0;
   long ihor = 0, takeoffs = 0, late_takeoffs = 0;
   double flight_fraction = 0, late_flight_fraction = 0;  // of the run / of the late window

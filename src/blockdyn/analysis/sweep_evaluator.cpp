@@ -126,14 +126,16 @@ SweepRow SweepEvaluator::row(std::size_t index) const {
   b.add(csv_escape(p.ic));
   SweepRow out;
   SimulationResult r;
+  BlockStateVec z0{};
+  const PointContext ctx{p, options_, z0};
   std::vector<std::unique_ptr<SimulationSink>> owned;
   FanOutSink fan;
   try {
+    z0 = sweep_initial_state(spec_, p);
     for (const auto& m : metrics_) {
-      owned.push_back(m->make_sink(p));
+      owned.push_back(m->make_sink(ctx));
       if (owned.back()) fan.sinks.push_back(owned.back().get());
     }
-    const BlockStateVec z0 = sweep_initial_state(spec_, p);
     r = simulate(p.params, GroundMotion{}, z0, options_, fan.sinks.empty() ? nullptr : &fan);
   } catch (const std::exception& e) {
     // Deterministic for a given point, so the row is still reproducible; details to the caller.
@@ -170,7 +172,7 @@ SweepRow SweepEvaluator::row(std::size_t index) const {
   std::vector<MetricValue> vals;
   for (std::size_t m = 0; m < metrics_.size(); ++m) {
     vals.clear();
-    metrics_[m]->compute(p, r, owned[m].get(), vals);
+    metrics_[m]->compute(ctx, r, owned[m].get(), vals);
     if (vals.size() != metric_width_[m])
       throw std::logic_error("sweep metric produced " + std::to_string(vals.size()) + " values for " +
                              std::to_string(metric_width_[m]) + " columns");

@@ -16,7 +16,7 @@ class EventCountsMetric : public PointMetric {
       if (EventKind(k) != EventKind::GroundBreak) c.push_back(std::string("n_") + to_string(EventKind(k)));
     return c;
   }
-  void compute(const SweepPoint&, const SimulationResult& r, const SimulationSink*,
+  void compute(const PointContext&, const SimulationResult& r, const SimulationSink*,
                std::vector<MetricValue>& out) const override {
     for (int k = 0; k < kNumEventKinds; ++k)
       if (EventKind(k) != EventKind::GroundBreak) out.emplace_back((long long)r.event_counts[k]);
@@ -28,7 +28,7 @@ class FinalStateMetric : public PointMetric {
   std::vector<std::string> columns() const override {
     return {"x_final", "y_final", "w_final", "vx_final", "vy_final", "vw_final", "regime_final"};
   }
-  void compute(const SweepPoint&, const SimulationResult& r, const SimulationSink*,
+  void compute(const PointContext&, const SimulationResult& r, const SimulationSink*,
                std::vector<MetricValue>& out) const override {
     const BlockState s = to_state(r.final_state);
     for (double v : {s.x, s.y, s.w, s.vx, s.vy, s.vw}) out.emplace_back(v);
@@ -49,10 +49,10 @@ class RegimeTimeSink : public SimulationSink {
 class RegimeTimeMetric : public PointMetric {
  public:
   std::vector<std::string> columns() const override { return {"time_contact", "time_slide", "time_flight"}; }
-  std::unique_ptr<SimulationSink> make_sink(const SweepPoint&) const override {
+  std::unique_ptr<SimulationSink> make_sink(const PointContext&) const override {
     return std::make_unique<RegimeTimeSink>();
   }
-  void compute(const SweepPoint&, const SimulationResult&, const SimulationSink* sink,
+  void compute(const PointContext&, const SimulationResult&, const SimulationSink* sink,
                std::vector<MetricValue>& out) const override {
     const auto& s = static_cast<const RegimeTimeSink&>(*sink);
     for (Regime g : {Regime::Contact, Regime::Slide, Regime::Flight}) out.emplace_back(s.time[int(g)]);

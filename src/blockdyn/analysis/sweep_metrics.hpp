@@ -25,6 +25,13 @@ namespace blockdyn {
 // One CSV cell: empty, a double (written %.17g), an integer, or text (CSV-quoted if needed).
 using MetricValue = std::variant<std::monostate, double, long long, std::string>;
 
+// What a metric may know about the point it describes.
+struct PointContext {
+  const SweepPoint& point;              // index, params (k, r, mu), inv_r, ic
+  const SimulationOptions& options;     // as used for this run (t_end, tolerances, stop rules)
+  const BlockStateVec& initial_state;   // z0 handed to simulate()
+};
+
 class PointMetric {
  public:
   virtual ~PointMetric() = default;
@@ -32,9 +39,9 @@ class PointMetric {
   // true: the sweep records the event list (SimulationOptions::record_events) for every point.
   virtual bool needs_events() const { return false; }
   // Optional observer of one point's run (segments, events; may stop the run via keep_going).
-  virtual std::unique_ptr<SimulationSink> make_sink(const SweepPoint&) const { return nullptr; }
+  virtual std::unique_ptr<SimulationSink> make_sink(const PointContext&) const { return nullptr; }
   // Appends exactly columns().size() values. `sink` is what make_sink returned (or nullptr).
-  virtual void compute(const SweepPoint& point, const SimulationResult& result, const SimulationSink* sink,
+  virtual void compute(const PointContext& ctx, const SimulationResult& result, const SimulationSink* sink,
                        std::vector<MetricValue>& out) const = 0;
 };
 

@@ -49,6 +49,11 @@ SwingAccumulator::Sample SwingAccumulator::sample_at(const DenseSegment<kStateDi
 
 void SwingAccumulator::on_start(const WinklerBlock&, double t, const BlockMode& mode, const BlockStateVec& z) {
   last_ = Sample{t, z[kVW], energy(p_, z)};
+  if (opt_.late_start <= t) {
+    late_captured_ = true;
+    late_energy_ = last_.e.total();
+    late_work_friction_ = z[kWorkFriction];
+  }
   sign_ = sign_of(z[kVW]);
   in_swing_ = (sign_ == 0);  // released from rest: a turning point
   swing_t0_ = t;
@@ -99,6 +104,13 @@ void SwingAccumulator::on_segment(const WinklerBlock& m, const DenseSegment<kSta
     late_flight_time_ += std::max(0.0, t1 - std::max(t0, opt_.late_start));
   }
   BlockStateVec z;
+  if (!late_captured_ && opt_.late_start >= t0 && opt_.late_start <= t1) {
+    seg.eval(opt_.late_start, z);
+    m.complete(mode, z);
+    late_captured_ = true;
+    late_energy_ = energy(p_, z).total();
+    late_work_friction_ = z[kWorkFriction];
+  }
   // Phase-portrait samples at fixed multiples of phase_dt (no drift from repeated addition).
   if (opt_.phase_dt > 0) {
     while (next_phase_t_ <= t1) {

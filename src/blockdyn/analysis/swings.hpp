@@ -53,6 +53,10 @@ class SwingAccumulator : public SimulationSink {
   double late_flight_time() const { return late_flight_time_; }
   long takeoffs() const { return takeoffs_; }
   long late_takeoffs() const { return late_takeoffs_; }
+  // Total energy and accumulated friction work at t = late_start (if the run got there).
+  bool reached_late() const { return late_captured_; }
+  double late_energy() const { return late_energy_; }
+  double late_work_friction() const { return late_work_friction_; }
   const SwingOptions& options() const { return opt_; }
 
  private:
@@ -80,6 +84,8 @@ class SwingAccumulator : public SimulationSink {
   long n_phase_ = 0;
   double flight_time_ = 0, late_flight_time_ = 0;
   long takeoffs_ = 0, late_takeoffs_ = 0;
+  bool late_captured_ = false;
+  double late_energy_ = 0, late_work_friction_ = 0;
 };
 
 // CSV with a header row, full precision (one row per swing / per phase sample).

@@ -1,0 +1,64 @@
+#!/usr/bin/env python3
+"""Long-term response of one block (thesis Figs. 4.41-4.57): phase portraits (y, y'), (w, w'),
+(x, x') sampled at constant time intervals, swing-averaged energies and swing lengths.
+
+usage: plot_response.py SWINGS.csv PHASE.csv OUT.png [TITLE]   (an SVG is written beside the PNG)
+"""
+import csv
+import os
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
+
+
+def load(path, skip=()):
+    with open(path, newline="") as f:
+        rows = list(csv.DictReader(f))
+    if not rows:
+        return {}
+    keys = [k for k in rows[0] if k not in skip]
+    return {k: np.array([float(r[k]) for r in rows]) for k in keys}
+
+
+def main(argv):
+    if len(argv) not in (4, 5):
+        raise SystemExit(__doc__)
+    sw = load(argv[1])
+    ph = load(argv[2], skip=("regime",))
+    out = argv[3]
+    title = argv[4] if len(argv) == 5 else ""
+    fig = plt.figure(figsize=(10, 8.5), constrained_layout=True)
+    gs = fig.add_gridspec(3, 3, height_ratios=[1.2, 1, 0.7])
+    dot = dict(s=0.5, c="k", linewidths=0, rasterized=True)
+    for i, (a, b, la, lb) in enumerate([("y", "vy", "y", "y'"), ("w", "vw", "w [rad]", "w' [rad]"),
+                                        ("x", "vx", "x", "x'")]):
+        ax = fig.add_subplot(gs[0, i])
+        if ph:
+            ax.scatter(ph[a], ph[b], **dot)
+        ax.set_xlabel(la)
+        ax.set_ylabel(lb)
+    ax = fig.add_subplot(gs[1, :])
+    if sw:
+        t = sw["t_end"]
+        for key, label in [("ave_rotation", "ave_w'"), ("ave_kinetic_y", "ave_y'"), ("ave_kinetic_x", "ave_x'"),
+                           ("ave_gravity", "ave_y"), ("ave_springs", "ave_k"), ("ave_total", "total")]:
+            ax.plot(t, sw[key], lw=0.8, label=label, rasterized=len(t) > 500)
+        ax.legend(loc="upper right", fontsize=8, ncol=6)
+    ax.set_xlabel("time (end of swing)")
+    ax.set_ylabel("swing-averaged energy")
+    ax = fig.add_subplot(gs[2, :])
+    if sw:
+        ax.plot(sw["t_end"], sw["length"], ".", ms=2, rasterized=True)
+    ax.set_xlabel("time (end of swing)")
+    ax.set_ylabel("swing length")
+    fig.suptitle(title)
+    fig.savefig(out, dpi=80)
+    fig.savefig(os.path.splitext(out)[0] + ".svg", dpi=80)
+
+
+if __name__ == "__main__":
+    main(sys.argv)

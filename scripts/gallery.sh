@@ -1,0 +1,31 @@
+#!/usr/bin/env bash
+# Regenerates one figure of every analysis family at modest resolution (a few minutes on
+# 2 cores). Usage: scripts/gallery.sh [OUTDIR]   (default out/gallery; needs a built ./build)
+set -euo pipefail
+cd "$(dirname "$0")/.."
+B=./build/blockdyn
+O=${1:-out/gallery}
+mkdir -p "$O"
+run() { echo "+ $*"; "$@" >/dev/null; }
+
+# Time histories (simulate)
+run $B simulate --r 0.2 --mu 0.2 --k 1e6 --t-end 10 --trajectory "$O/simulate.csv" --plot "$O/simulate.png"
+# Parameter sweep: first-flight map (sweep engine)
+run $B sweep --k 1e2:1e8:16 --inv-r 1:20:12 --mu 0.2 --ic ic2 --t-end 30 --stop-at-first-flight \
+  -o "$O/sweep.csv" --overwrite --quiet --plot "$O/sweep.png"
+# Flight (thesis 4.2)
+run $B flight-time --ic ic1 --r 0.1 --mu 0.2 --k-min 1e2 --k-max 1e9 --points 40 --csv "$O/flight_time.csv" --plot "$O/flight_time.png"
+run $B kmin --mu 0.2 --points 20 --csv "$O/kmin.csv" --plot "$O/kmin.png"
+run $B flight-boundary --ic ic2 --mu 0.2 --r-min 0.1 --r-max 1 --points 5 --per-decade 4 --csv "$O/flight_boundary.csv" --plot "$O/flight_boundary.png"
+run $B flight-map --ic ic1 --mu 0.2 --r-min 0.1 --r-max 1 --r-points 8 --k-min 1e2 --k-max 1e8 --k-points 16 --csv "$O/flight_map.csv" --plot "$O/flight_map.png"
+# Stability (thesis 4.3.1-4.3.2)
+run $B overturn --ic ic2 --r 0.1 --mu 0.2 --k-min 100 --k-max 5000 --points 40 --csv "$O/overturn.csv" --plot "$O/overturn.png"
+run $B stability-curve --ic ic2 --which both --mu 0.2 --r-min 0.07 --r-max 1 --points 6 --csv "$O/stability_curve.csv" --plot "$O/stability_curve.png"
+run $B blowup --mu-list 0.1,0.2 --k-hi 1e6 --csv "$O/blowup.csv" --plot "$O/blowup.png"
+# Static equilibria and bifurcations (thesis 4.3.3)
+run $B equilibria --r 0.9 --k 6.2 --csv "$O/equilibria.csv" --plot "$O/equilibria.png"
+run $B bifurcation --r 0.5 --k-min 2 --k-max 1e4 --points 200 --csv "$O/bifurcation.csv" --plot "$O/bifurcation.png"
+run $B bifurcation-curves --r-min 0.05 --r-max 1 --points 40 --csv "$O/bifurcation_curves.csv" --plot "$O/bifurcation_curves.png"
+# Long-term response (thesis 4.4) and chaos (thesis 5)
+run $B response --r 0.2 --mu 0.2 --k 1e4 --ic ic1 --t-end 100 --csv-prefix "$O/response" --plot "$O/response.png"
+run $B lyapunov --r 0.1 --mu 0 --k 1e6 --ic ic1 --t-end 60 --csv "$O/lyapunov.csv" --plot "$O/lyapunov.png"
