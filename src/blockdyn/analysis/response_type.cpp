@@ -63,9 +63,9 @@ Energy scaled(Energy e, double f) {
   return e;
 }
 
-std::string fmt(const char* f, double a, double b = 0) {
+std::string fmt(const char* f, double a, double b = 0, double c = 0) {
   char buf[256];
-  std::snprintf(buf, sizeof buf, f, a, b);
+  std::snprintf(buf, sizeof buf, f, a, b, c);
   return buf;
 }
 
@@ -141,13 +141,17 @@ ResponseReport classify(const BlockParams& p, const ResponseMetrics& m, const Re
   if (m.status == SimStatus::Overturned) return set(ResponseType::Overturned, fmt("overturned at t = %.6g", *m.overturn_time));
   if (m.status != SimStatus::TEnd && m.status != SimStatus::EarlyStop)
     return set(ResponseType::Failed, std::string("run ended with status ") + to_string(m.status));
+  // Settle down is tested first: a block that flew, lost most of its energy to friction and
+  // stopped rocking has settled whether or not its remaining heave still lifts it off.
+  if (p.mu > 0 && m.takeoffs > 0 && m.dissipated_fraction >= c.settle_dissipation &&
+      m.late_rotation_share < c.settle_rotation_share)
+    return set(ResponseType::SettleDown,
+               fmt("flew (%.0f take-offs); friction dissipated %.3g of the available energy, late rotational "
+                   "share %.3g",
+                   double(m.takeoffs), m.dissipated_fraction, m.late_rotation_share));
   if (m.late_flight_fraction < c.steady_flight_fraction)
     return set(ResponseType::SteadyRocking,
                fmt("late flight fraction %.3g < %.3g", m.late_flight_fraction, c.steady_flight_fraction));
-  if (p.mu > 0 && m.dissipated_fraction >= c.settle_dissipation && m.late_rotation_share < c.settle_rotation_share)
-    return set(ResponseType::SettleDown,
-               fmt("flies late; friction dissipated %.3g of the available energy, late rotational share %.3g",
-                   m.dissipated_fraction, m.late_rotation_share));
   if (m.early_rotation_share > 0 && m.late_rotation_share <= c.vertical_trend * m.early_rotation_share)
     return set(ResponseType::RockToVertical,
                fmt("flies late; rotational share of kinetic energy fell from %.3g to %.3g", m.early_rotation_share,

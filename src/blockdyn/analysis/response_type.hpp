@@ -3,10 +3,11 @@
 // rock-flight, rock to vertical, plus overturned. The decision uses measurable quantities only
 // (see classify() and docs/response.md):
 //   1. the run overturned                                         -> overturned
-//   2. the block (almost) never flies in the late window [late_start, t_end]:
+//   2. mu > 0, the block flew, friction dissipated most of the available energy E0 - E_rest,
+//      and the rocking has died out (late rotational share of kinetic energy small; the
+//      remaining heave may or may not still lift it off)          -> settle down
+//   3. the block (almost) never flies in the late window [late_start, t_end]:
 //      flight fraction of that window < steady_flight_fraction   -> steady rocking
-//   3. mu > 0, friction dissipated most of the available energy E0 - E_rest, and the rocking
-//      has died out (late rotational share of kinetic energy small)  -> settle down
 //   4. the swing-averaged rotational share of the kinetic energy, rotation / (rotation + y'),
 //      fell from the first swings to the late window by a large factor (energy flows from
 //      rocking into heave)                                        -> rock to vertical

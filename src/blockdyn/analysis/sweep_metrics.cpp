@@ -1,5 +1,7 @@
 #include "blockdyn/analysis/sweep_metrics.hpp"
 
+#include "blockdyn/analysis/response_type.hpp"
+
 #include <mutex>
 #include <stdexcept>
 
@@ -59,6 +61,26 @@ class RegimeTimeMetric : public PointMetric {
   }
 };
 
+// Long-term response class of the thesis (sec. 4.4), from the swings seen during the run; the late
+// window is the second half of the run, as in `blockdyn response`.
+class ResponseTypeMetric : public PointMetric {
+ public:
+  std::vector<std::string> columns() const override { return {"response_type", "response_reason"}; }
+  std::unique_ptr<SimulationSink> make_sink(const PointContext& c) const override {
+    SwingOptions so;
+    so.late_start = ResponseOptions{}.late_fraction * c.options.t_end;
+    return std::make_unique<SwingAccumulator>(c.point.params, so);
+  }
+  void compute(const PointContext& c, const SimulationResult& r, const SimulationSink* sink,
+               std::vector<MetricValue>& out) const override {
+    const ResponseCriteria crit;
+    const auto& acc = static_cast<const SwingAccumulator&>(*sink);
+    const ResponseReport rep = classify(c.point.params, compute_metrics(c.point.params, r, acc, crit), crit);
+    out.emplace_back(std::string(to_string(rep.type)));
+    out.emplace_back(rep.reason);
+  }
+};
+
 std::mutex& registry_mutex() {
   static std::mutex m;
   return m;
@@ -77,6 +99,8 @@ std::vector<MetricInfo> builtin_metrics() {
        [] { return std::make_unique<FinalStateMetric>(); }},
       {"regime_time", "time spent in contact, slide and flight",
        [] { return std::make_unique<RegimeTimeMetric>(); }},
+      {"response_type", "long-term response class (thesis sec. 4.4) and the criterion that decided it",
+       [] { return std::make_unique<ResponseTypeMetric>(); }},
   };
 }
 

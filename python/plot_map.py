@@ -1,0 +1,74 @@
+#!/usr/bin/env python3
+"""Response map over (1/r, k) with boundary curves (thesis Figs 6.1-6.2).
+
+usage: plot_map.py MAP.csv BOUNDARIES.csv OUT.png TITLE   (an SVG is written beside the PNG)
+"""
+import csv
+import math
+import os
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+STYLE = {  # response type -> (marker, face colour, label)
+    "steady_rocking": ("s", "none", "steady rocking"),
+    "settle_down": ("o", "none", "settle down"),
+    "rock_to_vertical": ("v", "C3", "rock to vertical"),
+    "zero_friction_rock_flight": ("+", "C2", "zero-friction rock-flight"),
+    "overturned": (".", "0.6", "overturned"),
+    "unclassified": ("d", "C4", "unclassified"),
+    "failed": ("x", "C1", "failed"),
+}
+
+
+def num(s):
+    try:
+        v = float(s)
+        return v if math.isfinite(v) else None
+    except (TypeError, ValueError):
+        return None
+
+
+def main(argv):
+    if len(argv) != 5:
+        raise SystemExit(__doc__)
+    map_csv, bnd_csv, out, title = argv[1:]
+    with open(map_csv, newline="") as f:
+        rows = list(csv.DictReader(f))
+    groups = {}
+    for r in rows:
+        t = r.get("response_type") or ("failed" if r["status"] in ("error", "numerical_failure") else "unclassified")
+        groups.setdefault(t, []).append((float(r["inv_r"]), math.log10(float(r["k"]))))
+    fig, ax = plt.subplots(figsize=(8, 6.5), constrained_layout=True)
+    for t, pts in sorted(groups.items()):
+        m, fc, label = STYLE.get(t, ("*", "k", t))
+        xs, ys = zip(*pts)
+        kw = dict(marker=m, s=28, label=f"{label} ({len(pts)})")
+        if fc == "none":
+            kw.update(facecolors="none", edgecolors="k", linewidths=0.7)
+        else:
+            kw.update(c=fc, linewidths=0.9)
+        ax.scatter(xs, ys, **kw)
+    with open(bnd_csv, newline="") as f:
+        brows = list(csv.DictReader(f))
+    for col, style, label in (("k_stability", "-", "stability boundary"),
+                              ("k_high", "--", "k_high (early flight boundary)"),
+                              ("k_critical", "-.", "k_critical (no flight boundary)")):
+        pts = [(float(b["inv_r"]), num(b[col])) for b in brows]
+        pts = [(x, math.log10(v)) for x, v in pts if v]
+        if pts:
+            xs, ys = zip(*pts)
+            ax.plot(xs, ys, style, color="k", lw=1.3, label=label)
+    ax.set_xlabel("1/r = height/width")
+    ax.set_ylabel("log10 k")
+    ax.set_title(f"response types in the (k, 1/r) plane, {title}")
+    ax.legend(fontsize=8, loc="lower right", framealpha=0.9)
+    fig.savefig(out, dpi=110)
+    fig.savefig(os.path.splitext(out)[0] + ".svg")
+
+
+if __name__ == "__main__":
+    main(sys.argv)
