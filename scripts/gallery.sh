@@ -29,3 +29,9 @@ run $B bifurcation-curves --r-min 0.05 --r-max 1 --points 40 --csv "$O/bifurcati
 # Long-term response (thesis 4.4) and chaos (thesis 5)
 run $B response --r 0.2 --mu 0.2 --k 1e4 --ic ic1 --t-end 100 --csv-prefix "$O/response" --plot "$O/response.png"
 run $B lyapunov --r 0.1 --mu 0 --k 1e6 --ic ic1 --t-end 60 --csv "$O/lyapunov.csv" --plot "$O/lyapunov.png"
+run $B poincare --mu 0 --r 0.5 --k 1e4 --t-end 200 --csv "$O/poincare.csv" --plot "$O/poincare.png"
+run $B energy-surface --mu 0.3 --r 0.2 --k 1e5 --ic ic1 --t-end 100 --phase-dt 0.1 --plot "$O/energy_surface.png"
+# Response map (thesis ch. 6)
+run $B map --k 1e1:1e8:12 --inv-r 1:20:10 --mu 0.2 --ic ic1 --t-end 30 --boundary-points 6 \
+  -o "$O/map.csv" --overwrite --quiet --plot "$O/map.png"
+echo "gallery written to $O"

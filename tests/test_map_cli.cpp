@@ -1,0 +1,103 @@
+// `blockdyn map`: a tiny (k, 1/r) map end to end - classified rows, boundary curves, thread
+// independence, bad input.
+#include <gtest/gtest.h>
+
+#include "test_sweep_util.hpp"
+
+using sweep_test::run_cli;
+using sweep_test::slurp;
+using sweep_test::TmpDir;
+
+namespace {
+
+std::vector<std::string> map_args(const std::string& out, int threads) {
+  return {"map", "--k", "1e2,1e6", "--inv-r", "2,10", "--mu", "0.2", "--ic", "ic1", "--t-end", "8",
+          "--boundary-points", "2", "--threads", std::to_string(threads), "-o", out, "--quiet"};
+}
+
+std::vector<std::string> split(const std::string& line) {
+  std::vector<std::string> f;
+  std::string cur;
+  bool quoted = false;
+  for (char c : line) {
+    if (c == '"') quoted = !quoted;
+    else if (c == ',' && !quoted) {
+      f.push_back(cur);
+      cur.clear();
+    } else cur += c;
+  }
+  f.push_back(cur);
+  return f;
+}
+
+}  // namespace
+
+TEST(MapCli, ClassifiesEveryPointAndFindsBoundaries) {
+  TmpDir d("map");
+  const auto r1 = run_cli(map_args("m1.csv", 1), d.path);
+  ASSERT_EQ(r1.code, 0) << r1.err;
+  const auto r2 = run_cli(map_args("m2.csv", 2), d.path);
+  ASSERT_EQ(r2.code, 0) << r2.err;
+  const std::string a = slurp(d.path + "/m1.csv"), b = slurp(d.path + "/m2.csv");
+  EXPECT_EQ(a, b) << "the map must not depend on the thread count";
+
+  std::istringstream in(a);
+  std::string line;
+  std::getline(in, line);
+  const auto head = split(line);
+  const auto col = [&](const std::string& name) {
+    for (std::size_t i = 0; i < head.size(); ++i)
+      if (head[i] == name) return i;
+    ADD_FAILURE() << "missing column " << name;
+    return std::size_t(0);
+  };
+  const std::size_t c_type = col("response_type"), c_k = col("k"), c_ir = col("inv_r"), c_status = col("status");
+  int rows = 0;
+  while (std::getline(in, line)) {
+    const auto f = split(line);
+    ++rows;
+    const double k = std::stod(f[c_k]), inv_r = std::stod(f[c_ir]);
+    // A slender block (1/r = 10) on a soft foundation (k = 100) released at alpha/2 overturns
+    // at once (k far below the thesis's k1 ~ 700 at r = 0.1); every other point is classified.
+    if (k == 100 && inv_r == 10) {
+      EXPECT_EQ(f[c_status], "overturned");
+      EXPECT_EQ(f[c_type], "overturned");
+    } else {
+      EXPECT_NE(f[c_type], "");
+      EXPECT_NE(f[c_type], "failed");
+    }
+  }
+  EXPECT_EQ(rows, 4);
+
+  const std::string bnd = slurp(d.path + "/m1_boundaries.csv");
+  std::istringstream bin(bnd);
+  std::getline(bin, line);
+  EXPECT_EQ(line, "inv_r,r,k_stability,stability_status,k_high,k_high_status,k_critical,k_critical_status");
+  int brows = 0;
+  while (std::getline(bin, line)) {
+    const auto f = split(line);
+    ++brows;
+    if (std::stod(f[0]) == 10) {  // r = 0.1: the stability boundary lies inside [1e2, 1e6]
+      EXPECT_EQ(f[3], "found");
+      const double k1 = std::stod(f[2]);
+      EXPECT_GT(k1, 100.0);
+      EXPECT_LT(k1, 1e6);
+    }
+  }
+  EXPECT_EQ(brows, 2);
+  EXPECT_TRUE(sweep_test::exists(d.path + "/m1_boundaries.csv.json"));
+}
+
+TEST(MapCli, BadInputIsRejected) {
+  TmpDir d("mapbad");
+  for (const std::vector<std::string>& bad :
+       {std::vector<std::string>{"map", "--mu", "-1", "-o", "x.csv"},
+        std::vector<std::string>{"map", "--ic", "ic7", "-o", "x.csv"},
+        std::vector<std::string>{"map", "--k", "0:10:3", "-o", "x.csv"},
+        std::vector<std::string>{"map", "--t-end", "nan", "-o", "x.csv"}}) {
+    const auto r = run_cli(bad, d.path);
+    EXPECT_EQ(r.code, 2) << bad[1] << " " << bad[2] << ": " << r.err;
+    EXPECT_NE(r.err.find("error:"), std::string::npos) << r.err;
+    EXPECT_FALSE(sweep_test::exists(d.path + "/x.csv"));
+  }
+}
