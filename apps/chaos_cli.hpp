@@ -84,6 +84,50 @@ inline nlohmann::ordered_json ic_json(const IcFlags& f, const BlockStateVec& z0,
   return j;
 }
 
+// --r --mu --k, --rtol --atol and the initial-condition flags: the orbit every command follows.
+inline void add_orbit_options(CLI::App& s, BlockParams& p, IntegratorOptions& integ, IcFlags& ic) {
+  add_block_options(s, p);
+  add_tolerance_options(s, integ);
+  add_ic_options(s, ic);
+}
+
+// --plot (help text plot_help), --json and --json-out.
+inline void add_summary_options(CLI::App& s, std::string& plot, const std::string& plot_help, bool& json,
+                                std::string& json_out) {
+  s.add_option("--plot", plot, plot_help);
+  s.add_flag("--json", json, "print the JSON summary on stdout");
+  s.add_option("--json-out", json_out, "also write the JSON summary to this file");
+}
+
+// Options of a run to t_end without an event log; throws std::invalid_argument when invalid.
+inline SimulationOptions orbit_run_options(double t_end, const IntegratorOptions& integ) {
+  SimulationOptions so;
+  so.t_end = t_end;
+  so.integrator = integ;
+  so.record_events = false;
+  validate(so);
+  return so;
+}
+
+// The opening of every summary: run info, block parameters, initial state and integrator.
+inline nlohmann::ordered_json summary_head(const BlockParams& p, const IntegratorOptions& integ, const IcFlags& f,
+                                           const BlockStateVec& z0) {
+  nlohmann::ordered_json j;
+  j["run_info"] = run_info();
+  j["params"] = to_json(p);
+  j["initial"] = ic_json(f, z0, p);
+  j["integrator"] = to_json(integ);
+  return j;
+}
+
+// Writes the summary to --json-out and, with --json, to stdout; true when it went to stdout
+// (the text summary is then left out).
+inline bool emit_summary(const nlohmann::ordered_json& j, bool json, const std::string& json_out) {
+  if (!json_out.empty()) emit_json(j, json_out);
+  if (json) emit_json(j, "-");
+  return json;
+}
+
 // Temporary file path for CSVs that only feed a plot.
 inline std::string temp_path(const std::string& stem, const std::string& ext) {
   return "/tmp/blockdyn-" + stem + "-" + std::to_string(::getpid()) + ext;

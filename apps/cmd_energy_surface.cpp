@@ -29,11 +29,7 @@ struct SurfaceFlags {
 
 void run(const CLI::App& s, SurfaceFlags& f) {
   validate(f.p);
-  SimulationOptions so;
-  so.t_end = f.t_end;
-  so.integrator = f.integ;
-  so.record_events = false;
-  validate(so);
+  const SimulationOptions so = orbit_run_options(f.t_end, f.integ);
   require_range("phase-dt", f.phase_dt, 0.0, f.t_end, false, true);
   require_range("n", f.n, 2, 100000);
   const BlockStateVec z0 = ic_state(s, f.ic, f.p);
@@ -84,11 +80,7 @@ void run(const CLI::App& s, SurfaceFlags& f) {
     if (temp)
       for (const char* suf : {"_heave.csv", "_rock.csv", "_phase.csv"}) std::remove((prefix + suf).c_str());
   }
-  nlohmann::ordered_json j;
-  j["run_info"] = run_info();
-  j["params"] = to_json(f.p);
-  j["initial"] = ic_json(f.ic, z0, f.p);
-  j["integrator"] = to_json(f.integ);
+  nlohmann::ordered_json j = summary_head(f.p, f.integ, f.ic, z0);
   j["options"] = {{"t_end", f.t_end}, {"phase_dt", f.phase_dt}, {"n", f.n}};
   j["surface_energy"] = E;
   j["status"] = to_string(r.status);
@@ -97,10 +89,7 @@ void run(const CLI::App& s, SurfaceFlags& f) {
   j["max_heave_excess"] = heave_excess;
   j["max_rock_excess"] = rock_excess;
   j["max_abs_energy_balance_error"] = r.max_abs_energy_error;
-  if (!f.json_out.empty()) emit_json(j, f.json_out);
-  if (f.json) {
-    emit_json(j, "-");
-  } else {
+  if (!emit_summary(j, f.json, f.json_out)) {
     std::printf("E = %.12g; initial y' = %.12g; trajectory to t = %.6g (%s)\n", E, z0[kVY], r.t_final,
                 to_string(r.status));
     std::printf("largest excess over the projections: (y, y') %.3g, (w, w') %.3g\n", heave_excess, rock_excess);
@@ -111,17 +100,13 @@ void add(CLI::App& app) {
   auto f = std::make_shared<SurfaceFlags>();
   CLI::App* s = app.add_subcommand(
       "energy-surface", "energy-surface projections on (y, y') and (w, w') with the trajectory; ICs on a given energy");
-  add_block_options(*s, f->p);
-  add_tolerance_options(*s, f->integ);
-  add_ic_options(*s, f->ic);
+  add_orbit_options(*s, f->p, f->integ, f->ic);
   s->add_option("--t-end", f->t_end, "final time (> 0)")->capture_default_str();
   s->add_option("--phase-dt", f->phase_dt, "trajectory sampling interval (> 0)")->capture_default_str();
   s->add_option("--surface-energy", f->surface_energy, "energy of the drawn surface (default: the initial energy)");
   s->add_option("--n", f->n, "boundary points per projection, in [2, 100000]")->capture_default_str();
   s->add_option("--csv-prefix", f->csv_prefix, "write PREFIX_heave.csv, PREFIX_rock.csv, PREFIX_phase.csv");
-  s->add_option("--plot", f->plot, "plot the projections and the trajectory (PNG + SVG)");
-  s->add_flag("--json", f->json, "print the JSON summary on stdout");
-  s->add_option("--json-out", f->json_out, "also write the JSON summary to this file");
+  add_summary_options(*s, f->plot, "plot the projections and the trajectory (PNG + SVG)", f->json, f->json_out);
   s->callback([s, f] { run(*s, *f); });
 }
 

@@ -41,6 +41,27 @@ void remove_temp(const std::string& path) {
   std::remove((path + ".json").c_str());
 }
 
+// Writes the CSV text (with its sidecar) to f.csv, or to a temporary file when only f.plot is
+// wanted, plots it with script and records both paths in j.
+template <class Flags>
+void write_csv_and_plot(const Flags& f, const std::string& stem, const std::string& text, const json& sidecar,
+                        const std::string& script, json& j) {
+  const std::string path = f.csv.empty() ? temp_path(stem) : f.csv;
+  write_csv(path, text, sidecar);
+  if (!f.plot.empty()) run_python(script, {path, f.plot});
+  if (f.csv.empty()) remove_temp(path);
+  if (!f.csv.empty()) j["csv"] = f.csv;
+  if (!f.plot.empty()) j["plot"] = f.plot;
+}
+
+// Writes j to --json-out and, with --json, to stdout; true when it went to stdout (no table then).
+template <class Flags>
+bool emit_summary(const Flags& f, const json& j) {
+  if (!f.json_out.empty()) emit_json(j, f.json_out);
+  if (f.json) emit_json(j, "-");
+  return f.json;
+}
+
 void check_threads(int t) { require_range("threads", t, 0, 1024); }
 
 json params_json(double r, double k) {
@@ -127,18 +148,9 @@ void run_equilibria(const EquilibriaFlags& f) {
         {"energy", "-int_0^w arm: work to tilt quasi-statically from upright (thesis's energy plot)"},
         {"potential", "springs + gravity V(y_R(w), w) + y_R(w), minus its value at w = 0"},
         {"corners_below", "corners below the surface at rest"}};
-    const std::string path = f.csv.empty() ? temp_path("equilibria") : f.csv;
-    write_csv(path, os.str(), side);
-    if (!f.plot.empty()) run_python("plot_equilibria.py", {path, f.plot});
-    if (f.csv.empty()) remove_temp(path);
-    if (!f.csv.empty()) j["csv"] = f.csv;
-    if (!f.plot.empty()) j["plot"] = f.plot;
+    write_csv_and_plot(f, "equilibria", os.str(), side, "plot_equilibria.py", j);
   }
-  if (!f.json_out.empty()) emit_json(j, f.json_out);
-  if (f.json) {
-    emit_json(j, "-");
-    return;
-  }
+  if (emit_summary(f, j)) return;
   std::printf("r = %g, k = %g, alpha = %.10f: %s\n", f.r, f.k, p.alpha(), regime(f.r, f.k, crit).c_str());
   std::printf("k_os = %.10f, k_uns = %.10f\n", crit.k_os, crit.k_uns);
   std::printf("%18s %18s %10s %10s %14s %8s\n", "w", "y", "stability", "branch", "d arm/dw", "corners");
@@ -217,18 +229,9 @@ void run_bifurcation(const BifurcationFlags& f) {
     side["zoom"] = {{"k_min", z_lo}, {"k_max", z_hi}, {"points", f.zoom_points}, {"spacing", "lin"}};
     side["columns"] = "panel (range|zoom), index of k in its panel, k, equilibrium w, centre height y, "
                       "stable (1/0), branch (upright|tilted|diagonal)";
-    const std::string path = f.csv.empty() ? temp_path("bifurcation") : f.csv;
-    write_csv(path, os.str(), side);
-    if (!f.plot.empty()) run_python("plot_bifurcation.py", {path, f.plot});
-    if (f.csv.empty()) remove_temp(path);
-    if (!f.csv.empty()) j["csv"] = f.csv;
-    if (!f.plot.empty()) j["plot"] = f.plot;
+    write_csv_and_plot(f, "bifurcation", os.str(), side, "plot_bifurcation.py", j);
   }
-  if (!f.json_out.empty()) emit_json(j, f.json_out);
-  if (f.json) {
-    emit_json(j, "-");
-    return;
-  }
+  if (emit_summary(f, j)) return;
   std::printf("r = %g, alpha = %.10f\n", f.r, std::atan(f.r));
   std::printf("k_os  = %.10f  (linearised (3 + sqrt(9 - 3 r^2)) / r^2 = %.10f, thesis 6/r^2 - 0.5 = %.10f)\n",
               c.k_os, k_os_linearized(f.r), k_os_small_angle(f.r));
@@ -299,18 +302,9 @@ void run_curves(const CurvesFlags& f) {
   j["max_rel_dev_k_os_vs_linearized"] = dev_lin;
   j["max_rel_dev_k_uns_vs_one_corner_closed_form"] = dev_uns;
   if (!f.csv.empty() || !f.plot.empty()) {
-    const std::string path = f.csv.empty() ? temp_path("bifurcation-curves") : f.csv;
-    write_csv(path, os.str(), j);
-    if (!f.plot.empty()) run_python("plot_bifurcation_curves.py", {path, f.plot});
-    if (f.csv.empty()) remove_temp(path);
-    if (!f.csv.empty()) j["csv"] = f.csv;
-    if (!f.plot.empty()) j["plot"] = f.plot;
+    write_csv_and_plot(f, "bifurcation-curves", os.str(), j, "plot_bifurcation_curves.py", j);
   }
-  if (!f.json_out.empty()) emit_json(j, f.json_out);
-  if (f.json) {
-    emit_json(j, "-");
-    return;
-  }
+  if (emit_summary(f, j)) return;
   std::printf("%10s %20s %20s %14s %14s\n", "r", "k_os", "k_uns", "k_os-k_uns", "6/r^2-.5-k_os");
   for (const auto& c : cs)
     std::printf("%10.6f %20.10f %20.10f %14.10f %14.3e\n", c.r, c.k_os, c.k_uns, c.k_os - c.k_uns,

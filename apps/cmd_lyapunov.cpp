@@ -35,10 +35,7 @@ void run(const CLI::App& s, LyapunovFlags& f) {
   f.opt.integrator = f.integ;
   f.opt.method = f.method == "section" ? LyapunovMethod::Section : LyapunovMethod::Time;
   validate(f.opt);
-  SimulationOptions check;
-  check.t_end = f.opt.t_end;
-  check.integrator = f.integ;
-  validate(check);
+  orbit_run_options(f.opt.t_end, f.integ);  // validates t_end and the tolerances
   const BlockStateVec z0 = ic_state(s, f.ic, f.p);
   const LyapunovResult r = block_lyapunov(f.p, z0, f.opt);
 
@@ -53,11 +50,7 @@ void run(const CLI::App& s, LyapunovFlags& f) {
     run_python("plot_lyapunov.py", {csv, f.plot, title});
     if (temp) std::remove(csv.c_str());
   }
-  nlohmann::ordered_json j;
-  j["run_info"] = run_info();
-  j["params"] = to_json(f.p);
-  j["initial"] = ic_json(f.ic, z0, f.p);
-  j["integrator"] = to_json(f.integ);
+  nlohmann::ordered_json j = summary_head(f.p, f.integ, f.ic, z0);
   j["options"] = {{"method", to_string(f.opt.method)},
                   {"t_end", f.opt.t_end},
                   {"d0", f.opt.d0},
@@ -79,10 +72,7 @@ void run(const CLI::App& s, LyapunovFlags& f) {
   const std::size_t n = r.history.size(), stride = std::max<std::size_t>(1, n / 20);
   for (std::size_t i = stride - 1; i < n; i += stride) h.push_back({{"t", r.history[i].t}, {"estimate", r.history[i].estimate}});
   j["history_coarse"] = h;
-  if (!f.json_out.empty()) emit_json(j, f.json_out);
-  if (f.json) {
-    emit_json(j, "-");
-  } else {
+  if (!emit_summary(j, f.json, f.json_out)) {
     std::printf("largest Lyapunov exponent: %.6g (%s method, t = %.6g, %ld renormalisations, status %s)\n",
                 r.exponent, to_string(f.opt.method), r.t_final, r.renormalisations, to_string(r.status));
     std::printf("over the second half: %.6g\n", tail_exponent(r, 0.5 * r.t_final));
@@ -94,9 +84,7 @@ void add(CLI::App& app) {
   auto f = std::make_shared<LyapunovFlags>();
   f->opt.t_end = 200;
   CLI::App* s = app.add_subcommand("lyapunov", "largest Lyapunov exponent along an orbit (two-trajectory renormalisation)");
-  add_block_options(*s, f->p);
-  add_tolerance_options(*s, f->integ);
-  add_ic_options(*s, f->ic);
+  add_orbit_options(*s, f->p, f->integ, f->ic);
   s->add_option("--t-end", f->opt.t_end, "final time (> 0)")->capture_default_str();
   s->add_option("--method", f->method, "renormalise at fixed times (time) or on the w = 0 section (section)")
       ->check(CLI::IsMember({"time", "section"}))
@@ -104,9 +92,7 @@ void add(CLI::App& app) {
   s->add_option("--d0", f->opt.d0, "separation after each renormalisation, in [1e-14, 1e-2]")->capture_default_str();
   s->add_option("--interval", f->opt.interval, "time method: renormalisation interval (> 0)")->capture_default_str();
   s->add_option("--csv", f->csv, "write the convergence history (t, growth, estimate)");
-  s->add_option("--plot", f->plot, "plot the running estimate against time (PNG + SVG)");
-  s->add_flag("--json", f->json, "print the JSON summary on stdout");
-  s->add_option("--json-out", f->json_out, "also write the JSON summary to this file");
+  add_summary_options(*s, f->plot, "plot the running estimate against time (PNG + SVG)", f->json, f->json_out);
   s->callback([s, f] { run(*s, *f); });
 }
 

@@ -25,11 +25,7 @@ struct PoincareFlags {
 
 void run(const CLI::App& s, PoincareFlags& f) {
   validate(f.p);
-  SimulationOptions so;
-  so.t_end = f.t_end;
-  so.integrator = f.integ;
-  so.record_events = false;
-  validate(so);
+  const SimulationOptions so = orbit_run_options(f.t_end, f.integ);
   require_range("t-min", f.t_min, 0.0, f.t_end);
   const BlockStateVec z0 = ic_state(s, f.ic, f.p);
   const CrossingDirection dir = f.direction == "positive"   ? CrossingDirection::Positive
@@ -60,11 +56,7 @@ void run(const CLI::App& s, PoincareFlags& f) {
     e_lo = std::min(e_lo, q.energy);
     e_hi = std::max(e_hi, q.energy);
   }
-  nlohmann::ordered_json j;
-  j["run_info"] = run_info();
-  j["params"] = to_json(f.p);
-  j["initial"] = ic_json(f.ic, z0, f.p);
-  j["integrator"] = to_json(f.integ);
+  nlohmann::ordered_json j = summary_head(f.p, f.integ, f.ic, z0);
   j["options"] = {{"t_end", f.t_end}, {"t_min", f.t_min}, {"direction", f.direction}};
   j["status"] = to_string(r.status);
   j["t_final"] = r.t_final;
@@ -74,10 +66,7 @@ void run(const CLI::App& s, PoincareFlags& f) {
   j["energy_at_crossings"] = {{"min", pts.empty() ? NAN : e_lo}, {"max", pts.empty() ? NAN : e_hi}};
   j["energy_initial"] = r.initial_energy.total();
   j["max_abs_energy_balance_error"] = r.max_abs_energy_error;
-  if (!f.json_out.empty()) emit_json(j, f.json_out);
-  if (f.json) {
-    emit_json(j, "-");
-  } else {
+  if (!emit_summary(j, f.json, f.json_out)) {
     std::printf("%zu crossings of w = 0 up to t = %.6g (status %s); max |w| there %.3g\n", pts.size(), r.t_final,
                 to_string(r.status), max_w);
   }
@@ -86,18 +75,14 @@ void run(const CLI::App& s, PoincareFlags& f) {
 void add(CLI::App& app) {
   auto f = std::make_shared<PoincareFlags>();
   CLI::App* s = app.add_subcommand("poincare", "Poincare section w = 0: crossing states (y, y', w', x, x') and plots");
-  add_block_options(*s, f->p);
-  add_tolerance_options(*s, f->integ);
-  add_ic_options(*s, f->ic);
+  add_orbit_options(*s, f->p, f->integ, f->ic);
   s->add_option("--t-end", f->t_end, "final time (> 0)")->capture_default_str();
   s->add_option("--t-min", f->t_min, "record crossings from this time on (drop a transient)")->capture_default_str();
   s->add_option("--direction", f->direction, "crossings to keep: both, positive (w' > 0), negative")
       ->check(CLI::IsMember({"both", "positive", "negative"}))
       ->capture_default_str();
   s->add_option("--csv", f->csv, "write the crossings CSV here");
-  s->add_option("--plot", f->plot, "plot the (y, y') and (y, w') projections (PNG + SVG)");
-  s->add_flag("--json", f->json, "print the JSON summary on stdout");
-  s->add_option("--json-out", f->json_out, "also write the JSON summary to this file");
+  add_summary_options(*s, f->plot, "plot the (y, y') and (y, w') projections (PNG + SVG)", f->json, f->json_out);
   s->callback([s, f] { run(*s, *f); });
 }
 

@@ -62,10 +62,7 @@ void run(const CLI::App& s, ResponseFlags& f) {
   validate(f.p);
   f.opt.integrator = f.integ;
   validate(f.opt);
-  SimulationOptions check;
-  check.t_end = f.opt.t_end;
-  check.integrator = f.integ;
-  validate(check);
+  orbit_run_options(f.opt.t_end, f.integ);  // validates t_end and the tolerances
   const BlockStateVec z0 = ic_state(s, f.ic, f.p);
   const bool want_series = !f.csv_prefix.empty() || !f.plot.empty();
   if (!want_series) f.opt.phase_dt = 0.0;
@@ -89,11 +86,7 @@ void run(const CLI::App& s, ResponseFlags& f) {
     }
   }
 
-  nlohmann::ordered_json j;
-  j["run_info"] = run_info();
-  j["params"] = to_json(f.p);
-  j["initial"] = ic_json(f.ic, z0, f.p);
-  j["integrator"] = to_json(f.integ);
+  nlohmann::ordered_json j = summary_head(f.p, f.integ, f.ic, z0);
   j["options"] = {{"t_end", f.opt.t_end},
                   {"late_fraction", f.opt.late_fraction},
                   {"quadrature_dt", f.opt.quadrature_dt},
@@ -104,10 +97,7 @@ void run(const CLI::App& s, ResponseFlags& f) {
   j["type"] = to_string(run.report.type);
   j["reason"] = run.report.reason;
   j["metrics"] = metrics_json(run.report.metrics);
-  if (!f.json_out.empty()) emit_json(j, f.json_out);
-  if (f.json) {
-    emit_json(j, "-");
-  } else {
+  if (!emit_summary(j, f.json, f.json_out)) {
     const ResponseMetrics& m = run.report.metrics;
     std::printf("response: %s (%s)\n", to_string(run.report.type), run.report.reason.c_str());
     std::printf("status: %s at t = %.10g, swings: %ld, take-offs: %ld (late %ld)\n", to_string(m.status), m.t_final,
@@ -121,9 +111,7 @@ void add(CLI::App& app) {
   auto f = std::make_shared<ResponseFlags>();
   f->opt.phase_dt = 0.05;
   CLI::App* s = app.add_subcommand("response", "long-term response: type, swings, swing-averaged energies, phase portraits");
-  add_block_options(*s, f->p);
-  add_tolerance_options(*s, f->integ);
-  add_ic_options(*s, f->ic);
+  add_orbit_options(*s, f->p, f->integ, f->ic);
   s->add_option("--t-end", f->opt.t_end, "final time (> 0)")->capture_default_str();
   s->add_option("--late-fraction", f->opt.late_fraction, "late window starts at this fraction of t-end, in [0, 1)")
       ->capture_default_str();
@@ -146,9 +134,7 @@ void add(CLI::App& app) {
                 "mu > 0: rock to vertical if the late-window dissipation is below this fraction, in (0, 1)")
       ->capture_default_str();
   s->add_option("--csv-prefix", f->csv_prefix, "write PREFIX_swings.csv and PREFIX_phase.csv");
-  s->add_option("--plot", f->plot, "write the phase portraits and swing-averaged energies (PNG + SVG)");
-  s->add_flag("--json", f->json, "print the JSON summary on stdout");
-  s->add_option("--json-out", f->json_out, "also write the JSON summary to this file");
+  add_summary_options(*s, f->plot, "write the phase portraits and swing-averaged energies (PNG + SVG)", f->json, f->json_out);
   s->callback([s, f] { run(*s, *f); });
 }
 

@@ -46,6 +46,14 @@ json search_json(const StabilitySearchOptions& o) {
           {"eps", o.eps}};
 }
 
+// Writes a search study's table and plot panel, and its summary: meta plus the per-point results.
+void finish_search(const OutputFlags& out, const std::string& command, const std::string& panel, const Table& t,
+                   const json& meta, const json& points) {
+  json summary = meta;
+  summary["points"] = points;
+  finish(out, csv_target(out, command), t, meta, "plot_stability.py", {panel}, summary);
+}
+
 // ------------------------------------------------------------------ overturn
 
 struct OverturnFlags {
@@ -182,9 +190,7 @@ void run_curve(const CurveFlags& f) {
   meta["definitions"] =
       "kn_stability = sup K: the block overturns while ihor < n (within t_end) for all k < K "
       "(k1: ic1, n = 1; k2: ic2, n = 2; k3: ic2, n = 3, outside (k2, k2(1+eps)])";
-  json summary = meta;
-  summary["points"] = points;
-  finish(f.out, csv_target(f.out, "stability-curve"), t, meta, "plot_stability.py", {"curve"}, summary);
+  finish_search(f.out, "stability-curve", "curve", t, meta, points);
   if (f.out.json_out != "-") {
     std::printf("%-10s", "r");
     for (const auto& n : names) std::printf(" %-16s", (n + "_stability").c_str());
@@ -268,9 +274,7 @@ void run_blowup(const BlowupFlags& f) {
   meta["definition"] =
       "r2_s (r3_s) = sup R: for all r < R the block (ic2) overturns while ihor < 2 (< 3) for every k in "
       "the k range, i.e. k2_stability (k3_stability) is above the k cap";
-  json summary = meta;
-  summary["points"] = points;
-  finish(f.out, csv_target(f.out, "blowup"), t, meta, "plot_stability.py", {"blowup"}, summary);
+  finish_search(f.out, "blowup", "blowup", t, meta, points);
   if (f.out.json_out != "-") {
     for (const auto& c : t.columns)
       if (c.find("_status") == std::string::npos) std::printf("%-16s", c.c_str());

@@ -4,16 +4,9 @@ Usage: plot_bifurcation.py DIAGRAM.csv OUT.png  (reads DIAGRAM.csv.json for k_os
 Left: window around k_uns, k_os (linear k); right: the requested range. Stable branches solid,
 unstable dashed, w = alpha dotted. Writes OUT.png and OUT.svg.
 """
-import csv
-import json
-import os
-import sys
 from collections import defaultdict
 
-import matplotlib
-
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
+from plotkit import load_meta, plt, read_rows, run_in_out, save, stem
 
 
 def runs(points):
@@ -56,14 +49,12 @@ def draw(ax, rows, meta, logx):
 
 
 def main(csv_path, out_png):
-    with open(csv_path + ".json") as f:
-        meta = json.load(f)
+    meta = load_meta(csv_path)
     panels = defaultdict(list)
-    with open(csv_path) as f:
-        for row in csv.DictReader(f):
-            panels[row["panel"]].append(
-                {"index": int(row["index"]), "k": float(row["k"]), "w": float(row["w"]),
-                 "stable": row["stable"] == "1", "branch": row["branch"]})
+    for row in read_rows(csv_path):
+        panels[row["panel"]].append(
+            {"index": int(row["index"]), "k": float(row["k"]), "w": float(row["w"]),
+             "stable": row["stable"] == "1", "branch": row["branch"]})
     fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(10, 4))
     draw(ax1, panels["zoom"], meta, False)
     draw(ax2, panels["range"], meta, meta["range"]["spacing"] == "log")
@@ -76,12 +67,8 @@ def main(csv_path, out_png):
     ax2.plot([], [], "o", color="C3", ms=4, label="fold (k_uns)")
     ax2.legend(fontsize=8, loc="center right")
     fig.tight_layout()
-    stem = os.path.splitext(out_png)[0]
-    fig.savefig(stem + ".png", dpi=110)
-    fig.savefig(stem + ".svg")
+    save(fig, stem(out_png) + ".png")
 
 
 if __name__ == "__main__":
-    if len(sys.argv) != 3:
-        sys.exit(__doc__)
-    main(sys.argv[1], sys.argv[2])
+    run_in_out(main, __doc__)

@@ -2,19 +2,11 @@
 
 Usage: plot_bifurcation_curves.py CURVES.csv OUT.png   Writes OUT.png and OUT.svg.
 """
-import os
-import sys
-
-import matplotlib
-
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
-import numpy as np  # noqa: E402
+from plotkit import load_named, plt, run_in_out, save, stem
 
 
 def main(csv_path, out_png):
-    d = np.genfromtxt(csv_path, delimiter=",", names=True)
-    d = np.atleast_1d(d)
+    d = load_named(csv_path)
     fig, (ax1, ax2) = plt.subplots(2, 1, figsize=(7, 7), sharex=True)
     ax1.semilogy(d["r"], d["k_os"], "k-", label="k_os(r)")
     ax1.semilogy(d["r"], d["k_uns"], "C3--", label="k_uns(r)")
@@ -28,12 +20,8 @@ def main(csv_path, out_png):
     ax2.set_ylabel("k difference")
     ax2.legend(fontsize=8)
     fig.tight_layout()
-    stem = os.path.splitext(out_png)[0]
-    fig.savefig(stem + ".png", dpi=110)
-    fig.savefig(stem + ".svg")
+    save(fig, stem(out_png) + ".png")
 
 
 if __name__ == "__main__":
-    if len(sys.argv) != 3:
-        sys.exit(__doc__)
-    main(sys.argv[1], sys.argv[2])
+    run_in_out(main, __doc__)

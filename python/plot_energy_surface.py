@@ -4,31 +4,14 @@ Figs. 5.1-5.2, 5.8-5.11).
 
 usage: plot_energy_surface.py HEAVE.csv ROCK.csv PHASE.csv OUT.png [TITLE]   (SVG beside the PNG)
 """
-import csv
-import os
 import sys
 
-import matplotlib
-
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
-import numpy as np  # noqa: E402
-
-
-def load(path, skip=()):
-    with open(path, newline="") as f:
-        rows = list(csv.DictReader(f))
-    if not rows:
-        return {}
-    return {k: np.array([float(r[k]) for r in rows]) for k in rows[0] if k not in skip}
+from plotkit import load_columns, plt, save, split_args
 
 
 def main(argv):
-    if len(argv) not in (5, 6):
-        raise SystemExit(__doc__)
-    hv, rk, ph = load(argv[1]), load(argv[2]), load(argv[3], skip=("regime",))
-    out = argv[4]
-    title = argv[5] if len(argv) == 6 else ""
+    (heave, rock, phase), out, title = split_args(argv, __doc__, 3)
+    hv, rk, ph = load_columns(heave), load_columns(rock), load_columns(phase, skip=("regime",))
     fig, ax = plt.subplots(1, 2, figsize=(11, 4.6), constrained_layout=True)
     dot = dict(s=0.6, c="k", linewidths=0, rasterized=True)
     inside = hv["vy_max"] > 0
@@ -53,8 +36,7 @@ def main(argv):
     ax[1].set_ylabel("w' [rad]")
     ax[1].legend(loc="upper right", fontsize=8)
     fig.suptitle(title)
-    fig.savefig(out, dpi=80)
-    fig.savefig(os.path.splitext(out)[0] + ".svg", dpi=80)
+    save(fig, out, dpi=80, svg_dpi=80)
 
 
 if __name__ == "__main__":

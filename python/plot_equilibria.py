@@ -3,21 +3,12 @@
 Usage: plot_equilibria.py LANDSCAPE.csv OUT.png  (reads LANDSCAPE.csv.json for the equilibria)
 Writes OUT.png and OUT.svg.
 """
-import json
-import os
-import sys
-
-import matplotlib
-
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
-import numpy as np  # noqa: E402
+from plotkit import load_meta, load_named, np, plt, run_in_out, save, stem
 
 
 def main(csv_path, out_png):
-    data = np.genfromtxt(csv_path, delimiter=",", names=True)
-    with open(csv_path + ".json") as f:
-        meta = json.load(f)
+    data = load_named(csv_path)
+    meta = load_meta(csv_path)
     r, k = meta["params"]["r"], meta["params"]["k"]
     alpha = meta["params"]["alpha"]
     eqs = meta["equilibria"]
@@ -47,12 +38,8 @@ def main(csv_path, out_png):
     ax2.plot([], [], "o", color="C0", mfc="white", label="unstable")
     ax2.legend(fontsize=8)
     fig.tight_layout()
-    stem = os.path.splitext(out_png)[0]
-    fig.savefig(stem + ".png", dpi=110)
-    fig.savefig(stem + ".svg")
+    save(fig, stem(out_png) + ".png")
 
 
 if __name__ == "__main__":
-    if len(sys.argv) != 3:
-        sys.exit(__doc__)
-    main(sys.argv[1], sys.argv[2])
+    run_in_out(main, __doc__)

@@ -5,39 +5,9 @@ usage: plot_flight.py TABLE.csv OUT.png MODE     MODE: time | boundary | kmin | 
 The CSV's JSON sidecar (TABLE.csv.json) supplies the parameters for the title.
 An SVG with the same stem is written beside the PNG.
 """
-import csv
-import json
-import math
-import os
 import sys
 
-import matplotlib
-
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
-import numpy as np  # noqa: E402
-
-
-def load(path):
-    with open(path, newline="") as f:
-        rows = list(csv.DictReader(f))
-    if not rows:
-        raise SystemExit(f"{path}: no rows")
-    meta = {}
-    if os.path.exists(path + ".json"):
-        with open(path + ".json") as f:
-            meta = json.load(f)
-    return rows, meta
-
-
-def col(rows, name):
-    return np.array([float(r[name]) for r in rows])
-
-
-def save(fig, out):
-    fig.savefig(out, dpi=110)
-    fig.savefig(os.path.splitext(out)[0] + ".svg")
-    plt.close(fig)
+from plotkit import col, finish_k_scan, k_scan_figure, log_axes, np, plt, run_modes, save
 
 
 def plot_time(rows, meta, out):
@@ -47,19 +17,13 @@ def plot_time(rows, meta, out):
     groups = [(flew, ".", "first flight"),
               (~flew & (status == "overturned"), "v", "overturned, no flight (plotted at t_end)"),
               (~flew & (status != "overturned"), "x", "no flight by t_end")]
-    fig, (a, b) = plt.subplots(2, 1, sharex=True, figsize=(7, 5.5), constrained_layout=True)
+    fig, (a, b) = k_scan_figure()
     for sel, style, label in groups:
         if sel.any():
             a.plot(k[sel], t[sel], style, ms=4, color="k" if style == "." else "0.55", label=label)
             b.plot(k[sel], ihor[sel], style, ms=4, color="k" if style == "." else "0.55")
-    a.set_xscale("log")
-    a.set_ylabel("time to first flight")
-    a.legend(fontsize=8, loc="best")
-    a.set_title(f"{meta.get('ic', '')}: r = {meta.get('r', '?')}, mu = {meta.get('mu', '?')}, "
-                f"t_end = {meta.get('run_options', {}).get('t_end', '?')}")
-    b.set_ylabel("ihor at first flight\n(at the end if none)")
-    b.set_xlabel("k")
-    save(fig, out)
+    finish_k_scan(fig, (a, b), meta, out, "time to first flight",
+                  "ihor at first flight\n(at the end if none)")
 
 
 def plot_boundary(rows, meta, out):
@@ -73,12 +37,8 @@ def plot_boundary(rows, meta, out):
         if not ok.any():
             continue
         ax.plot(r[ok], v[ok], styles[i % len(styles)], marker="o", ms=3, label=name)
-    ax.set_xscale("log")
-    ax.set_yscale("log")
-    ax.set_xlabel("r")
-    ax.set_ylabel("k")
+    log_axes(ax, "r", "k")
     ax.legend(fontsize=8)
-    ax.grid(True, which="both", lw=0.3)
     ax.set_title(f"flight boundaries, {meta.get('ic', '')}, mu = {meta.get('mu', '?')}")
     save(fig, out)
 
@@ -90,11 +50,7 @@ def plot_kmin(rows, meta, out):
         v = col(rows, name)
         ok = np.isfinite(v)
         ax.plot(r[ok], v[ok], label=name[len("k_min_"):])
-    ax.set_xscale("log")
-    ax.set_yscale("log")
-    ax.set_xlabel("r")
-    ax.set_ylabel("k_min (E0 = 0)")
-    ax.grid(True, which="both", lw=0.3)
+    log_axes(ax, "r", "k_min (E0 = 0)")
     ax.legend(fontsize=8)
     ax.set_title(f"energy lower bound of the flight region, mu = {meta.get('mu', '?')}")
     save(fig, out)
@@ -126,13 +82,8 @@ def plot_map(rows, meta, out):
 
 
 def main(argv):
-    if len(argv) != 4:
-        raise SystemExit(__doc__)
-    rows, meta = load(argv[1])
     modes = {"time": plot_time, "boundary": plot_boundary, "kmin": plot_kmin, "map": plot_map}
-    if argv[3] not in modes:
-        raise SystemExit(f"unknown mode {argv[3]!r}; one of {sorted(modes)}")
-    modes[argv[3]](rows, meta, argv[2])
+    run_modes(argv, __doc__, modes)
 
 
 if __name__ == "__main__":

@@ -3,26 +3,15 @@
 
 usage: plot_lyapunov.py HISTORY.csv OUT.png [TITLE]   (an SVG is written beside the PNG)
 """
-import csv
-import os
 import sys
 
-import matplotlib
-
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
-import numpy as np  # noqa: E402
+from plotkit import col, plt, read_rows, save, split_args
 
 
 def main(argv):
-    if len(argv) not in (3, 4):
-        raise SystemExit(__doc__)
-    with open(argv[1], newline="") as f:
-        rows = list(csv.DictReader(f))
-    out = argv[2]
-    title = argv[3] if len(argv) == 4 else ""
-    t = np.array([float(r["t"]) for r in rows])
-    est = np.array([float(r["estimate"]) for r in rows])
+    (history,), out, title = split_args(argv, __doc__, 1)
+    rows = read_rows(history)
+    t, est = col(rows, "t"), col(rows, "estimate")
     fig, ax = plt.subplots(figsize=(8, 4.5), constrained_layout=True)
     ax.plot(t, est, lw=1.0)
     ax.axhline(0.0, color="k", lw=0.5)
@@ -30,8 +19,7 @@ def main(argv):
     ax.set_ylabel("running estimate of the largest exponent")
     ax.set_title(title)
     ax.grid(alpha=0.3)
-    fig.savefig(out, dpi=80)
-    fig.savefig(os.path.splitext(out)[0] + ".svg", dpi=80)
+    save(fig, out, dpi=80, svg_dpi=80)
 
 
 if __name__ == "__main__":

@@ -3,28 +3,15 @@
 
 usage: plot_poincare.py CROSSINGS.csv OUT.png [TITLE]   (an SVG is written beside the PNG)
 """
-import csv
-import os
 import sys
 
-import matplotlib
-
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
-import numpy as np  # noqa: E402
+from plotkit import col, plt, read_rows, save, split_args
 
 
 def main(argv):
-    if len(argv) not in (3, 4):
-        raise SystemExit(__doc__)
-    with open(argv[1], newline="") as f:
-        rows = list(csv.DictReader(f))
-    out = argv[2]
-    title = argv[3] if len(argv) == 4 else ""
-    y = np.array([float(r["y"]) for r in rows])
-    vy = np.array([float(r["vy"]) for r in rows])
-    vw = np.array([float(r["vw"]) for r in rows])
-    t = np.array([float(r["t"]) for r in rows])
+    (crossings,), out, title = split_args(argv, __doc__, 1)
+    rows = read_rows(crossings)
+    y, vy, vw, t = (col(rows, name) for name in ("y", "vy", "vw", "t"))
     fig, ax = plt.subplots(1, 2, figsize=(11, 4.8), constrained_layout=True)
     kw = dict(s=2, c=t, cmap="viridis", linewidths=0, rasterized=True)
     sc = ax[0].scatter(y, vy, **kw)
@@ -36,8 +23,7 @@ def main(argv):
     if len(t):
         fig.colorbar(sc, ax=ax[1], label="time of crossing")
     fig.suptitle(f"{title}  ({len(t)} crossings)")
-    fig.savefig(out, dpi=80)
-    fig.savefig(os.path.splitext(out)[0] + ".svg", dpi=80)
+    save(fig, out, dpi=80, svg_dpi=80)
 
 
 if __name__ == "__main__":

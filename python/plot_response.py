@@ -4,33 +4,15 @@
 
 usage: plot_response.py SWINGS.csv PHASE.csv OUT.png [TITLE]   (an SVG is written beside the PNG)
 """
-import csv
-import os
 import sys
 
-import matplotlib
-
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
-import numpy as np  # noqa: E402
-
-
-def load(path, skip=()):
-    with open(path, newline="") as f:
-        rows = list(csv.DictReader(f))
-    if not rows:
-        return {}
-    keys = [k for k in rows[0] if k not in skip]
-    return {k: np.array([float(r[k]) for r in rows]) for k in keys}
+from plotkit import load_columns, plt, save, split_args
 
 
 def main(argv):
-    if len(argv) not in (4, 5):
-        raise SystemExit(__doc__)
-    sw = load(argv[1])
-    ph = load(argv[2], skip=("regime",))
-    out = argv[3]
-    title = argv[4] if len(argv) == 5 else ""
+    (swings, phase), out, title = split_args(argv, __doc__, 2)
+    sw = load_columns(swings)
+    ph = load_columns(phase, skip=("regime",))
     fig = plt.figure(figsize=(10, 8.5), constrained_layout=True)
     gs = fig.add_gridspec(3, 3, height_ratios=[1.2, 1, 0.7])
     dot = dict(s=0.5, c="k", linewidths=0, rasterized=True)
@@ -56,8 +38,7 @@ def main(argv):
     ax.set_xlabel("time (end of swing)")
     ax.set_ylabel("swing length")
     fig.suptitle(title)
-    fig.savefig(out, dpi=80)
-    fig.savefig(os.path.splitext(out)[0] + ".svg", dpi=80)
+    save(fig, out, dpi=80, svg_dpi=80)
 
 
 if __name__ == "__main__":

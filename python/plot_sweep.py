@@ -10,17 +10,12 @@ ic, a classifier's label) gives a categorical map with a legend.
 Writes OUT.png and OUT.svg (same stem).
 """
 import argparse
-import csv
 import math
-import os
 
-import matplotlib
+from matplotlib.colors import BoundaryNorm, ListedColormap
+from matplotlib.patches import Patch
 
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
-import numpy as np  # noqa: E402
-from matplotlib.colors import BoundaryNorm, ListedColormap  # noqa: E402
-from matplotlib.patches import Patch  # noqa: E402
+from plotkit import np, plt, read_rows, save
 
 LABELS = {"k": "k = k_phys a b / (m g)", "r": "r = b / a", "inv_r": "1/r = a / b", "mu": "mu"}
 
@@ -40,9 +35,8 @@ def short(cond):
     return "%s = %s" % (col, ("%.6g" % v) if v is not None else val)
 
 
-def read_rows(path, where):
-    with open(path, newline="") as f:
-        rows = list(csv.DictReader(f))
+def filtered_rows(path, where):
+    rows = read_rows(path)
     for cond in where:
         col, _, val = cond.partition("=")
         rows = [r for r in rows if r.get(col) == val]
@@ -152,7 +146,7 @@ def main():
     p.add_argument("--t-end", dest="t_end")
     a = p.parse_args()
 
-    rows = read_rows(a.csv, a.where)
+    rows = filtered_rows(a.csv, a.where)
     if not rows:
         raise SystemExit("plot_sweep.py: no rows to plot (after --where filters)")
     for col in [a.x, a.y, a.column]:
@@ -168,8 +162,7 @@ def main():
                             (", " + fixed) if fixed else "")
     ax.set_title(title, fontsize=9)
     fig.tight_layout()
-    fig.savefig(a.out, dpi=150)
-    fig.savefig(os.path.splitext(a.out)[0] + ".svg")
+    save(fig, a.out, dpi=150)
 
 
 if __name__ == "__main__":

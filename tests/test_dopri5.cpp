@@ -28,11 +28,17 @@ double max_err(const Vec<kN>& a, const Vec<kN>& b) {
   return e;
 }
 
-// Fixed-step integration over [0, T] in n steps; the error estimate is ignored.
-double global_error(int n, double T) {
+// A stepper whose error estimate is the plain absolute error (atol 1, rtol 0).
+Dopri5<kN> absolute_stepper() {
   Dopri5<kN> st;
   st.atol.fill(1.0);
   st.rtol.fill(0.0);
+  return st;
+}
+
+// Fixed-step integration over [0, T] in n steps; the error estimate is ignored.
+double global_error(int n, double T) {
+  Dopri5<kN> st = absolute_stepper();
   StepperStats stats;
   Vec<kN> y = exact(0), k1, k7, y1;
   rhs(0, y, k1);
@@ -67,9 +73,7 @@ TEST(Dopri5, FsalAndDenseOutputOrder) {
   const double theta = 0.37;
   std::vector<double> e_end, e_mid;
   for (double h : {0.2, 0.1, 0.05, 0.025}) {
-    Dopri5<kN> st;
-    st.atol.fill(1.0);
-    st.rtol.fill(0.0);
+    Dopri5<kN> st = absolute_stepper();
     StepperStats stats;
     Vec<kN> y = exact(t0), k1, k7, y1, k7_check, ym, ye;
     rhs(t0, y, k1);
@@ -100,9 +104,7 @@ TEST(Dopri5, ErrorEstimateIsFifthPowerOfStep) {
   // The embedded order-4 solution differs from the order-5 one by O(h^5).
   std::vector<double> est;
   for (double h : {0.2, 0.1, 0.05}) {
-    Dopri5<kN> st;
-    st.atol.fill(1.0);
-    st.rtol.fill(0.0);
+    Dopri5<kN> st = absolute_stepper();
     StepperStats stats;
     Vec<kN> y = exact(1.0), k1, k7, y1;
     rhs(1.0, y, k1);
@@ -256,14 +258,18 @@ struct Grazing {
   double step_hint(const Mode&) const { return 0.5; }
   State abs_tol_scale() const { return {1.0, 1.0}; }
 };
-}  // namespace
 
-TEST(HybridIntegrator, EventFunctionZeroAtRestartDoesNotRefire) {
-  // Each transition turns the event function round (c - x, then x - c), so it restarts at zero
-  // and grows: it must not fire again at the restart instant. x = sin t crosses c = 0.3 at
-  // asin(c), pi - asin(c), 2 pi + asin(c), ...: exactly these, no extra zero-time events.
+// Grazing with threshold c run from x = 0, x' = 1 (x = sin t) up to t_end at rtol 1e-12.
+struct GrazingRun {
+  RunStatus status;
+  std::vector<double> times;  // event times
+  long accepted;              // accepted steps
+  int event_samples;          // event-function samples per step
+};
+
+GrazingRun run_grazing(double c, double t_end) {
   Grazing m;
-  m.c = 0.3;
+  m.c = c;
   IntegratorOptions o;
   o.rtol = 1e-12;
   o.atol = 1e-14;
@@ -272,40 +278,41 @@ TEST(HybridIntegrator, EventFunctionZeroAtRestartDoesNotRefire) {
   double t = 0;
   int mode = 0;
   Vec<2> z{0.0, 1.0};
-  EXPECT_EQ(integ.run(t, 20.0, mode, z, rec), RunStatus::ReachedEnd);
+  const RunStatus s = integ.run(t, t_end, mode, z, rec);
+  return {s, rec.times, integ.stats().accepted, o.event_samples};
+}
+}  // namespace
+
+TEST(HybridIntegrator, EventFunctionZeroAtRestartDoesNotRefire) {
+  // Each transition turns the event function round (c - x, then x - c), so it restarts at zero
+  // and grows: it must not fire again at the restart instant. x = sin t crosses c = 0.3 at
+  // asin(c), pi - asin(c), 2 pi + asin(c), ...: exactly these, no extra zero-time events.
+  const GrazingRun run = run_grazing(0.3, 20.0);
+  EXPECT_EQ(run.status, RunStatus::ReachedEnd);
   std::vector<double> expect;
   for (int n = 0; n < 4; ++n) {
     expect.push_back(2 * M_PI * n + std::asin(0.3));
     expect.push_back(2 * M_PI * n + M_PI - std::asin(0.3));
   }
   while (expect.back() > 20.0) expect.pop_back();
-  ASSERT_EQ(rec.times.size(), expect.size());
-  for (std::size_t i = 0; i < expect.size(); ++i) EXPECT_NEAR(rec.times[i], expect[i], 1e-11 * expect[i]);
+  ASSERT_EQ(run.times.size(), expect.size());
+  for (std::size_t i = 0; i < expect.size(); ++i) EXPECT_NEAR(run.times[i], expect[i], 1e-11 * expect[i]);
 }
 
 TEST(HybridIntegrator, BriefExcursionBetweenSamplesIsNotSkipped) {
   for (double depth : {1e-4, 1e-6, 1e-8}) {
-    Grazing m;
-    m.c = 1.0 - depth;
-    IntegratorOptions o;
-    o.rtol = 1e-12;
-    o.atol = 1e-14;
-    HybridIntegrator<Grazing> integ(m, o);
-    Recorder rec;
-    double t = 0;
-    int mode = 0;
-    Vec<2> z{0.0, 1.0};
-    integ.run(t, 3.0, mode, z, rec);
-    const double half = std::acos(m.c);  // sin t > c for |t - pi/2| < acos(c)
-    ASSERT_EQ(rec.times.size(), 2u) << "depth " << depth;
+    const double c = 1.0 - depth;
+    const GrazingRun run = run_grazing(c, 3.0);
+    const double half = std::acos(c);  // sin t > c for |t - pi/2| < acos(c)
+    ASSERT_EQ(run.times.size(), 2u) << "depth " << depth;
     // Near the peak a state error dx moves the crossing by dx / |x'| = dx / sin(half).
     const double tol = 1e-12 / std::sin(half);
-    EXPECT_NEAR(rec.times[0], M_PI / 2 - half, tol) << depth;
-    EXPECT_NEAR(rec.times[1], M_PI / 2 + half, tol) << depth;
+    EXPECT_NEAR(run.times[0], M_PI / 2 - half, tol) << depth;
+    EXPECT_NEAR(run.times[1], M_PI / 2 + half, tol) << depth;
     // For the shallowest dip the excursion is shorter than the spacing of the event samples
     // (else the test would prove nothing).
     if (depth <= 1e-8) {
-      EXPECT_LT(2 * half, 3.0 / integ.stats().accepted / o.event_samples);
+      EXPECT_LT(2 * half, 3.0 / run.accepted / run.event_samples);
     }
   }
 }

@@ -12,16 +12,12 @@
 #include "blockdyn/model/initial_conditions.hpp"
 #include "blockdyn/simulation.hpp"
 
+#include "test_support.hpp"
+
 using namespace blockdyn;
+using namespace blockdyn::test;
 
 namespace {
-
-// Measured numbers go to the test report (--gtest_output=json) for docs/validation.md.
-inline void record(const char* key, double v) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.10g", v);
-  ::testing::Test::RecordProperty(key, buf);
-}
 
 // Tracks |E - E0| while at most one corner is submerged, and whether the non-potential work
 // stays exactly zero there.
@@ -31,9 +27,7 @@ struct OneCornerEnergy : SimulationSink {
   bool two_seen = false, nonpot_moved = false;
   void on_segment(const WinklerBlock& m, const DenseSegment<kStateDim>& seg, double, double t1,
                   const BlockMode& mode) override {
-    BlockStateVec z;
-    seg.eval(t1, z);
-    m.complete(mode, z);
+    const BlockStateVec z = completed_state(m, seg, mode, t1);
     if (m.forces(t1, mode, z).corners_below > 1) two_seen = true;
     if (two_seen) return;
     ++samples;
@@ -62,14 +56,6 @@ struct FrictionWork : SimulationSink {
   }
 };
 
-SimulationOptions opts(double t_end, double rtol) {
-  SimulationOptions o;
-  o.t_end = t_end;
-  o.integrator.rtol = rtol;
-  o.integrator.atol = rtol * 1e-2;
-  return o;
-}
-
 }  // namespace
 
 TEST(Energy, ConservedWithoutFrictionOnOneCorner) {
@@ -81,7 +67,7 @@ TEST(Energy, ConservedWithoutFrictionOnOneCorner) {
   for (double rtol : {1e-8, 1e-11}) {
     OneCornerEnergy sink;
     sink.e0 = energy(p, ic1(p)).total();
-    SimulationOptions o = opts(5.0, rtol);
+    SimulationOptions o = sim_options(5.0, rtol);
     o.stop_at_ihor = 1;
     const SimulationResult r = simulate(p, {}, ic1(p), o, &sink);
     ASSERT_EQ(r.status, SimStatus::EarlyStop);
@@ -90,7 +76,7 @@ TEST(Energy, ConservedWithoutFrictionOnOneCorner) {
     EXPECT_FALSE(sink.nonpot_moved);
     EXPECT_EQ(r.work_friction(), 0.0);
     EXPECT_LT(sink.max_dev, 10 * rtol * sink.e0) << rtol;
-    record(("one_corner_max_dE_rtol" + std::to_string(int(std::lround(-std::log10(rtol))))).c_str(), sink.max_dev);
+    record(("one_corner_max_dE_rtol" + rtol_tag(rtol)).c_str(), sink.max_dev);
     record("one_corner_E0", sink.e0);
     dev[i++] = sink.max_dev;
   }
@@ -102,18 +88,16 @@ TEST(Energy, ConservedWithoutFrictionUpright) {
   // 80 flights: the energy error grows at most linearly with the number of submerged phases
   // and falls with the tolerance.
   const BlockParams p{0.5, 0.0, 1e5};
-  BlockStateVec z0{};
-  z0[kH] = -3.0 / p.k;
+  const BlockStateVec z0 = upright_at_rest(-3.0 / p.k);
   double dev[2];
   int i = 0;
   for (double rtol : {1e-10, 1e-12}) {
-    const SimulationResult r = simulate(p, {}, z0, opts(2.0, rtol));
+    const SimulationResult r = simulate(p, {}, z0, sim_options(2.0, rtol));
     const long flights = r.event_counts[int(EventKind::Takeoff)];
     EXPECT_EQ(flights, 83);  // 2.0 / T with T = 4 pi / (3 sqrt k) + 2 sqrt(3 / k)
     EXPECT_LT(r.max_abs_energy_change, 10 * rtol * flights * r.initial_energy.total());
     EXPECT_EQ(r.max_abs_energy_change, r.max_abs_energy_error);  // no friction, no wall term
-    record(("upright_max_dE_rtol" + std::to_string(int(std::lround(-std::log10(rtol))))).c_str(),
-           r.max_abs_energy_change);
+    record(("upright_max_dE_rtol" + rtol_tag(rtol)).c_str(), r.max_abs_energy_change);
     dev[i++] = r.max_abs_energy_change;
   }
   EXPECT_GT(dev[0] / dev[1], 30.0);
@@ -127,7 +111,7 @@ TEST(Energy, BalanceClosesWithFrictionAndTwoCorners) {
   FrictionWork fw[2];
   const double rtols[2] = {1e-8, 1e-11};
   for (int i = 0; i < 2; ++i) {
-    r[i] = simulate(p, {}, ic1(p), opts(10.0, rtols[i]), &fw[i]);
+    r[i] = simulate(p, {}, ic1(p), sim_options(10.0, rtols[i]), &fw[i]);
     ASSERT_EQ(r[i].status, SimStatus::TEnd);
     EXPECT_GT(r[i].event_counts[int(EventKind::SlideToContact)], 5);
     EXPECT_GT(r[i].event_counts[int(EventKind::Takeoff)], 5);
@@ -140,7 +124,7 @@ TEST(Energy, BalanceClosesWithFrictionAndTwoCorners) {
     EXPECT_LE(fw[i].max_value, 0.0);
   }
   for (int i = 0; i < 2; ++i) {
-    const std::string t = "rtol" + std::to_string(int(std::lround(-std::log10(rtols[i])))) + "_";
+    const std::string t = "rtol" + rtol_tag(rtols[i]) + "_";
     record((t + "balance_error").c_str(), r[i].max_abs_energy_error);
     record((t + "max_dE").c_str(), r[i].max_abs_energy_change);
     record((t + "W_friction").c_str(), r[i].work_friction());
@@ -160,7 +144,7 @@ TEST(Energy, FrictionWorkNeverPositiveWithImpulseStart) {
   // ic2 on a soft foundation (k = 1e3): many slides and stops, both corners in the springs.
   const BlockParams p{0.5, 0.2, 1e3};
   FrictionWork fw;
-  const SimulationResult r = simulate(p, {}, ic2(p), opts(10.0, 1e-10), &fw);
+  const SimulationResult r = simulate(p, {}, ic2(p), sim_options(10.0, 1e-10), &fw);
   ASSERT_EQ(r.status, SimStatus::TEnd);
   EXPECT_GT(r.event_counts[int(EventKind::SlideToContact)] + r.event_counts[int(EventKind::SlideReversal)], 10);
   EXPECT_LE(fw.max_increase, 0.0);

@@ -14,24 +14,12 @@
 #include "blockdyn/model/initial_conditions.hpp"
 #include "blockdyn/simulation.hpp"
 
+#include "test_support.hpp"
+
 using namespace blockdyn;
+using namespace blockdyn::test;
 
 namespace {
-
-// Measured numbers go to the test report (--gtest_output=json) for docs/validation.md.
-inline void record(const char* key, double v) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.10g", v);
-  ::testing::Test::RecordProperty(key, buf);
-}
-
-SimulationOptions opts(double t_end, double rtol) {
-  SimulationOptions o;
-  o.t_end = t_end;
-  o.integrator.rtol = rtol;
-  o.integrator.atol = rtol * 1e-2;
-  return o;
-}
 
 // Root of f on [a, b] by bisection (f(a), f(b) of opposite signs); independent of the code.
 double bisect(const std::function<double(double)>& f, double a, double b) {
@@ -49,13 +37,13 @@ double bisect(const std::function<double(double)>& f, double a, double b) {
 TEST(Events, TimesStableUnderTighterTolerance) {
   // ic1 (r = 0.5, mu = 0.2, k = 1e4) over t in [0, 3]: contact, slides, w = 0 passages, flights.
   const BlockParams p{0.5, 0.2, 1e4};
-  const SimulationResult ref = simulate(p, {}, ic1(p), opts(3.0, 1e-13));
+  const SimulationResult ref = simulate(p, {}, ic1(p), sim_options(3.0, 1e-13));
   ASSERT_GE(ref.events.size(), 15u);
   std::map<EventKind, int> kinds;
   for (const EventRecord& e : ref.events) ++kinds[e.kind];
   EXPECT_GE(kinds.size(), 6u);  // a varied sequence
   for (double rtol : {1e-8, 1e-10}) {
-    const SimulationResult r = simulate(p, {}, ic1(p), opts(3.0, rtol));
+    const SimulationResult r = simulate(p, {}, ic1(p), sim_options(3.0, rtol));
     ASSERT_EQ(r.events.size(), ref.events.size()) << rtol;
     double worst = 0;
     for (std::size_t i = 0; i < r.events.size(); ++i) {
@@ -113,7 +101,7 @@ struct EventResiduals : SimulationSink {
 TEST(Events, EventFunctionsVanishAtEventStates) {
   for (const BlockParams& p : {BlockParams{0.3, 0.2, 1e5}, BlockParams{0.5, 0.2, 1e4}}) {
     EventResiduals s;
-    const SimulationResult r = simulate(p, {}, ic1(p), opts(10.0, 1e-10), &s);
+    const SimulationResult r = simulate(p, {}, ic1(p), sim_options(10.0, 1e-10), &s);
     ASSERT_EQ(r.status, SimStatus::TEnd);
     EXPECT_LE(s.skipped, 2);
     const std::string tag = p.r == 0.3 ? "r03_" : "r05_";
@@ -174,7 +162,7 @@ TEST(Events, WZeroJustBeforeLandingBothFound) {
   ASSERT_GT(tl - tc, 1e-8);
   ASSERT_LT(tl - tc, 1e-6);
   for (double rtol : {1e-6, 1e-10}) {
-    const SimulationResult r = simulate(p, {}, flight_state(f), opts(0.1, rtol));
+    const SimulationResult r = simulate(p, {}, flight_state(f), sim_options(0.1, rtol));
     ASSERT_GE(r.events.size(), 2u);
     EXPECT_EQ(r.events[0].kind, EventKind::WZero);
     EXPECT_EQ(r.events[1].kind, EventKind::Landing);
@@ -201,7 +189,7 @@ TEST(Events, LandingJustBeforeWZeroBothFound) {
   const double tl = f.landing(0.0), tc = f.w_zero();
   ASSERT_NEAR(tc - tl, 2e-7, 1e-12);
   for (double rtol : {1e-6, 1e-10}) {
-    const SimulationResult r = simulate(p, {}, flight_state(f), opts(0.1, rtol));
+    const SimulationResult r = simulate(p, {}, flight_state(f), sim_options(0.1, rtol));
     ASSERT_GE(r.events.size(), 2u);
     EXPECT_EQ(r.events[0].kind, EventKind::Landing);
     EXPECT_EQ(r.events[0].from.side, +1);
@@ -222,9 +210,7 @@ TEST(Events, BriefFlightsBetweenSamplesAreNotSkipped) {
     const double phi = std::acos(-1 / beta);  // take-off phase
     const double v = std::sqrt(beta * beta - 1) / om;
     const double T = 2 * phi / om + 2 * v;
-    BlockStateVec z0{};
-    z0[kH] = -(1 + beta) / p.k;
-    const SimulationResult r = simulate(p, {}, z0, opts(0.2, 1e-10));
+    const SimulationResult r = simulate(p, {}, upright_at_rest(-(1 + beta) / p.k), sim_options(0.2, 1e-10));
     std::vector<double> expect;
     for (int n = 0; phi / om + n * T < 0.2; ++n) {
       expect.push_back(phi / om + n * T);

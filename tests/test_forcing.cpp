@@ -19,14 +19,24 @@
 
 #include "blockdyn/simulation.hpp"
 
+#include "test_support.hpp"
+
 using namespace blockdyn;
+using namespace blockdyn::test;
 
 namespace {
 
-BlockStateVec upright_at_rest(double h) {
-  BlockStateVec z{};
-  z[kH] = h;
-  return z;
+// A constant ground acceleration, horizontal or vertical, from t = 0 on.
+GroundMotion horizontal_ground(double a) {
+  GroundMotion g;
+  g.horizontal.constant = a;
+  return g;
+}
+
+GroundMotion vertical_ground(double av) {
+  GroundMotion g;
+  g.vertical.constant = av;
+  return g;
 }
 
 // Calls a check on the completed state at a few points of every accepted piece of trajectory.
@@ -34,13 +44,8 @@ struct Probe : SimulationSink {
   std::function<void(double, const BlockMode&, const BlockStateVec&, const BlockForces&)> check;
   void on_segment(const WinklerBlock& m, const DenseSegment<kStateDim>& seg, double t0, double t1,
                   const BlockMode& mode) override {
-    for (int j = 1; j <= 8; ++j) {
-      const double t = t0 + (t1 - t0) * j / 8.0;
-      BlockStateVec z;
-      seg.eval(t, z);
-      m.complete(mode, z);
-      check(t, mode, z, m.forces(t, mode, z));
-    }
+    sample_segment(m, seg, t0, t1, mode, 1, 8,
+                   [&](double t, const BlockStateVec& z) { check(t, mode, z, m.forces(t, mode, z)); });
   }
 };
 
@@ -49,10 +54,8 @@ struct Probe : SimulationSink {
 TEST(Forcing, HorizontalBelowFrictionSticks) {
   const BlockParams p{0.5, 0.3, 1e5};
   const double a = 0.1;
-  GroundMotion g;
-  g.horizontal.constant = a;
-  SimulationOptions o;
-  o.t_end = 1.0;
+  const GroundMotion g = horizontal_ground(a);
+  const SimulationOptions o = sim_options(1.0);
   const double rear_corner_x0 = -p.r / 2;
   double w_min = 1, w_max = -1, corner_drift = 0, min_margin = 1;
   bool always_contact = true;
@@ -84,10 +87,8 @@ TEST(Forcing, HorizontalBelowFrictionSticks) {
 TEST(Forcing, HorizontalAboveFrictionSlides) {
   const BlockParams p{0.5, 0.3, 1e5};
   const double a = 0.5;
-  GroundMotion g;
-  g.horizontal.constant = a;
-  SimulationOptions o;
-  o.t_end = 1.0;
+  const GroundMotion g = horizontal_ground(a);
+  const SimulationOptions o = sim_options(1.0);
   // Find the onset of sliding first, then check the identity from that state on.
   const SimulationResult r = simulate(p, g, upright_at_rest(-1.0 / p.k), o);
   ASSERT_EQ(r.status, SimStatus::TEnd);
@@ -127,10 +128,8 @@ TEST(Forcing, HorizontalAboveFrictionSlides) {
 TEST(Forcing, VerticalShiftsStaticSink) {
   const BlockParams p{0.5, 0.2, 1e5};
   const double av = 0.2;
-  GroundMotion g;
-  g.vertical.constant = av;
-  SimulationOptions o;
-  o.t_end = 0.5;
+  const GroundMotion g = vertical_ground(av);
+  const SimulationOptions o = sim_options(0.5);
   const double om = std::sqrt(p.k);
   // At the new static sink nothing moves (to the tolerance: with nothing to resolve the steps
   // grow until error control alone keeps rounding-level disturbances at rtol).
@@ -170,12 +169,10 @@ TEST(Forcing, VerticalPulseWithBreakpoints) {
   // free oscillation about the unloaded sink after, continuing from the state at the end.
   const BlockParams p{0.5, 0.0, 1e5};
   const double av = 0.2, t1 = 0.013, d = 0.0071;
-  GroundMotion g;
-  g.vertical.constant = av;
+  GroundMotion g = vertical_ground(av);
   g.vertical.t_start = t1;
   g.vertical.duration = d;
-  SimulationOptions o;
-  o.t_end = 0.05;
+  const SimulationOptions o = sim_options(0.05);
   const double om = std::sqrt(p.k);
   auto exact = [&](double t) {
     if (t < t1) return -1.0 / p.k;

@@ -14,16 +14,12 @@
 #include "blockdyn/model/energy.hpp"
 #include "blockdyn/model/foundation_force.hpp"
 
+#include "test_support.hpp"
+
 using namespace blockdyn;
+using namespace blockdyn::test;
 
 namespace {
-
-// Measured numbers go to the test report (--gtest_output=json) for docs/validation.md.
-inline void record(const char* key, double v) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.10g", v);
-  ::testing::Test::RecordProperty(key, buf);
-}
 
 // ---- Independent reference -------------------------------------------------------------
 // The rectangle's corners from a plain rotation; the envelope y_low(X) as the lowest crossing

@@ -146,7 +146,14 @@ INSTANTIATE_TEST_SUITE_P(
                       TablePoint{"4.54", 0.1, 0.2, 1e4, true, 100, ResponseType::SettleDown},
                       TablePoint{"4.55", 0.2, 0.15, 1e6, true, 100, ResponseType::RockToVertical},
                       // Below k_uns(0.2) no stable equilibrium exists: the block falls over.
-                      TablePoint{"(k<k_uns)", 0.2, 0.2, 1e2, false, 20, ResponseType::Overturned}));
+                      TablePoint{"(k<k_uns)", 0.2, 0.2, 1e2, false, 20, ResponseType::Overturned}),
+    [](const ::testing::TestParamInfo<TablePoint>& info) {
+      // "Fig4_41", ..., "BelowKuns": readable names in ctest's listing.
+      std::string name = info.param.fig[0] == '(' ? "BelowKuns" : std::string("Fig") + info.param.fig;
+      for (char& c : name)
+        if (c == '.') c = '_';
+      return name;
+    });
 
 TEST(ResponseClassify, CriteriaAreReportedAndValidated) {
   const BlockParams p{0.5, 0.1, 1e5};

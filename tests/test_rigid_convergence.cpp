@@ -14,16 +14,12 @@
 #include "blockdyn/model/rigid_ground_block.hpp"
 #include "blockdyn/simulation.hpp"
 
+#include "test_support.hpp"
+
 using namespace blockdyn;
+using namespace blockdyn::test;
 
 namespace {
-
-// Measured numbers go to the test report (--gtest_output=json) for docs/validation.md.
-inline void record(const char* key, double v) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.10g", v);
-  ::testing::Test::RecordProperty(key, buf);
-}
 
 constexpr double kW0 = 0.8;
 constexpr double kR = 2.0;

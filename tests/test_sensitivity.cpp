@@ -10,16 +10,12 @@
 #include "blockdyn/model/initial_conditions.hpp"
 #include "blockdyn/simulation.hpp"
 
+#include "test_support.hpp"
+
 using namespace blockdyn;
+using namespace blockdyn::test;
 
 namespace {
-
-// Measured numbers go to the test report (--gtest_output=json) for docs/validation.md.
-inline void record(const char* key, double v) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.10g", v);
-  ::testing::Test::RecordProperty(key, buf);
-}
 
 // Records the state at a given time from the dense output.
 struct SampleAt : SimulationSink {
@@ -30,8 +26,7 @@ struct SampleAt : SimulationSink {
   void on_segment(const WinklerBlock& m, const DenseSegment<kStateDim>& seg, double t0, double t1,
                   const BlockMode& mode) override {
     if (have || t_sample < t0 || t_sample > t1) return;
-    seg.eval(t_sample, z);
-    m.complete(mode, z);
+    z = completed_state(m, seg, mode, t_sample);
     have = true;
   }
 };
@@ -49,8 +44,7 @@ TEST(Sensitivity, Table51TwoNearbyStartsSeparate) {
   const BlockStateVec z1 = ic1(p);
   BlockStateVec z2 = z1;
   z2[kVY] = 1e-10;
-  SimulationOptions o;
-  o.t_end = 20.0;
+  const SimulationOptions o = sim_options(20.0);
   SampleAt s1(1.0), s2(1.0);
   const SimulationResult a = simulate(p, {}, z1, o, &s1);
   const SimulationResult b = simulate(p, {}, z2, o, &s2);

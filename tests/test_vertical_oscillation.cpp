@@ -18,16 +18,12 @@
 
 #include "blockdyn/simulation.hpp"
 
+#include "test_support.hpp"
+
 using namespace blockdyn;
+using namespace blockdyn::test;
 
 namespace {
-
-// Measured numbers go to the test report (--gtest_output=json) for docs/validation.md.
-inline void record(const char* key, double v) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.10g", v);
-  ::testing::Test::RecordProperty(key, buf);
-}
 
 struct Closed {
   double k, om, v, t_off, T;
@@ -58,14 +54,10 @@ struct Check : SimulationSink {
   explicit Check(double k) : c(k) {}
   void on_segment(const WinklerBlock& m, const DenseSegment<kStateDim>& seg, double t0, double t1,
                   const BlockMode& mode) override {
-    for (int j = 0; j <= 4; ++j) {
-      const double t = t0 + (t1 - t0) * j / 4.0;
-      BlockStateVec z;
-      seg.eval(t, z);
-      m.complete(mode, z);
+    sample_segment(m, seg, t0, t1, mode, 0, 4, [&](double t, const BlockStateVec& z) {
       max_h_err = std::fmax(max_h_err, std::fabs(z[kH] - c.h(t)));
       rotated |= z[kW] != 0.0 || z[kVW] != 0.0 || z[kX] != x0 || z[kVX] != 0.0;
-    }
+    });
     if (mode.regime == Regime::Flight) {  // apex inside this piece?
       for (int n = 0; n < 100; ++n) {
         const double ta = c.takeoff(n) + c.v;
@@ -82,10 +74,8 @@ struct Check : SimulationSink {
 void run_case(double mu) {
   const BlockParams p{0.5, mu, 1e5};
   const Closed c(p.k);
-  BlockStateVec z0{};
-  z0[kH] = -3.0 / p.k;  // y0 = 1/2 - 3/k, all rates zero, w0 = 0
-  SimulationOptions o;
-  o.t_end = 0.2;
+  const BlockStateVec z0 = upright_at_rest(-3.0 / p.k);  // y0 = 1/2 - 3/k, all rates zero, w0 = 0
+  const SimulationOptions o = sim_options(0.2);
   Check sink(p.k);
   const SimulationResult r = simulate(p, {}, z0, o, &sink);
   ASSERT_EQ(r.status, SimStatus::TEnd);
@@ -160,20 +150,15 @@ TEST(VerticalOscillation, EventTimesConvergeWithTolerance) {
   // The error of the last landing time shrinks in proportion to the tolerance.
   const BlockParams p{0.5, 0.0, 1e5};
   const Closed c(p.k);
-  BlockStateVec z0{};
-  z0[kH] = -3.0 / p.k;
+  const BlockStateVec z0 = upright_at_rest(-3.0 / p.k);
   std::vector<double> err;
   for (double rtol : {1e-8, 1e-10, 1e-12}) {
-    SimulationOptions o;
-    o.t_end = 0.2;
-    o.integrator.rtol = rtol;
-    o.integrator.atol = rtol * 1e-2;
-    const SimulationResult r = simulate(p, {}, z0, o);
+    const SimulationResult r = simulate(p, {}, z0, sim_options(0.2, rtol));
     ASSERT_EQ(r.events.size(), 16u);
     const EventRecord& last = r.events.back();
     ASSERT_EQ(last.kind, EventKind::Landing);
     err.push_back(std::fabs(last.t - c.landing(7)) / c.landing(7));
-    record(("last_landing_rel_err_rtol" + std::to_string(int(std::lround(-std::log10(rtol))))).c_str(), err.back());
+    record(("last_landing_rel_err_rtol" + rtol_tag(rtol)).c_str(), err.back());
     EXPECT_LT(err.back(), 20 * rtol) << rtol;
   }
   EXPECT_GT(err[0] / err[1], 20.0);

@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "blockdyn/analysis/parallel_map.hpp"
+#include "blockdyn/analysis/study_run.hpp"
 #include "blockdyn/model/energy.hpp"
 
 namespace blockdyn {
@@ -12,21 +13,10 @@ namespace blockdyn {
 namespace {
 
 // Options for runs that only need to know when the first take-off happens.
-SimulationOptions lean_options(const StudyRunOptions& o) {
-  SimulationOptions s;
-  s.t_end = o.t_end;
-  s.integrator = o.integrator;
-  s.track_energy = false;
-  s.record_events = false;
+SimulationOptions first_flight_options(const StudyRunOptions& o) {
+  SimulationOptions s = lean_study_options(o);
   s.stop_at_first_flight = true;
   return s;
-}
-
-void check_run(const SimulationResult& res, const BlockParams& p, const IcChoice& ic) {
-  if (res.status == SimStatus::NumericalFailure)
-    throw std::runtime_error("integration failed (" + std::string(to_string(res.run_status)) + ") for " +
-                             ic.name() + ", r = " + std::to_string(p.r) + ", mu = " + std::to_string(p.mu) +
-                             ", k = " + std::to_string(p.k) + " at t = " + std::to_string(res.t_final));
 }
 
 // Stops the run as soon as w' turns positive: the end of the "while w' < 0" window of ic1
@@ -54,8 +44,8 @@ class WNegativeWindow : public SimulationSink {
 }  // namespace
 
 FirstFlight first_flight(const BlockParams& p, const IcChoice& ic, const StudyRunOptions& o) {
-  // No check_run: a failed run is one point of a scan, reported through its status.
-  const SimulationResult res = simulate(p, {}, ic.state(p), lean_options(o));
+  // Not run_checked: a failed run is one point of a scan, reported through its status.
+  const SimulationResult res = simulate(p, {}, ic.state(p), first_flight_options(o));
   FirstFlight f;
   f.r = p.r;
   f.k = p.k;
@@ -148,10 +138,9 @@ FirstImpact parse_first_impact(const std::string& s) {
 FlightCheck no_flight_while_ihor_below(const BlockParams& p, const IcChoice& ic, long n,
                                        const StudyRunOptions& o) {
   if (n < 1) throw std::invalid_argument("n = " + std::to_string(n) + " is out of range: must be >= 1");
-  SimulationOptions s = lean_options(o);
+  SimulationOptions s = first_flight_options(o);
   s.stop_at_ihor = n;
-  const SimulationResult res = simulate(p, {}, ic.state(p), s);
-  check_run(res, p, ic);
+  const SimulationResult res = run_checked(p, ic, s);
   FlightCheck c;
   const bool flew = res.first_flight_time && res.ihor_at_first_flight < n;
   c.holds = !flew;
@@ -162,15 +151,14 @@ FlightCheck no_flight_while_ihor_below(const BlockParams& p, const IcChoice& ic,
 
 FlightCheck flies_during_first_impact(const BlockParams& p, const IcChoice& ic, FirstImpact crit,
                                       const StudyRunOptions& o) {
-  SimulationOptions s = lean_options(o);
+  SimulationOptions s = first_flight_options(o);
   FlightCheck c;
   if (crit == FirstImpact::WNegative) {
     if (!ic.is_ic1())
       throw std::invalid_argument("high-criterion = w_negative applies to ic1 only (use ihor2 for " +
                                   ic.name() + ")");
     WNegativeWindow window;
-    const SimulationResult res = simulate(p, {}, ic.state(p), s, &window);
-    check_run(res, p, ic);
+    const SimulationResult res = run_checked(p, ic, s, &window);
     // A take-off ends the run before the window closes; a closed window stops it first.
     c.holds = res.first_flight_time.has_value() && !window.closed();
     c.decided = c.holds || window.closed() || res.status == SimStatus::Overturned;
@@ -178,8 +166,7 @@ FlightCheck flies_during_first_impact(const BlockParams& p, const IcChoice& ic, 
   }
   const long n = 2;
   s.stop_at_ihor = n;
-  const SimulationResult res = simulate(p, {}, ic.state(p), s);
-  check_run(res, p, ic);
+  const SimulationResult res = run_checked(p, ic, s);
   c.holds = res.first_flight_time && res.ihor_at_first_flight < n;
   c.decided = c.holds || res.ihor >= n || res.status == SimStatus::Overturned;
   return c;
@@ -196,26 +183,28 @@ Predicate counting(Check check, int& undecided) {
   };
 }
 
+// The boundary in k at aspect ratio r: search (sup_all_below / inf_all_above) over the grid of s.
+template <class Check, class Search>
+CurvePoint curve_point(double r, const BoundarySearchOptions& s, Check check, Search search) {
+  CurvePoint cp;
+  cp.r = r;
+  const auto grid = log_grid_per_decade(s.k_lo, s.k_hi, s.per_decade);
+  cp.result = search(counting(check, cp.undecided), grid, s.bisect);
+  return cp;
+}
+
 }  // namespace
 
 CurvePoint k_critical(double r, double mu, const IcChoice& ic, long n, const StudyRunOptions& o,
                       const BoundarySearchOptions& s) {
-  CurvePoint cp;
-  cp.r = r;
-  const auto grid = log_grid_per_decade(s.k_lo, s.k_hi, s.per_decade);
   auto check = [&](double k) { return no_flight_while_ihor_below(BlockParams{r, mu, k}, ic, n, o); };
-  cp.result = sup_all_below(counting(check, cp.undecided), grid, s.bisect);
-  return cp;
+  return curve_point(r, s, check, sup_all_below);
 }
 
 CurvePoint k_high(double r, double mu, const IcChoice& ic, FirstImpact c, const StudyRunOptions& o,
                   const BoundarySearchOptions& s) {
-  CurvePoint cp;
-  cp.r = r;
-  const auto grid = log_grid_per_decade(s.k_lo, s.k_hi, s.per_decade);
   auto check = [&](double k) { return flies_during_first_impact(BlockParams{r, mu, k}, ic, c, o); };
-  cp.result = inf_all_above(counting(check, cp.undecided), grid, s.bisect);
-  return cp;
+  return curve_point(r, s, check, inf_all_above);
 }
 
 }  // namespace blockdyn

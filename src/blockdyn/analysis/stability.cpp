@@ -5,28 +5,11 @@
 #include <string>
 
 #include "blockdyn/analysis/parallel_map.hpp"
+#include "blockdyn/analysis/study_run.hpp"
 
 namespace blockdyn {
 
 namespace {
-
-SimulationOptions lean_options(const StudyRunOptions& o) {
-  SimulationOptions s;
-  s.t_end = o.t_end;
-  s.integrator = o.integrator;
-  s.track_energy = false;
-  s.record_events = false;
-  return s;
-}
-
-SimulationResult run_checked(const BlockParams& p, const IcChoice& ic, const SimulationOptions& s) {
-  SimulationResult res = simulate(p, {}, ic.state(p), s);
-  if (res.status == SimStatus::NumericalFailure)
-    throw std::runtime_error("integration failed (" + std::string(to_string(res.run_status)) + ") for " +
-                             ic.name() + ", r = " + std::to_string(p.r) + ", mu = " + std::to_string(p.mu) +
-                             ", k = " + std::to_string(p.k) + " at t = " + std::to_string(res.t_final));
-  return res;
-}
 
 void check_search(const StabilitySearchOptions& s) {
   if (!(s.eps > 0) || !(s.eps < 1))
@@ -37,7 +20,7 @@ void check_search(const StabilitySearchOptions& s) {
 
 OverturnRun overturn_run(const BlockParams& p, const IcChoice& ic, const StudyRunOptions& o) {
   // Not run_checked: a failed run is one point of a scan, reported through its status.
-  const SimulationResult res = simulate(p, {}, ic.state(p), lean_options(o));
+  const SimulationResult res = simulate(p, {}, ic.state(p), lean_study_options(o));
   OverturnRun out;
   out.r = p.r;
   out.k = p.k;
@@ -60,7 +43,7 @@ std::vector<OverturnRun> overturn_scan(const BlockParams& base, const IcChoice& 
 
 bool overturns_while_ihor_below(const BlockParams& p, const IcChoice& ic, long n, const StudyRunOptions& o) {
   if (n < 1) throw std::invalid_argument("n = " + std::to_string(n) + " is out of range: must be >= 1");
-  SimulationOptions s = lean_options(o);
+  SimulationOptions s = lean_study_options(o);
   s.stop_at_ihor = n;  // once ihor = n the answer is no: stop there
   const SimulationResult res = run_checked(p, ic, s);
   return res.overturn_time.has_value() && res.ihor_at_overturn < n;

@@ -1,42 +1,23 @@
 #include "blockdyn/analysis/sweep_toml.hpp"
 
-#include <toml++/toml.h>
-
-#include <cmath>
-#include <fstream>
 #include <set>
-#include <sstream>
-#include <stdexcept>
+
+#include "blockdyn/io/toml_read.hpp"
 
 namespace blockdyn {
 
 namespace {
 
-[[noreturn]] void fail(const std::string& key, const std::string& msg) {
-  throw std::invalid_argument(key + ": " + msg);
-}
+using toml_read::fail;
+using toml_read::number;
+using toml_read::opt_number;
+using toml_read::string;
 
 void check_keys(const toml::table& t, const std::string& where, const std::set<std::string>& allowed) {
-  for (const auto& [k, v] : t) {
-    const std::string key(k.str());
-    if (allowed.count(key)) continue;
-    std::string list;
-    for (const auto& a : allowed) list += (list.empty() ? "" : ", ") + a;
-    fail(where.empty() ? key : where + "." + key, "unknown key (allowed" + (where.empty() ? std::string() : " in [" + where + "]") + ": " + list + ")");
-  }
-}
-
-double number(const toml::node& n, const std::string& key) {
-  std::optional<double> v = n.value<double>();
-  if (!v || !(n.is_floating_point() || n.is_integer())) fail(key, "must be a number");
-  if (!std::isfinite(*v)) fail(key, "must be finite");
-  return *v;
-}
-
-std::optional<double> opt_number(const toml::table& t, const std::string& where, const char* key) {
-  const toml::node* n = t.get(key);
-  if (!n) return std::nullopt;
-  return number(*n, where + "." + key);
+  const std::string key = toml_read::first_unknown_key(t, allowed);
+  if (key.empty()) return;
+  fail(where.empty() ? key : where + "." + key, "unknown key (allowed" +
+       (where.empty() ? std::string() : " in [" + where + "]") + ": " + toml_read::joined(allowed) + ")");
 }
 
 long integer(const toml::node& n, const std::string& key) {
@@ -49,16 +30,8 @@ bool boolean(const toml::node& n, const std::string& key) {
   return *n.value<bool>();
 }
 
-std::string string(const toml::node& n, const std::string& key) {
-  if (!n.is_string()) fail(key, "must be a string");
-  return *n.value<std::string>();
-}
-
 const toml::table* sub(const toml::table& t, const char* key) {
-  const toml::node* n = t.get(key);
-  if (!n) return nullptr;
-  if (!n->is_table()) fail(key, "must be a table, e.g. [" + std::string(key) + "]");
-  return n->as_table();
+  return toml_read::sub_table(t, key, key, ", e.g. [" + std::string(key) + "]");
 }
 
 SweepAxis read_axis(const toml::node& n, const std::string& name, AxisSpacing default_spacing) {
@@ -94,14 +67,7 @@ SweepAxis read_axis(const toml::node& n, const std::string& name, AxisSpacing de
 }  // namespace
 
 SweepSpec parse_sweep(const std::string& text, const std::string& source) {
-  toml::table root;
-  try {
-    root = toml::parse(text, source);
-  } catch (const toml::parse_error& e) {
-    std::ostringstream os;
-    os << source << ":" << e.source().begin.line << ": " << e.description();
-    throw std::invalid_argument(os.str());
-  }
+  const toml::table root = toml_read::parse(text, source);
   SweepSpec s;
   check_keys(root, "", {"axes", "initial", "run", "output"});
   if (const auto* a = sub(root, "axes")) {
@@ -124,11 +90,7 @@ SweepSpec parse_sweep(const std::string& text, const std::string& source) {
     }
     s.initial.w0 = opt_number(*i, "initial", "w0");
     s.initial.w0_over_alpha = opt_number(*i, "initial", "w0_over_alpha");
-    s.initial.x0 = opt_number(*i, "initial", "x0");
-    s.initial.y0 = opt_number(*i, "initial", "y0");
-    s.initial.vx0 = opt_number(*i, "initial", "vx0");
-    s.initial.vy0 = opt_number(*i, "initial", "vy0");
-    s.initial.vw0 = opt_number(*i, "initial", "vw0");
+    toml_read::read_state_overrides(*i, "initial", s.initial);
   }
   if (const auto* r = sub(root, "run")) {
     check_keys(*r, "run", {"t_end", "rtol", "atol", "max_steps", "event_samples", "track_energy",
@@ -158,11 +120,7 @@ SweepSpec parse_sweep(const std::string& text, const std::string& source) {
 }
 
 SweepSpec load_sweep(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw std::invalid_argument("sweep file '" + path + "' cannot be read");
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return parse_sweep(ss.str(), path);
+  return parse_sweep(toml_read::read_file(path, "sweep file"), path);
 }
 
 }  // namespace blockdyn

@@ -1,60 +1,31 @@
 #include "blockdyn/io/scenario.hpp"
 
-#include <toml++/toml.h>
-
 #include <cmath>
-#include <fstream>
 #include <set>
-#include <sstream>
 #include <stdexcept>
 
+#include "blockdyn/io/toml_read.hpp"
 #include "blockdyn/model/initial_conditions.hpp"
 
 namespace blockdyn {
 
 namespace {
 
-[[noreturn]] void fail(const std::string& where, const std::string& msg) {
-  throw std::invalid_argument(where + ": " + msg);
-}
+using toml_read::fail;
+using toml_read::opt_number;
+using toml_read::opt_string;
 
 void check_keys(const toml::table& t, const std::string& where, const std::set<std::string>& allowed) {
-  for (const auto& [k, v] : t) {
-    const std::string key(k.str());
-    if (!allowed.count(key)) {
-      std::string list;
-      for (const auto& a : allowed) list += (list.empty() ? "" : ", ") + a;
-      fail(where, "unknown key '" + key + "' (allowed: " + list + ")");
-    }
-  }
-}
-
-std::optional<double> num(const toml::table& t, const std::string& where, const char* key) {
-  const toml::node* n = t.get(key);
-  if (!n) return std::nullopt;
-  std::optional<double> v = n->value<double>();
-  if (!v) fail(where + "." + key, "must be a number");
-  if (!std::isfinite(*v)) fail(where + "." + key, "must be finite");
-  return v;
+  const std::string key = toml_read::first_unknown_key(t, allowed);
+  if (!key.empty()) fail(where, "unknown key '" + key + "' (allowed: " + toml_read::joined(allowed) + ")");
 }
 
 void read(const toml::table& t, const std::string& where, const char* key, double& out) {
-  if (auto v = num(t, where, key)) out = *v;
-}
-
-std::optional<std::string> str(const toml::table& t, const std::string& where, const char* key) {
-  const toml::node* n = t.get(key);
-  if (!n) return std::nullopt;
-  auto v = n->value<std::string>();
-  if (!v) fail(where + "." + key, "must be a string");
-  return v;
+  if (auto v = opt_number(t, where, key)) out = *v;
 }
 
 const toml::table* sub(const toml::table& t, const std::string& where, const char* key) {
-  const toml::node* n = t.get(key);
-  if (!n) return nullptr;
-  if (!n->is_table()) fail(where + "." + key, "must be a table");
-  return n->as_table();
+  return toml_read::sub_table(t, key, where + "." + key);
 }
 
 void read_component(const toml::table& t, const std::string& where, GroundComponent& c) {
@@ -70,14 +41,7 @@ void read_component(const toml::table& t, const std::string& where, GroundCompon
 }  // namespace
 
 Scenario parse_scenario(const std::string& text, const std::string& source) {
-  toml::table root;
-  try {
-    root = toml::parse(text, source);
-  } catch (const toml::parse_error& e) {
-    std::ostringstream os;
-    os << source << ":" << e.source().begin.line << ": " << e.description();
-    throw std::invalid_argument(os.str());
-  }
+  const toml::table root = toml_read::parse(text, source);
   Scenario s;
   check_keys(root, source, {"block", "physical", "initial", "run", "ground", "output"});
   if (const auto* b = sub(root, source, "block")) {
@@ -95,23 +59,19 @@ Scenario parse_scenario(const std::string& text, const std::string& source) {
     read(*p, "physical", "width", pb.width);
     read(*p, "physical", "g", pb.g);
     read(*p, "physical", "mu", pb.mu);
-    pb.mass = num(*p, "physical", "mass");
-    pb.density = num(*p, "physical", "density");
-    pb.thickness = num(*p, "physical", "thickness");
-    pb.subgrade_modulus = num(*p, "physical", "subgrade_modulus");
-    pb.line_stiffness = num(*p, "physical", "line_stiffness");
+    pb.mass = opt_number(*p, "physical", "mass");
+    pb.density = opt_number(*p, "physical", "density");
+    pb.thickness = opt_number(*p, "physical", "thickness");
+    pb.subgrade_modulus = opt_number(*p, "physical", "subgrade_modulus");
+    pb.line_stiffness = opt_number(*p, "physical", "line_stiffness");
     s.physical = pb;
     s.params = to_nondimensional(pb);
   }
   if (const auto* i = sub(root, source, "initial")) {
     check_keys(*i, "initial", {"set", "w0", "x0", "y0", "vx0", "vy0", "vw0"});
-    if (auto v = str(*i, "initial", "set")) s.initial.set = *v;
-    s.initial.w0 = num(*i, "initial", "w0");
-    s.initial.x0 = num(*i, "initial", "x0");
-    s.initial.y0 = num(*i, "initial", "y0");
-    s.initial.vx0 = num(*i, "initial", "vx0");
-    s.initial.vy0 = num(*i, "initial", "vy0");
-    s.initial.vw0 = num(*i, "initial", "vw0");
+    if (auto v = opt_string(*i, "initial", "set")) s.initial.set = *v;
+    s.initial.w0 = opt_number(*i, "initial", "w0");
+    toml_read::read_state_overrides(*i, "initial", s.initial);
   }
   if (const auto* r = sub(root, source, "run")) {
     check_keys(*r, "run", {"t_end", "t_start", "rtol", "atol", "output_interval", "max_steps", "event_samples"});
@@ -120,8 +80,8 @@ Scenario parse_scenario(const std::string& text, const std::string& source) {
     read(*r, "run", "rtol", s.options.integrator.rtol);
     read(*r, "run", "atol", s.options.integrator.atol);
     read(*r, "run", "output_interval", s.output_interval);
-    if (auto v = num(*r, "run", "max_steps")) s.options.integrator.max_steps = long(*v);
-    if (auto v = num(*r, "run", "event_samples")) s.options.integrator.event_samples = int(*v);
+    if (auto v = opt_number(*r, "run", "max_steps")) s.options.integrator.max_steps = long(*v);
+    if (auto v = opt_number(*r, "run", "event_samples")) s.options.integrator.event_samples = int(*v);
   }
   if (const auto* g = sub(root, source, "ground")) {
     check_keys(*g, "ground", {"horizontal", "vertical"});
@@ -130,19 +90,15 @@ Scenario parse_scenario(const std::string& text, const std::string& source) {
   }
   if (const auto* o = sub(root, source, "output")) {
     check_keys(*o, "output", {"trajectory", "plot", "units"});
-    if (auto v = str(*o, "output", "trajectory")) s.trajectory = *v;
-    if (auto v = str(*o, "output", "plot")) s.plot = *v;
-    if (auto v = str(*o, "output", "units")) s.units = *v;
+    if (auto v = opt_string(*o, "output", "trajectory")) s.trajectory = *v;
+    if (auto v = opt_string(*o, "output", "plot")) s.plot = *v;
+    if (auto v = opt_string(*o, "output", "units")) s.units = *v;
   }
   return s;
 }
 
 Scenario load_scenario(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw std::invalid_argument("scenario file '" + path + "' cannot be read");
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return parse_scenario(ss.str(), path);
+  return parse_scenario(toml_read::read_file(path, "scenario file"), path);
 }
 
 BlockStateVec initial_state(const Scenario& s) {

@@ -1,0 +1,76 @@
+#include "blockdyn/io/toml_read.hpp"
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+namespace blockdyn::toml_read {
+
+void fail(const std::string& field, const std::string& msg) {
+  throw std::invalid_argument(field + ": " + msg);
+}
+
+std::string read_file(const std::string& path, const std::string& what) {
+  std::ifstream in(path);
+  if (!in) throw std::invalid_argument(what + " '" + path + "' cannot be read");
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+toml::table parse(const std::string& text, const std::string& source) {
+  try {
+    return toml::parse(text, source);
+  } catch (const toml::parse_error& e) {
+    std::ostringstream os;
+    os << source << ":" << e.source().begin.line << ": " << e.description();
+    throw std::invalid_argument(os.str());
+  }
+}
+
+std::string first_unknown_key(const toml::table& t, const std::set<std::string>& allowed) {
+  for (const auto& [k, v] : t)
+    if (!allowed.count(std::string(k.str()))) return std::string(k.str());
+  return {};
+}
+
+std::string joined(const std::set<std::string>& allowed) {
+  std::string list;
+  for (const auto& a : allowed) list += (list.empty() ? "" : ", ") + a;
+  return list;
+}
+
+double number(const toml::node& n, const std::string& field) {
+  std::optional<double> v = n.value<double>();
+  if (!v || !(n.is_floating_point() || n.is_integer())) fail(field, "must be a number");
+  if (!std::isfinite(*v)) fail(field, "must be finite");
+  return *v;
+}
+
+std::string string(const toml::node& n, const std::string& field) {
+  if (!n.is_string()) fail(field, "must be a string");
+  return *n.value<std::string>();
+}
+
+std::optional<double> opt_number(const toml::table& t, const std::string& where, const char* key) {
+  const toml::node* n = t.get(key);
+  if (!n) return std::nullopt;
+  return number(*n, where + "." + key);
+}
+
+std::optional<std::string> opt_string(const toml::table& t, const std::string& where, const char* key) {
+  const toml::node* n = t.get(key);
+  if (!n) return std::nullopt;
+  return string(*n, where + "." + key);
+}
+
+const toml::table* sub_table(const toml::table& t, const char* key, const std::string& field,
+                             const std::string& hint) {
+  const toml::node* n = t.get(key);
+  if (!n) return nullptr;
+  if (!n->is_table()) fail(field, "must be a table" + hint);
+  return n->as_table();
+}
+
+}  // namespace blockdyn::toml_read
