@@ -25,8 +25,55 @@ struct SimulateFlags {
   std::string trajectory, plot, json_out, units = "nondim";
   bool json = false;
   GroundMotion ground;
-  std::vector<CLI::Option*> opts;
+  PhysicalBlock phys;  // --height --width ... (physical input)
 };
+
+// Physical-block flags: name, field, help.
+struct PhysFlag {
+  const char* name;
+  double PhysicalBlock::*plain;
+  std::optional<double> PhysicalBlock::*opt;
+  const char* help;
+};
+const PhysFlag kPhysFlags[] = {
+    {"--height", &PhysicalBlock::height, nullptr, "physical block: height a [m]"},
+    {"--width", &PhysicalBlock::width, nullptr, "physical block: width b [m]"},
+    {"--g", &PhysicalBlock::g, nullptr, "gravity [m/s^2] (default 9.81)"},
+    {"--mass", nullptr, &PhysicalBlock::mass, "physical block: mass [kg]"},
+    {"--density", nullptr, &PhysicalBlock::density, "physical block: density [kg/m^3] (with --thickness)"},
+    {"--thickness", nullptr, &PhysicalBlock::thickness, "physical block: out-of-plane depth [m]"},
+    {"--subgrade-modulus", nullptr, &PhysicalBlock::subgrade_modulus, "Winkler modulus [N/m^3] (with --thickness)"},
+    {"--line-stiffness", nullptr, &PhysicalBlock::line_stiffness, "foundation stiffness per unit length and depth [N/m^2]"},
+};
+
+void add_physical_flags(CLI::App& s, SimulateFlags& f) {
+  for (const PhysFlag& pf : kPhysFlags) {
+    if (pf.plain) {
+      s.add_option(pf.name, f.phys.*pf.plain, pf.help);
+    } else {
+      s.add_option_function<double>(pf.name, [&f, pf](double v) { f.phys.*pf.opt = v; }, pf.help);
+    }
+  }
+}
+
+// Applies the physical-block flags on top of the scenario's [physical] block (if any).
+void apply_physical_flags(const CLI::App& s, const SimulateFlags& f, Scenario& sc) {
+  bool any = false;
+  for (const PhysFlag& pf : kPhysFlags) any |= s.count(pf.name) > 0;
+  if (!any) return;
+  if (s.count("--r") || s.count("--k"))
+    throw UsageError("--r/--k and a physical block (--height, --width, ...) both given: use one");
+  PhysicalBlock pb = sc.physical.value_or(PhysicalBlock{});
+  pb.mu = s.count("--mu") ? f.p.mu : (sc.physical ? pb.mu : sc.params.mu);
+  for (const PhysFlag& pf : kPhysFlags) {
+    if (!s.count(pf.name)) continue;
+    if (pf.plain) pb.*pf.plain = f.phys.*pf.plain;
+    else pb.*pf.opt = f.phys.*pf.opt;
+  }
+  sc.physical = pb;
+  sc.params = to_nondimensional(pb);
+  if (!s.count("--units")) sc.units = "physical";
+}
 
 void add_ground_flags(CLI::App& s, SimulateFlags& f) {
   for (int i = 0; i < 2; ++i) {
@@ -75,13 +122,14 @@ Scenario build_scenario(const CLI::App& s, const SimulateFlags& f) {
     if (given(s, n + "-start")) c.t_start = g.t_start;
     if (given(s, n + "-duration")) c.duration = g.duration;
   }
+  apply_physical_flags(s, f, sc);
   validate(sc.params);
   validate(sc.ground);
   validate(sc.options);
   if (sc.units != "nondim" && sc.units != "physical")
     throw UsageError("units = '" + sc.units + "' is not one of: nondim, physical");
   if (sc.units == "physical" && !sc.physical)
-    throw UsageError("units = physical needs a [physical] block in the scenario");
+    throw UsageError("units = physical needs a physical block (--height --width ... or [physical] in the scenario)");
   require_range("output-interval", sc.output_interval, 0.0, 1e300);
   return sc;
 }
@@ -144,10 +192,11 @@ void add(CLI::App& app) {
       ->capture_default_str();
   s->add_option("--trajectory", f->trajectory, "write the trajectory CSV here");
   s->add_option("--plot", f->plot, "write a plot of the motion (PNG; an SVG is written beside it)");
-  s->add_option("--units", f->units, "nondim, or physical (needs a [physical] scenario block)");
+  s->add_option("--units", f->units, "nondim, or physical (needs a physical block: flags or [physical])");
   s->add_flag("--json", f->json, "print the JSON summary on stdout");
   s->add_option("--json-out", f->json_out, "also write the JSON summary to this file");
   add_ground_flags(*s, *f);
+  add_physical_flags(*s, *f);
   s->callback([s, f] { run(*s, *f); });
 }
 

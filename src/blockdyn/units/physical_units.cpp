@@ -1,6 +1,7 @@
 #include "blockdyn/units/physical_units.hpp"
 
 #include <cmath>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 
@@ -8,9 +9,11 @@ namespace blockdyn {
 
 namespace {
 void positive(const char* field, double v) {
-  if (!std::isfinite(v) || v <= 0.0)
-    throw std::invalid_argument(std::string(field) + " = " + std::to_string(v) +
-                                " is out of range: must be a finite number > 0");
+  if (!std::isfinite(v) || v <= 0.0) {
+    std::ostringstream os;
+    os << field << " = " << v << " is out of range: must be a finite number > 0";
+    throw std::invalid_argument(os.str());
+  }
 }
 }  // namespace
 
