@@ -118,23 +118,14 @@ class HybridIntegrator {
       if (last) h = t_end - t;
       const double err = stepper_.attempt(f, t, h, z, k1, y_new, k7, stats_);
       if (!(err <= 1.0)) {
-        ++stats_.rejected;
-        if (!std::isfinite(err) && h < 1e-300) return RunStatus::NonFinite;
-        h *= std::isfinite(err) ? std::fmax(0.2, 0.9 * std::pow(err, -0.2)) : 0.1;
-        if (h <= 16.0 * std::numeric_limits<double>::epsilon() * std::fmax(1.0, std::fabs(t)))
-          return RunStatus::StepUnderflow;
+        if (const auto failure = shrink_rejected_step(err, t, h)) return *failure;
         continue;
       }
       ++stats_.accepted;
       stepper_.dense(t, h, z, y_new, k1, k7, seg);
       const double t_next = last ? t_end : t + h;
       const auto hit = scan_events(seg, t, t_next, y_new, mode, g_start);
-      // Proportional-integral step-size control (Hairer & Wanner, IV.2).
-      const double e = std::fmax(err, 1e-10);
-      double fac = 0.9 * std::pow(e, -0.17) * std::pow(err_old, 0.04);
-      fac = std::fmin(5.0, std::fmax(0.2, fac));
-      err_old = e;
-      const double h_new = std::fmin(h * fac, opt_.h_max);
+      const double h_new = next_step_size(err, h, err_old);
       if (!hit) {
         if (!obs.on_step(seg, t, t_next, mode)) return RunStatus::ObserverStop;
         t = t_next;
@@ -207,6 +198,24 @@ class HybridIntegrator {
     double t;
     int index;
   };
+
+  // After a rejected step: shrink h, or report why integration cannot go on.
+  std::optional<RunStatus> shrink_rejected_step(double err, double t, double& h) {
+    ++stats_.rejected;
+    if (!std::isfinite(err) && h < 1e-300) return RunStatus::NonFinite;
+    h *= std::isfinite(err) ? std::fmax(0.2, 0.9 * std::pow(err, -0.2)) : 0.1;
+    if (h <= 16.0 * std::numeric_limits<double>::epsilon() * std::fmax(1.0, std::fabs(t)))
+      return RunStatus::StepUnderflow;
+    return std::nullopt;
+  }
+
+  // Proportional-integral step-size control after an accepted step (Hairer & Wanner, IV.2).
+  double next_step_size(double err, double h, double& err_old) const {
+    const double e = std::fmax(err, 1e-10);
+    const double fac = std::fmin(5.0, std::fmax(0.2, 0.9 * std::pow(e, -0.17) * std::pow(err_old, 0.04)));
+    err_old = e;
+    return std::fmin(h * fac, opt_.h_max);
+  }
 
   double initial_step(const Mode& mode) const {
     return std::fmin(model_.step_hint(mode), std::fmin(opt_.h_max, 1e-2));
