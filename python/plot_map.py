@@ -21,6 +21,7 @@ STYLE = {  # response type -> (marker, face colour, label)
     "overturned": (".", "0.6", "overturned"),
     "unclassified": ("d", "C4", "unclassified"),
     "failed": ("x", "C1", "failed"),
+    "outside_model": ("_", "C7", "initial state outside the model"),
 }
 
 
@@ -40,7 +41,9 @@ def main(argv):
         rows = list(csv.DictReader(f))
     groups = {}
     for r in rows:
-        t = r.get("response_type") or ("failed" if r["status"] in ("error", "numerical_failure") else "unclassified")
+        status = r["status"]
+        t = r.get("response_type") or (status if status == "outside_model" else
+                                       "failed" if status in ("error", "numerical_failure") else "unclassified")
         groups.setdefault(t, []).append((float(r["inv_r"]), math.log10(float(r["k"]))))
     fig, ax = plt.subplots(figsize=(8, 6.5), constrained_layout=True)
     for t, pts in sorted(groups.items()):

@@ -132,6 +132,13 @@ SweepRow SweepEvaluator::row(std::size_t index) const {
   FanOutSink fan;
   try {
     z0 = sweep_initial_state(spec_, p);
+    if (auto why = WinklerBlock(p.params, GroundMotion{}).validity_problem(z0)) {
+      out.error = "initial state outside the model: " + *why;  // reported, not integrated
+      b.add(std::string("outside_model"));
+      for (std::size_t i = 7; i < columns_.size(); ++i) b.empty();
+      out.text = b.finish();
+      return out;
+    }
     for (const auto& m : metrics_) {
       owned.push_back(m->make_sink(ctx));
       if (owned.back()) fan.sinks.push_back(owned.back().get());

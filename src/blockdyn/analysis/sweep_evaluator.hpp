@@ -6,7 +6,8 @@
 //   overturn_time,ihor_at_overturn,ihor_final,energy_initial,energy_lost,max_abs_energy_error,
 //   steps,rhs_evals
 // Doubles use %.17g; an absent value (no flight, no overturn, energy not tracked) is empty.
-// status is t_end | overturned | invalid | early_stop | numerical_failure, or error when the
+// status is t_end | overturned | invalid | early_stop | numerical_failure, outside_model (the
+// initial state is outside the model: reported, not integrated), or error when the
 // simulation threw (the message goes to SweepRow::error, not to the CSV).
 #include <cstddef>
 #include <memory>

@@ -79,14 +79,14 @@ void validate(const SweepSpec& s) {
                                 " is out of range: must be >= 0 (0: never stop)");
   const std::size_t n = point_count(s);
   if (n == 0 || n > 1'000'000'000) throw std::invalid_argument("the sweep has " + std::to_string(n) + " points: must be in [1, 1e9]");
-  // Every point's start is checked up front: a definition error must not surface hours later.
+  // Every point's start is built up front: a definition error must not surface hours later.
+  // A start that is well defined but outside the model (e.g. three corners below the surface on
+  // a very soft foundation) is not a definition error: its row reports status outside_model.
   for (std::size_t i = 0; i < n; ++i) {
     const SweepPoint p = sweep_point(s, i);
     try {
       validate(p.params);
-      const BlockStateVec z = sweep_initial_state(s, p);
-      const WinklerBlock m(p.params, GroundMotion{});
-      if (auto why = m.validity_problem(z)) throw std::invalid_argument("initial state: " + *why);
+      (void)sweep_initial_state(s, p);
     } catch (const std::invalid_argument& e) {
       throw std::invalid_argument(describe(p) + ": " + e.what());
     }
