@@ -17,6 +17,9 @@ struct UsageError : std::invalid_argument {
   using std::invalid_argument::invalid_argument;
 };
 
+// Whether the user gave option `name` (flags override scenario/definition files only then).
+inline bool given(const CLI::App& app, const std::string& name) { return app.count(name) > 0; }
+
 // --r --mu --k bound to p (defaults kept unless given).
 void add_block_options(CLI::App& app, BlockParams& p);
 // --rtol --atol bound to o.

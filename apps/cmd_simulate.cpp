@@ -89,7 +89,6 @@ void add_ground_flags(CLI::App& s, SimulateFlags& f) {
   }
 }
 
-bool given(const CLI::App& s, const std::string& name) { return s.count(name) > 0; }
 
 Scenario build_scenario(const CLI::App& s, const SimulateFlags& f) {
   Scenario sc = f.scenario_file.empty() ? Scenario{} : load_scenario(f.scenario_file);

@@ -32,7 +32,6 @@ struct SweepFlags {
   bool resume = false, overwrite = false, quiet = false, list_metrics = false, dry_run = false;
 };
 
-bool given(const CLI::App& s, const std::string& name) { return s.count(name) > 0; }
 
 std::vector<std::string> split_list(const std::string& s) {
   std::vector<std::string> out;
