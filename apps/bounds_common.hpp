@@ -6,9 +6,9 @@
 #include <string>
 #include <vector>
 
-#include "blockdyn/analysis/boundary_search.hpp"
-#include "blockdyn/analysis/ic_choice.hpp"
-#include "blockdyn/analysis/study_options.hpp"
+#include "blockdyn/analysis/sweep/boundary_search.hpp"
+#include "blockdyn/analysis/winkler/ic_choice.hpp"
+#include "blockdyn/analysis/winkler/study_options.hpp"
 #include "cli_common.hpp"
 
 namespace blockdyn::cli::bounds {

@@ -8,10 +8,10 @@
 #include <string>
 #include <unistd.h>
 
-#include "blockdyn/analysis/energy_surface.hpp"
+#include "blockdyn/analysis/winkler/energy_surface.hpp"
 #include "blockdyn/io/json_io.hpp"
-#include "blockdyn/model/energy.hpp"
-#include "blockdyn/model/initial_conditions.hpp"
+#include "blockdyn/model/winkler/energy.hpp"
+#include "blockdyn/model/winkler/initial_conditions.hpp"
 #include "blockdyn/io/scenario.hpp"
 #include "cli_common.hpp"
 

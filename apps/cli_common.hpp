@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "blockdyn/integrate/hybrid_integrator.hpp"
-#include "blockdyn/model/block_params.hpp"
+#include "blockdyn/model/winkler/winkler_params.hpp"
 
 namespace blockdyn::cli {
 

@@ -7,8 +7,8 @@
 #include <iomanip>
 #include <memory>
 
-#include "blockdyn/analysis/energy_surface.hpp"
-#include "blockdyn/analysis/swings.hpp"
+#include "blockdyn/analysis/winkler/energy_surface.hpp"
+#include "blockdyn/analysis/winkler/swings.hpp"
 #include "blockdyn/io/atomic_file.hpp"
 #include "blockdyn/io/json_io.hpp"
 #include "chaos_cli.hpp"

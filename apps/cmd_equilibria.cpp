@@ -6,8 +6,8 @@
 #include <sstream>
 #include <unistd.h>
 
-#include "blockdyn/analysis/equilibria.hpp"
-#include "blockdyn/analysis/equilibrium_bifurcation.hpp"
+#include "blockdyn/analysis/winkler/equilibria.hpp"
+#include "blockdyn/analysis/winkler/equilibrium_bifurcation.hpp"
 #include "blockdyn/io/atomic_file.hpp"
 #include "blockdyn/io/json_io.hpp"
 #include "cli_common.hpp"

@@ -6,8 +6,8 @@
 #include <memory>
 #include <sstream>
 
-#include "blockdyn/analysis/flight.hpp"
-#include "blockdyn/analysis/parallel_map.hpp"
+#include "blockdyn/analysis/winkler/flight.hpp"
+#include "blockdyn/analysis/sweep/parallel_map.hpp"
 #include "blockdyn/io/json_io.hpp"
 #include "bounds_common.hpp"
 #include "cli_registry.hpp"

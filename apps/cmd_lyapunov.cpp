@@ -4,7 +4,7 @@
 #include <iomanip>
 #include <memory>
 
-#include "blockdyn/analysis/lyapunov_block.hpp"
+#include "blockdyn/analysis/winkler/lyapunov_block.hpp"
 #include "blockdyn/io/atomic_file.hpp"
 #include "blockdyn/io/json_io.hpp"
 #include "chaos_cli.hpp"

@@ -7,10 +7,10 @@
 #include <map>
 #include <memory>
 
-#include "blockdyn/analysis/flight.hpp"
-#include "blockdyn/analysis/parallel_map.hpp"
-#include "blockdyn/analysis/stability.hpp"
-#include "blockdyn/analysis/sweep_runner.hpp"
+#include "blockdyn/analysis/winkler/flight.hpp"
+#include "blockdyn/analysis/sweep/parallel_map.hpp"
+#include "blockdyn/analysis/winkler/stability.hpp"
+#include "blockdyn/analysis/sweep/sweep_runner.hpp"
 #include "blockdyn/io/json_io.hpp"
 #include "blockdyn/io/progress.hpp"
 #include "bounds_common.hpp"

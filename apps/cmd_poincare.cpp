@@ -5,7 +5,7 @@
 #include <cstdio>
 #include <memory>
 
-#include "blockdyn/analysis/poincare.hpp"
+#include "blockdyn/analysis/winkler/poincare.hpp"
 #include "blockdyn/io/atomic_file.hpp"
 #include "blockdyn/io/json_io.hpp"
 #include "chaos_cli.hpp"

@@ -3,7 +3,7 @@
 #include <cstdio>
 #include <memory>
 
-#include "blockdyn/analysis/response_type.hpp"
+#include "blockdyn/analysis/winkler/response_type.hpp"
 #include "blockdyn/io/atomic_file.hpp"
 #include "blockdyn/io/json_io.hpp"
 #include "chaos_cli.hpp"

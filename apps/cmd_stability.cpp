@@ -5,8 +5,8 @@
 #include <cstdio>
 #include <memory>
 
-#include "blockdyn/analysis/parallel_map.hpp"
-#include "blockdyn/analysis/stability.hpp"
+#include "blockdyn/analysis/sweep/parallel_map.hpp"
+#include "blockdyn/analysis/winkler/stability.hpp"
 #include "blockdyn/io/json_io.hpp"
 #include "bounds_common.hpp"
 #include "cli_registry.hpp"

@@ -6,9 +6,9 @@
 #include <iostream>
 #include <memory>
 
-#include "blockdyn/analysis/parallel_map.hpp"
-#include "blockdyn/analysis/sweep_runner.hpp"
-#include "blockdyn/analysis/sweep_toml.hpp"
+#include "blockdyn/analysis/sweep/parallel_map.hpp"
+#include "blockdyn/analysis/sweep/sweep_runner.hpp"
+#include "blockdyn/analysis/sweep/sweep_toml.hpp"
 #include "blockdyn/io/json_io.hpp"
 #include "cli_common.hpp"
 #include "cli_registry.hpp"

@@ -12,7 +12,7 @@
 #include <string>
 #include <thread>
 
-#include "blockdyn/analysis/parallel_map.hpp"
+#include "blockdyn/analysis/sweep/parallel_map.hpp"
 #include "cli_common.hpp"
 
 #ifdef BLOCKDYN_HAVE_MPI

@@ -4,7 +4,7 @@
 // rank and computes them on its own threads; rows travel to rank 0 as they finish. The rows are
 // the same bytes as in a single-process run, and the final CSV is sorted, so the output is
 // byte-identical to a single-process run; resume works the same because rank 0 reads the journal.
-#include "blockdyn/analysis/sweep_runner.hpp"
+#include "blockdyn/analysis/sweep/sweep_runner.hpp"
 
 namespace blockdyn::cli {
 

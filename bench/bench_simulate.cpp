@@ -1,7 +1,7 @@
 #include <benchmark/benchmark.h>
 
-#include "blockdyn/model/initial_conditions.hpp"
-#include "blockdyn/simulation.hpp"
+#include "blockdyn/model/winkler/initial_conditions.hpp"
+#include "blockdyn/simulation/simulate.hpp"
 
 using namespace blockdyn;
 

@@ -5,8 +5,8 @@
 #include <cstdlib>
 #include <new>
 
-#include "blockdyn/model/initial_conditions.hpp"
-#include "blockdyn/simulation.hpp"
+#include "blockdyn/model/winkler/initial_conditions.hpp"
+#include "blockdyn/simulation/simulate.hpp"
 
 namespace {
 std::atomic<long> g_allocations{0};

@@ -9,11 +9,11 @@
 #include <cstdlib>
 #include <string>
 
-#include "blockdyn/analysis/boundary_search.hpp"
-#include "blockdyn/analysis/flight.hpp"
-#include "blockdyn/analysis/stability.hpp"
-#include "blockdyn/model/energy.hpp"
-#include "blockdyn/model/initial_conditions.hpp"
+#include "blockdyn/analysis/sweep/boundary_search.hpp"
+#include "blockdyn/analysis/winkler/flight.hpp"
+#include "blockdyn/analysis/winkler/stability.hpp"
+#include "blockdyn/model/winkler/energy.hpp"
+#include "blockdyn/model/winkler/initial_conditions.hpp"
 
 using namespace blockdyn;
 

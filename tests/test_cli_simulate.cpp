@@ -13,8 +13,8 @@
 #include <string>
 #include <vector>
 
-#include "blockdyn/model/initial_conditions.hpp"
-#include "blockdyn/simulation.hpp"
+#include "blockdyn/model/winkler/initial_conditions.hpp"
+#include "blockdyn/simulation/simulate.hpp"
 
 namespace fs = std::filesystem;
 using json = nlohmann::json;

@@ -9,8 +9,8 @@
 #include <cstdio>
 #include <string>
 
-#include "blockdyn/model/initial_conditions.hpp"
-#include "blockdyn/simulation.hpp"
+#include "blockdyn/model/winkler/initial_conditions.hpp"
+#include "blockdyn/simulation/simulate.hpp"
 
 #include "test_support.hpp"
 

@@ -17,10 +17,10 @@
 #include <string>
 #include <unistd.h>
 
-#include "blockdyn/analysis/equilibria.hpp"
-#include "blockdyn/analysis/equilibrium_bifurcation.hpp"
-#include "blockdyn/geometry/region.hpp"
-#include "blockdyn/model/energy.hpp"
+#include "blockdyn/analysis/winkler/equilibria.hpp"
+#include "blockdyn/analysis/winkler/equilibrium_bifurcation.hpp"
+#include "blockdyn/model/winkler/region.hpp"
+#include "blockdyn/model/winkler/energy.hpp"
 
 using namespace blockdyn;
 

@@ -17,7 +17,7 @@
 #include <cmath>
 #include <functional>
 
-#include "blockdyn/simulation.hpp"
+#include "blockdyn/simulation/simulate.hpp"
 
 #include "test_support.hpp"
 

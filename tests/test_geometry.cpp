@@ -10,9 +10,9 @@
 #include <random>
 #include <vector>
 
-#include "blockdyn/geometry/region.hpp"
-#include "blockdyn/model/energy.hpp"
-#include "blockdyn/model/foundation_force.hpp"
+#include "blockdyn/model/winkler/region.hpp"
+#include "blockdyn/model/winkler/energy.hpp"
+#include "blockdyn/model/winkler/foundation_force.hpp"
 
 #include "test_support.hpp"
 

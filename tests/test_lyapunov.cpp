@@ -9,8 +9,8 @@
 #include <optional>
 #include <string>
 
-#include "blockdyn/analysis/lyapunov_block.hpp"
-#include "blockdyn/model/initial_conditions.hpp"
+#include "blockdyn/analysis/winkler/lyapunov_block.hpp"
+#include "blockdyn/model/winkler/initial_conditions.hpp"
 
 using namespace blockdyn;
 

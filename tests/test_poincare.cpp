@@ -11,10 +11,10 @@
 #include <limits>
 #include <string>
 
-#include "blockdyn/analysis/energy_surface.hpp"
-#include "blockdyn/analysis/poincare.hpp"
-#include "blockdyn/model/energy.hpp"
-#include "blockdyn/model/initial_conditions.hpp"
+#include "blockdyn/analysis/winkler/energy_surface.hpp"
+#include "blockdyn/analysis/winkler/poincare.hpp"
+#include "blockdyn/model/winkler/energy.hpp"
+#include "blockdyn/model/winkler/initial_conditions.hpp"
 
 using namespace blockdyn;
 

@@ -8,8 +8,8 @@
 #include <cstdlib>
 #include <string>
 
-#include "blockdyn/analysis/response_type.hpp"
-#include "blockdyn/model/initial_conditions.hpp"
+#include "blockdyn/analysis/winkler/response_type.hpp"
+#include "blockdyn/model/winkler/initial_conditions.hpp"
 
 using namespace blockdyn;
 

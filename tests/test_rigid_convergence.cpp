@@ -10,9 +10,9 @@
 #include <string>
 #include <vector>
 
-#include "blockdyn/model/initial_conditions.hpp"
-#include "blockdyn/model/rigid_ground_block.hpp"
-#include "blockdyn/simulation.hpp"
+#include "blockdyn/model/winkler/initial_conditions.hpp"
+#include "blockdyn/model/winkler/rigid_limit.hpp"
+#include "blockdyn/simulation/simulate.hpp"
 
 #include "test_support.hpp"
 

@@ -8,7 +8,7 @@
 #include <cstdio>
 #include <string>
 
-#include "blockdyn/simulation.hpp"
+#include "blockdyn/simulation/simulate.hpp"
 
 namespace blockdyn::test {
 

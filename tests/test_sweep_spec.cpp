@@ -4,8 +4,8 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "blockdyn/analysis/sweep_evaluator.hpp"
-#include "blockdyn/analysis/sweep_toml.hpp"
+#include "blockdyn/analysis/sweep/sweep_evaluator.hpp"
+#include "blockdyn/analysis/sweep/sweep_toml.hpp"
 
 using namespace blockdyn;
 

@@ -16,7 +16,7 @@
 #include <string>
 #include <vector>
 
-#include "blockdyn/simulation.hpp"
+#include "blockdyn/simulation/simulate.hpp"
 
 #include "test_support.hpp"
 

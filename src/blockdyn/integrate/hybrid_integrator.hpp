@@ -3,8 +3,12 @@
 // event location on the dense output by bracketing + TOMS 748, restart at each event.
 //
 // A model supplies (see HybridModel below): the state size, a Mode type, right-hand sides per
-// mode, event functions that must stay >= 0 while a mode is valid, and the transition map
-// applied when one of them becomes negative. The integrator knows nothing about blocks.
+// mode, event functions that must stay >= 0 while a mode is valid, the transition map applied
+// when one of them becomes negative (it may also change the state: an impact is a velocity
+// jump), and the breakpoints of its time dependence (kinks and jumps of a ground motion): no
+// step crosses a breakpoint; each step is integrated with the input as it is on the step's side
+// of the breakpoint, and at the breakpoint the model's transition is called with event index
+// kBreakpoint so it can re-select its mode. The integrator knows nothing about blocks.
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -21,6 +25,9 @@
 
 namespace blockdyn {
 
+// Event index passed to transition() when the integration reaches a breakpoint of the input.
+inline constexpr int kBreakpoint = -2;
+
 template <class Mode>
 struct Transition {
   Mode next{};
@@ -36,7 +43,7 @@ concept HybridModel = requires(const M& m, typename M::Mode mode, Vec<M::kDim> z
   m.rhs(t, mode, z, dz);
   m.events(t, mode, z, g);
   m.complete(mode, z);
-  { m.transition(t, mode, z, i) } -> std::same_as<Transition<typename M::Mode>>;
+  { m.transition(t, mode, dz, i) } -> std::same_as<Transition<typename M::Mode>>;  // may change z
   { m.resolve_chatter(t, mode, z) } -> std::same_as<std::optional<Transition<typename M::Mode>>>;
   { m.step_hint(mode) } -> std::convertible_to<double>;
   { m.abs_tol_scale() } -> std::convertible_to<Vec<M::kDim>>;
@@ -66,10 +73,28 @@ struct IntegratorOptions {
   int chatter_limit = 16;  // consecutive zero-duration events before resolve_chatter()
 };
 
+// The model's first input breakpoint after t: `double next_breakpoint(double t) const` (optional;
+// without it the input is smooth and there is none).
+template <class M>
+double next_breakpoint_of(const M& m, double t) {
+  if constexpr (requires { { m.next_breakpoint(t) } -> std::convertible_to<double>; })
+    return m.next_breakpoint(t);
+  return std::numeric_limits<double>::infinity();
+}
+
+// Whether a model's transitions may change the state (impacts). Models declare
+// `static constexpr bool kStateJumps = true;` (absent: false).
+template <class M>
+constexpr bool has_state_jumps() {
+  if constexpr (requires { M::kStateJumps; }) return M::kStateJumps;
+  return false;
+}
+
 template <class Mode, std::size_t N>
 struct EventInfo {
   double t;
-  Vec<N> z;  // completed state at the event
+  Vec<N> z;         // completed state right after the event (after any jump)
+  Vec<N> z_before;  // completed state at the event, before the transition
   Mode from, to;
   int index;  // which event function
   int kind;   // model-defined
@@ -100,7 +125,10 @@ class HybridIntegrator {
   template <class Observer>
   RunStatus run(double& t, double t_end, Mode& mode, State& z, Observer& obs) {
     model_.complete(mode, z);
-    auto f = [&](double tt, const State& y, State& dy) { model_.rhs(tt, mode, y, dy); };
+    // Within a step that ends at a breakpoint the input is evaluated on the step's side of it.
+    double t_clamp = std::numeric_limits<double>::infinity();
+    auto f = [&](double tt, const State& y, State& dy) { model_.rhs(std::fmin(tt, t_clamp), mode, y, dy); };
+    t_clamp_ = &t_clamp;
     State k1, k7, y_new;
     f(t, z, k1);
     ++stats_.rhs_evals;
@@ -112,10 +140,15 @@ class HybridIntegrator {
     double err_old = 1e-4;
     int zero_time_events = 0;
     DenseSegment<N> seg;
+    double t_break = next_breakpoint_of(model_, t);
     while (t < t_end) {
       if (stats_.accepted + stats_.rejected >= opt_.max_steps) return RunStatus::MaxSteps;
-      const bool last = h >= t_end - t;
+      const bool last = h >= t_end - t && t_end <= t_break;
+      const bool to_break = !last && h >= t_break - t;
+      const double h_wanted = h;
       if (last) h = t_end - t;
+      if (to_break) h = t_break - t;
+      t_clamp = to_break ? std::nextafter(t_break, -INFINITY) : std::numeric_limits<double>::infinity();
       const double err = stepper_.attempt(f, t, h, z, k1, y_new, k7, stats_);
       if (!(err <= 1.0)) {
         if (const auto failure = shrink_rejected_step(err, t, h)) return *failure;
@@ -123,9 +156,12 @@ class HybridIntegrator {
       }
       ++stats_.accepted;
       stepper_.dense(t, h, z, y_new, k1, k7, seg);
-      const double t_next = last ? t_end : t + h;
+      const double t_next = last ? t_end : (to_break ? t_break : t + h);
       const auto hit = scan_events(seg, t, t_next, y_new, mode, g_start);
-      const double h_new = next_step_size(err, h, err_old);
+      // A step shortened to land on t_end or a breakpoint says little about the step size the
+      // solution allows: keep the size asked for before the shortening.
+      double h_new = next_step_size(err, h, err_old);
+      if (to_break || last) h_new = std::fmax(h_new, std::fmin(h_wanted, opt_.h_max));
       if (!hit) {
         if (!obs.on_step(seg, t, t_next, mode)) return RunStatus::ObserverStop;
         t = t_next;
@@ -137,6 +173,28 @@ class HybridIntegrator {
         zero_time_events = 0;
         for (std::size_t i = 0; i < NE; ++i)
           if (!armed_[i] && g_start[i] > 0.0) armed_[i] = true;
+        if (to_break) {
+          // The input may jump or kink here: let the model re-select its mode, restart.
+          t_clamp = std::numeric_limits<double>::infinity();
+          const State z_before = z;
+          const Transition<Mode> tr = model_.transition(t, mode, z, kBreakpoint);
+          EventInfo<Mode, N> info{t, z, z_before, mode, tr.next, kBreakpoint, tr.kind, tr.stop};
+          if (tr.stop) {
+            obs.on_event(info);
+            return RunStatus::ModelStop;
+          }
+          mode = tr.next;
+          model_.complete(mode, z);
+          info.z = z;
+          if (!obs.on_event(info)) return RunStatus::ObserverStop;
+          model_.events(t, mode, z, g_start);
+          armed_.fill(true);
+          reset_falling(g_start, -1);
+          f(t, z, k1);
+          ++stats_.rhs_evals;
+          t_break = next_breakpoint_of(model_, t);
+          h = std::fmin(h, model_.step_hint(mode));
+        }
         continue;
       }
       // An event inside the step: keep the trajectory up to it, apply the transition, restart.
@@ -158,8 +216,10 @@ class HybridIntegrator {
       }
       zero_time_events = (te == t) ? zero_time_events + 1 : 0;
       model_.complete(mode, ze);
+      const State z_before = ze;
+      t_clamp = std::numeric_limits<double>::infinity();
       const Transition<Mode> tr = model_.transition(te, mode, ze, hit->index);
-      EventInfo<Mode, N> info{te, ze, mode, tr.next, hit->index, tr.kind, tr.stop};
+      EventInfo<Mode, N> info{te, ze, z_before, mode, tr.next, hit->index, tr.kind, tr.stop};
       t = te;
       z = ze;
       if (tr.stop) {
@@ -176,7 +236,7 @@ class HybridIntegrator {
       if (zero_time_events >= opt_.chatter_limit) {
         const auto held = model_.resolve_chatter(t, mode, z);
         if (!held) return RunStatus::Chatter;
-        EventInfo<Mode, N> hold{t, z, mode, held->next, -1, held->kind, false};
+        EventInfo<Mode, N> hold{t, z, z, mode, held->next, -1, held->kind, false};
         mode = held->next;
         model_.complete(mode, z);
         hold.z = z;
@@ -188,6 +248,7 @@ class HybridIntegrator {
       }
       f(t, z, k1);
       ++stats_.rhs_evals;
+      t_break = next_breakpoint_of(model_, t);
       h = std::fmin(h_new, model_.step_hint(mode));
     }
     return RunStatus::ReachedEnd;
@@ -241,13 +302,13 @@ class HybridIntegrator {
         seg.eval(ts[j], y);
       }
       model_.complete(mode, y);
-      model_.events(ts[j], mode, y, gs[j]);
+      model_.events(std::fmin(ts[j], *t_clamp_), mode, y, gs[j]);
     }
     auto g_all = [&](double tt, Events& ge) {
       State yy;
       seg.eval(tt, yy);
       model_.complete(mode, yy);
-      model_.events(tt, mode, yy, ge);
+      model_.events(std::fmin(tt, *t_clamp_), mode, yy, ge);
     };
     // Falling into the step end: one more value just before t1 tells whether a minimum lies
     // inside the last interval (the next step could not see it).
@@ -332,6 +393,7 @@ class HybridIntegrator {
   std::array<bool, NE> armed_{};
   std::array<bool, NE> falling_{};  // event function still decreasing at the last step end
   Events g_last_{};
+  const double* t_clamp_ = nullptr;  // the run's input-side clamp (see run())
 };
 
 }  // namespace blockdyn

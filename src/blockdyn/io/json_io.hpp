@@ -3,8 +3,8 @@
 // with full round-trip precision by nlohmann's serializer.
 #include <nlohmann/json.hpp>
 
-#include "blockdyn/model/ground_motion.hpp"
-#include "blockdyn/simulation.hpp"
+#include "blockdyn/excitation/ground_motion.hpp"
+#include "blockdyn/simulation/simulate.hpp"
 #include "blockdyn/units/physical_units.hpp"
 
 namespace blockdyn {

@@ -5,7 +5,7 @@
 #include <stdexcept>
 
 #include "blockdyn/io/toml_read.hpp"
-#include "blockdyn/model/initial_conditions.hpp"
+#include "blockdyn/model/winkler/initial_conditions.hpp"
 
 namespace blockdyn {
 

@@ -4,8 +4,8 @@
 #include <optional>
 #include <string>
 
-#include "blockdyn/model/ground_motion.hpp"
-#include "blockdyn/simulation.hpp"
+#include "blockdyn/excitation/ground_motion.hpp"
+#include "blockdyn/simulation/simulate.hpp"
 #include "blockdyn/units/physical_units.hpp"
 
 namespace blockdyn {

@@ -4,7 +4,7 @@
 #include <ostream>
 #include <optional>
 
-#include "blockdyn/simulation.hpp"
+#include "blockdyn/simulation/simulate.hpp"
 #include "blockdyn/units/physical_units.hpp"
 
 namespace blockdyn {

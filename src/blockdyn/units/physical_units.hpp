@@ -3,7 +3,7 @@
 // Lengths in units of the height a, forces of the weight m g, time of sqrt(a / g).
 #include <optional>
 
-#include "blockdyn/model/block_params.hpp"
+#include "blockdyn/model/winkler/winkler_params.hpp"
 
 namespace blockdyn {
 

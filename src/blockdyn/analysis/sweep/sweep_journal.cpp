@@ -1,0 +1,144 @@
+#include "blockdyn/analysis/sweep/sweep_journal.hpp"
+
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <charconv>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+#include "blockdyn/io/atomic_file.hpp"
+
+namespace blockdyn {
+
+namespace {
+
+void write_all(int fd, const std::string& s, const std::string& path) {
+  const char* p = s.data();
+  std::size_t left = s.size();
+  while (left > 0) {
+    const ssize_t w = ::write(fd, p, left);
+    if (w < 0) {
+      if (errno == EINTR) continue;
+      throw std::runtime_error("cannot write to '" + path + "': " + std::strerror(errno));
+    }
+    p += w;
+    left -= std::size_t(w);
+  }
+}
+
+}  // namespace
+
+std::size_t row_index(const std::string& row) {
+  std::size_t v = 0;
+  const char* end = row.data() + row.size();
+  auto [p, ec] = std::from_chars(row.data(), end, v);
+  if (ec != std::errc() || p == row.data() || p == end || *p != ',')
+    throw std::invalid_argument("malformed row (no index): '" + row.substr(0, 40) + "'");
+  return v;
+}
+
+std::string SweepJournal::first_line(const std::string& fingerprint, std::size_t points) {
+  return "# blockdyn sweep journal v1 fingerprint=" + fingerprint + " points=" + std::to_string(points) + "\n";
+}
+
+SweepJournal::SweepJournal(std::string path, std::string fingerprint, std::string header, std::size_t points,
+                           bool resume)
+    : path_(std::move(path)), fingerprint_(std::move(fingerprint)), header_(std::move(header)), rows_(points) {
+  const bool exists = ::access(path_.c_str(), F_OK) == 0;
+  if (resume && exists) {
+    load();
+  } else {
+    // The first two lines appear atomically, so a journal never lacks its identification.
+    write_file_atomically(path_, first_line(fingerprint_, points) + header_);
+  }
+  fd_ = ::open(path_.c_str(), O_WRONLY | O_APPEND | O_CLOEXEC);
+  if (fd_ < 0) throw std::runtime_error("cannot open '" + path_ + "' for appending: " + std::strerror(errno));
+}
+
+SweepJournal::~SweepJournal() {
+  if (fd_ >= 0) ::close(fd_);
+}
+
+void SweepJournal::load() {
+  std::ifstream in(path_, std::ios::binary);
+  if (!in) throw std::invalid_argument("journal '" + path_ + "' cannot be read");
+  std::stringstream ss;
+  ss << in.rdbuf();
+  const std::string text = ss.str();
+  const std::string expect = first_line(fingerprint_, rows_.size());
+  auto fail = [&](const std::string& why) {
+    throw std::invalid_argument("journal '" + path_ + "' " + why +
+                                "; use --overwrite to discard it, or a different output path");
+  };
+  if (text.compare(0, expect.size(), expect) != 0) {
+    if (text.rfind("# blockdyn sweep journal", 0) == 0)
+      fail("was written for a different sweep definition (its first line: '" +
+           text.substr(0, text.find('\n')) + "', expected fingerprint " + fingerprint_ + ")");
+    fail("is not a blockdyn sweep journal");
+  }
+  std::size_t pos = expect.size();
+  if (text.compare(pos, header_.size(), header_) != 0) fail("has different columns");
+  pos += header_.size();
+  std::size_t complete_end = pos;  // end of the last complete line
+  while (pos < text.size()) {
+    const std::size_t nl = text.find('\n', pos);
+    if (nl == std::string::npos) break;  // partial row written when the sweep was killed
+    std::string row = text.substr(pos, nl + 1 - pos);
+    std::size_t idx = 0;
+    try {
+      idx = row_index(row);
+    } catch (const std::invalid_argument& e) {
+      fail(std::string("is corrupt: ") + e.what());
+    }
+    if (idx >= rows_.size()) fail("is corrupt: row index " + std::to_string(idx) + " out of range");
+    if (rows_[idx].empty()) {
+      rows_[idx] = std::move(row);
+      ++done_;
+    } else if (rows_[idx] != row) {
+      fail("is corrupt: two different rows for index " + std::to_string(idx));
+    }
+    pos = nl + 1;
+    complete_end = pos;
+  }
+  if (complete_end < text.size() && ::truncate(path_.c_str(), off_t(complete_end)) != 0)
+    throw std::runtime_error("cannot truncate '" + path_ + "': " + std::strerror(errno));
+  resumed_ = done_;
+}
+
+std::vector<std::size_t> SweepJournal::pending() const {
+  std::vector<std::size_t> out;
+  for (std::size_t i = 0; i < rows_.size(); ++i)
+    if (rows_[i].empty()) out.push_back(i);
+  return out;
+}
+
+void SweepJournal::append(std::size_t index, const std::string& row) {
+  if (index >= rows_.size()) throw std::out_of_range("sweep row index out of range");
+  if (row.empty() || row.back() != '\n' || row_index(row) != index)
+    throw std::logic_error("sweep row does not match its index");
+  if (!rows_[index].empty()) return;  // already recorded (identical by construction)
+  write_all(fd_, row, path_);
+  rows_[index] = row;
+  ++done_;
+}
+
+void SweepJournal::write_csv(const std::string& csv_path) const {
+  if (done_ != rows_.size()) throw std::logic_error("sweep CSV written before all rows were done");
+  AtomicFile f(csv_path);
+  f.stream() << header_;
+  for (const auto& r : rows_) f.stream() << r;
+  f.commit();
+}
+
+void SweepJournal::remove_file() {
+  if (fd_ >= 0) ::close(fd_);
+  fd_ = -1;
+  std::remove(path_.c_str());
+}
+
+}  // namespace blockdyn

@@ -1,0 +1,27 @@
+#include "blockdyn/analysis/winkler/study_run.hpp"
+
+#include <stdexcept>
+#include <string>
+
+namespace blockdyn {
+
+SimulationOptions lean_study_options(const StudyRunOptions& o) {
+  SimulationOptions s;
+  s.t_end = o.t_end;
+  s.integrator = o.integrator;
+  s.track_energy = false;
+  s.record_events = false;
+  return s;
+}
+
+SimulationResult run_checked(const BlockParams& p, const IcChoice& ic, const SimulationOptions& s,
+                             SimulationSink* sink) {
+  SimulationResult res = simulate(p, {}, ic.state(p), s, sink);
+  if (res.status == SimStatus::NumericalFailure)
+    throw std::runtime_error("integration failed (" + std::string(to_string(res.run_status)) + ") for " +
+                             ic.name() + ", r = " + std::to_string(p.r) + ", mu = " + std::to_string(p.mu) +
+                             ", k = " + std::to_string(p.k) + " at t = " + std::to_string(res.t_final));
+  return res;
+}
+
+}  // namespace blockdyn

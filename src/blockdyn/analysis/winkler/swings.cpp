@@ -1,0 +1,186 @@
+#include "blockdyn/analysis/winkler/swings.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <iomanip>
+#include <stdexcept>
+#include <string>
+
+#include "blockdyn/integrate/root_bracket.hpp"
+
+namespace blockdyn {
+
+void validate(const SwingOptions& o) {
+  auto bad = [](const std::string& f, const std::string& range, double v) {
+    throw std::invalid_argument(f + " = " + std::to_string(v) + " is out of range: must be " + range);
+  };
+  if (!std::isfinite(o.quadrature_dt) || o.quadrature_dt <= 0) bad("quadrature-dt", "finite and > 0", o.quadrature_dt);
+  if (o.min_samples_per_step < 1 || o.min_samples_per_step > 1000)
+    bad("min-samples-per-step", "in [1, 1000]", o.min_samples_per_step);
+  if (!std::isfinite(o.phase_dt) || o.phase_dt < 0) bad("phase-dt", "finite and >= 0", o.phase_dt);
+  if (!std::isfinite(o.late_start) || o.late_start < 0) bad("late-start", "finite and >= 0", o.late_start);
+}
+
+namespace {
+
+int sign_of(double v) { return (v > 0) - (v < 0); }
+
+void add_scaled(Energy& acc, const Energy& a, const Energy& b, double w) {
+  acc.kinetic_x += w * (a.kinetic_x + b.kinetic_x);
+  acc.kinetic_y += w * (a.kinetic_y + b.kinetic_y);
+  acc.rotation += w * (a.rotation + b.rotation);
+  acc.gravity += w * (a.gravity + b.gravity);
+  acc.springs += w * (a.springs + b.springs);
+}
+
+}  // namespace
+
+SwingAccumulator::SwingAccumulator(const BlockParams& p, SwingOptions opt) : p_(p), opt_(opt) {
+  validate(opt_);
+  swings_.reserve(1024);
+}
+
+SwingAccumulator::Sample SwingAccumulator::sample_at(const DenseSegment<kStateDim>& seg, const WinklerBlock& m,
+                                                     const BlockMode& mode, double t, BlockStateVec& z) const {
+  seg.eval(t, z);
+  m.complete(mode, z);
+  return Sample{t, z[kVW], energy(p_, z)};
+}
+
+void SwingAccumulator::on_start(const WinklerBlock&, double t, const BlockMode& mode, const BlockStateVec& z) {
+  last_ = Sample{t, z[kVW], energy(p_, z)};
+  if (opt_.late_start <= t) {
+    late_captured_ = true;
+    late_energy_ = last_.e.total();
+    late_work_friction_ = z[kWorkFriction];
+  }
+  sign_ = sign_of(z[kVW]);
+  in_swing_ = (sign_ == 0);  // released from rest: a turning point
+  swing_t0_ = t;
+  integral_ = Energy{};
+  max_abs_w_ = std::fabs(z[kW]);
+  swing_flight_ = 0;
+  if (opt_.phase_dt > 0) {
+    phase_.push_back(PhaseSample{t, to_state(z), mode.regime});
+    phase_t0_ = t;
+    n_phase_ = 1;
+    next_phase_t_ = t + opt_.phase_dt;
+  }
+}
+
+void SwingAccumulator::integrate(const Sample& a, const Sample& b) {
+  if (in_swing_) add_scaled(integral_, a.e, b.e, 0.5 * (b.t - a.t));
+}
+
+void SwingAccumulator::close_swing(double t) {
+  if (in_swing_ && t > swing_t0_) {
+    const double len = t - swing_t0_;
+    SwingRecord s;
+    s.t_start = swing_t0_;
+    s.t_end = t;
+    s.average = integral_;
+    s.average.kinetic_x /= len;
+    s.average.kinetic_y /= len;
+    s.average.rotation /= len;
+    s.average.gravity /= len;
+    s.average.springs /= len;
+    s.max_abs_w = max_abs_w_;
+    s.flight_time = swing_flight_;
+    swings_.push_back(s);
+  }
+  in_swing_ = true;
+  swing_t0_ = t;
+  integral_ = Energy{};
+  max_abs_w_ = 0;
+  swing_flight_ = 0;
+}
+
+void SwingAccumulator::on_segment(const WinklerBlock& m, const DenseSegment<kStateDim>& seg, double t0, double t1,
+                                  const BlockMode& mode) {
+  if (!(t1 > t0)) return;
+  const bool flight = mode.regime == Regime::Flight;
+  if (flight) {
+    flight_time_ += t1 - t0;
+    late_flight_time_ += std::max(0.0, t1 - std::max(t0, opt_.late_start));
+  }
+  BlockStateVec z;
+  if (!late_captured_ && opt_.late_start >= t0 && opt_.late_start <= t1) {
+    seg.eval(opt_.late_start, z);
+    m.complete(mode, z);
+    late_captured_ = true;
+    late_energy_ = energy(p_, z).total();
+    late_work_friction_ = z[kWorkFriction];
+  }
+  // Phase-portrait samples at fixed multiples of phase_dt (no drift from repeated addition).
+  if (opt_.phase_dt > 0) {
+    while (next_phase_t_ <= t1) {
+      if (next_phase_t_ >= t0) {
+        seg.eval(next_phase_t_, z);
+        m.complete(mode, z);
+        phase_.push_back(PhaseSample{next_phase_t_, to_state(z), mode.regime});
+      }
+      next_phase_t_ = phase_t0_ + double(++n_phase_) * opt_.phase_dt;
+    }
+  }
+  const int n = std::max(opt_.min_samples_per_step, int(std::ceil((t1 - t0) / opt_.quadrature_dt)));
+  for (int j = 1; j <= n; ++j) {
+    const double tj = (j == n) ? t1 : t0 + (t1 - t0) * double(j) / n;
+    const Sample sj = sample_at(seg, m, mode, tj, z);
+    max_abs_w_ = std::max(max_abs_w_, std::fabs(z[kW]));
+    const int s = sign_of(sj.vw);
+    if (sign_ == 0) {
+      sign_ = s;
+    } else if (s == -sign_) {
+      // Turning point inside (last_.t, tj]: locate it on the dense output.
+      const int sg = sign_;
+      auto g = [&](double tt) {
+        BlockStateVec zz;
+        seg.eval(tt, zz);
+        m.complete(mode, zz);
+        return sg * zz[kVW];
+      };
+      const double ts = locate_root(g, last_.t, tj, sg * last_.vw, sg * sj.vw);
+      BlockStateVec zs;
+      const Sample star = sample_at(seg, m, mode, ts, zs);
+      integrate(last_, star);
+      if (flight) swing_flight_ += ts - last_.t;
+      close_swing(ts);
+      max_abs_w_ = std::fabs(zs[kW]);
+      last_ = star;
+      sign_ = s;
+    }
+    integrate(last_, sj);
+    if (flight) swing_flight_ += tj - last_.t;
+    last_ = sj;
+  }
+}
+
+void SwingAccumulator::on_event(const WinklerBlock&, const EventRecord& e) {
+  if (e.kind == EventKind::Takeoff) {
+    ++takeoffs_;
+    if (e.t >= opt_.late_start) ++late_takeoffs_;
+  }
+}
+
+void write_swings_csv(std::ostream& out, const std::vector<SwingRecord>& swings) {
+  out << "index,t_start,t_end,length,max_abs_w,flight_time,ave_kinetic_x,ave_kinetic_y,ave_rotation,"
+         "ave_gravity,ave_springs,ave_total\n";
+  out << std::setprecision(17);
+  for (std::size_t i = 0; i < swings.size(); ++i) {
+    const SwingRecord& s = swings[i];
+    const Energy& e = s.average;
+    out << i << ',' << s.t_start << ',' << s.t_end << ',' << s.length() << ',' << s.max_abs_w << ','
+        << s.flight_time << ',' << e.kinetic_x << ',' << e.kinetic_y << ',' << e.rotation << ',' << e.gravity << ','
+        << e.springs << ',' << e.total() << '\n';
+  }
+}
+
+void write_phase_csv(std::ostream& out, const std::vector<PhaseSample>& phase) {
+  out << "t,x,y,w,vx,vy,vw,regime\n";
+  out << std::setprecision(17);
+  for (const PhaseSample& p : phase)
+    out << p.t << ',' << p.s.x << ',' << p.s.y << ',' << p.s.w << ',' << p.s.vx << ',' << p.s.vy << ',' << p.s.vw
+        << ',' << to_string(p.regime) << '\n';
+}
+
+}  // namespace blockdyn

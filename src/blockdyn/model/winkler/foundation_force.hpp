@@ -1,0 +1,36 @@
+#pragma once
+// Foundation reaction of the thesis's Winkler model: vertical force Ry = (k/r) * area acting
+// at the Region's centroid, its torque about the centre, and the non-potential part of that
+// torque (non-zero only when the Region ends in a vertical wall, i.e. two corners submerged).
+#include "blockdyn/model/winkler/region.hpp"
+#include "blockdyn/model/winkler/winkler_params.hpp"
+
+namespace blockdyn {
+
+struct FoundationForce {
+  double Ry = 0.0;              // vertical reaction, units of weight
+  double torque = 0.0;          // (x_R - x) * Ry
+  double torque_nonpot = 0.0;   // torque + dV/dw, V the spring energy
+  int corners_below = 0;
+};
+
+inline FoundationForce foundation_force(const BlockParams& p, double h, const Tilt& t) {
+  const RegionIntegrals g = region_integrals(p.r, h, t);
+  const double kr = p.k / p.r;
+  FoundationForce f;
+  f.Ry = kr * g.area;
+  f.torque = kr * g.moment;
+  // dV/dw = -torque + sign(w) (k / 6r) (s_far^3 - s_pivot_end^3): virtual work of a rigid
+  // rotation on the clipped envelope, with the moving wall at each submerged Region end.
+  const double a = g.depth_far_end, b = g.depth_pivot_end;
+  const double mismatch = kr / 6.0 * (a * a * a - b * b * b);
+  f.torque_nonpot = t.sign * mismatch;
+  f.corners_below = g.corners_below;
+  return f;
+}
+
+inline FoundationForce foundation_force(const BlockParams& p, double h, double w) {
+  return foundation_force(p, h, make_tilt(w));
+}
+
+}  // namespace blockdyn

@@ -1,0 +1,239 @@
+#include "blockdyn/model/winkler/winkler_block.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "blockdyn/model/winkler/stick_reaction.hpp"
+
+namespace blockdyn {
+
+const char* to_string(EventKind k) {
+  switch (k) {
+    case EventKind::ContactToSlide: return "contact_to_slide";
+    case EventKind::SlideToContact: return "slide_to_contact";
+    case EventKind::SlideReversal: return "slide_reversal";
+    case EventKind::Takeoff: return "takeoff";
+    case EventKind::Landing: return "landing";
+    case EventKind::WZero: return "w_zero";
+    case EventKind::Overturn: return "overturn";
+    case EventKind::Invalid: return "invalid";
+    case EventKind::GroundBreak: return "ground_break";
+    case EventKind::GrazingHold: return "grazing_hold";
+  }
+  return "?";
+}
+
+WinklerBlock::WinklerBlock(const BlockParams& p, const GroundMotion& g)
+    : p_(p), ground_(g), forced_(!g.is_zero()), inertia_(p.inertia()), alpha_(p.alpha()) {}
+
+BlockForces WinklerBlock::forces(double t, const Mode& m, const State& z) const {
+  return forces(t, m, z, make_tilt(z[kW]));
+}
+
+BlockForces WinklerBlock::forces(double t, const Mode& m, const State& z, const Tilt& tilt) const {
+  BlockForces f;
+  const double a_h = ah(t), a_v = av(t);
+  const CornerArms arm = corner_arms(p_.r, tilt, m.side);
+  if (m.regime == Regime::Flight) {
+    f.ax = -a_h;
+    f.ay = -1.0 - a_v;
+    f.v_corner = z[kVX] + arm.B * z[kVW];
+    return f;
+  }
+  const FoundationForce ff = foundation_force(p_, z[kH], tilt);
+  f.Ry = ff.Ry;
+  f.torque = ff.torque;
+  f.torque_nonpot = ff.torque_nonpot;
+  f.corners_below = ff.corners_below;
+  f.ay = ff.Ry - 1.0 - a_v;
+  if (m.regime == Regime::Contact) {
+    const StickReaction st = stick_reaction(inertia_, arm, m.side, ff.torque, z[kVW], a_h);
+    f.Rx = st.Rx;
+    f.aw = st.ww;
+    f.ax = st.Rx - a_h;
+    f.margin = friction_margin(p_.mu, ff.Ry, st.Rx);
+    f.v_corner = 0.0;
+    f.vx = -arm.B * z[kVW];
+  } else {
+    f.Rx = m.friction_sign * p_.mu * ff.Ry;
+    f.ax = f.Rx - a_h;
+    f.aw = (ff.torque + arm.B * f.Rx) / inertia_;
+    f.v_corner = z[kVX] + arm.B * z[kVW];
+  }
+  return f;
+}
+
+void WinklerBlock::rhs(double t, const Mode& m, const State& z, State& dz) const {
+  const BlockForces f = forces(t, m, z);
+  const bool contact = m.regime == Regime::Contact;
+  // In contact x and x' follow from w (complete()); only 4 mechanical states are integrated.
+  const double vx = contact ? f.vx : z[kVX];
+  dz[kX] = contact ? 0.0 : z[kVX];
+  dz[kH] = z[kVY];
+  dz[kW] = z[kVW];
+  dz[kVX] = contact ? 0.0 : f.ax;
+  dz[kVY] = f.ay;
+  dz[kVW] = f.aw;
+  dz[kWorkFriction] = contact ? 0.0 : f.Rx * f.v_corner;
+  dz[kWorkNonPotential] = f.torque_nonpot * z[kVW];
+  dz[kWorkGround] = forced_ ? -(ah(t) * vx + av(t) * z[kVY]) : 0.0;
+}
+
+void WinklerBlock::complete(const Mode& m, State& z) const {
+  if (m.regime != Regime::Contact) return;
+  const CornerArms arm = corner_arms(p_.r, z[kW], m.side);
+  z[kX] = m.anchor + m.side * arm.A;
+  z[kVX] = -arm.B * z[kVW];
+}
+
+void WinklerBlock::events(double t, const Mode& m, const State& z,
+                          std::array<double, kNumEvents>& g) const {
+  const Tilt tilt = make_tilt(z[kW]);
+  const CornerHeights ch = corner_heights(p_.r, z[kH], tilt);
+  g[kEvOverturn] = alpha_ - m.side * z[kW];
+  g[kEvInvalid] = std::max(ch.other_bottom, ch.upper_pivot_side);  // third-lowest corner
+  g[kEvSurface] = (m.regime == Regime::Flight) ? ch.lowest : -ch.lowest;
+  g[kEvWZero] = m.side * z[kW];
+  if (m.regime == Regime::Contact) {
+    g[kEvFriction] = forces(t, m, z, tilt).margin;
+  } else if (m.regime == Regime::Slide && p_.mu > 0.0) {
+    g[kEvFriction] = -m.friction_sign * (z[kVX] + corner_arms(p_.r, tilt, m.side).B * z[kVW]);
+  } else {
+    g[kEvFriction] = 1.0;
+  }
+}
+
+WinklerBlock::Mode WinklerBlock::stick_or_slip(double t, const State& z, int side, int slip_sign) const {
+  Mode c{Regime::Contact, side, 0, 0.0};
+  const CornerArms arm = corner_arms(p_.r, z[kW], side);
+  c.anchor = z[kX] - side * arm.A;
+  const BlockForces f = forces(t, c, z);
+  if (f.margin >= 0.0) return c;
+  const int s = slip_sign != 0 ? slip_sign : sign_of(f.Rx);
+  return Mode{Regime::Slide, side, s, 0.0};
+}
+
+WinklerBlock::Mode WinklerBlock::submerged_mode(double t, const State& z, int side) const {
+  if (p_.mu == 0.0) return Mode{Regime::Slide, side, 0, 0.0};
+  const double vp = z[kVX] + corner_arms(p_.r, z[kW], side).B * z[kVW];
+  if (vp != 0.0) return Mode{Regime::Slide, side, -sign_of(vp), 0.0};
+  return stick_or_slip(t, z, side, 0);
+}
+
+WinklerBlock::Mode WinklerBlock::initial_mode(double t, const State& z) const {
+  int side = sign_of(z[kW]);
+  if (side == 0) side = sign_of(z[kVW]);
+  const bool airborne = corner_heights(p_.r, z[kH], z[kW]).lowest > 0.0;
+  if (side == 0) {  // upright and not rotating: the side the block starts to tip to
+    Mode probe = airborne ? Mode{Regime::Flight, 1, 0, 0.0} : submerged_mode(t, z, 1);
+    State dz;
+    State zc = z;
+    complete(probe, zc);
+    rhs(t, probe, zc, dz);
+    side = sign_of(dz[kVW]);
+    if (side == 0) side = 1;
+  }
+  if (airborne) return Mode{Regime::Flight, side, 0, 0.0};
+  return submerged_mode(t, z, side);
+}
+
+Transition<WinklerBlock::Mode> WinklerBlock::transition(double t, const Mode& m, State& z,
+                                                        int event) const {
+  Transition<Mode> tr;
+  tr.next = m;
+  switch (event) {
+    case kEvOverturn:
+      tr.stop = true;
+      tr.kind = int(EventKind::Overturn);
+      break;
+    case kEvInvalid:
+      tr.stop = true;
+      tr.kind = int(EventKind::Invalid);
+      break;
+    case kEvSurface:
+      if (m.regime == Regime::Flight) {
+        tr.kind = int(EventKind::Landing);
+        tr.next = submerged_mode(t, z, m.side);
+      } else {
+        tr.kind = int(EventKind::Takeoff);
+        tr.next = Mode{Regime::Flight, m.side, 0, 0.0};
+      }
+      break;
+    case kEvWZero:
+      tr.kind = int(EventKind::WZero);
+      tr.next.side = -m.side;
+      if (m.regime == Regime::Contact) tr.next = stick_or_slip(t, z, -m.side, 0);
+      break;
+    case kEvFriction:
+      if (m.regime == Regime::Contact) {
+        tr.kind = int(EventKind::ContactToSlide);
+        tr.next = Mode{Regime::Slide, m.side, sign_of(forces(t, m, z).Rx), 0.0};
+      } else {
+        tr.next = stick_or_slip(t, z, m.side, -m.friction_sign);
+        tr.kind = int(tr.next.regime == Regime::Contact ? EventKind::SlideToContact
+                                                        : EventKind::SlideReversal);
+      }
+      break;
+    case kBreakpoint:
+      tr.kind = int(EventKind::GroundBreak);
+      if (m.regime == Regime::Contact) tr.next = stick_or_slip(t, z, m.side, 0);
+      break;
+  }
+  return tr;
+}
+
+std::optional<Transition<WinklerBlock::Mode>> WinklerBlock::resolve_chatter(double t, const Mode& m,
+                                                                            const State& z) const {
+  if (m.regime == Regime::Flight) return std::nullopt;
+  // Grazing: v_P and the friction margin vanish together. Hold the corner, unless the contact
+  // margin is falling (Ry -> 0 just before a take-off): then holding fails again at once, and the
+  // corner must slip in the direction the stick reaction pushes (the only consistent mode).
+  Mode c{Regime::Contact, m.side, 0, z[kX] - m.side * corner_arms(p_.r, z[kW], m.side).A};
+  State zc = z;
+  complete(c, zc);
+  const BlockForces f0 = forces(t, c, zc);
+  if (p_.mu > 0.0) {
+    State dz;
+    rhs(t, c, zc, dz);
+    const double dt = 1e-6 * step_hint(c);
+    State z1 = zc;
+    for (std::size_t i = 0; i < kDim; ++i) z1[i] += dt * dz[i];
+    complete(c, z1);
+    const double margin1 = forces(t + dt, c, z1).margin;
+    if (margin1 < 0.0 && margin1 < f0.margin && f0.Rx != 0.0) {
+      const Mode s{Regime::Slide, m.side, sign_of(f0.Rx), 0.0};
+      return Transition<Mode>{s, false, int(EventKind::ContactToSlide)};
+    }
+  }
+  return Transition<Mode>{c, false, int(EventKind::GrazingHold)};
+}
+
+double WinklerBlock::step_hint(const Mode& m) const {
+  if (m.regime == Regime::Flight) return 0.05;
+  return 0.5 / std::sqrt(std::max(1.0, p_.k));
+}
+
+WinklerBlock::State WinklerBlock::abs_tol_scale() const {
+  State s;
+  s.fill(1.0);
+  // Depths are of order 1/k and the heave velocity of order 1/sqrt(k): scale their absolute
+  // tolerances so that the foundation force keeps its relative accuracy at any stiffness.
+  s[kH] = std::min(1.0, 1.0 / p_.k);
+  s[kVY] = std::min(1.0, 1.0 / std::sqrt(p_.k));
+  return s;
+}
+
+std::optional<std::string> WinklerBlock::validity_problem(const State& z) const {
+  for (std::size_t i = 0; i < 6; ++i)
+    if (!std::isfinite(z[i])) return std::string("state contains a non-finite value");
+  if (std::fabs(z[kW]) > alpha_)
+    return "|w| = " + std::to_string(std::fabs(z[kW])) + " exceeds the overturning angle alpha = atan(r) = " +
+           std::to_string(alpha_);
+  const CornerHeights ch = corner_heights(p_.r, z[kH], z[kW]);
+  if (std::max(ch.other_bottom, ch.upper_pivot_side) < 0.0)
+    return std::string("more than two corners are below the foundation surface (the model allows at most two)");
+  return std::nullopt;
+}
+
+}  // namespace blockdyn

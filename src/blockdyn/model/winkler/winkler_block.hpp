@@ -1,0 +1,78 @@
+#pragma once
+// The thesis's model: a rigid block on a Winkler foundation with Coulomb friction at the
+// lowest corner, moving in contact (pivot fixed), slide or flight. Provides right-hand sides,
+// event functions and transition maps for HybridIntegrator.
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "blockdyn/integrate/hybrid_integrator.hpp"
+#include "blockdyn/model/winkler/winkler_params.hpp"
+#include "blockdyn/model/winkler/winkler_state.hpp"
+#include "blockdyn/model/winkler/foundation_force.hpp"
+#include "blockdyn/excitation/ground_motion.hpp"
+
+namespace blockdyn {
+
+enum class EventKind : int {
+  ContactToSlide, SlideToContact, SlideReversal, Takeoff, Landing, WZero, Overturn, Invalid,
+  GroundBreak, GrazingHold
+};
+const char* to_string(EventKind k);
+
+// Event functions; each stays >= 0 while the current mode is valid.
+enum BlockEvent : int { kEvOverturn, kEvInvalid, kEvSurface, kEvWZero, kEvFriction, kNumBlockEvents };
+
+// Everything the equations of motion compute at one state (also used for output).
+struct BlockForces {
+  double Rx = 0, Ry = 0, torque = 0, torque_nonpot = 0;
+  double ax = 0, ay = 0, aw = 0;  // x'', y'', w''
+  double v_corner = 0;            // horizontal velocity of the lowest corner
+  double margin = 0;              // mu Ry - |Rx| in contact
+  double vx = 0;                  // x' implied by the contact constraint (contact only)
+  int corners_below = 0;
+};
+
+class WinklerBlock {
+ public:
+  static constexpr std::size_t kDim = kStateDim;
+  static constexpr std::size_t kNumEvents = kNumBlockEvents;
+  using Mode = BlockMode;
+  using State = BlockStateVec;
+
+  explicit WinklerBlock(const BlockParams& p, const GroundMotion& g = {});
+
+  const BlockParams& params() const { return p_; }
+  const GroundMotion& ground() const { return ground_; }
+
+  void rhs(double t, const Mode& m, const State& z, State& dz) const;
+  void events(double t, const Mode& m, const State& z, std::array<double, kNumEvents>& g) const;
+  void complete(const Mode& m, State& z) const;
+  // event kBreakpoint: the ground motion kinks or jumps at t (contact re-checks friction).
+  Transition<Mode> transition(double t, const Mode& m, State& z, int event) const;
+  double next_breakpoint(double t) const { return forced_ ? ground_.next_break(t) : INFINITY; }
+  std::optional<Transition<Mode>> resolve_chatter(double t, const Mode& m, const State& z) const;
+  double step_hint(const Mode& m) const;
+  State abs_tol_scale() const;
+
+  BlockForces forces(double t, const Mode& m, const State& z) const;
+  BlockForces forces(double t, const Mode& m, const State& z, const Tilt& tilt) const;
+  // The mode a state starts in (regime, lowest corner, friction direction).
+  Mode initial_mode(double t, const State& z) const;
+  // Empty if the state is inside the model; otherwise a description of why not.
+  std::optional<std::string> validity_problem(const State& z) const;
+
+ private:
+  Mode submerged_mode(double t, const State& z, int side) const;
+  Mode stick_or_slip(double t, const State& z, int side, int slip_sign_if_stuck_fails) const;
+  double ah(double t) const { return forced_ ? ground_.horizontal.at(t) : 0.0; }
+  double av(double t) const { return forced_ ? ground_.vertical.at(t) : 0.0; }
+
+  BlockParams p_;
+  GroundMotion ground_;
+  bool forced_;
+  double inertia_, alpha_;
+};
+
+}  // namespace blockdyn

@@ -1,0 +1,145 @@
+#include "blockdyn/simulation/simulate.hpp"
+
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+namespace blockdyn {
+
+const char* to_string(SimStatus s) {
+  switch (s) {
+    case SimStatus::TEnd: return "t_end";
+    case SimStatus::Overturned: return "overturned";
+    case SimStatus::Invalid: return "invalid";
+    case SimStatus::EarlyStop: return "early_stop";
+    case SimStatus::NumericalFailure: return "numerical_failure";
+  }
+  return "?";
+}
+
+void validate(const SimulationOptions& o) {
+  auto bad = [](const std::string& f, const std::string& range, double v) {
+    std::ostringstream os;
+    os << f << " = " << v << " is out of range: must be " << range;
+    throw std::invalid_argument(os.str());
+  };
+  if (!std::isfinite(o.t_start) || o.t_start < 0) bad("t-start", "finite and >= 0", o.t_start);
+  if (!std::isfinite(o.t_end) || o.t_end <= o.t_start) bad("t-end", "finite and > t-start", o.t_end);
+  const auto& i = o.integrator;
+  if (!std::isfinite(i.rtol) || i.rtol <= 0 || i.rtol >= 1) bad("rtol", "in (0, 1)", i.rtol);
+  if (!std::isfinite(i.atol) || i.atol <= 0 || i.atol >= 1) bad("atol", "in (0, 1)", i.atol);
+  if (!(i.h_max > 0)) bad("h-max", "> 0", i.h_max);
+  if (i.max_steps <= 0) bad("max-steps", "> 0", double(i.max_steps));
+  if (i.event_samples < 1 || i.event_samples > 64) bad("event-samples", "in [1, 64]", i.event_samples);
+}
+
+namespace {
+
+class Recorder {
+ public:
+  Recorder(const WinklerBlock& m, const SimulationOptions& o, SimulationResult& r, SimulationSink* s)
+      : model_(m), opt_(o), res_(r), sink_(s) {
+    e0_ = res_.initial_energy.total();
+    if (o.record_events) res_.events.reserve(256);
+  }
+
+  bool on_step(const DenseSegment<kStateDim>& seg, double t0, double t1, const BlockMode& mode) {
+    if (sink_) sink_->on_segment(model_, seg, t0, t1, mode);
+    if (opt_.track_energy) {
+      BlockStateVec z;
+      seg.eval(t1, z);
+      model_.complete(mode, z);
+      track(z);
+    }
+    return !sink_ || sink_->keep_going();
+  }
+
+  bool on_event(const EventInfo<BlockMode, kStateDim>& e) {
+    const EventKind kind = EventKind(e.kind);
+    if (kind == EventKind::GroundBreak) return true;
+    if (kind == EventKind::WZero) ++res_.ihor;
+    ++res_.event_counts[int(kind)];
+    EventRecord rec{e.t, kind, e.from, e.to, e.z, res_.ihor};
+    if (kind == EventKind::Takeoff && !res_.first_flight_time) {
+      res_.first_flight_time = e.t;
+      res_.ihor_at_first_flight = res_.ihor;
+    }
+    if (kind == EventKind::Overturn) {
+      res_.overturn_time = e.t;
+      res_.ihor_at_overturn = res_.ihor;
+    }
+    if (opt_.track_energy) track(e.z);
+    if (opt_.record_events) res_.events.push_back(rec);
+    if (sink_) sink_->on_event(model_, rec);
+    if (opt_.stop_at_first_flight && kind == EventKind::Takeoff) return stop();
+    if (opt_.stop_at_ihor > 0 && res_.ihor >= opt_.stop_at_ihor) return stop();
+    return !sink_ || sink_->keep_going();
+  }
+
+  bool early_stop() const { return early_; }
+
+ private:
+  bool stop() {
+    early_ = true;
+    return false;
+  }
+  void track(const BlockStateVec& z) {
+    const double e = energy(model_.params(), z).total();
+    const double change = e - e0_;
+    const double balance = change - z[kWorkFriction] - z[kWorkNonPotential] - z[kWorkGround];
+    res_.max_abs_energy_change = std::fmax(res_.max_abs_energy_change, std::fabs(change));
+    res_.max_abs_energy_error = std::fmax(res_.max_abs_energy_error, std::fabs(balance));
+  }
+
+  const WinklerBlock& model_;
+  const SimulationOptions& opt_;
+  SimulationResult& res_;
+  SimulationSink* sink_;
+  double e0_ = 0;
+  bool early_ = false;
+};
+
+}  // namespace
+
+SimulationResult simulate(const BlockParams& p, const GroundMotion& g, const BlockStateVec& z0,
+                          const SimulationOptions& opt, SimulationSink* sink) {
+  validate(p);
+  validate(g);
+  validate(opt);
+  const WinklerBlock model(p, g);
+  BlockStateVec z = z0;
+  z[kWorkFriction] = z[kWorkNonPotential] = z[kWorkGround] = 0.0;
+  if (auto why = model.validity_problem(z)) throw std::invalid_argument("initial state: " + *why);
+  SimulationResult res;
+  double t = opt.t_start;
+  BlockMode mode = model.initial_mode(t, z);
+  model.complete(mode, z);
+  res.initial_state = z;
+  res.initial_mode = mode;
+  res.initial_energy = energy(p, z);
+  res.ihor = (z[kW] == 0.0) ? 1 : 0;
+  if (mode.regime == Regime::Flight) {
+    res.first_flight_time = t;
+    res.ihor_at_first_flight = res.ihor;
+  }
+  if (sink) sink->on_start(model, t, mode, z);
+  Recorder rec(model, opt, res, sink);
+  HybridIntegrator<WinklerBlock> integ(model, opt.integrator);
+  res.run_status = integ.run(t, opt.t_end, mode, z, rec);
+  res.t_final = t;
+  res.final_state = z;
+  res.final_mode = mode;
+  res.final_energy = energy(p, z);
+  res.stats = integ.stats();
+  switch (res.run_status) {
+    case RunStatus::ReachedEnd: res.status = SimStatus::TEnd; break;
+    case RunStatus::ModelStop:
+      res.status = res.overturn_time ? SimStatus::Overturned : SimStatus::Invalid;
+      break;
+    case RunStatus::ObserverStop: res.status = SimStatus::EarlyStop; break;
+    default: res.status = SimStatus::NumericalFailure; break;
+  }
+  return res;
+}
+
+}  // namespace blockdyn

@@ -1,0 +1,78 @@
+#pragma once
+// High-level API: run the Winkler block from a state and collect what users ask about
+// (events, ihor, first flight, overturn, energy balance), streaming the trajectory to a sink.
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "blockdyn/integrate/hybrid_integrator.hpp"
+#include "blockdyn/model/winkler/energy.hpp"
+#include "blockdyn/model/winkler/winkler_block.hpp"
+
+namespace blockdyn {
+
+struct SimulationOptions {
+  double t_start = 0.0;
+  double t_end = 10.0;
+  IntegratorOptions integrator;
+  bool track_energy = true;    // energy balance at every step end (one Region evaluation each)
+  bool record_events = true;   // keep the list of events (counts are always kept)
+  bool stop_at_first_flight = false;
+  long stop_at_ihor = 0;       // stop once ihor reaches this value (0: never)
+};
+
+struct EventRecord {
+  double t = 0;
+  EventKind kind{};
+  BlockMode from, to;
+  BlockStateVec z{};
+  long ihor = 0;  // after the event
+};
+
+enum class SimStatus { TEnd, Overturned, Invalid, EarlyStop, NumericalFailure };
+const char* to_string(SimStatus s);
+
+constexpr int kNumEventKinds = int(EventKind::GrazingHold) + 1;
+
+struct SimulationResult {
+  SimStatus status = SimStatus::TEnd;
+  RunStatus run_status = RunStatus::ReachedEnd;
+  double t_final = 0;
+  BlockStateVec initial_state{}, final_state{};
+  BlockMode initial_mode, final_mode;
+  long ihor = 0;
+  std::optional<double> first_flight_time;
+  long ihor_at_first_flight = 0;
+  std::optional<double> overturn_time;
+  long ihor_at_overturn = 0;
+  Energy initial_energy, final_energy;
+  double max_abs_energy_error = 0;   // max |E - E0 - W_friction - W_nonpotential - W_ground|
+  double max_abs_energy_change = 0;  // max |E - E0|
+  StepperStats stats;
+  std::vector<EventRecord> events;
+  std::array<long, kNumEventKinds> event_counts{};
+
+  double work_friction() const { return final_state[kWorkFriction]; }
+  double work_nonpotential() const { return final_state[kWorkNonPotential]; }
+  double work_ground() const { return final_state[kWorkGround]; }
+};
+
+// Receives the trajectory as it is computed (dense output pieces and events).
+class SimulationSink {
+ public:
+  virtual ~SimulationSink() = default;
+  virtual void on_start(const WinklerBlock&, double /*t*/, const BlockMode&, const BlockStateVec&) {}
+  virtual void on_segment(const WinklerBlock&, const DenseSegment<kStateDim>&, double /*t0*/,
+                          double /*t1*/, const BlockMode&) {}
+  virtual void on_event(const WinklerBlock&, const EventRecord&) {}
+  virtual bool keep_going() const { return true; }
+};
+
+// Throws std::invalid_argument if the parameters, options or initial state are invalid.
+SimulationResult simulate(const BlockParams& p, const GroundMotion& g, const BlockStateVec& z0,
+                          const SimulationOptions& opt, SimulationSink* sink = nullptr);
+
+void validate(const SimulationOptions& opt);
+
+}  // namespace blockdyn
