@@ -1,4 +1,5 @@
-// `blockdyn simulate`: one run from flags or a TOML scenario; JSON summary, CSV trajectory, plot.
+// `blockdyn simulate`: one run of any model family (winkler, housner, rigid) from flags or a TOML
+// scenario; JSON summary, CSV trajectory, plot.
 #include <cmath>
 #include <cstdio>
 #include <iostream>
@@ -7,16 +8,19 @@
 
 #include "blockdyn/io/atomic_file.hpp"
 #include "blockdyn/io/json_io.hpp"
+#include "blockdyn/io/rigid_trajectory_csv.hpp"
 #include "blockdyn/io/scenario.hpp"
 #include "blockdyn/io/trajectory_csv.hpp"
 #include "cli_common.hpp"
 #include "cli_registry.hpp"
+#include "ground_flags.hpp"
 
 namespace blockdyn::cli {
 namespace {
 
 struct SimulateFlags {
   std::string scenario_file;
+  std::string model = "winkler";
   BlockParams p;
   IntegratorOptions integ;
   std::string ic = "ic1";
@@ -24,8 +28,10 @@ struct SimulateFlags {
   double t_end = 10, output_interval = 0.01;
   std::string trajectory, plot, json_out, units = "nondim";
   bool json = false;
-  GroundMotion ground;
+  GroundFlags ground;
   PhysicalBlock phys;  // --height --width ... (physical input)
+  double restitution = 0, mu_s = 0.7, mu_k = 0.7;
+  std::string impact = "housner";
 };
 
 // Physical-block flags: name, field, help.
@@ -34,16 +40,17 @@ struct PhysFlag {
   double PhysicalBlock::*plain;
   std::optional<double> PhysicalBlock::*opt;
   const char* help;
+  bool winkler_only;
 };
 const PhysFlag kPhysFlags[] = {
-    {"--height", &PhysicalBlock::height, nullptr, "physical block: height a [m]"},
-    {"--width", &PhysicalBlock::width, nullptr, "physical block: width b [m]"},
-    {"--g", &PhysicalBlock::g, nullptr, "gravity [m/s^2] (default 9.81)"},
-    {"--mass", nullptr, &PhysicalBlock::mass, "physical block: mass [kg]"},
-    {"--density", nullptr, &PhysicalBlock::density, "physical block: density [kg/m^3] (with --thickness)"},
-    {"--thickness", nullptr, &PhysicalBlock::thickness, "physical block: out-of-plane depth [m]"},
-    {"--subgrade-modulus", nullptr, &PhysicalBlock::subgrade_modulus, "Winkler modulus [N/m^3] (with --thickness)"},
-    {"--line-stiffness", nullptr, &PhysicalBlock::line_stiffness, "foundation stiffness per unit length and depth [N/m^2]"},
+    {"--height", &PhysicalBlock::height, nullptr, "block height [m] (physical block; housner/rigid: required)", false},
+    {"--width", &PhysicalBlock::width, nullptr, "block width [m] (physical block; housner/rigid: required)", false},
+    {"--g", &PhysicalBlock::g, nullptr, "gravity [m/s^2] (default 9.81)", false},
+    {"--mass", nullptr, &PhysicalBlock::mass, "block mass [kg] (housner/rigid: default 1)", false},
+    {"--density", nullptr, &PhysicalBlock::density, "density [kg/m^3] (with --thickness, instead of --mass)", false},
+    {"--thickness", nullptr, &PhysicalBlock::thickness, "out-of-plane depth [m]", false},
+    {"--subgrade-modulus", nullptr, &PhysicalBlock::subgrade_modulus, "winkler: modulus [N/m^3] (with --thickness)", true},
+    {"--line-stiffness", nullptr, &PhysicalBlock::line_stiffness, "winkler: stiffness per unit length and depth [N/m^2]", true},
 };
 
 void add_physical_flags(CLI::App& s, SimulateFlags& f) {
@@ -58,40 +65,54 @@ void add_physical_flags(CLI::App& s, SimulateFlags& f) {
 
 // Applies the physical-block flags on top of the scenario's [physical] block (if any).
 void apply_physical_flags(const CLI::App& s, const SimulateFlags& f, Scenario& sc) {
+  const bool rigid = is_rigid_family(sc.model);
   bool any = false;
-  for (const PhysFlag& pf : kPhysFlags) any |= s.count(pf.name) > 0;
+  for (const PhysFlag& pf : kPhysFlags) {
+    if (!given(s, pf.name)) continue;
+    if (rigid && pf.winkler_only) throw UsageError(std::string(pf.name) + " belongs to the winkler model (--model winkler)");
+    any = true;
+  }
   if (!any) return;
-  if (s.count("--r") || s.count("--k"))
+  if (!rigid && (given(s, "--r") || given(s, "--k")))
     throw UsageError("--r/--k and a physical block (--height, --width, ...) both given: use one");
   PhysicalBlock pb = sc.physical.value_or(PhysicalBlock{});
-  pb.mu = s.count("--mu") ? f.p.mu : (sc.physical ? pb.mu : sc.params.mu);
+  if (!rigid) pb.mu = given(s, "--mu") ? f.p.mu : (sc.physical ? pb.mu : sc.params.mu);
   for (const PhysFlag& pf : kPhysFlags) {
-    if (!s.count(pf.name)) continue;
-    if (pf.plain) pb.*pf.plain = f.phys.*pf.plain;
-    else pb.*pf.opt = f.phys.*pf.opt;
+    if (!given(s, pf.name)) continue;
+    if (pf.plain)
+      pb.*pf.plain = f.phys.*pf.plain;
+    else
+      pb.*pf.opt = f.phys.*pf.opt;
   }
   sc.physical = pb;
-  sc.params = to_nondimensional(pb);
-  if (!s.count("--units")) sc.units = "physical";
-}
-
-void add_ground_flags(CLI::App& s, SimulateFlags& f) {
-  for (int i = 0; i < 2; ++i) {
-    GroundComponent& c = i == 0 ? f.ground.horizontal : f.ground.vertical;
-    const std::string n = i == 0 ? "--ground-h" : "--ground-v";
-    const std::string what = i == 0 ? "horizontal" : "vertical";
-    s.add_option(n, c.constant, "constant " + what + " ground acceleration (units of g)");
-    s.add_option(n + "-amplitude", c.amplitude, what + " harmonic ground acceleration amplitude (g)");
-    s.add_option(n + "-frequency", c.frequency, what + " harmonic frequency (cycles per unit time)");
-    s.add_option(n + "-phase", c.phase, what + " harmonic phase (rad)");
-    s.add_option(n + "-start", c.t_start, what + " ground motion start time");
-    s.add_option(n + "-duration", c.duration, what + " ground motion duration (0: forever)");
+  if (!rigid) {
+    sc.params = to_nondimensional(pb);
+    if (!given(s, "--units")) sc.units = "physical";
   }
 }
 
+// Flags that belong to one family only: a clear error instead of a silently ignored option.
+void check_family_flags(const CLI::App& s, const Scenario& sc) {
+  const bool rigid = is_rigid_family(sc.model);
+  const char* winkler_only[] = {"--r", "--k", "--mu", "--ic", "--units"};
+  const char* rigid_only[] = {"--restitution", "--mu-s", "--mu-k", "--impact"};
+  const char* rigid3_only[] = {"--mu-s", "--mu-k", "--impact", "--x0", "--y0", "--vx0", "--vy0"};
+  if (rigid) {
+    for (const char* n : winkler_only)
+      if (given(s, n)) throw UsageError(std::string(n) + " belongs to the winkler model, not to --model " + sc.model);
+  } else {
+    for (const char* n : rigid_only)
+      if (given(s, n)) throw UsageError(std::string(n) + " belongs to --model housner|rigid, not to winkler");
+  }
+  if (sc.model == "housner")
+    for (const char* n : rigid3_only)
+      if (given(s, n)) throw UsageError(std::string(n) + " belongs to --model rigid (housner has one degree of freedom)");
+}
 
 Scenario build_scenario(const CLI::App& s, const SimulateFlags& f) {
   Scenario sc = f.scenario_file.empty() ? Scenario{} : load_scenario(f.scenario_file);
+  if (given(s, "--model")) sc.model = f.model;
+  check_family_flags(s, sc);
   if (given(s, "--r")) sc.params.r = f.p.r;
   if (given(s, "--mu")) sc.params.mu = f.p.mu;
   if (given(s, "--k")) sc.params.k = f.p.k;
@@ -109,27 +130,25 @@ Scenario build_scenario(const CLI::App& s, const SimulateFlags& f) {
   if (given(s, "--trajectory")) sc.trajectory = f.trajectory;
   if (given(s, "--plot")) sc.plot = f.plot;
   if (given(s, "--units")) sc.units = f.units;
-  const char* comp[2] = {"--ground-h", "--ground-v"};
-  for (int i = 0; i < 2; ++i) {
-    GroundComponent& c = i == 0 ? sc.ground.horizontal : sc.ground.vertical;
-    const GroundComponent& g = i == 0 ? f.ground.horizontal : f.ground.vertical;
-    const std::string n = comp[i];
-    if (given(s, n)) c.constant = g.constant;
-    if (given(s, n + "-amplitude")) c.amplitude = g.amplitude;
-    if (given(s, n + "-frequency")) c.frequency = g.frequency;
-    if (given(s, n + "-phase")) c.phase = g.phase;
-    if (given(s, n + "-start")) c.t_start = g.t_start;
-    if (given(s, n + "-duration")) c.duration = g.duration;
+  if (given(s, "--restitution")) sc.restitution = f.restitution;
+  if (given(s, "--mu-s")) {
+    sc.interface.mu_s = f.mu_s;
+    if (!given(s, "--mu-k")) sc.interface.mu_k = f.mu_s;
   }
+  if (given(s, "--mu-k")) sc.interface.mu_k = f.mu_k;
+  if (given(s, "--impact")) sc.impact = *impact_law_from_string(f.impact);
+  apply_ground_flags(s, f.ground, sc.ground);
   apply_physical_flags(s, f, sc);
-  validate(sc.params);
   validate(sc.ground);
   validate(sc.options);
-  if (sc.units != "nondim" && sc.units != "physical")
-    throw UsageError("units = '" + sc.units + "' is not one of: nondim, physical");
-  if (sc.units == "physical" && !sc.physical)
-    throw UsageError("units = physical needs a physical block (--height --width ... or [physical] in the scenario)");
   require_range("output-interval", sc.output_interval, 0.0, 1e300);
+  if (!is_rigid_family(sc.model)) {
+    validate(sc.params);
+    if (sc.units != "nondim" && sc.units != "physical")
+      throw UsageError("units = '" + sc.units + "' is not one of: nondim, physical");
+    if (sc.units == "physical" && !sc.physical)
+      throw UsageError("units = physical needs a physical block (--height --width ... or [physical] in the scenario)");
+  }
   return sc;
 }
 
@@ -143,58 +162,149 @@ void print_summary(const SimulationResult& r) {
               r.initial_energy.total(), r.max_abs_energy_change, r.max_abs_energy_error, r.work_friction());
 }
 
-void run(const CLI::App& s, const SimulateFlags& f) {
-  const Scenario sc = build_scenario(s, f);
+void print_summary(const RigidResult& r, double alpha) {
+  std::printf("model: %s, status: %s at t = %.10g s, final mechanism: %s\n", r.model.c_str(), to_string(r.status),
+              r.t_final, to_string(r.final_mode));
+  if (!r.note.empty()) std::printf("note: %s\n", r.note.c_str());
+  std::printf("max |w| = %.6g rad (%.4g alpha) at t = %.6g s, impacts: %ld, mechanism changes: %ld\n",
+              r.max_abs_rotation, r.max_abs_rotation / alpha, r.t_max_abs_rotation, r.impacts, r.mode_changes);
+  std::printf("steps: %ld, rhs evaluations: %ld, max |energy balance error| = %.3g J\n", r.stats.accepted,
+              r.stats.rhs_evals, r.max_abs_energy_error);
+}
+
+// A trajectory file (or a temporary one when only a plot is asked), written atomically.
+struct TrajectoryTarget {
+  std::string path;
+  bool temporary = false;
+  std::unique_ptr<AtomicFile> file;
+  TrajectoryTarget(const std::string& trajectory, const std::string& plot) : path(trajectory) {
+    if (path.empty() && !plot.empty()) {
+      temporary = true;
+      path = "/tmp/blockdyn-trajectory-" + std::to_string(::getpid()) + ".csv";
+    }
+    if (!path.empty()) file = std::make_unique<AtomicFile>(path);
+  }
+  void plot_and_clean(const std::string& script, const std::string& plot, const std::vector<std::string>& extra = {}) {
+    if (file) file->commit();
+    if (!plot.empty()) {
+      std::vector<std::string> args{path, plot};
+      args.insert(args.end(), extra.begin(), extra.end());
+      try {
+        run_python(script, args);
+      } catch (...) {
+        if (temporary) std::remove(path.c_str());
+        throw;
+      }
+      if (temporary) std::remove(path.c_str());
+    }
+  }
+};
+
+void emit(const nlohmann::ordered_json& j, const SimulateFlags& f) {
+  if (!f.json_out.empty()) emit_json(j, f.json_out);
+  if (f.json) emit_json(j, "-");
+}
+
+void run_winkler(const SimulateFlags& f, Scenario sc) {
+  // With a physical block every time is in seconds and every frequency in Hz.
+  if (sc.physical) {
+    const double tau = scales_of(*sc.physical).time;
+    sc.options.t_end /= tau;
+    sc.options.t_start /= tau;
+    sc.output_interval /= tau;
+    sc.ground = in_time_unit(sc.ground, tau);
+  }
   const BlockStateVec z0 = initial_state(sc);
   std::optional<UnitScales> scales;
   if (sc.units == "physical") scales = scales_of(*sc.physical);
-  // The trajectory goes to a temporary file renamed on success (also when only a plot is asked).
-  std::string csv_path = sc.trajectory;
-  const bool temp_csv = csv_path.empty() && !sc.plot.empty();
-  if (temp_csv) csv_path = "/tmp/blockdyn-trajectory-" + std::to_string(::getpid()) + ".csv";
-  std::unique_ptr<AtomicFile> file;
+  TrajectoryTarget target(sc.trajectory, sc.plot);
   std::unique_ptr<TrajectoryCsvSink> sink;
-  if (!csv_path.empty()) {
-    file = std::make_unique<AtomicFile>(csv_path);
-    sink = std::make_unique<TrajectoryCsvSink>(file->stream(), sc.output_interval, scales);
-  }
+  if (target.file) sink = std::make_unique<TrajectoryCsvSink>(target.file->stream(), sc.output_interval, scales);
   const SimulationResult r = simulate(sc.params, sc.ground, z0, sc.options, sink.get());
-  if (file) file->commit();
-  if (!sc.plot.empty()) {
-    run_python("plot_trajectory.py", {csv_path, sc.plot});
-    if (temp_csv) std::remove(csv_path.c_str());
+  target.plot_and_clean("plot_trajectory.py", sc.plot);
+  emit(result_json(sc.params, sc.ground, sc.options, r, sc.physical ? &*sc.physical : nullptr), f);
+  if (!f.json) print_summary(r);
+}
+
+template <class Model, class Simulate>
+void run_rigid_family(const SimulateFlags& f, const Scenario& sc, Simulate&& sim) {
+  const RigidBlockParams p = rigid_params(sc);
+  RigidInitial init;
+  init.w0 = sc.initial.w0.value_or(0.0);
+  init.vw0 = sc.initial.vw0.value_or(0.0);
+  init.x0 = sc.initial.x0;
+  init.y0 = sc.initial.y0;
+  init.vx0 = sc.initial.vx0;
+  init.vy0 = sc.initial.vy0;
+  RigidRunOptions o;
+  o.t_start = sc.options.t_start;
+  o.t_end = sc.options.t_end;
+  o.integrator = sc.options.integrator;
+  TrajectoryTarget target(sc.trajectory, sc.plot);
+  std::unique_ptr<RigidTrajectoryCsv<Model>> csv;
+  if (target.file) csv = std::make_unique<RigidTrajectoryCsv<Model>>(target.file->stream(), sc.output_interval);
+  const RigidResult r = sim(p, sc.ground, init, o, csv.get());
+  target.plot_and_clean("plot_rigid.py", sc.plot,
+                        {"--alpha", std::to_string(p.shape.alpha()), "--model", sc.model, "--status",
+                         to_string(r.status), "--title",
+                         sc.model + " block " + std::to_string(p.shape.width) + " x " +
+                             std::to_string(p.shape.height) + " m"});
+  emit(rigid_result_json(p, sc.ground, o, r), f);
+  if (!f.json) print_summary(r, p.shape.alpha());
+}
+
+void run(const CLI::App& s, const SimulateFlags& f) {
+  const Scenario sc = build_scenario(s, f);
+  if (sc.model == "housner") {
+    run_rigid_family<HousnerBlock>(f, sc, [](const RigidBlockParams& p, const GroundMotion& g, const RigidInitial& in,
+                                             const RigidRunOptions& o, Observer<HousnerBlock>* obs) {
+      return simulate_housner(p.shape, p.restitution, g, in, o, obs);
+    });
+  } else if (sc.model == "rigid") {
+    run_rigid_family<RigidBlock>(f, sc, [](const RigidBlockParams& p, const GroundMotion& g, const RigidInitial& in,
+                                           const RigidRunOptions& o, Observer<RigidBlock>* obs) {
+      return simulate_rigid(p, g, in, o, obs);
+    });
+  } else {
+    run_winkler(f, sc);
   }
-  const auto j = result_json(sc.params, sc.ground, sc.options, r, sc.physical ? &*sc.physical : nullptr);
-  if (!f.json_out.empty()) emit_json(j, f.json_out);
-  if (f.json)
-    emit_json(j, "-");
-  else
-    print_summary(r);
 }
 
 void add(CLI::App& app) {
   auto f = std::make_shared<SimulateFlags>();
-  CLI::App* s = app.add_subcommand("simulate", "integrate one block from initial conditions (flags or a TOML scenario)");
+  CLI::App* s = app.add_subcommand("simulate",
+                                   "integrate one block (winkler, housner or rigid model) from flags or a TOML scenario");
   s->add_option("scenario", f->scenario_file, "TOML scenario file (flags given as well override it)");
+  s->add_option("--model", f->model,
+                "model family: winkler (block on a Winkler foundation, non-dimensional unless a physical block is "
+                "given), housner (1-DOF rocking on rigid ground), rigid (3-DOF, five mechanisms); default winkler")
+      ->check(CLI::IsMember({"winkler", "housner", "rigid"}));
   add_block_options(*s, f->p);
   add_tolerance_options(*s, f->integ);
-  s->add_option("--ic", f->ic, "initial conditions: ic1 (tilted, at rest), ic2 (upright, impulse), custom")
+  s->add_option("--ic", f->ic, "winkler: initial conditions ic1 (tilted, at rest), ic2 (upright, impulse), custom")
       ->check(CLI::IsMember({"ic1", "ic2", "custom"}));
-  s->add_option("--w0", f->w0, "initial tilt w (ic1 override, default alpha/2; custom state)");
-  s->add_option("--x0", f->x0, "initial x (overrides the set's value)");
-  s->add_option("--y0", f->y0, "initial y of the centre (overrides)");
-  s->add_option("--vx0", f->vx0, "initial x' (overrides)");
-  s->add_option("--vy0", f->vy0, "initial y' (overrides)");
-  s->add_option("--vw0", f->vw0, "initial w' (overrides)");
-  s->add_option("--t-end", f->t_end, "final time (non-dimensional, > 0)")->capture_default_str();
-  s->add_option("--output-interval", f->output_interval, "trajectory output interval (0: every step)")
-      ->capture_default_str();
+  s->add_option("--w0", f->w0, "initial rotation w [rad] (winkler ic1: the release tilt, default alpha/2)");
+  s->add_option("--vw0", f->vw0, "initial rotation rate w' [rad per time unit]");
+  s->add_option("--x0", f->x0, "initial x of the centre");
+  s->add_option("--y0", f->y0, "initial y of the centre (rigid: default standing on the lowest corner)");
+  s->add_option("--vx0", f->vx0, "initial x' (rigid: default rotation about the corner on the ground)");
+  s->add_option("--vy0", f->vy0, "initial y'");
+  s->add_option("--restitution", f->restitution,
+                "housner/rigid: restitution in [0, 1] (housner law: the rocking coefficient, default Housner's "
+                "1 - 1.5 sin^2 alpha; newton law: e_n, default 0)");
+  s->add_option("--mu-s", f->mu_s, "rigid: static friction coefficient (default 0.7)");
+  s->add_option("--mu-k", f->mu_k, "rigid: kinetic friction coefficient, <= mu-s (default: mu-s)");
+  s->add_option("--impact", f->impact, "rigid: impact law housner (default) or newton")
+      ->check(CLI::IsMember({"housner", "newton"}));
+  s->add_option("--t-end", f->t_end,
+                "final time: seconds with a physical block and for housner/rigid, else non-dimensional (default 10)");
+  s->add_option("--output-interval", f->output_interval, "trajectory output interval (0: every step; default 0.01)");
   s->add_option("--trajectory", f->trajectory, "write the trajectory CSV here");
   s->add_option("--plot", f->plot, "write a plot of the motion (PNG; an SVG is written beside it)");
-  s->add_option("--units", f->units, "nondim, or physical (needs a physical block: flags or [physical])");
+  s->add_option("--units", f->units, "winkler: nondim, or physical (needs a physical block: flags or [physical])");
   s->add_flag("--json", f->json, "print the JSON summary on stdout");
   s->add_option("--json-out", f->json_out, "also write the JSON summary to this file");
-  add_ground_flags(*s, *f);
+  add_ground_flags(*s, f->ground);
   add_physical_flags(*s, *f);
   s->callback([s, f] { run(*s, *f); });
 }

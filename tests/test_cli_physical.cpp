@@ -1,5 +1,6 @@
 // Physical-unit input and output of `blockdyn simulate`: k = k_line a b / (m g), time scale
-// sqrt(a / g), the same run as its non-dimensional twin.
+// sqrt(a / g), the same run as its non-dimensional twin. With a physical block every time is in
+// seconds (--t-end 3 is 3 s, t_end = 3 / sqrt(a / g) non-dimensional).
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
@@ -24,12 +25,15 @@ TEST(CliPhysical, FlagsGiveTheNonDimensionalTwin) {
   EXPECT_NEAR(jp["parameters"]["k"].get<double>(), k, 1e-9 * k);
   EXPECT_NEAR(jp["physical"]["mass_kg"].get<double>(), m, 1e-9 * m);
   EXPECT_NEAR(jp["physical"]["time_scale_s"].get<double>(), std::sqrt(a / g), 1e-14);
-  EXPECT_NEAR(jp["physical"]["t_final_s"].get<double>(), 3.0 * std::sqrt(a / g), 1e-12);
+  EXPECT_NEAR(jp["physical"]["t_final_s"].get<double>(), 3.0, 1e-12);
+  EXPECT_NEAR(jp["t_final"].get<double>(), 3.0 / std::sqrt(a / g), 1e-12);
   EXPECT_NEAR(jp["physical"]["final_state"]["x_m"].get<double>(), jp["final_state"]["x"].get<double>() * a, 1e-12);
 
   char kbuf[64];
   std::snprintf(kbuf, sizeof kbuf, "%.17g", k);
-  const auto nd = run_cli({"simulate", "--r", "0.25", "--k", kbuf, "--mu", "0.5", "--ic", "ic1", "--t-end", "3", "--json"},
+  char tbuf[64];
+  std::snprintf(tbuf, sizeof tbuf, "%.17g", 3.0 / std::sqrt(a / g));
+  const auto nd = run_cli({"simulate", "--r", "0.25", "--k", kbuf, "--mu", "0.5", "--ic", "ic1", "--t-end", tbuf, "--json"},
                           d.path);
   ASSERT_EQ(nd.code, 0) << nd.err;
   const auto jn = nlohmann::json::parse(nd.out);

@@ -339,6 +339,19 @@ class HybridIntegrator {
             if (-mx.second > 0.0) {
               lo = mx.first;
               glo = -mx.second;
+            } else {
+              // The rise may be too brief for the minimiser to see (a swing of 1e-7 inside a
+              // step of 1e-3): probe geometrically towards the restart point.
+              for (int k = 1; k <= 60; ++k) {
+                const double tt = ts[j - 1] + std::ldexp(ts[j] - ts[j - 1], -k);
+                if (!(tt > ts[j - 1])) break;
+                const double gt = gi(tt);
+                if (gt > 0.0) {
+                  lo = tt;
+                  glo = gt;
+                  break;
+                }
+              }
             }
           }
           root = locate_root(gi, lo, ts[j], glo, gb);

@@ -13,8 +13,18 @@ json to_json(const BlockParams& p) {
 }
 
 static json component_json(const GroundComponent& c) {
-  return {{"constant", c.constant}, {"amplitude", c.amplitude}, {"frequency", c.frequency},
-          {"phase", c.phase},       {"t_start", c.t_start},     {"duration", c.duration}};
+  json j = {{"constant", c.constant}, {"amplitude", c.amplitude}, {"frequency", c.frequency},
+            {"phase", c.phase},       {"t_start", c.t_start},     {"duration", c.duration},
+            {"pulse", to_string(c.pulse)}};
+  if (c.record) {
+    j["record"] = {{"source", c.record->source()},      {"samples", c.record->size()},
+                   {"dt_s", c.record->dt()},            {"duration_s", c.record->t_last()},
+                   {"peak_g", c.record->peak()},        {"scale", c.scale},
+                   {"time_unit_s", c.record_time_unit}};
+  } else {
+    j["record"] = nullptr;
+  }
+  return j;
 }
 
 json to_json(const GroundMotion& g) {
@@ -52,6 +62,46 @@ json to_json(const EventRecord& e) {
           {"to", to_string(e.to.regime)},
           {"ihor", e.ihor},
           {"state", state_json(e.z)}};
+}
+
+json to_json(const RigidBlockParams& p, const std::string& model) {
+  const BlockShape& s = p.shape;
+  json j = {{"model", model},
+            {"width", s.width},
+            {"height", s.height},
+            {"mass", s.mass},
+            {"g", s.g},
+            {"alpha", s.alpha()},
+            {"half_diagonal", s.half_diagonal()},
+            {"p", s.p()},
+            {"inertia_centre", s.inertia_centre()},
+            {"housner_restitution", s.housner_restitution()}};
+  if (model == "rigid") {
+    j["mu_s"] = p.interface.mu_s;
+    j["mu_k"] = p.interface.mu_k;
+    j["impact"] = to_string(p.impact);
+  }
+  j["restitution"] = model == "housner" ? p.restitution.value_or(s.housner_restitution()) : p.e();
+  return j;
+}
+
+static json pose_json(const std::array<double, 6>& q) {
+  return {{"x", q[0]}, {"y", q[1]}, {"w", q[2]}, {"vx", q[3]}, {"vy", q[4]}, {"vw", q[5]}};
+}
+
+json to_json(const RigidEventRecord& e) {
+  json j = {{"t", e.t}, {"kind", to_string(e.kind)}};
+  if (e.kind == RigidEventKind::Impact) {
+    j["corner"] = corner_name(e.corner);
+    j["vw_before"] = e.vw_before;
+    j["vw_after"] = e.vw_after;
+  }
+  if (e.kind == RigidEventKind::Impact || e.kind == RigidEventKind::Mode) {
+    j["from"] = to_string(e.from);
+    j["to"] = to_string(e.to);
+  }
+  j["state"] = pose_json(e.state);
+  return j;
 }
 
 json run_info() {
@@ -102,6 +152,7 @@ json result_json(const BlockParams& p, const GroundMotion& g, const SimulationOp
     const UnitScales s = scales_of(*phys);
     j["physical"] = {{"height_m", phys->height}, {"width_m", phys->width}, {"mass_kg", s.mass},
                      {"g_m_per_s2", phys->g},    {"time_scale_s", s.time},
+                     {"t_end_s", o.t_end * s.time},
                      {"t_final_s", r.t_final * s.time},
                      {"first_flight_time_s", r.first_flight_time ? json(*r.first_flight_time * s.time) : json(nullptr)},
                      {"overturn_time_s", r.overturn_time ? json(*r.overturn_time * s.time) : json(nullptr)},
@@ -110,6 +161,59 @@ json result_json(const BlockParams& p, const GroundMotion& g, const SimulationOp
                      {"initial_energy_J", r.initial_energy.total() * s.energy},
                      {"work_friction_J", r.work_friction() * s.energy}};
   }
+  return j;
+}
+
+json rigid_result_json(const RigidBlockParams& p, const GroundMotion& g, const RigidRunOptions& o,
+                       const RigidResult& r) {
+  auto opt = [](const std::optional<double>& v) { return v ? json(*v) : json(nullptr); };
+  json j;
+  j["run"] = run_info();
+  j["model"] = r.model;
+  j["units"] = "SI (s, m, rad, kg, N, J); ground accelerations in g";
+  j["parameters"] = to_json(p, r.model);
+  j["ground_motion"] = to_json(g);
+  j["tolerances"] = to_json(o.integrator);
+  j["t_start"] = o.t_start;
+  j["t_end"] = o.t_end;
+  j["initial_state"] = pose_json(r.initial_state);
+  j["initial_mode"] = to_string(r.initial_mode);
+  j["status"] = to_string(r.status);
+  j["integrator_status"] = to_string(r.run_status);
+  j["note"] = r.note.empty() ? json(nullptr) : json(r.note);
+  j["t_final"] = r.t_final;
+  j["final_mode"] = to_string(r.final_mode);
+  j["final_state"] = pose_json(r.final_state);
+  j["max_abs_rotation"] = r.max_abs_rotation;
+  j["max_abs_rotation_over_alpha"] = r.max_abs_rotation / p.shape.alpha();
+  j["t_max_abs_rotation"] = r.t_max_abs_rotation;
+  j["overturn_time"] = opt(r.overturn_time);
+  j["first_motion_time"] = opt(r.first_motion_time);
+  j["first_uplift_time"] = opt(r.first_uplift_time);
+  j["first_beyond_alpha_time"] = opt(r.first_beyond_alpha_time);
+  j["impacts"] = r.impacts;
+  j["mode_changes"] = r.mode_changes;
+  const double e_final = r.kinetic_final + r.potential_final;
+  j["energy"] = {{"initial", r.energy_initial},
+                 {"kinetic_final", r.kinetic_final},
+                 {"potential_final", r.potential_final},
+                 {"total_final", e_final},
+                 {"work_friction", r.work_friction},
+                 {"work_ground", r.work_ground},
+                 {"work_impact", r.work_impact},
+                 {"balance_final", e_final - r.energy_initial - r.work_friction - r.work_ground - r.work_impact}};
+  j["max_abs_energy_error"] = r.max_abs_energy_error;
+  j["max_abs_energy_change"] = r.max_abs_energy_change;
+  j["steps"] = r.stats.accepted;
+  j["rejected_steps"] = r.stats.rejected;
+  j["rhs_evals"] = r.stats.rhs_evals;
+  json counts = json::object();
+  for (int k = 0; k < kNumRigidEventKinds; ++k)
+    if (r.event_counts[k]) counts[to_string(RigidEventKind(k))] = r.event_counts[k];
+  j["event_counts"] = counts;
+  json ev = json::array();
+  for (const auto& e : r.events) ev.push_back(to_json(e));
+  j["events"] = ev;
   return j;
 }
 

@@ -4,6 +4,7 @@
 #include <nlohmann/json.hpp>
 
 #include "blockdyn/excitation/ground_motion.hpp"
+#include "blockdyn/simulation/rigid_simulation.hpp"
 #include "blockdyn/simulation/simulate.hpp"
 #include "blockdyn/units/physical_units.hpp"
 
@@ -20,6 +21,12 @@ nlohmann::ordered_json run_info();  // program version, for every output
 // Everything `simulate --json` prints (physical block and scales optional).
 nlohmann::ordered_json result_json(const BlockParams& p, const GroundMotion& g, const SimulationOptions& o,
                            const SimulationResult& r, const PhysicalBlock* phys = nullptr);
+
+// Everything `simulate --model housner|rigid --json` prints.
+nlohmann::ordered_json to_json(const RigidBlockParams& p, const std::string& model);
+nlohmann::ordered_json to_json(const RigidEventRecord& e);
+nlohmann::ordered_json rigid_result_json(const RigidBlockParams& p, const GroundMotion& g, const RigidRunOptions& o,
+                                         const RigidResult& r);
 
 // Prints JSON with non-finite numbers as null (JSON has no inf/nan).
 std::string dump_json(const nlohmann::ordered_json& j, int indent = 2);

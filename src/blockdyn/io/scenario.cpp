@@ -28,8 +28,18 @@ const toml::table* sub(const toml::table& t, const std::string& where, const cha
   return toml_read::sub_table(t, key, where + "." + key);
 }
 
-void read_component(const toml::table& t, const std::string& where, GroundComponent& c) {
-  check_keys(t, where, {"constant", "amplitude", "frequency", "phase", "t_start", "duration"});
+void read_component(const toml::table& t, const std::string& where, const std::string& base, GroundComponent& c) {
+  check_keys(t, where, {"constant", "amplitude", "frequency", "phase", "t_start", "duration", "pulse", "record", "scale"});
+  if (auto v = opt_string(t, where, "pulse")) {
+    const auto p = pulse_from_string(*v);
+    if (!p) fail(where + ".pulse", "'" + *v + "' is not one of: " + pulse_names());
+    c.pulse = *p;
+  }
+  if (auto v = opt_string(t, where, "record")) {
+    const std::string path = (!base.empty() && !v->empty() && (*v)[0] != '/') ? base + "/" + *v : *v;
+    c.record = std::make_shared<const Accelerogram>(load_accelerogram(path, where + ".record"));
+  }
+  read(t, where, "scale", c.scale);
   read(t, where, "constant", c.constant);
   read(t, where, "amplitude", c.amplitude);
   read(t, where, "frequency", c.frequency);
@@ -40,10 +50,36 @@ void read_component(const toml::table& t, const std::string& where, GroundCompon
 
 }  // namespace
 
-Scenario parse_scenario(const std::string& text, const std::string& source) {
+bool is_rigid_family(const std::string& m) { return m == "housner" || m == "rigid"; }
+
+Scenario parse_scenario(const std::string& text, const std::string& source, const std::string& base) {
   const toml::table root = toml_read::parse(text, source);
   Scenario s;
-  check_keys(root, source, {"block", "physical", "initial", "run", "ground", "output"});
+  check_keys(root, source, {"model", "block", "physical", "interface", "impact", "initial", "run", "ground", "output"});
+  if (auto v = opt_string(root, source, "model")) {
+    if (*v != "winkler" && !is_rigid_family(*v)) fail("model", "'" + *v + "' is not one of: winkler, housner, rigid");
+    s.model = *v;
+  }
+  const bool rigid = is_rigid_family(s.model);
+  if (rigid && root.contains("block"))
+    fail("block", "[block] (r, mu, k) belongs to the winkler model; give the " + s.model + " block in [physical]");
+  if (!rigid && (root.contains("interface") || root.contains("impact")))
+    fail(root.contains("interface") ? "interface" : "impact", "belongs to the housner/rigid models (model = ...)");
+  if (const auto* f = sub(root, source, "interface")) {
+    check_keys(*f, "interface", {"mu_s", "mu_k"});
+    read(*f, "interface", "mu_s", s.interface.mu_s);
+    s.interface.mu_k = s.interface.mu_s;
+    read(*f, "interface", "mu_k", s.interface.mu_k);
+  }
+  if (const auto* f = sub(root, source, "impact")) {
+    check_keys(*f, "impact", {"law", "restitution"});
+    if (auto v = opt_string(*f, "impact", "law")) {
+      const auto l = impact_law_from_string(*v);
+      if (!l) fail("impact.law", "'" + *v + "' is not one of: housner, newton");
+      s.impact = *l;
+    }
+    s.restitution = opt_number(*f, "impact", "restitution");
+  }
   if (const auto* b = sub(root, source, "block")) {
     check_keys(*b, "block", {"r", "mu", "k"});
     read(*b, "block", "r", s.params.r);
@@ -51,8 +87,11 @@ Scenario parse_scenario(const std::string& text, const std::string& source) {
     read(*b, "block", "k", s.params.k);
   }
   if (const auto* p = sub(root, source, "physical")) {
-    check_keys(*p, "physical", {"height", "width", "mass", "density", "thickness", "subgrade_modulus",
-                                "line_stiffness", "g", "mu"});
+    if (rigid)
+      check_keys(*p, "physical", {"height", "width", "mass", "density", "thickness", "g"});
+    else
+      check_keys(*p, "physical", {"height", "width", "mass", "density", "thickness", "subgrade_modulus",
+                                  "line_stiffness", "g", "mu"});
     PhysicalBlock pb;
     pb.mu = s.params.mu;
     read(*p, "physical", "height", pb.height);
@@ -65,10 +104,11 @@ Scenario parse_scenario(const std::string& text, const std::string& source) {
     pb.subgrade_modulus = opt_number(*p, "physical", "subgrade_modulus");
     pb.line_stiffness = opt_number(*p, "physical", "line_stiffness");
     s.physical = pb;
-    s.params = to_nondimensional(pb);
+    if (!rigid) s.params = to_nondimensional(pb);
   }
   if (const auto* i = sub(root, source, "initial")) {
     check_keys(*i, "initial", {"set", "w0", "x0", "y0", "vx0", "vy0", "vw0"});
+    if (rigid && i->contains("set")) fail("initial.set", "ic1/ic2/custom belong to the winkler model; give w0, vw0, ...");
     if (auto v = opt_string(*i, "initial", "set")) s.initial.set = *v;
     s.initial.w0 = opt_number(*i, "initial", "w0");
     toml_read::read_state_overrides(*i, "initial", s.initial);
@@ -85,8 +125,9 @@ Scenario parse_scenario(const std::string& text, const std::string& source) {
   }
   if (const auto* g = sub(root, source, "ground")) {
     check_keys(*g, "ground", {"horizontal", "vertical"});
-    if (const auto* h = sub(*g, "ground", "horizontal")) read_component(*h, "ground.horizontal", s.ground.horizontal);
-    if (const auto* v = sub(*g, "ground", "vertical")) read_component(*v, "ground.vertical", s.ground.vertical);
+    if (const auto* h = sub(*g, "ground", "horizontal"))
+      read_component(*h, "ground.horizontal", base, s.ground.horizontal);
+    if (const auto* v = sub(*g, "ground", "vertical")) read_component(*v, "ground.vertical", base, s.ground.vertical);
   }
   if (const auto* o = sub(root, source, "output")) {
     check_keys(*o, "output", {"trajectory", "plot", "units"});
@@ -98,7 +139,27 @@ Scenario parse_scenario(const std::string& text, const std::string& source) {
 }
 
 Scenario load_scenario(const std::string& path) {
-  return parse_scenario(toml_read::read_file(path, "scenario file"), path);
+  const auto slash = path.find_last_of('/');
+  const std::string base = slash == std::string::npos ? "" : path.substr(0, slash);
+  return parse_scenario(toml_read::read_file(path, "scenario file"), path, base);
+}
+
+RigidBlockParams rigid_params(const Scenario& s) {
+  RigidBlockParams p;
+  if (!s.physical) throw std::invalid_argument("the " + s.model + " model needs the block's width and height (--width --height, or [physical])");
+  const PhysicalBlock& b = *s.physical;
+  if (!(b.width > 0) && b.width == 0) throw std::invalid_argument("width is missing (--width, or physical.width) [m]");
+  if (!(b.height > 0) && b.height == 0) throw std::invalid_argument("height is missing (--height, or physical.height) [m]");
+  p.shape.width = b.width;
+  p.shape.height = b.height;
+  p.shape.g = b.g;
+  if (b.mass || (b.density && b.thickness)) p.shape.mass = mass_of(b);
+  else if (b.density || b.thickness) throw std::invalid_argument("density needs thickness (and thickness density) to give the mass");
+  p.interface = s.interface;
+  p.impact = s.impact;
+  p.restitution = s.restitution;
+  validate(p);
+  return p;
 }
 
 BlockStateVec initial_state(const Scenario& s) {

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "blockdyn/excitation/ground_motion.hpp"
+#include "blockdyn/model/rigid/rigid_params.hpp"
 #include "blockdyn/simulation/simulate.hpp"
 #include "blockdyn/units/physical_units.hpp"
 
@@ -18,9 +19,14 @@ struct InitialSpec {
 };
 
 struct Scenario {
+  std::string model = "winkler";  // winkler | housner | rigid
   BlockParams params;
   std::optional<PhysicalBlock> physical;  // when given, params are derived from it
-  GroundMotion ground;
+  // housner / rigid: the block's shape comes from [physical]; interface and impact from here.
+  Coulomb interface{0.7, 0.7};
+  ImpactLaw impact = ImpactLaw::Housner;
+  std::optional<double> restitution;
+  GroundMotion ground;  // times in seconds for physical blocks and the rigid models
   InitialSpec initial;
   SimulationOptions options;
   double output_interval = 0.01;
@@ -29,9 +35,17 @@ struct Scenario {
   std::string units = "nondim";  // nondim | physical (adds physical columns / fields)
 };
 
+// Model families a scenario may name.
+bool is_rigid_family(const std::string& model);
+
 // Reads a TOML scenario; throws std::invalid_argument with the offending key on error.
+// Record paths in [ground.*] are relative to the scenario file's directory.
 Scenario load_scenario(const std::string& path);
-Scenario parse_scenario(const std::string& toml_text, const std::string& source_name);
+Scenario parse_scenario(const std::string& toml_text, const std::string& source_name,
+                        const std::string& base_dir = "");
+
+// The rigid-family parameters (shape from [physical], default mass 1 kg).
+RigidBlockParams rigid_params(const Scenario& s);
 
 // The initial state vector the scenario asks for (validated against the model).
 BlockStateVec initial_state(const Scenario& s);

@@ -14,33 +14,22 @@ void TrajectoryCsvSink::on_start(const WinklerBlock& m, double t, const BlockMod
           "W_friction,W_nonpotential,W_ground,energy_balance";
   if (scales_) out_ << ",t_s,x_m,y_m,vx_m_per_s,vy_m_per_s,vw_rad_per_s,Rx_N,Ry_N,E_total_J";
   out_ << '\n';
-  t0_ = t;
-  n_out_ = 0;
-  next_t_ = t;
   row(m, t, mode, z, "start");
-  n_out_ = 1;
-  next_t_ = t0_ + interval_;
+  clock_.start(t, interval_);
 }
 
 void TrajectoryCsvSink::on_segment(const WinklerBlock& m, const DenseSegment<kStateDim>& seg,
                                    double t0, double t1, const BlockMode& mode) {
-  if (interval_ <= 0) {
+  auto write = [&](double t) {
     BlockStateVec z;
-    seg.eval(t1, z);
+    seg.eval(t, z);
     m.complete(mode, z);
-    row(m, t1, mode, z, "");
-    return;
-  }
-  // Output instants t0_ + n * interval (computed from n, so no drift accumulates).
-  // Instants up to t0 were written by earlier segments, so each one is written once.
-  while (next_t_ <= t1) {
-    BlockStateVec z;
-    seg.eval(next_t_, z);
-    m.complete(mode, z);
-    row(m, next_t_, mode, z, "");
-    ++n_out_;
-    next_t_ = t0_ + double(n_out_) * interval_;
-  }
+    row(m, t, mode, z, "");
+  };
+  if (clock_.every_step())
+    write(t1);
+  else
+    clock_.emit_until(t1, write);
 }
 
 void TrajectoryCsvSink::on_event(const WinklerBlock& m, const EventRecord& e) {

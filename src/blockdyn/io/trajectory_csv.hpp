@@ -4,6 +4,7 @@
 #include <ostream>
 #include <optional>
 
+#include "blockdyn/io/output_clock.hpp"
 #include "blockdyn/simulation/simulate.hpp"
 #include "blockdyn/units/physical_units.hpp"
 
@@ -25,9 +26,7 @@ class TrajectoryCsvSink : public SimulationSink {
   std::ostream& out_;
   double interval_;
   std::optional<UnitScales> scales_;
-  double next_t_ = 0;
-  long n_out_ = 0;
-  double t0_ = 0;
+  OutputClock clock_;
   long rows_ = 0;
 };
 

@@ -35,26 +35,20 @@ void validate(const SimulationOptions& o) {
 
 namespace {
 
-class Recorder {
+// The Winkler family's recorder: ihor (passages through w = 0), first flight, overturn, the event
+// list and counts; forwards the trajectory and the events to the user's sink.
+class WinklerRecorder final : public Observer<WinklerBlock> {
  public:
-  Recorder(const WinklerBlock& m, const SimulationOptions& o, SimulationResult& r, SimulationSink* s)
-      : model_(m), opt_(o), res_(r), sink_(s) {
-    e0_ = res_.initial_energy.total();
+  WinklerRecorder(const SimulationOptions& o, SimulationResult& r, SimulationSink* s) : opt_(o), res_(r), sink_(s) {
     if (o.record_events) res_.events.reserve(256);
   }
 
-  bool on_step(const DenseSegment<kStateDim>& seg, double t0, double t1, const BlockMode& mode) {
-    if (sink_) sink_->on_segment(model_, seg, t0, t1, mode);
-    if (opt_.track_energy) {
-      BlockStateVec z;
-      seg.eval(t1, z);
-      model_.complete(mode, z);
-      track(z);
-    }
+  bool on_segment(const WinklerBlock& m, const Segment& seg, double t0, double t1, const BlockMode& mode) override {
+    if (sink_) sink_->on_segment(m, seg, t0, t1, mode);
     return !sink_ || sink_->keep_going();
   }
 
-  bool on_event(const EventInfo<BlockMode, kStateDim>& e) {
+  bool on_event(const WinklerBlock& m, const Event& e) override {
     const EventKind kind = EventKind(e.kind);
     if (kind == EventKind::GroundBreak) return true;
     if (kind == EventKind::WZero) ++res_.ihor;
@@ -68,9 +62,8 @@ class Recorder {
       res_.overturn_time = e.t;
       res_.ihor_at_overturn = res_.ihor;
     }
-    if (opt_.track_energy) track(e.z);
     if (opt_.record_events) res_.events.push_back(rec);
-    if (sink_) sink_->on_event(model_, rec);
+    if (sink_) sink_->on_event(m, rec);
     if (opt_.stop_at_first_flight && kind == EventKind::Takeoff) return stop();
     if (opt_.stop_at_ihor > 0 && res_.ihor >= opt_.stop_at_ihor) return stop();
     return !sink_ || sink_->keep_going();
@@ -83,19 +76,10 @@ class Recorder {
     early_ = true;
     return false;
   }
-  void track(const BlockStateVec& z) {
-    const double e = energy(model_.params(), z).total();
-    const double change = e - e0_;
-    const double balance = change - z[kWorkFriction] - z[kWorkNonPotential] - z[kWorkGround];
-    res_.max_abs_energy_change = std::fmax(res_.max_abs_energy_change, std::fabs(change));
-    res_.max_abs_energy_error = std::fmax(res_.max_abs_energy_error, std::fabs(balance));
-  }
 
-  const WinklerBlock& model_;
   const SimulationOptions& opt_;
   SimulationResult& res_;
   SimulationSink* sink_;
-  double e0_ = 0;
   bool early_ = false;
 };
 
@@ -111,7 +95,7 @@ SimulationResult simulate(const BlockParams& p, const GroundMotion& g, const Blo
   z[kWorkFriction] = z[kWorkNonPotential] = z[kWorkGround] = 0.0;
   if (auto why = model.validity_problem(z)) throw std::invalid_argument("initial state: " + *why);
   SimulationResult res;
-  double t = opt.t_start;
+  const double t = opt.t_start;
   BlockMode mode = model.initial_mode(t, z);
   model.complete(mode, z);
   res.initial_state = z;
@@ -123,23 +107,31 @@ SimulationResult simulate(const BlockParams& p, const GroundMotion& g, const Blo
     res.ihor_at_first_flight = res.ihor;
   }
   if (sink) sink->on_start(model, t, mode, z);
-  Recorder rec(model, opt, res, sink);
-  HybridIntegrator<WinklerBlock> integ(model, opt.integrator);
-  res.run_status = integ.run(t, opt.t_end, mode, z, rec);
-  res.t_final = t;
-  res.final_state = z;
-  res.final_mode = mode;
-  res.final_energy = energy(p, z);
-  res.stats = integ.stats();
-  switch (res.run_status) {
-    case RunStatus::ReachedEnd: res.status = SimStatus::TEnd; break;
-    case RunStatus::ModelStop:
-      res.status = res.overturn_time ? SimStatus::Overturned : SimStatus::Invalid;
-      break;
-    case RunStatus::ObserverStop: res.status = SimStatus::EarlyStop; break;
-    default: res.status = SimStatus::NumericalFailure; break;
-  }
+  WinklerRecorder rec(opt, res, sink);
+  EnergyBalance<WinklerBlock> balance;
+  FanOut<WinklerBlock> obs;
+  obs.add(&rec);
+  if (opt.track_energy) obs.add(&balance);
+  const RunOutcome<WinklerBlock> out = run_model(model, mode, z, t, opt.t_end, opt.integrator, obs);
+  res.run_status = out.status;
+  res.t_final = out.t;
+  res.final_state = out.z;
+  res.final_mode = out.mode;
+  res.final_energy = energy(p, out.z);
+  res.stats = out.stats;
+  res.max_abs_energy_error = balance.max_abs_error();
+  res.max_abs_energy_change = balance.max_abs_change();
+  res.status = sim_status(out.status, res.overturn_time.has_value());
   return res;
+}
+
+SimStatus sim_status(RunStatus rs, bool overturned) {
+  switch (rs) {
+    case RunStatus::ReachedEnd: return SimStatus::TEnd;
+    case RunStatus::ModelStop: return overturned ? SimStatus::Overturned : SimStatus::Invalid;
+    case RunStatus::ObserverStop: return SimStatus::EarlyStop;
+    default: return SimStatus::NumericalFailure;
+  }
 }
 
 }  // namespace blockdyn

@@ -1,12 +1,14 @@
 #pragma once
-// High-level API: run the Winkler block from a state and collect what users ask about
-// (events, ihor, first flight, overturn, energy balance), streaming the trajectory to a sink.
+// The Winkler family's run: the block from a state, with what users ask about (events, ihor,
+// first flight, overturn, energy balance), the trajectory streamed to a sink. Built on the
+// generic run_model() and observers (run.hpp, observer.hpp) that every model family shares.
 #include <array>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "blockdyn/integrate/hybrid_integrator.hpp"
+#include "blockdyn/simulation/run.hpp"
 #include "blockdyn/model/winkler/energy.hpp"
 #include "blockdyn/model/winkler/winkler_block.hpp"
 
@@ -32,6 +34,8 @@ struct EventRecord {
 
 enum class SimStatus { TEnd, Overturned, Invalid, EarlyStop, NumericalFailure };
 const char* to_string(SimStatus s);
+// The outcome users see, from the integrator's status (ModelStop: overturned, else invalid).
+SimStatus sim_status(RunStatus rs, bool overturned);
 
 constexpr int kNumEventKinds = int(EventKind::GrazingHold) + 1;
 

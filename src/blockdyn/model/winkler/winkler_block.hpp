@@ -10,6 +10,7 @@
 #include "blockdyn/integrate/hybrid_integrator.hpp"
 #include "blockdyn/model/winkler/winkler_params.hpp"
 #include "blockdyn/model/winkler/winkler_state.hpp"
+#include "blockdyn/model/winkler/energy.hpp"
 #include "blockdyn/model/winkler/foundation_force.hpp"
 #include "blockdyn/excitation/ground_motion.hpp"
 
@@ -58,6 +59,10 @@ class WinklerBlock {
 
   BlockForces forces(double t, const Mode& m, const State& z) const;
   BlockForces forces(double t, const Mode& m, const State& z, const Tilt& tilt) const;
+  // Total mechanical energy and the accumulated works (friction, non-potential torque, ground),
+  // for the closed energy balance.
+  double energy(const Mode&, const State& z) const { return blockdyn::energy(p_, z).total(); }
+  double work(const State& z) const { return z[kWorkFriction] + z[kWorkNonPotential] + z[kWorkGround]; }
   // The mode a state starts in (regime, lowest corner, friction direction).
   Mode initial_mode(double t, const State& z) const;
   // Empty if the state is inside the model; otherwise a description of why not.

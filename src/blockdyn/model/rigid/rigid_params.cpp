@@ -1,0 +1,28 @@
+#include "blockdyn/model/rigid/rigid_params.hpp"
+
+#include <cmath>
+
+#include "blockdyn/model/common/checks.hpp"
+
+namespace blockdyn {
+
+const char* to_string(ImpactLaw l) { return l == ImpactLaw::Housner ? "housner" : "newton"; }
+
+std::optional<ImpactLaw> impact_law_from_string(const std::string& s) {
+  if (s == "housner") return ImpactLaw::Housner;
+  if (s == "newton") return ImpactLaw::Newton;
+  return std::nullopt;
+}
+
+void validate(const RigidBlockParams& p) {
+  validate(p.shape);
+  const Coulomb& c = p.interface;
+  require(std::isfinite(c.mu_s) && c.mu_s >= 0.0 && c.mu_s <= 1e3, "mu-s", "in [0, 1e3]", c.mu_s);
+  require(std::isfinite(c.mu_k) && c.mu_k >= 0.0, "mu-k", "finite and >= 0", c.mu_k);
+  require(c.mu_k <= c.mu_s, "mu-k", "<= mu-s = " + std::to_string(c.mu_s), c.mu_k);
+  if (p.restitution)
+    require(std::isfinite(*p.restitution) && *p.restitution >= 0.0 && *p.restitution <= 1.0, "restitution",
+            "in [0, 1]", *p.restitution);
+}
+
+}  // namespace blockdyn

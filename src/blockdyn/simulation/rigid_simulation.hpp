@@ -1,0 +1,75 @@
+#pragma once
+// The rigid-ground family's runs (Housner's 1-DOF block and the 3-DOF block) and what users ask
+// of them: outcome (t_end, overturned, invalid), the mechanism at the end, the largest rotation,
+// impacts, mechanism changes, passages beyond alpha, the energy terms and their closed balance.
+// SI units: seconds, metres, radians, joules.
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "blockdyn/model/rigid/housner_block.hpp"
+#include "blockdyn/model/rigid/rigid_block.hpp"
+#include "blockdyn/simulation/observer.hpp"
+#include "blockdyn/simulation/simulate.hpp"
+
+namespace blockdyn {
+
+// Initial rotation and rate; for the 3-DOF block also the centre and its velocity. Without y0 the
+// block stands on its lowest base corner; without vx0/vy0 it rotates about that corner.
+struct RigidInitial {
+  double w0 = 0.0, vw0 = 0.0;
+  std::optional<double> x0, y0, vx0, vy0;
+};
+
+struct RigidRunOptions {
+  double t_start = 0.0;
+  double t_end = 10.0;
+  IntegratorOptions integrator;
+  bool record_events = true;  // keep the event list (counts are always kept)
+  bool track_energy = true;
+};
+void validate(const RigidRunOptions& o);
+
+struct RigidEventRecord {
+  double t = 0;
+  RigidEventKind kind = RigidEventKind::Mode;
+  Mechanism from = Mechanism::Rest, to = Mechanism::Rest;
+  int corner = 0;                      // impact: +1 A (left), -1 B (right)
+  double vw_before = 0, vw_after = 0;  // impact: theta' before and after
+  std::array<double, 6> state{};       // x, y, w, vx, vy, vw after the event
+};
+
+inline constexpr int kNumRigidEventKinds = int(RigidEventKind::WZero) + 1;
+
+struct RigidResult {
+  std::string model;  // housner | rigid
+  SimStatus status = SimStatus::TEnd;
+  RunStatus run_status = RunStatus::ReachedEnd;
+  double t_start = 0, t_final = 0;
+  Mechanism initial_mode = Mechanism::Rest, final_mode = Mechanism::Rest;
+  std::array<double, 6> initial_state{}, final_state{};
+  double max_abs_rotation = 0, t_max_abs_rotation = 0;
+  std::optional<double> overturn_time, first_motion_time, first_uplift_time, first_beyond_alpha_time;
+  long impacts = 0, mode_changes = 0;
+  std::array<long, kNumRigidEventKinds> event_counts{};
+  std::vector<RigidEventRecord> events;
+  double energy_initial = 0, kinetic_final = 0, potential_final = 0;
+  double work_friction = 0, work_ground = 0, work_impact = 0;
+  double max_abs_energy_error = 0, max_abs_energy_change = 0;
+  StepperStats stats;
+  std::string note;  // why the run stopped early (Painleve, outside the model)
+};
+
+// Throws std::invalid_argument for invalid parameters, options or initial states.
+RigidResult simulate_housner(const BlockShape& shape, std::optional<double> restitution, const GroundMotion& g,
+                             const RigidInitial& init, const RigidRunOptions& opt,
+                             Observer<HousnerBlock>* extra = nullptr);
+RigidResult simulate_rigid(const RigidBlockParams& p, const GroundMotion& g, const RigidInitial& init,
+                           const RigidRunOptions& opt, Observer<RigidBlock>* extra = nullptr);
+
+// The initial state vectors (validated against the model; throw std::invalid_argument).
+HousnerBlock::State housner_initial_state(const HousnerBlock& m, const RigidInitial& init);
+RigidBlock::State rigid_initial_state(const RigidBlock& m, const RigidInitial& init);
+
+}  // namespace blockdyn
