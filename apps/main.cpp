@@ -10,7 +10,7 @@
 #include "cli_registry.hpp"
 
 int main(int argc, char** argv) {
-  CLI::App app{"blockdyn: nonsmooth dynamics of rigid blocks on a Winkler foundation"};
+  CLI::App app{"blockdyn: nonsmooth dynamics of rigid blocks (Winkler foundation, rigid ground)"};
   app.set_version_flag("--version", std::string(blockdyn::kVersion) + " (" + blockdyn::kGitDescribe + ")");
   app.require_subcommand(1);
   auto& reg = blockdyn::cli::command_registry();
@@ -21,9 +21,10 @@ int main(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     // --help / --version are "errors" with exit code 0: let CLI11 print them.
     if (e.get_exit_code() == 0) return app.exit(e);
-    // Usage errors: one line, same form as the other input errors (exit code from CLI11).
+    // Usage errors: one line, same form as the other input errors, exit status 2 like every
+    // usage error (CLI11's own codes are not part of the contract).
     std::cerr << "error: " << e.what() << "\n";
-    return e.get_exit_code();
+    return 2;
   } catch (const std::invalid_argument& e) {
     std::cerr << "error: " << e.what() << "\n";
     return 2;

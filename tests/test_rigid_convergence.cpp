@@ -12,6 +12,7 @@
 
 #include "blockdyn/model/winkler/initial_conditions.hpp"
 #include "blockdyn/model/winkler/rigid_limit.hpp"
+#include "blockdyn/simulation/rigid_simulation.hpp"
 #include "blockdyn/simulation/simulate.hpp"
 
 #include "test_support.hpp"
@@ -35,13 +36,13 @@ RigidTimes rigid_reference() {
   const BlockParams p{kR, kMu, 1.0};  // k plays no role in the rigid model
   const RigidGroundBlock model(p);
   RigidGroundBlock::State z{corner_arms(kR, kW0, 1).A, kW0, 0.0, 0.0};  // pivot at x = 0, at rest
-  RigidMode mode = model.initial_mode(z);
+  RigidLimitMode mode = model.initial_mode(z);
   RigidTimes out;
   out.started_in_contact = mode.contact;
   struct Obs {
     RigidTimes* out;
-    bool on_step(const DenseSegment<4>&, double, double, const RigidMode&) { return true; }
-    bool on_event(const EventInfo<RigidMode, 4>& e) {
+    bool on_step(const DenseSegment<4>&, double, double, const RigidLimitMode&) { return true; }
+    bool on_event(const EventInfo<RigidLimitMode, 4>& e) {
       if (e.kind == RigidGroundBlock::kContactToSlide && std::isnan(out->contact_to_slide)) {
         out->contact_to_slide = e.t;
         out->slide_sign = e.to.friction_sign;
@@ -138,4 +139,72 @@ TEST(RigidConvergence, SlideReversalTimeConvergesMonotonically) {
   }
   EXPECT_LT(d_rev.back(), 2e-6 * rr.reversal);  // k = 1e10
   EXPECT_LT(d_slide.back(), 1e-5 * rr.contact_to_slide);
+}
+
+// The 3-DOF rigid block (model/rigid) and the thesis's R-R check model (model/winkler/rigid_limit,
+// a separate formulation) give the same contact -> slide and slide-reversal times.
+TEST(RigidConvergence, ThreeDofRigidBlockAgreesWithTheCheckModel) {
+  const RigidTimes rr = rigid_reference();
+  RigidBlockParams p;
+  p.shape.height = 1.0;
+  p.shape.width = kR;
+  p.shape.g = 1.0;  // non-dimensional time sqrt(a / g) with a = g = 1
+  p.interface = {kMu, kMu};
+  RigidInitial in;
+  in.w0 = kW0;
+  RigidRunOptions o;
+  o.t_end = rr.reversal + 0.1;
+  o.integrator.rtol = 1e-12;
+  o.integrator.atol = 1e-14;
+  const RigidResult r = simulate_rigid(p, {}, in, o);
+  EXPECT_EQ(r.initial_mode, Mechanism::Rock);
+  std::vector<RigidEventRecord> modes;
+  for (const auto& e : r.events)
+    if (e.kind == RigidEventKind::Mode) modes.push_back(e);
+  ASSERT_GE(modes.size(), 2u);
+  EXPECT_EQ(modes[0].to, Mechanism::SlideRock);
+  EXPECT_NEAR(modes[0].t, rr.contact_to_slide, 1e-10);
+  EXPECT_EQ(modes[1].to, Mechanism::SlideRock);
+  EXPECT_EQ(modes[1].slip, -modes[0].slip);  // the corner's slip reverses
+  EXPECT_NEAR(modes[1].t, rr.reversal, 1e-10);
+}
+
+// The Winkler block tends to the rigid block on rigid ground as k grows: the first return to
+// upright (Winkler w_zero, rigid impact) converges monotonically.
+TEST(RigidConvergence, WinklerFirstRockingPhaseTendsToRigid) {
+  const double r = 0.25, mu = 2.0;
+  RigidBlockParams p;
+  p.shape.height = 1.0;
+  p.shape.width = r;
+  p.shape.g = 1.0;
+  p.interface = {mu, mu};
+  RigidInitial in;
+  in.w0 = 0.5 * std::atan(r);
+  RigidRunOptions o;
+  o.t_end = 10.0;
+  const RigidResult rg = simulate_rigid(p, {}, in, o);
+  double t_rigid = NAN;
+  for (const auto& e : rg.events)
+    if (e.kind == RigidEventKind::Impact) {
+      t_rigid = e.t;
+      break;
+    }
+  ASSERT_FALSE(std::isnan(t_rigid));
+  double prev = INFINITY;
+  for (double k : {1e4, 1e6, 1e8}) {
+    const BlockParams wp{r, mu, k};
+    SimulationOptions so;
+    so.t_end = t_rigid * 1.5;
+    so.stop_at_ihor = 1;
+    const SimulationResult w = simulate(wp, {}, ic1(wp, in.w0), so);
+    double t_w = NAN;
+    for (const auto& e : w.events)
+      if (e.kind == EventKind::WZero) t_w = e.t;
+    ASSERT_FALSE(std::isnan(t_w)) << k;
+    const double d = std::fabs(t_w - t_rigid);
+    EXPECT_LT(d, prev) << "k " << k;
+    record(("winkler_vs_rigid_first_upright_k" + std::to_string(int(std::log10(k)))).c_str(), d);
+    prev = d;
+  }
+  EXPECT_LT(prev, 1e-3 * t_rigid);
 }

@@ -99,6 +99,8 @@ json to_json(const RigidEventRecord& e) {
   if (e.kind == RigidEventKind::Impact || e.kind == RigidEventKind::Mode) {
     j["from"] = to_string(e.from);
     j["to"] = to_string(e.to);
+    j["pivot"] = e.pivot ? json(corner_name(e.pivot)) : json(nullptr);
+    j["slip"] = e.slip;
   }
   j["state"] = pose_json(e.state);
   return j;

@@ -52,7 +52,9 @@ class RigidRecorder final : public Observer<Model> {
 
   bool on_event(const Model& m, const Event& e) override {
     const RigidEventKind kind = RigidEventKind(e.kind);
-    if (kind == RigidEventKind::GroundBreak && m.mechanism(e.from) == m.mechanism(e.to)) return true;
+    if (kind == RigidEventKind::GroundBreak && m.mechanism(e.from) == m.mechanism(e.to) &&
+        m.slip(e.from) == m.slip(e.to))
+      return true;
     track(e.t, e.z[kTh]);
     const Mechanism from = m.mechanism(e.from), to = m.mechanism(e.to);
     if (kind == RigidEventKind::Impact) {
@@ -67,7 +69,8 @@ class RigidRecorder final : public Observer<Model> {
       if (kind == RigidEventKind::Overturn) res_.overturn_time = e.t;
       if (kind == RigidEventKind::BeyondAlpha && !res_.first_beyond_alpha_time) res_.first_beyond_alpha_time = e.t;
     }
-    if (from != to && !e.stop) {
+    const bool changed = from != to || m.pivot(e.from) != m.pivot(e.to) || m.slip(e.from) != m.slip(e.to);
+    if (changed && !e.stop) {
       ++res_.mode_changes;
       add(record(m, e, RigidEventKind::Mode, from, to));
       moved(e.t, from, to);
@@ -83,6 +86,8 @@ class RigidRecorder final : public Observer<Model> {
     r.from = from;
     r.to = to;
     r.state = m.pose(e.to, e.z);
+    r.pivot = m.pivot(e.to);
+    r.slip = m.slip(e.to);
     return r;
   }
   void add(const RigidEventRecord& r) {

@@ -36,6 +36,7 @@ struct RigidEventRecord {
   RigidEventKind kind = RigidEventKind::Mode;
   Mechanism from = Mechanism::Rest, to = Mechanism::Rest;
   int corner = 0;                      // impact: +1 A (left), -1 B (right)
+  int pivot = 0, slip = 0;             // the new mode's corner in contact (rock, slide-rock) and slip sign
   double vw_before = 0, vw_after = 0;  // impact: theta' before and after
   std::array<double, 6> state{};       // x, y, w, vx, vy, vw after the event
 };

@@ -67,6 +67,8 @@ class HousnerBlock {
   // What the rigid-family recorders and outputs read (shared with RigidBlock).
   static constexpr std::size_t kThetaIndex = kTheta, kOmegaIndex = kOmega;
   Mechanism mechanism(const Mode& m) const { return m.mech; }
+  int pivot(const Mode& m) const { return m.mech == Mechanism::Rock ? m.side : 0; }
+  int slip(const Mode&) const { return 0; }
   // The corner that hits the ground at an impact event (the one opposite the pivot).
   int impact_corner(const Mode& from, int) const { return -from.side; }
   // Centre (x, y), theta and their rates (the base centre stands at x = 0).

@@ -74,6 +74,8 @@ class RigidBlock {
   // What the rigid-family recorders and outputs read (shared with HousnerBlock).
   static constexpr std::size_t kThetaIndex = kTheta, kOmegaIndex = kOmega;
   Mechanism mechanism(const Mode& m) const { return m.mech; }
+  int pivot(const Mode& m) const { return m.side; }
+  int slip(const Mode& m) const { return m.slip; }
   // The corner that hits the ground at an impact event.
   int impact_corner(const Mode& from, int event) const {
     if (from.mech == Mechanism::Flight) return event == kEvContact0 ? 1 : -1;

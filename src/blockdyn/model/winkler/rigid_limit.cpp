@@ -6,10 +6,10 @@
 
 namespace blockdyn {
 
-RigidReactions RigidGroundBlock::reactions(const Mode& m, const State& z) const {
+RigidLimitReactions RigidGroundBlock::reactions(const Mode& m, const State& z) const {
   const CornerArms arm = corner_arms(p_.r, z[kRW], 1);
   const double I = p_.inertia(), A = arm.A, B = arm.B, vw = z[kRVW];
-  RigidReactions out{};
+  RigidLimitReactions out{};
   if (m.contact) {
     out.aw = -A / (I + A * A + B * B);
     out.Rx = -B * out.aw - A * vw * vw;
@@ -24,7 +24,7 @@ RigidReactions RigidGroundBlock::reactions(const Mode& m, const State& z) const 
 }
 
 void RigidGroundBlock::rhs(double, const Mode& m, const State& z, State& dz) const {
-  const RigidReactions a = reactions(m, z);
+  const RigidLimitReactions a = reactions(m, z);
   dz[kRX] = m.contact ? 0.0 : z[kRVX];
   dz[kRW] = z[kRVW];
   dz[kRVX] = m.contact ? 0.0 : a.ax;
@@ -40,7 +40,7 @@ void RigidGroundBlock::complete(const Mode& m, State& z) const {
 
 void RigidGroundBlock::events(double, const Mode& m, const State& z,
                               std::array<double, kNumEvents>& g) const {
-  const RigidReactions a = reactions(m, z);
+  const RigidLimitReactions a = reactions(m, z);
   g[0] = z[kRW];
   g[1] = p_.alpha() - z[kRW];
   if (m.contact)
@@ -52,7 +52,7 @@ void RigidGroundBlock::events(double, const Mode& m, const State& z,
 
 RigidGroundBlock::Mode RigidGroundBlock::stick_or_slip(const State& z, int slip_sign) const {
   Mode c{true, 0, z[kRX] - corner_arms(p_.r, z[kRW], 1).A};
-  const RigidReactions a = reactions(c, z);
+  const RigidLimitReactions a = reactions(c, z);
   if (p_.mu > 0.0 && friction_margin(p_.mu, a.Ry, a.Rx) >= 0.0) return c;
   return Mode{false, slip_sign != 0 ? slip_sign : sign_of(a.Rx), 0.0};
 }

@@ -12,13 +12,13 @@
 
 namespace blockdyn {
 
-struct RigidMode {
+struct RigidLimitMode {
   bool contact = true;
   int friction_sign = 0;  // slide: Rx = friction_sign * mu * Ry
   double anchor = 0.0;    // contact: abscissa of the pivot corner
 };
 
-struct RigidReactions {
+struct RigidLimitReactions {
   double Rx, Ry, aw, ax;
 };
 
@@ -29,12 +29,12 @@ class RigidGroundBlock {
   static constexpr std::size_t kDim = kRDim;
   static constexpr std::size_t kNumEvents = 4;  // w = 0, overturn, friction, lift-off (Ry = 0)
   enum Kind : int { kWZero, kOverturn, kContactToSlide, kSlideToContact, kSlideReversal, kLiftOff };
-  using Mode = RigidMode;
+  using Mode = RigidLimitMode;
   using State = std::array<double, kDim>;
 
   explicit RigidGroundBlock(const BlockParams& p) : p_(p) {}
 
-  RigidReactions reactions(const Mode& m, const State& z) const;
+  RigidLimitReactions reactions(const Mode& m, const State& z) const;
   void rhs(double t, const Mode& m, const State& z, State& dz) const;
   void events(double t, const Mode& m, const State& z, std::array<double, kNumEvents>& g) const;
   void complete(const Mode& m, State& z) const;

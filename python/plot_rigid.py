@@ -1,0 +1,95 @@
+#!/usr/bin/env python3
+"""Time histories of a rigid-ground run (`blockdyn simulate --model housner|rigid`).
+
+usage: plot_rigid.py TRAJECTORY.csv OUT.png [--alpha A] [--model M] [--status S] [--title T]
+
+Panels: rotation with +-alpha and the mechanism as coloured bands, impacts marked; rotation rate
+with the jumps at impacts; the ground acceleration; contact forces; the energy terms and the closed
+balance. An SVG is written beside the PNG.
+"""
+import argparse
+
+from plotkit import np, plt, read_rows, save
+
+MECH_COLOURS = {"rest": "0.92", "slide": "#cfe8ff", "rock": "#fff2c2", "slide_rock": "#ffd8b0",
+                "flight": "#e4d4ff"}
+
+
+def bands(ax, t, mech):
+    """Shade the time axis by mechanism (one span per run of equal mechanism)."""
+    start = 0
+    for i in range(1, len(t) + 1):
+        if i == len(t) or mech[i] != mech[start]:
+            ax.axvspan(t[start], t[min(i, len(t) - 1)], color=MECH_COLOURS.get(mech[start], "white"), lw=0,
+                       zorder=0)
+            start = i
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("csv")
+    ap.add_argument("out")
+    ap.add_argument("--alpha", type=float)
+    ap.add_argument("--model", default="")
+    ap.add_argument("--status", default="")
+    ap.add_argument("--title", default="")
+    a = ap.parse_args()
+    rows = read_rows(a.csv)
+    if not rows:
+        raise SystemExit(f"{a.csv}: no rows")
+    num = lambda k: np.array([float(r[k]) for r in rows])  # noqa: E731
+    t, w, vw = num("t"), num("w"), num("vw")
+    mech = [r["mode"] for r in rows]
+    event = [r["event"] for r in rows]
+    imp = [i for i, e in enumerate(event) if e == "impact"]
+
+    fig, ax = plt.subplots(5, 1, figsize=(10, 12), sharex=True, constrained_layout=True)
+    bands(ax[0], t, mech)
+    ax[0].plot(t, w, lw=0.8, color="C0")
+    if a.alpha:
+        for s in (1, -1):
+            ax[0].axhline(s * a.alpha, color="C3", lw=0.7, ls="--")
+        ax[0].text(t[0], a.alpha, "  +alpha", color="C3", va="bottom", fontsize=8)
+        ax[0].text(t[0], -a.alpha, "  -alpha", color="C3", va="top", fontsize=8)
+    ax[0].plot(t[imp], w[imp], "k|", ms=6, label="impacts")
+    ax[0].set_ylabel("rotation w [rad]")
+    handles = [plt.Rectangle((0, 0), 1, 1, color=c) for c in MECH_COLOURS.values()]
+    ax[0].legend(handles + [ax[0].lines[-1]], list(MECH_COLOURS) + ["impact"], fontsize=7, ncol=6,
+                 loc="upper center", bbox_to_anchor=(0.5, 1.25), frameon=False)
+
+    ax[1].plot(t, vw, lw=0.8, color="C1")
+    ax[1].plot(t[imp], vw[imp], "k.", ms=3)
+    ax[1].set_ylabel("w' [rad/s]")
+
+    ax[2].plot(t, num("a_h"), lw=0.8, label="horizontal a_H")
+    ax[2].plot(t, num("a_v"), lw=0.8, label="vertical a_V")
+    ax[2].set_ylabel("ground [g]")
+    ax[2].legend(fontsize=7, loc="upper right")
+
+    for k, c in (("N_A", "C0"), ("N_B", "C1")):
+        ax[3].plot(t, num(k), lw=0.8, color=c, label=k)
+    for k, c in (("T_A", "C0"), ("T_B", "C1")):
+        ax[3].plot(t, num(k), lw=0.8, color=c, ls=":", label=k)
+    ax[3].set_ylabel("contact forces [N]")
+    ax[3].legend(fontsize=7, ncol=4, loc="upper right")
+
+    for k, c in (("E_kin", "C0"), ("E_pot", "C1"), ("W_friction", "C2"), ("W_ground", "C4"),
+                 ("W_impact", "C3")):
+        ax[4].plot(t, num(k), lw=0.8, color=c, label=k)
+    ax[4].set_ylabel("energy [J]")
+    ax[4].set_xlabel("t [s]")
+    bal = num("energy_balance")
+    ax4b = ax[4].twinx()
+    ax4b.plot(t, bal, lw=0.6, color="k", alpha=0.6)
+    ax4b.set_ylabel("balance error [J]", fontsize=8)
+    ax[4].legend(fontsize=7, ncol=5, loc="upper left")
+
+    status = f"status {a.status}" if a.status else ""
+    maxw = np.max(np.abs(w))
+    rel = f" = {maxw / a.alpha:.3g} alpha" if a.alpha else ""
+    fig.suptitle(f"{a.title}: {status}, max |w| {maxw:.4g} rad{rel}, {len(imp)} impacts")
+    save(fig, a.out)
+
+
+if __name__ == "__main__":
+    main()
