@@ -12,9 +12,11 @@
 // and Hz for physical models); records are sampled in seconds and converted with
 // record_time_unit. The kinks and jumps of the input (window ends, pulse ends, record samples)
 // are breakpoints: next_break() lets the integrator stop there instead of stepping across.
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <vector>
 
 #include "blockdyn/excitation/accelerogram.hpp"
 #include "blockdyn/excitation/pulses.hpp"
@@ -57,6 +59,10 @@ struct GroundComponent {
 
   // The first breakpoint strictly after t (infinity if none).
   double next_break(double t) const;
+  // Linear between consecutive breakpoints (constant and record terms only): then any function
+  // a - |b| of the input with a, b linear in it is concave between breakpoints, and its minimum
+  // over such an interval lies at an end.
+  bool piecewise_linear() const { return amplitude == 0.0; }
 };
 
 struct GroundMotion {
@@ -65,8 +71,40 @@ struct GroundMotion {
   double next_break(double t) const {
     return std::fmin(horizontal.next_break(t), vertical.next_break(t));
   }
+  bool piecewise_linear() const { return horizontal.piecewise_linear() && vertical.piecewise_linear(); }
   double ah(double t) const { return horizontal.at(t); }
   double av(double t) const { return vertical.at(t); }
+};
+
+// The breakpoints (from t = 0 on) at which keep(tb) fails, each with the breakpoint before it.
+// For a piecewise-linear input and a keep() that tests concave functions of the input (the rest
+// conditions of a block), a failure can only start in an interval ending at such a breakpoint,
+// so a mode with a constant state need not stop at the others: next(t) is the breakpoint before
+// the first failure after t (or that failure itself when no breakpoint lies between). Built once
+// per model, O(breakpoints).
+class FailingBreaks {
+ public:
+  FailingBreaks() = default;
+  template <class Keep>
+  FailingBreaks(const GroundMotion& g, Keep&& keep) {
+    double prev = 0.0;
+    for (double tb = g.next_break(0.0); std::isfinite(tb); tb = g.next_break(tb)) {
+      if (!keep(tb)) {
+        fail_.push_back(tb);
+        prev_.push_back(prev);
+      }
+      prev = tb;
+    }
+  }
+  double next(double t) const {
+    const auto it = std::upper_bound(fail_.begin(), fail_.end(), t);
+    if (it == fail_.end()) return std::numeric_limits<double>::infinity();
+    const double p = prev_[std::size_t(it - fail_.begin())];
+    return p > t ? p : *it;
+  }
+
+ private:
+  std::vector<double> fail_, prev_;
 };
 
 // Checks every field (names them as ground.horizontal.<field> or ground.vertical.<field>).

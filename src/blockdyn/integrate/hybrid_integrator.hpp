@@ -73,11 +73,14 @@ struct IntegratorOptions {
   int chatter_limit = 16;  // consecutive zero-duration events before resolve_chatter()
 };
 
-// The model's first input breakpoint after t: `double next_breakpoint(double t) const` (optional;
-// without it the input is smooth and there is none).
+// The model's first input breakpoint after t that matters in mode `mode`:
+// `double next_breakpoint(double t, const Mode&) const` or `double next_breakpoint(double t) const`
+// (optional; without either the input is smooth and there is none).
 template <class M>
-double next_breakpoint_of(const M& m, double t) {
-  if constexpr (requires { { m.next_breakpoint(t) } -> std::convertible_to<double>; })
+double next_breakpoint_of(const M& m, double t, const typename M::Mode& mode) {
+  if constexpr (requires { { m.next_breakpoint(t, mode) } -> std::convertible_to<double>; })
+    return m.next_breakpoint(t, mode);
+  else if constexpr (requires { { m.next_breakpoint(t) } -> std::convertible_to<double>; })
     return m.next_breakpoint(t);
   return std::numeric_limits<double>::infinity();
 }
@@ -140,7 +143,7 @@ class HybridIntegrator {
     double err_old = 1e-4;
     int zero_time_events = 0;
     DenseSegment<N> seg;
-    double t_break = next_breakpoint_of(model_, t);
+    double t_break = next_breakpoint_of(model_, t, mode);
     while (t < t_end) {
       if (stats_.accepted + stats_.rejected >= opt_.max_steps) return RunStatus::MaxSteps;
       const bool last = h >= t_end - t && t_end <= t_break;
@@ -192,7 +195,7 @@ class HybridIntegrator {
           reset_falling(g_start, -1);
           f(t, z, k1);
           ++stats_.rhs_evals;
-          t_break = next_breakpoint_of(model_, t);
+          t_break = next_breakpoint_of(model_, t, mode);
           h = std::fmin(h, model_.step_hint(mode));
         }
         continue;
@@ -248,7 +251,7 @@ class HybridIntegrator {
       }
       f(t, z, k1);
       ++stats_.rhs_evals;
-      t_break = next_breakpoint_of(model_, t);
+      t_break = next_breakpoint_of(model_, t, mode);
       h = std::fmin(h_new, model_.step_hint(mode));
     }
     return RunStatus::ReachedEnd;
@@ -310,6 +313,16 @@ class HybridIntegrator {
       model_.complete(mode, yy);
       model_.events(std::fmin(tt, *t_clamp_), mode, yy, ge);
     };
+    // After a restart the slope of each event function is unknown: one value just after t0
+    // tells which ones start by falling (only those can dip below zero and come back inside the
+    // first interval).
+    if (slope_unknown_) {
+      Events g_after_start;
+      g_all(t0 + 1e-3 * (ts[1] - t0), g_after_start);
+      for (std::size_t i = 0; i < NE; ++i)
+        falling_[i] = falling_[i] && g_after_start[i] < g0[i];
+      slope_unknown_ = false;
+    }
     // Falling into the step end: one more value just before t1 tells whether a minimum lies
     // inside the last interval (the next step could not see it).
     bool any_falling_end = false;
@@ -392,10 +405,12 @@ class HybridIntegrator {
     return locate_root(g, a, mn.first, ga, mn.second);
   }
 
-  // After a restart the slope of each event function is unknown: treat every one that is
-  // clearly positive as possibly falling, except the one that just fired (it starts at zero).
+  // After a restart the slope of each event function is unknown: every one that is clearly
+  // positive may be falling, except the one that just fired (it starts at zero); the first scan
+  // probes them (slope_unknown_).
   void reset_falling(const Events& g_start, int fired) {
     for (std::size_t i = 0; i < NE; ++i) falling_[i] = int(i) != fired && g_start[i] > 0.0;
+    slope_unknown_ = true;
   }
 
   static constexpr int kMaxSamples = 64;
@@ -405,6 +420,7 @@ class HybridIntegrator {
   StepperStats stats_;
   std::array<bool, NE> armed_{};
   std::array<bool, NE> falling_{};  // event function still decreasing at the last step end
+  bool slope_unknown_ = false;      // first step after a restart: probe the slopes
   Events g_last_{};
   const double* t_clamp_ = nullptr;  // the run's input-side clamp (see run())
 };

@@ -69,7 +69,10 @@ class RigidRecorder final : public Observer<Model> {
       if (kind == RigidEventKind::Overturn) res_.overturn_time = e.t;
       if (kind == RigidEventKind::BeyondAlpha && !res_.first_beyond_alpha_time) res_.first_beyond_alpha_time = e.t;
     }
-    const bool changed = from != to || m.pivot(e.from) != m.pivot(e.to) || m.slip(e.from) != m.slip(e.to);
+    // A change of mechanism, or of pivot or slip direction within one (an impact moves the pivot
+    // by definition: there only the mechanism counts).
+    const bool changed = from != to || (kind != RigidEventKind::Impact && (m.pivot(e.from) != m.pivot(e.to) ||
+                                                                          m.slip(e.from) != m.slip(e.to)));
     if (changed && !e.stop) {
       ++res_.mode_changes;
       add(record(m, e, RigidEventKind::Mode, from, to));

@@ -185,7 +185,9 @@ class PairModel {
     return out;
   }
   double step_hint(const Mode& md) const { return std::fmin(m_.step_hint(md.a), m_.step_hint(md.b)); }
-  double next_breakpoint(double t) const { return next_breakpoint_of(m_, t); }
+  double next_breakpoint(double t, const Mode& md) const {
+    return std::fmin(next_breakpoint_of(m_, t, md.a), next_breakpoint_of(m_, t, md.b));
+  }
   State abs_tol_scale() const {
     const Half s = m_.abs_tol_scale();
     return join(s, s);

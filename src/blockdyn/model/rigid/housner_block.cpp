@@ -15,7 +15,10 @@ HousnerBlock::HousnerBlock(const BlockShape& shape, double restitution, const Gr
       p_(shape.p()),
       io_(shape.inertia_corner()),
       ta_(std::tan(shape.alpha())),
-      wscale_(shape.mass * shape.g * shape.half_diagonal()) {}
+      wscale_(shape.mass * shape.g * shape.half_diagonal()) {
+  if (forced_ && ground_.piecewise_linear())
+    rest_breaks_ = FailingBreaks(ground_, [&](double tb) { return rest_holds(tb); });
+}
 
 double HousnerBlock::angular_acceleration(double t, const Mode& m, const State& z) const {
   if (m.mech == Mechanism::Rest) return 0.0;
@@ -36,6 +39,12 @@ void HousnerBlock::rhs(double t, const Mode& m, const State& z, State& dz) const
   // Power of the inertial forces -m a_H, -m a_V on the centre's velocity omega x (G - pivot).
   dz[kWorkGround] = wscale_ * z[kOmega] * (a_h * cp - a_v * sp);
   dz[kWorkImpact] = 0.0;
+}
+
+double HousnerBlock::next_breakpoint(double t, const Mode& m) const {
+  if (!forced_) return INFINITY;
+  if (m.mech == Mechanism::Rest && ground_.piecewise_linear()) return rest_breaks_.next(t);
+  return ground_.next_break(t);
 }
 
 bool HousnerBlock::rest_holds(double t) const {

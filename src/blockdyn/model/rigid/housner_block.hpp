@@ -50,7 +50,9 @@ class HousnerBlock {
   std::optional<Transition<Mode>> resolve_chatter(double, const Mode&, const State&) const { return std::nullopt; }
   double step_hint(const Mode&) const { return 0.1 / p_; }
   State abs_tol_scale() const { return {1.0, p_, wscale_, wscale_}; }
-  double next_breakpoint(double t) const { return forced_ ? ground_.next_break(t) : INFINITY; }
+  // At rest the state is constant: with a piecewise-linear input only the breakpoint before the
+  // first one at which rest fails matters (the rest conditions are concave in the input).
+  double next_breakpoint(double t, const Mode& m) const;
 
   Mode initial_mode(double t, const State& z) const;
   std::optional<std::string> validity_problem(const State& z) const;
@@ -94,6 +96,7 @@ class HousnerBlock {
   GroundMotion ground_;
   bool forced_;
   double alpha_, R_, p_, io_, ta_, wscale_;
+  FailingBreaks rest_breaks_;
 };
 
 }  // namespace blockdyn

@@ -29,6 +29,14 @@ RigidBlock::RigidBlock(const RigidBlockParams& p, const GroundMotion& g)
   // A corner on the ground whose normal velocity would lift it by less than 1e-12 h (below the
   // floating-point resolution of the gap next to the centre height) is in contact.
   v_close_ = std::sqrt(2.0 * g_ * 1e-12 * h);
+  if (forced_ && ground_.piecewise_linear()) {
+    const double mu_s = par_.interface.mu_s;
+    rest_breaks_ = FailingBreaks(ground_, [&](double tb) {
+      const double N = gv(tb), T = gh(tb);  // rest reactions per unit mass
+      const double NA = 0.5 * (N + hh_ / bh_ * T), NB = 0.5 * (N - hh_ / bh_ * T);
+      return NA >= 0.0 && NB >= 0.0 && mu_s * N - std::fabs(T) >= 0.0;
+    });
+  }
 }
 
 RigidBlock::State RigidBlock::abs_tol_scale() const {
@@ -96,6 +104,12 @@ RigidReactions RigidBlock::reactions(double t, const Mode& md, const State& z) c
     }
   }
   return f;
+}
+
+double RigidBlock::next_breakpoint(double t, const Mode& md) const {
+  if (!forced_) return INFINITY;
+  if (md.mech == Mechanism::Rest && ground_.piecewise_linear()) return rest_breaks_.next(t);
+  return ground_.next_break(t);
 }
 
 void RigidBlock::rhs(double t, const Mode& md, const State& z, State& dz) const {
@@ -306,11 +320,20 @@ Transition<RigidMode> RigidBlock::transition(double t, const Mode& md, State& z,
   const int kind = int(RigidEventKind::Mode);
   switch (event) {
     case kBreakpoint: {
-      if (md.mech == Mechanism::Flight) return Transition<Mode>{md, false, int(RigidEventKind::GroundBreak)};
-      Transition<Mode> tr = reselect(t, md, z, h, kind);
-      if (!tr.stop && tr.next.mech == md.mech && tr.next.side == md.side && tr.next.slip == md.slip)
-        tr = Transition<Mode>{md, false, int(RigidEventKind::GroundBreak)};
-      return tr;
+      // The mode stays unless the input's jump here violates one of its conditions; then it is
+      // re-selected as at the event that condition would have fired.
+      std::array<double, kNumEvents> g;
+      events(t, md, z, g);
+      if (md.mech == Mechanism::Flight || (g[kEvContact0] >= 0.0 && g[kEvContact1] >= 0.0 && g[kEvFriction] >= 0.0))
+        return Transition<Mode>{md, false, int(RigidEventKind::GroundBreak)};
+      if (md.mech == Mechanism::Rest || md.mech == Mechanism::Slide) {
+        h.must_open[0] = g[kEvContact0] < 0.0;
+        h.must_open[1] = g[kEvContact1] < 0.0;
+      } else if (g[kEvContact0] < 0.0) {
+        h.must_open[md.side > 0 ? 0 : 1] = true;
+      }
+      h.no_stick = (md.mech == Mechanism::Rest || md.mech == Mechanism::Rock) && g[kEvFriction] < 0.0;
+      return reselect(t, md, z, h, kind);
     }
     case kEvContact0:
     case kEvContact1: {

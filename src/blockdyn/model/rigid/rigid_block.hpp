@@ -57,7 +57,9 @@ class RigidBlock {
   std::optional<Transition<Mode>> resolve_chatter(double, const Mode&, const State&) const { return std::nullopt; }
   double step_hint(const Mode&) const { return 0.1 / p_; }
   State abs_tol_scale() const;
-  double next_breakpoint(double t) const { return forced_ ? ground_.next_break(t) : INFINITY; }
+  // At rest the state is constant: with a piecewise-linear input only the breakpoint before the
+  // first one at which rest fails matters (its conditions are concave in the input).
+  double next_breakpoint(double t, const Mode& m) const;
 
   RigidReactions reactions(double t, const Mode& m, const State& z) const;
   // The mechanism a state starts in (nullopt: Painleve) and why a state is outside the model.
@@ -114,6 +116,7 @@ class RigidBlock {
   bool forced_;
   double m_, I_, g_, bh_, hh_, alpha_, p_, R_;
   double tol_gap_, tol_v_, tol_f_, tol_a_, v_close_;
+  FailingBreaks rest_breaks_;
 };
 
 }  // namespace blockdyn
