@@ -2,6 +2,7 @@
 #include "cli_registry.hpp"
 
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <cmath>
 #include <cstdlib>
@@ -40,7 +41,9 @@ void emit_json(const nlohmann::ordered_json& j, const std::string& path) {
 
 std::string python_dir() {
   if (const char* e = std::getenv("BLOCKDYN_PYTHON_DIR")) return e;
-  return BLOCKDYN_PYTHON_DIR;
+  // The source tree when run from the build, the installed copy otherwise.
+  if (::access((std::string(BLOCKDYN_PYTHON_DIR) + "/plotkit.py").c_str(), R_OK) == 0) return BLOCKDYN_PYTHON_DIR;
+  return BLOCKDYN_INSTALLED_PYTHON_DIR;
 }
 
 static std::string shell_quote(const std::string& s) {

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# Configures and builds blockdyn into ./build (Release).
+# Configures and builds blockdyn into ./build (Release). BLOCKDYN_WERROR=ON (set by test.sh, as in
+# CI) turns compiler warnings into errors.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null
+cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release -DBLOCKDYN_WERROR="${BLOCKDYN_WERROR:-OFF}" >/dev/null
 cmake --build build -j"$(nproc)"

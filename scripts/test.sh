@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
-# From a fresh Debian 12 machine: install dependencies, build, and run the whole test suite.
+# From a fresh Debian 12 machine: install dependencies, build (warnings as errors), and run the
+# whole test suite (ctest labels: unit, cli, validation, install).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/install-deps.sh
-bash scripts/build.sh
+BLOCKDYN_WERROR=ON bash scripts/build.sh
 cd build
 ctest --output-on-failure -j"$(nproc)" --timeout 900

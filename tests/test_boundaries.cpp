@@ -67,7 +67,9 @@ TEST(BoundarySearch, SupremumOfAllBelowSkipsLaterRecovery) {
   EXPECT_LT(rel(res.value, 5.0), 1e-8);
   // Every sample below the result holds (the "for all k < K" part on what was evaluated).
   for (const auto& s : res.samples)
-    if (s.x < res.lo) EXPECT_TRUE(s.value) << s.x;
+    if (s.x < res.lo) {
+      EXPECT_TRUE(s.value) << s.x;
+    }
   EXPECT_EQ(sup_all_below([](double) { return true; }, log_grid(1, 10, 3)).status, BoundaryStatus::AboveRange);
   EXPECT_EQ(sup_all_below([](double x) { return x < 0.5; }, log_grid(1, 10, 3)).status,
             BoundaryStatus::BelowRange);

@@ -237,7 +237,9 @@ TEST(EquilSearch, CountsInTheThreeStiffnessRanges) {
         EXPECT_EQ(e[1].stability, Stability::Stable);
         EXPECT_EQ(e[2].stability, Stability::Unstable);
       }
-      if (cs.n == 2) EXPECT_EQ(e[1].stability, Stability::Unstable);
+      if (cs.n == 2) {
+        EXPECT_EQ(e[1].stability, Stability::Unstable);
+      }
     }
   }
 }

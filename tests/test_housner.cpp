@@ -86,7 +86,9 @@ TEST(Housner, FirstImpactTendsToLinearisedClosedForm) {
     const double t1 = impacts(r).at(0).t;
     const double lin = std::acosh(1.0 / (1.0 - 0.5)) / p;
     const double rel = std::fabs(t1 - lin) / lin;
-    if (prev > 0) EXPECT_NEAR(prev / rel, 4.0, 0.4) << "alpha^2 convergence at b/h " << bh;
+    if (prev > 0) {
+      EXPECT_NEAR(prev / rel, 4.0, 0.4) << "alpha^2 convergence at b/h " << bh;
+    }
     EXPECT_LT(rel, 0.2 * alpha * alpha);
     prev = rel;
   }
@@ -178,7 +180,9 @@ TEST(Housner, MirroredGroundMotionMirrorsTheMotion) {
     EXPECT_EQ(a.events[k].kind, b.events[k].kind);
     EXPECT_NEAR(a.events[k].t, b.events[k].t, 1e-12);
     EXPECT_NEAR(a.events[k].state[2], -b.events[k].state[2], 1e-12);
-    if (a.events[k].kind == RigidEventKind::Impact) EXPECT_EQ(a.events[k].corner, -b.events[k].corner);
+    if (a.events[k].kind == RigidEventKind::Impact) {
+      EXPECT_EQ(a.events[k].corner, -b.events[k].corner);
+    }
   }
 }
 

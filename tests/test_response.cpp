@@ -147,9 +147,9 @@ INSTANTIATE_TEST_SUITE_P(
                       TablePoint{"4.55", 0.2, 0.15, 1e6, true, 100, ResponseType::RockToVertical},
                       // Below k_uns(0.2) no stable equilibrium exists: the block falls over.
                       TablePoint{"(k<k_uns)", 0.2, 0.2, 1e2, false, 20, ResponseType::Overturned}),
-    [](const ::testing::TestParamInfo<TablePoint>& info) {
+    [](const ::testing::TestParamInfo<TablePoint>& point) {
       // "Fig4_41", ..., "BelowKuns": readable names in ctest's listing.
-      std::string name = info.param.fig[0] == '(' ? "BelowKuns" : std::string("Fig") + info.param.fig;
+      std::string name = point.param.fig[0] == '(' ? "BelowKuns" : std::string("Fig") + point.param.fig;
       for (char& c : name)
         if (c == '.') c = '_';
       return name;

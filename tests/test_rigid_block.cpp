@@ -74,8 +74,9 @@ TEST(RigidBlock, OnsetMechanismTable) {
     const RigidResult r = simulate_rigid(block(0.3, 1.2, c.fs, c.fk), constant_h(c.A), {}, run_to(1e-3));
     EXPECT_EQ(to_string(r.initial_mode), std::string(to_string(c.expected)))
         << "f_s " << c.fs << " f_k " << c.fk << " A " << c.A;
-    if (c.expected == Mechanism::Rock || c.expected == Mechanism::SlideRock)
+    if (c.expected == Mechanism::Rock || c.expected == Mechanism::SlideRock) {
       EXPECT_EQ(r.final_state[2] > 0, c.A > 0) << "a_H > 0 tips the block counter-clockwise";
+    }
   }
 }
 
@@ -238,7 +239,9 @@ TEST(RigidBlock, LongRecordRunsToTheEnd) {
     for (const RigidResult* x : {&h, &r}) {
       EXPECT_NE(x->status, SimStatus::NumericalFailure) << x->model << " " << x->note;
       EXPECT_LT(x->events.size(), 100000u);
-      if (x->status == SimStatus::TEnd) EXPECT_DOUBLE_EQ(x->t_final, 60.0);
+      if (x->status == SimStatus::TEnd) {
+        EXPECT_DOUBLE_EQ(x->t_final, 60.0);
+      }
     }
   }
 }

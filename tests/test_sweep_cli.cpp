@@ -82,7 +82,9 @@ TEST(SweepCli, RowsAppearBeforeTheEnd) {
   const pid_t pid = spawn_cli(with(long_sweep("s.csv", "1"), {"--progress", "plain"}), dir);
   const Watch w = watch_journal(pid, dir + "/s.csv.journal", dir + "/s.csv", 2);
   int st = w.status;
-  if (!w.reaped) ASSERT_EQ(::waitpid(pid, &st, 0), pid);
+  if (!w.reaped) {
+    ASSERT_EQ(::waitpid(pid, &st, 0), pid);
+  }
   ASSERT_TRUE(WIFEXITED(st) && WEXITSTATUS(st) == 0) << slurp(dir + "/spawn.err");
   EXPECT_GE(w.rows_while_running, 2u);
   EXPECT_TRUE(w.csv_absent_then);

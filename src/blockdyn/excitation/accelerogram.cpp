@@ -211,7 +211,7 @@ Accelerogram parse_record_csv(const std::string& text, const std::string& source
     std::vector<std::string> tok;
     for (std::string x; in >> x;) tok.push_back(x);
     if (tok.empty()) continue;
-    double tv, av;
+    double tv = 0.0, av = 0.0;
     const bool numeric = tok.size() == 2 && to_number(tok[0], tv) && to_number(tok[1], av);
     if (!numeric) {
       if (first_data && t.empty()) {  // a header line
