@@ -10,6 +10,7 @@
 #include "blockdyn/analysis/winkler/flight.hpp"
 #include "blockdyn/analysis/sweep/parallel_map.hpp"
 #include "blockdyn/analysis/winkler/stability.hpp"
+#include "blockdyn/analysis/sweep/sweep_evaluator.hpp"
 #include "blockdyn/analysis/sweep/sweep_runner.hpp"
 #include "blockdyn/io/json_io.hpp"
 #include "blockdyn/io/progress.hpp"

@@ -1,5 +1,7 @@
-// `blockdyn sweep`: a grid of runs over k, r (or 1/r), mu and initial conditions, from a TOML
-// definition and/or flags; threads, MPI, resumable journal, progress, CSV + JSON sidecar, plot.
+// `blockdyn sweep`: a grid of runs, from a TOML definition and/or flags; threads, MPI, resumable
+// journal, progress, CSV + JSON sidecar, plot. The axes come from the model family: k, r (or 1/r),
+// mu and initial conditions for the Winkler block; the block's shape, interface, impact, initial
+// state and ground motion (--axis NAME=SPEC) for the housner and rigid models.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -7,11 +9,16 @@
 #include <memory>
 
 #include "blockdyn/analysis/sweep/parallel_map.hpp"
+#include "blockdyn/analysis/sweep/rigid_sweep.hpp"
+#include "blockdyn/analysis/sweep/sweep_evaluator.hpp"
 #include "blockdyn/analysis/sweep/sweep_runner.hpp"
 #include "blockdyn/analysis/sweep/sweep_toml.hpp"
 #include "blockdyn/io/json_io.hpp"
+#include "blockdyn/io/scenario.hpp"
+#include "blockdyn/io/toml_read.hpp"
 #include "cli_common.hpp"
 #include "cli_registry.hpp"
+#include "ground_flags.hpp"
 #include "mpi_sweep.hpp"
 
 namespace blockdyn::cli {
@@ -19,6 +26,11 @@ namespace {
 
 struct SweepFlags {
   std::string file;
+  std::string model;
+  std::vector<std::string> axes;  // housner/rigid: NAME=SPEC
+  double width = 0, height = 0, mass = 1, g = 9.81, mu_s = 0.7, mu_k = 0.7, restitution = 0;
+  std::string impact = "housner";
+  GroundFlags ground;
   std::string k, r, inv_r, mu, ic;
   double w0 = 0, w0_over_alpha = 0, x0 = 0, y0 = 0, vx0 = 0, vy0 = 0, vw0 = 0;
   double t_end = 30;
@@ -29,7 +41,7 @@ struct SweepFlags {
   std::string output, plot, plot_column, progress = "auto";
   double progress_interval = 10;
   int threads = 0;
-  bool resume = false, overwrite = false, quiet = false, list_metrics = false, dry_run = false;
+  bool resume = false, overwrite = false, quiet = false, list_metrics = false, list_axes = false, dry_run = false;
 };
 
 
@@ -86,22 +98,28 @@ SweepSpec build_spec(const CLI::App& s, const SweepFlags& f) {
   return sp;
 }
 
-// Axes with more than one value become plot axes (k first); the others are held at one value.
-void plot(const SweepSpec& sp, const SweepPaths& paths) {
-  std::vector<const SweepAxis*> numeric = {&sp.k, &sp.r, &sp.mu};
-  std::vector<std::string> args = {paths.csv, sp.plot};
-  std::vector<const SweepAxis*> varying;
-  for (const SweepAxis* a : numeric) {
-    if (a->values.size() > 1 && varying.size() < 2) {
-      varying.push_back(a);
+struct PlotAxis {
+  std::string name;
+  std::vector<double> values;
+  bool log = false;
+};
+
+// Axes with more than one value become plot axes (the first two); the others are held at one value.
+void plot_table(const std::vector<PlotAxis>& axes, const std::vector<std::string>& held, const SweepPaths& paths,
+                const std::string& out, const std::string& column, double t_end) {
+  std::vector<std::string> args = {paths.csv, out};
+  std::vector<const PlotAxis*> varying;
+  for (const PlotAxis& a : axes) {
+    if (a.values.size() > 1 && varying.size() < 2) {
+      varying.push_back(&a);
     } else {
       args.push_back("--where");
-      args.push_back(a->name + "=" + format_double(a->values.front()));
+      args.push_back(a.name + "=" + format_double(a.values.front()));
     }
   }
-  if (sp.initial.sets.size() > 1) {
+  for (const auto& h : held) {
     args.push_back("--where");
-    args.push_back("ic=" + sp.initial.sets.front());
+    args.push_back(h);
   }
   if (varying.empty()) throw UsageError("plot: the sweep has no axis with more than one value");
   const char* axis_flag[2] = {"--x", "--y"};
@@ -110,15 +128,31 @@ void plot(const SweepSpec& sp, const SweepPaths& paths) {
     args.push_back(axis_flag[i]);
     args.push_back(varying[i]->name);
     const auto& v = varying[i]->values;
-    const bool log = (varying[i]->is_range && varying[i]->spacing == AxisSpacing::Log) ||
-                     (v.front() > 0 && v.back() / v.front() >= 100.0);
-    if (log) args.push_back(log_flag[i]);
+    if (varying[i]->log || (v.front() > 0 && v.back() / v.front() >= 100.0)) args.push_back(log_flag[i]);
   }
   args.push_back("--column");
-  args.push_back(sp.plot_column.empty() ? "first_flight_time" : sp.plot_column);
+  args.push_back(column);
   args.push_back("--t-end");
-  args.push_back(format_double(sp.options.t_end));
+  args.push_back(format_double(t_end));
   run_python("plot_sweep.py", args);
+}
+
+PlotAxis plot_axis(const SweepAxis& a) {
+  return {a.name, a.values, a.is_range && a.spacing == AxisSpacing::Log};
+}
+
+void plot(const SweepSpec& sp, const SweepPaths& paths) {
+  std::vector<std::string> held;
+  if (sp.initial.sets.size() > 1) held.push_back("ic=" + sp.initial.sets.front());
+  plot_table({plot_axis(sp.k), plot_axis(sp.r), plot_axis(sp.mu)}, held, paths, sp.plot,
+             sp.plot_column.empty() ? "first_flight_time" : sp.plot_column, sp.options.t_end);
+}
+
+void plot(const RigidSweepSpec& sp, const SweepPaths& paths) {
+  std::vector<PlotAxis> axes;
+  for (const auto& a : sp.axes) axes.push_back(plot_axis(a));
+  plot_table(axes, {}, paths, sp.plot, sp.plot_column.empty() ? "max_abs_rotation_over_alpha" : sp.plot_column,
+             sp.options.t_end);
 }
 
 void list_metrics() {
@@ -130,20 +164,88 @@ void list_metrics() {
   }
 }
 
-void run(const CLI::App& s, const SweepFlags& f) {
-  if (f.list_metrics) {
-    list_metrics();
-    return;
+// The rigid-family definition: a sweep file (model = "housner" | "rigid") and/or flags.
+RigidSweepSpec build_rigid_spec(const CLI::App& s, const SweepFlags& f, const std::string& model) {
+  for (const char* n : {"--k", "--r", "--inv-r", "--mu", "--ic", "--metric", "--stop-at-first-flight", "--stop-at-ihor"})
+    if (given(s, n)) throw UsageError(std::string(n) + " belongs to the winkler sweep, not to --model " + model);
+  RigidSweepSpec sp;
+  if (f.file.empty())
+    sp.block.shape.width = sp.block.shape.height = 0.0;  // the block must be given
+  else
+    sp = load_rigid_sweep(f.file);
+  sp.model = model;
+  if (given(s, "--width")) sp.block.shape.width = f.width;
+  if (given(s, "--height")) sp.block.shape.height = f.height;
+  if (given(s, "--mass")) sp.block.shape.mass = f.mass;
+  if (given(s, "--g")) sp.block.shape.g = f.g;
+  if (given(s, "--mu-s")) {
+    sp.block.interface.mu_s = f.mu_s;
+    if (!given(s, "--mu-k")) sp.block.interface.mu_k = f.mu_s;
   }
-  if (f.resume && f.overwrite) throw UsageError("--resume and --overwrite: give only one");
-  require_range("threads", f.threads, 0, 4096);
-  require_range("progress-interval", f.progress_interval, 0.0, 1e9, false);
-  const SweepSpec sp = build_spec(s, f);
-  const SweepEvaluator ev(sp);
-  if (!sp.plot_column.empty()) {
+  if (given(s, "--mu-k")) sp.block.interface.mu_k = f.mu_k;
+  if (given(s, "--restitution")) sp.block.restitution = f.restitution;
+  if (given(s, "--impact")) sp.block.impact = *impact_law_from_string(f.impact);
+  apply_ground_flags(s, f.ground, sp.ground);
+  if (given(s, "--w0") && given(s, "--w0-over-alpha")) throw UsageError("--w0 and --w0-over-alpha: give only one");
+  if (given(s, "--w0")) {
+    sp.initial.w0 = f.w0;
+    sp.w0_over_alpha.reset();
+  }
+  if (given(s, "--w0-over-alpha")) {
+    sp.w0_over_alpha = f.w0_over_alpha;
+    sp.initial.w0 = 0.0;
+  }
+  if (given(s, "--vw0")) sp.initial.vw0 = f.vw0;
+  if (given(s, "--x0")) sp.initial.x0 = f.x0;
+  if (given(s, "--y0")) sp.initial.y0 = f.y0;
+  if (given(s, "--vx0")) sp.initial.vx0 = f.vx0;
+  if (given(s, "--vy0")) sp.initial.vy0 = f.vy0;
+  if (given(s, "--t-end")) sp.options.t_end = f.t_end;
+  if (given(s, "--rtol")) sp.options.integrator.rtol = f.integ.rtol;
+  if (given(s, "--atol")) sp.options.integrator.atol = f.integ.atol;
+  if (given(s, "--max-steps")) sp.options.integrator.max_steps = f.max_steps;
+  if (given(s, "--no-energy")) sp.options.track_energy = false;
+  for (const auto& a : f.axes) {
+    const auto eq = a.find('=');
+    if (eq == std::string::npos || eq == 0)
+      throw UsageError("--axis '" + a + "': expected NAME=SPEC, e.g. ground_h_amplitude=0.1:1:20");
+    const std::string name = a.substr(0, eq);
+    for (const auto& x : sp.axes)
+      if (x.name == name) throw UsageError("--axis " + name + ": given twice (or also in the definition file)");
+    sp.axes.push_back(parse_axis(name, a.substr(eq + 1), AxisSpacing::Linear));
+  }
+  if (given(s, "--output")) sp.output = f.output;
+  if (given(s, "--plot")) sp.plot = f.plot;
+  if (given(s, "--plot-column")) sp.plot_column = f.plot_column;
+  bool has_width = sp.block.shape.width > 0, has_height = sp.block.shape.height > 0;
+  for (const auto& a : sp.axes) {
+    has_width |= a.name == "width" || a.name == "b_over_h" || a.name == "h_over_b";
+    has_height |= a.name == "height";
+  }
+  if (!has_width || !has_height)
+    throw UsageError(std::string("the ") + model + " sweep needs the block's " + (has_width ? "height" : "width") +
+                     ": --width and --height [m] (or [physical] in the definition, or an axis)");
+  validate(sp);
+  if (sp.output.empty()) throw UsageError("output: the CSV path is empty");
+  return sp;
+}
+
+// The model family of this sweep: --model, else the definition file's `model` key, else winkler.
+std::string sweep_model(const CLI::App& s, const SweepFlags& f) {
+  if (given(s, "--model")) return f.model;
+  if (!f.file.empty()) {
+    const toml::table root = toml_read::parse(toml_read::read_file(f.file, "sweep file"), f.file);
+    if (const auto v = root["model"].value<std::string>()) return *v;
+  }
+  return "winkler";
+}
+
+void execute(const PointTable& ev, const SweepFlags& f, const nlohmann::ordered_json& definition,
+             const std::string& plot_column, const std::function<void(const SweepPaths&)>& make_plot) {
+  if (!plot_column.empty()) {
     const auto& c = ev.columns();
-    if (std::find(c.begin(), c.end(), sp.plot_column) == c.end())
-      throw UsageError("plot-column = '" + sp.plot_column + "' is not a column of this sweep (see --dry-run)");
+    if (std::find(c.begin(), c.end(), plot_column) == c.end())
+      throw UsageError("plot-column = '" + plot_column + "' is not a column of this sweep (see --dry-run)");
   }
   if (f.dry_run) {
     nlohmann::ordered_json j;
@@ -151,9 +253,9 @@ void run(const CLI::App& s, const SweepFlags& f) {
     j["point_count"] = ev.size();
     j["fingerprint"] = ev.fingerprint();
     j["columns"] = ev.columns();
-    j["outputs"] = {{"csv", sweep_paths(sp.output).csv}, {"sidecar", sweep_paths(sp.output).sidecar},
-                    {"journal", sweep_paths(sp.output).journal}};
-    j["definition"] = definition_json(sp);
+    j["outputs"] = {{"csv", sweep_paths(ev.output()).csv}, {"sidecar", sweep_paths(ev.output()).sidecar},
+                    {"journal", sweep_paths(ev.output()).journal}};
+    j["definition"] = definition;
     emit_json(j, "-");
     return;
   }
@@ -179,7 +281,7 @@ void run(const CLI::App& s, const SweepFlags& f) {
   } else {
     out = run_sweep(ev, o);
   }
-  if (!sp.plot.empty()) plot(sp, out.paths);
+  make_plot(out.paths);
   if (f.quiet) return;
   if (out.was_complete) {
     std::printf("sweep: %zu points already complete in %s (nothing recomputed)\n", out.points, out.paths.csv.c_str());
@@ -191,15 +293,70 @@ void run(const CLI::App& s, const SweepFlags& f) {
   std::printf("wrote %s and %s\n", out.paths.csv.c_str(), out.paths.sidecar.c_str());
 }
 
+void list_rigid_axes() {
+  for (const auto& [name, what] : rigid_axis_catalog()) std::printf("%-20s %s\n", name.c_str(), what.c_str());
+}
+
+void run(const CLI::App& s, const SweepFlags& f) {
+  if (f.list_metrics) {
+    list_metrics();
+    return;
+  }
+  if (f.resume && f.overwrite) throw UsageError("--resume and --overwrite: give only one");
+  require_range("threads", f.threads, 0, 4096);
+  require_range("progress-interval", f.progress_interval, 0.0, 1e9, false);
+  const std::string model = sweep_model(s, f);
+  if (model != "winkler" && !is_rigid_family(model))
+    throw UsageError("model = '" + model + "' is not one of: winkler, housner, rigid");
+  if (f.list_axes) {
+    if (model == "winkler")
+      std::printf("k, r | inv_r, mu, ic (flags --k --r --inv-r --mu --ic; [axes] in a definition file)\n");
+    else
+      list_rigid_axes();
+    return;
+  }
+  if (is_rigid_family(model)) {
+    const RigidSweepSpec sp = build_rigid_spec(s, f, model);
+    const RigidSweepEvaluator ev(sp);
+    execute(ev, f, ev.definition(), sp.plot_column, [&](const SweepPaths& p) {
+      if (!sp.plot.empty()) plot(sp, p);
+    });
+    return;
+  }
+  for (const char* n : {"--axis", "--width", "--height", "--mass", "--mu-s", "--mu-k", "--restitution", "--impact"})
+    if (given(s, n)) throw UsageError(std::string(n) + " belongs to --model housner|rigid sweeps");
+  const SweepSpec sp = build_spec(s, f);
+  const SweepEvaluator ev(sp);
+  execute(ev, f, definition_json(sp), sp.plot_column, [&](const SweepPaths& p) {
+    if (!sp.plot.empty()) plot(sp, p);
+  });
+}
+
 void add(CLI::App& app) {
   auto f = std::make_shared<SweepFlags>();
   CLI::App* s = app.add_subcommand(
-      "sweep", "parameter sweep over k, r (or 1/r), mu and initial conditions (threads, MPI, resumable)");
+      "sweep", "parameter sweep with the model family's axes (winkler: k, r, mu, ic; housner/rigid: --axis) "
+               "(threads, MPI, resumable)");
   s->footer(
       "Axis values: a list \"v1,v2,...\" or a range \"min:max:points[:log|:lin]\" (k: log by default).\n"
       "Points are numbered index = k_i + n_k*(r_i + n_r*(mu_i + n_mu*ic_i)). See docs/sweep.md.");
   s->add_option("definition", f->file, "TOML sweep definition (flags given as well override it)")
       ->check(CLI::ExistingFile);
+  s->add_option("--model", f->model, "model family: winkler (default), housner, rigid")
+      ->check(CLI::IsMember({"winkler", "housner", "rigid"}));
+  s->add_option("--axis", f->axes,
+                "housner/rigid: an axis NAME=SPEC (repeatable; the first varies fastest), e.g. "
+                "ground_h_amplitude=0.1:1:20 (see --list-axes)");
+  s->add_flag("--list-axes", f->list_axes, "list the axes of the model family and exit");
+  s->add_option("--width", f->width, "housner/rigid: block width [m]");
+  s->add_option("--height", f->height, "housner/rigid: block height [m]");
+  s->add_option("--mass", f->mass, "housner/rigid: block mass [kg] (default 1)");
+  s->add_option("--g", f->g, "housner/rigid: gravity [m/s^2] (default 9.81)");
+  s->add_option("--mu-s", f->mu_s, "rigid: static friction (default 0.7)");
+  s->add_option("--mu-k", f->mu_k, "rigid: kinetic friction (default mu-s)");
+  s->add_option("--restitution", f->restitution, "housner/rigid: restitution in [0, 1]");
+  s->add_option("--impact", f->impact, "rigid: impact law housner or newton")->check(CLI::IsMember({"housner", "newton"}));
+  add_ground_flags(*s, f->ground);
   s->add_option("--k", f->k, "stiffness axis, e.g. 1e2:1e8:40 (log) or 1e4,1e5");
   s->add_option("--r", f->r, "aspect-ratio axis r = width/height, e.g. 0.1:1:10 or 0.2");
   s->add_option("--inv-r", f->inv_r, "slenderness axis 1/r, e.g. 1:20:30");

@@ -41,7 +41,7 @@ int launcher_world_size() {
 
 bool mpi_built() { return false; }
 
-MpiSweepResult run_sweep_mpi(const SweepEvaluator&, SweepRunOptions) {
+MpiSweepResult run_sweep_mpi(const PointTable&, SweepRunOptions) {
   throw UsageError("this blockdyn was built without MPI: run it without mpirun, or rebuild with Open MPI");
 }
 
@@ -80,7 +80,7 @@ SweepRow decode(const std::string& s) {
 
 }  // namespace
 
-MpiSweepResult run_sweep_mpi(const SweepEvaluator& ev, SweepRunOptions o) {
+MpiSweepResult run_sweep_mpi(const PointTable& ev, SweepRunOptions o) {
   int provided = 0;
   MPI_Init_thread(nullptr, nullptr, MPI_THREAD_FUNNELED, &provided);
   int rank = 0, size = 1;

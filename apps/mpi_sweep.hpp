@@ -24,6 +24,6 @@ struct MpiSweepResult {
 
 // Initialises MPI, runs the sweep across ranks and finalises MPI. Usage errors (e.g. existing
 // output) are thrown on rank 0; the other ranks then exit quietly with the same status.
-MpiSweepResult run_sweep_mpi(const SweepEvaluator& ev, SweepRunOptions o);
+MpiSweepResult run_sweep_mpi(const PointTable& ev, SweepRunOptions o);
 
 }  // namespace blockdyn::cli

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <fstream>
 
+#include "blockdyn/analysis/sweep/sweep_evaluator.hpp"
 #include "blockdyn/analysis/sweep/sweep_runner.hpp"
 #include "blockdyn/io/progress.hpp"
 #include "test_sweep_util.hpp"

@@ -42,30 +42,13 @@ class FanOutSink : public SimulationSink {
   }
 };
 
-class RowBuilder {
- public:
-  void add(const std::string& cell_text) {
-    if (!first_) text_ += ',';
-    first_ = false;
-    text_ += cell_text;
-  }
-  void add(double v) { add(format_double(v)); }
-  void add(long long v) { add(std::to_string(v)); }
-  void add(long v) { add(static_cast<long long>(v)); }
-  void add(std::size_t v) { add(std::to_string(v)); }
-  void empty() { add(std::string()); }
-  void add(const MetricValue& v) {
-    if (std::holds_alternative<double>(v)) add(std::get<double>(v));
-    else if (std::holds_alternative<long long>(v)) add(std::get<long long>(v));
-    else if (std::holds_alternative<std::string>(v)) add(csv_escape(std::get<std::string>(v)));
-    else empty();
-  }
-  std::string finish() { return text_ + '\n'; }
-
- private:
-  std::string text_;
-  bool first_ = true;
-};
+// A metric's value as a cell.
+void add_value(RowBuilder& b, const MetricValue& v) {
+  if (std::holds_alternative<double>(v)) b.add(std::get<double>(v));
+  else if (std::holds_alternative<long long>(v)) b.add(std::get<long long>(v));
+  else if (std::holds_alternative<std::string>(v)) b.add(csv_escape(std::get<std::string>(v)));
+  else b.empty();
+}
 
 }  // namespace
 
@@ -74,6 +57,18 @@ std::string format_double(double v) {
   std::snprintf(buf, sizeof buf, "%.17g", v);
   return buf;
 }
+
+std::string csv_header(const std::vector<std::string>& columns) {
+  std::string h;
+  for (const auto& c : columns) {
+    if (!h.empty()) h += ',';
+    h += csv_escape(c);
+  }
+  return h + '\n';
+}
+
+nlohmann::ordered_json SweepEvaluator::definition() const { return definition_json(spec_); }
+nlohmann::ordered_json SweepEvaluator::tolerances() const { return to_json(options_.integrator); }
 
 std::string csv_escape(const std::string& s) {
   if (s.find_first_of(",\"\n\r") == std::string::npos) return s;
@@ -105,12 +100,7 @@ void SweepEvaluator::init() {
   for (std::size_t i = 0; i < columns_.size(); ++i)
     for (std::size_t j = 0; j < i; ++j)
       if (columns_[i] == columns_[j]) throw std::invalid_argument("metrics: column '" + columns_[i] + "' appears twice");
-  header_.clear();
-  for (const auto& c : columns_) {
-    if (!header_.empty()) header_ += ',';
-    header_ += csv_escape(c);
-  }
-  header_ += '\n';
+  header_ = csv_header(columns_);
   fingerprint_ = fingerprint_hex(dump_json(definition_json(spec_), -1) + "\n" + header_);
 }
 
@@ -183,7 +173,7 @@ SweepRow SweepEvaluator::row(std::size_t index) const {
     if (vals.size() != metric_width_[m])
       throw std::logic_error("sweep metric produced " + std::to_string(vals.size()) + " values for " +
                              std::to_string(metric_width_[m]) + " columns");
-    for (const auto& v : vals) b.add(v);
+    for (const auto& v : vals) add_value(b, v);
   }
   out.text = b.finish();
   return out;

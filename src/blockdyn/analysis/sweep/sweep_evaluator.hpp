@@ -14,17 +14,13 @@
 #include <string>
 #include <vector>
 
+#include "blockdyn/analysis/sweep/point_table.hpp"
 #include "blockdyn/analysis/sweep/sweep_metrics.hpp"
 #include "blockdyn/analysis/sweep/sweep_spec.hpp"
 
 namespace blockdyn {
 
-struct SweepRow {
-  std::string text;   // CSV line including the trailing '\n'
-  std::string error;  // non-empty when status is "error"
-};
-
-class SweepEvaluator {
+class SweepEvaluator final : public PointTable {
  public:
   // Builds the metrics named in spec.metrics (throws std::invalid_argument for unknown names).
   explicit SweepEvaluator(SweepSpec spec);
@@ -32,14 +28,17 @@ class SweepEvaluator {
   SweepEvaluator(SweepSpec spec, std::vector<std::unique_ptr<PointMetric>> extra);
 
   const SweepSpec& spec() const { return spec_; }
-  std::size_t size() const { return n_; }
-  const std::vector<std::string>& columns() const { return columns_; }
-  const std::string& header() const { return header_; }  // with '\n'
+  std::size_t size() const override { return n_; }
+  const std::vector<std::string>& columns() const override { return columns_; }
+  const std::string& header() const override { return header_; }  // with '\n'
   // Identifies the definition and the columns (a journal is only resumed under the same one).
-  const std::string& fingerprint() const { return fingerprint_; }
+  const std::string& fingerprint() const override { return fingerprint_; }
   const SimulationOptions& options() const { return options_; }
+  nlohmann::ordered_json definition() const override;
+  nlohmann::ordered_json tolerances() const override;
+  const std::string& output() const override { return spec_.output; }
 
-  SweepRow row(std::size_t index) const;  // thread-safe
+  SweepRow row(std::size_t index) const override;  // thread-safe
 
  private:
   void init();
@@ -51,9 +50,5 @@ class SweepEvaluator {
   SimulationOptions options_;
   std::size_t n_ = 0;
 };
-
-// Helpers for cell formatting (exposed for tests and metric authors).
-std::string format_double(double v);          // %.17g
-std::string csv_escape(const std::string& s);  // RFC 4180 quoting when needed
 
 }  // namespace blockdyn

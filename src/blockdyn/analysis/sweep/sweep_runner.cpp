@@ -69,7 +69,7 @@ std::string complete_sidecar_fingerprint(const std::string& path) {
   }
 }
 
-void compute_rows(const SweepEvaluator& ev, const std::vector<std::size_t>& indices, int threads,
+void compute_rows(const PointTable& ev, const std::vector<std::size_t>& indices, int threads,
                   const std::function<void(std::size_t, const SweepRow&)>& on_row) {
   // Rows are handed from the worker to the lock-protected callback through a per-index slot.
   std::vector<SweepRow> slot(indices.size());
@@ -81,8 +81,8 @@ void compute_rows(const SweepEvaluator& ev, const std::vector<std::size_t>& indi
       });
 }
 
-SweepSession::SweepSession(const SweepEvaluator& ev, const SweepRunOptions& o)
-    : ev_(ev), opt_(o), paths_(sweep_paths(ev.spec().output)) {
+SweepSession::SweepSession(const PointTable& ev, const SweepRunOptions& o)
+    : ev_(ev), opt_(o), paths_(sweep_paths(ev.output())) {
   t_start_ = now_seconds();
   started_utc_ = utc_now();
   load_at_start_ = load_average();
@@ -132,8 +132,8 @@ json SweepSession::sidecar(const std::string& status, int threads) const {
   j["csv"] = paths_.csv;
   j["point_count"] = ev_.size();
   j["columns"] = ev_.columns();
-  j["definition"] = definition_json(ev_.spec());
-  j["tolerances"] = to_json(ev_.options().integrator);
+  j["definition"] = ev_.definition();
+  j["tolerances"] = ev_.tolerances();
   json t;
   t["started_utc"] = started_utc_;
   t["threads_per_rank"] = threads;
@@ -178,7 +178,7 @@ SweepOutcome SweepSession::finish(int threads) {
   return out;
 }
 
-SweepOutcome run_sweep(const SweepEvaluator& ev, const SweepRunOptions& o) {
+SweepOutcome run_sweep(const PointTable& ev, const SweepRunOptions& o) {
   SweepSession session(ev, o);
   const int threads = resolve_threads(o.threads);
   if (!session.was_complete())

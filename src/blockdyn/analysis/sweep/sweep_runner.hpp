@@ -16,7 +16,7 @@
 #include <string>
 #include <vector>
 
-#include "blockdyn/analysis/sweep/sweep_evaluator.hpp"
+#include "blockdyn/analysis/sweep/point_table.hpp"
 #include "blockdyn/analysis/sweep/sweep_journal.hpp"
 #include "blockdyn/io/progress.hpp"
 
@@ -44,14 +44,14 @@ struct SweepOutcome {
 };
 
 // Calls on_row(index, row) under a lock for each index as it finishes, on `threads` threads.
-void compute_rows(const SweepEvaluator& ev, const std::vector<std::size_t>& indices, int threads,
+void compute_rows(const PointTable& ev, const std::vector<std::size_t>& indices, int threads,
                   const std::function<void(std::size_t, const SweepRow&)>& on_row);
 
 class SweepSession {
  public:
   // Applies the existing-output policy and opens (or resumes) the journal. Throws
   // std::invalid_argument when outputs exist and neither resume nor overwrite allows using them.
-  SweepSession(const SweepEvaluator& ev, const SweepRunOptions& o);
+  SweepSession(const PointTable& ev, const SweepRunOptions& o);
   ~SweepSession();
 
   bool was_complete() const { return was_complete_; }
@@ -62,7 +62,7 @@ class SweepSession {
 
  private:
   nlohmann::ordered_json sidecar(const std::string& status, int threads) const;
-  const SweepEvaluator& ev_;
+  const PointTable& ev_;
   SweepRunOptions opt_;
   SweepPaths paths_;
   std::unique_ptr<SweepJournal> journal_;
@@ -75,7 +75,7 @@ class SweepSession {
 };
 
 // Single-process sweep (threads only).
-SweepOutcome run_sweep(const SweepEvaluator& ev, const SweepRunOptions& o);
+SweepOutcome run_sweep(const PointTable& ev, const SweepRunOptions& o);
 
 // Fingerprint recorded by a sidecar whose status is "complete"; "" if absent, unreadable or
 // unfinished (lets --resume recognise a finished sweep).
