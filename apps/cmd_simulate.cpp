@@ -152,10 +152,14 @@ Scenario build_scenario(const CLI::App& s, const SimulateFlags& f) {
   return sc;
 }
 
-void print_summary(const SimulationResult& r) {
-  std::printf("status: %s at t = %.10g\n", to_string(r.status), r.t_final);
-  std::printf("ihor: %ld, first flight: %s\n", r.ihor,
-              r.first_flight_time ? std::to_string(*r.first_flight_time).c_str() : "none");
+// seconds: the time scale of a physical block (times printed in s), 0 for non-dimensional runs.
+void print_summary(const SimulationResult& r, double seconds) {
+  const double ts = seconds > 0 ? seconds : 1.0;
+  const char* unit = seconds > 0 ? " s" : "";
+  std::printf("status: %s at t = %.10g%s\n", to_string(r.status), r.t_final * ts, unit);
+  std::printf("ihor: %ld, first flight: %s%s\n", r.ihor,
+              r.first_flight_time ? std::to_string(*r.first_flight_time * ts).c_str() : "none",
+              r.first_flight_time ? unit : "");
   std::printf("events: %zu, steps: %ld, rhs evaluations: %ld\n", r.events.size(), r.stats.accepted,
               r.stats.rhs_evals);
   std::printf("energy: E0 = %.10g, max |E - E0| = %.3g, max |balance error| = %.3g, friction work = %.6g\n",
@@ -223,7 +227,17 @@ void run_winkler(const SimulateFlags& f, Scenario sc) {
   const SimulationResult r = simulate(sc.params, sc.ground, z0, sc.options, sink.get());
   target.plot_and_clean("plot_trajectory.py", sc.plot);
   emit(result_json(sc.params, sc.ground, sc.options, r, sc.physical ? &*sc.physical : nullptr), f);
-  if (!f.json) print_summary(r);
+  if (!f.json) print_summary(r, sc.physical ? scales_of(*sc.physical).time : 0.0);
+}
+
+std::string block_title(const std::string& model, const RigidBlockParams& p) {
+  char buf[256];
+  if (model == "housner")
+    std::snprintf(buf, sizeof buf, "housner block %.4g m x %.4g m, e = %.4g", p.shape.width, p.shape.height, p.e());
+  else
+    std::snprintf(buf, sizeof buf, "rigid block %.4g m x %.4g m, mu_s %.3g, mu_k %.3g, %s impacts (e = %.3g)",
+                  p.shape.width, p.shape.height, p.interface.mu_s, p.interface.mu_k, to_string(p.impact), p.e());
+  return buf;
 }
 
 template <class Model, class Simulate>
@@ -246,9 +260,7 @@ void run_rigid_family(const SimulateFlags& f, const Scenario& sc, Simulate&& sim
   const RigidResult r = sim(p, sc.ground, init, o, csv.get());
   target.plot_and_clean("plot_rigid.py", sc.plot,
                         {"--alpha", std::to_string(p.shape.alpha()), "--model", sc.model, "--status",
-                         to_string(r.status), "--title",
-                         sc.model + " block " + std::to_string(p.shape.width) + " x " +
-                             std::to_string(p.shape.height) + " m"});
+                         to_string(r.status), "--title", block_title(sc.model, p)});
   emit(rigid_result_json(p, sc.ground, o, r), f);
   if (!f.json) print_summary(r, p.shape.alpha());
 }

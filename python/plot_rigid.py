@@ -87,7 +87,7 @@ def main():
     status = f"status {a.status}" if a.status else ""
     maxw = np.max(np.abs(w))
     rel = f" = {maxw / a.alpha:.3g} alpha" if a.alpha else ""
-    fig.suptitle(f"{a.title}: {status}, max |w| {maxw:.4g} rad{rel}, {len(imp)} impacts")
+    fig.suptitle(f"{a.title}\n{status}, max |w| {maxw:.4g} rad{rel}, {len(imp)} impacts", fontsize=10)
     save(fig, a.out)
 
 

@@ -347,23 +347,19 @@ class HybridIntegrator {
         const double ga = gs[j - 1][i], gb = gs[j][i];
         if (gb < 0.0) {
           double lo = ts[j - 1], glo = ga;
-          if (glo <= 0.0) {  // zero at a restart point: it fires there unless it rises first
-            const auto mx = minimum(lo, ts[j], [&](double tt) { return -gi(tt); });
-            if (-mx.second > 0.0) {
-              lo = mx.first;
-              glo = -mx.second;
-            } else {
-              // The rise may be too brief for the minimiser to see (a swing of 1e-7 inside a
-              // step of 1e-3): probe geometrically towards the restart point.
-              for (int k = 1; k <= 60; ++k) {
-                const double tt = ts[j - 1] + std::ldexp(ts[j] - ts[j - 1], -k);
-                if (!(tt > ts[j - 1])) break;
-                const double gt = gi(tt);
-                if (gt > 0.0) {
-                  lo = tt;
-                  glo = gt;
-                  break;
-                }
+          if (glo <= 0.0) {
+            // Zero at a restart point (the event that just fired, e.g. theta = 0 after an
+            // impact): it fires there unless it rises first. Where it rises it is positive on
+            // (t0, root); halving towards t0 finds a positive value however brief the rise (a
+            // swing of 1e-7 inside a step of 1e-3), and the root is bracketed from there.
+            for (int k = 1; k <= 60; ++k) {
+              const double tt = ts[j - 1] + std::ldexp(ts[j] - ts[j - 1], -k);
+              if (!(tt > ts[j - 1])) break;
+              const double gt = gi(tt);
+              if (gt > 0.0) {
+                lo = tt;
+                glo = gt;
+                break;
               }
             }
           }
