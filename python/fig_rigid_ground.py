@@ -180,13 +180,13 @@ def fig_onset():
 def fig_record():
     if not RECORD:
         return
-    common = ["--width", 0.3, "--height", 1.2, "--t-end", 30, "--ground-h-record", RECORD, "--ground-h-scale", 1.3]
+    common = ["--width", 0.3, "--height", 1.2, "--t-end", 30, "--ground-h-record", RECORD, "--ground-h-scale", 1.6]
     runs = [("housner", ["--model", "housner"]), ("rigid, mu = 0.7", ["--model", "rigid", "--mu-s", 0.7]),
-            ("rigid, mu = 0.3 (slides)", ["--model", "rigid", "--mu-s", 0.3, "--mu-k", 0.25])]
+            ("rigid, mu_s = 0.2 < b/h (slides)", ["--model", "rigid", "--mu-s", 0.2, "--mu-k", 0.15])]
     fig, ax = plt.subplots(3, 1, figsize=(10, 8), sharex=True, constrained_layout=True)
-    for name, args in runs:
+    for (name, args), ls in zip(runs, ("-", "--", "-")):
         tr = trajectory(*args, *common, interval=0.005)
-        ax[0].plot(tr["t"], tr["w"], lw=0.8, label=name)
+        ax[0].plot(tr["t"], tr["w"], ls, lw=0.9, label=name)
     path = os.path.join(TMP, "slide.csv")
     run("simulate", *runs[2][1], *common, "--trajectory", path, "--output-interval", 0.005)
     with open(path, newline="") as f:
@@ -195,10 +195,10 @@ def fig_record():
     ax[2].plot([float(r["t"]) for r in rows], [float(r["a_h"]) for r in rows], lw=0.6, color="0.3")
     ax[0].set_ylabel("theta [rad]")
     ax[0].legend(fontsize=8)
-    ax[1].set_ylabel("x relative to ground [m]\n(mu = 0.3)")
+    ax[1].set_ylabel("x relative to ground [m]\n(mu_s = 0.2)")
     ax[2].set_ylabel("a_H [g]")
     ax[2].set_xlabel("t [s]")
-    ax[0].set_title("block 0.3 m x 1.2 m under the synthetic record (tests/fixtures/synthetic_60s.AT2) x 1.3",
+    ax[0].set_title("block 0.3 m x 1.2 m under the synthetic record (tests/fixtures/synthetic_60s.AT2) x 1.6",
                     fontsize=9)
     save(fig, os.path.join(OUT, "rigid_record.png"))
 

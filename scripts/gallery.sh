@@ -34,4 +34,8 @@ run $B energy-surface --mu 0.3 --r 0.2 --k 1e5 --ic ic1 --t-end 100 --phase-dt 0
 # Response map (thesis ch. 6)
 run $B map --k 1e1:1e8:12 --inv-r 1:20:10 --mu 0.2 --ic ic1 --t-end 30 --boundary-points 6 \
   -o "$O/map.csv" --overwrite --quiet --plot "$O/map.png"
+# Rigid block on rigid ground (Housner, 3-DOF): time histories and the validation figures
+run $B simulate examples/housner_pulse.toml --trajectory "$O/housner_pulse.csv" --plot "$O/housner_pulse.png"
+run $B simulate examples/rigid_record.toml --trajectory "$O/rigid_record.csv" --plot "$O/rigid_record.png"
+run /usr/bin/python3 python/fig_rigid_ground.py "$B" "$O" tests/fixtures/synthetic_60s.AT2
 echo "gallery written to $O"
