@@ -10,18 +10,12 @@
 #include "blockdyn/excitation/ground_motion.hpp"
 #include "blockdyn/simulation/rigid_simulation.hpp"
 
+#include "test_support.hpp"
+
 using namespace blockdyn;
+using blockdyn::test::error_of;
 
 namespace {
-
-std::string error_of(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const std::invalid_argument& e) {
-    return e.what();
-  }
-  return "";
-}
 
 double integral(PulseShape p, double tp) {
   const double end = pulse_support(p) * tp;

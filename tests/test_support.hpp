@@ -6,11 +6,23 @@
 
 #include <cmath>
 #include <cstdio>
+#include <functional>
+#include <stdexcept>
 #include <string>
 
 #include "blockdyn/simulation/simulate.hpp"
 
 namespace blockdyn::test {
+
+// The message of the std::invalid_argument that f throws ("(no error)" if it throws none).
+inline std::string error_of(const std::function<void()>& f) {
+  try {
+    f();
+  } catch (const std::invalid_argument& e) {
+    return e.what();
+  }
+  return "(no error)";
+}
 
 // Measured numbers go to the test report (--gtest_output=json) for docs/validation.md.
 inline void record(const char* key, double v) {

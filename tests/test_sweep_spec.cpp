@@ -7,18 +7,13 @@
 #include "blockdyn/analysis/sweep/sweep_evaluator.hpp"
 #include "blockdyn/analysis/sweep/sweep_toml.hpp"
 
+#include "test_support.hpp"
+
 using namespace blockdyn;
+using blockdyn::test::error_of;
 
 namespace {
 
-std::string error_of(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const std::invalid_argument& e) {
-    return e.what();
-  }
-  return "(no error)";
-}
 
 }  // namespace
 

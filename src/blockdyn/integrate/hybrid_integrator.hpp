@@ -179,20 +179,7 @@ class HybridIntegrator {
         if (to_break) {
           // The input may jump or kink here: let the model re-select its mode, restart.
           t_clamp = std::numeric_limits<double>::infinity();
-          const State z_before = z;
-          const Transition<Mode> tr = model_.transition(t, mode, z, kBreakpoint);
-          EventInfo<Mode, N> info{t, z, z_before, mode, tr.next, kBreakpoint, tr.kind, tr.stop};
-          if (tr.stop) {
-            obs.on_event(info);
-            return RunStatus::ModelStop;
-          }
-          mode = tr.next;
-          model_.complete(mode, z);
-          info.z = z;
-          if (!obs.on_event(info)) return RunStatus::ObserverStop;
-          model_.events(t, mode, z, g_start);
-          armed_.fill(true);
-          reset_falling(g_start, -1);
+          if (const auto end = apply_transition(t, kBreakpoint, mode, z, g_start, obs)) return *end;
           f(t, z, k1);
           ++stats_.rhs_evals;
           t_break = next_breakpoint_of(model_, t, mode);
@@ -219,23 +206,10 @@ class HybridIntegrator {
       }
       zero_time_events = (te == t) ? zero_time_events + 1 : 0;
       model_.complete(mode, ze);
-      const State z_before = ze;
       t_clamp = std::numeric_limits<double>::infinity();
-      const Transition<Mode> tr = model_.transition(te, mode, ze, hit->index);
-      EventInfo<Mode, N> info{te, ze, z_before, mode, tr.next, hit->index, tr.kind, tr.stop};
       t = te;
       z = ze;
-      if (tr.stop) {
-        obs.on_event(info);
-        return RunStatus::ModelStop;
-      }
-      mode = tr.next;
-      model_.complete(mode, z);
-      info.z = z;
-      if (!obs.on_event(info)) return RunStatus::ObserverStop;
-      model_.events(t, mode, z, g_start);
-      armed_.fill(true);
-      reset_falling(g_start, hit->index);
+      if (const auto end = apply_transition(t, hit->index, mode, z, g_start, obs)) return *end;
       if (zero_time_events >= opt_.chatter_limit) {
         const auto held = model_.resolve_chatter(t, mode, z);
         if (!held) return RunStatus::Chatter;
@@ -258,6 +232,29 @@ class HybridIntegrator {
   }
 
  private:
+  // The transition of event `index` (or kBreakpoint) at t: the model picks the next mode and may
+  // change the state; observers see it with the state before and after; the event functions
+  // restart. Returns the run's end status when the model or an observer stops it.
+  template <class Observer>
+  std::optional<RunStatus> apply_transition(double t, int index, Mode& mode, State& z, Events& g_start,
+                                            Observer& obs) {
+    const State z_before = z;
+    const Transition<Mode> tr = model_.transition(t, mode, z, index);
+    EventInfo<Mode, N> info{t, z, z_before, mode, tr.next, index, tr.kind, tr.stop};
+    if (tr.stop) {
+      obs.on_event(info);
+      return RunStatus::ModelStop;
+    }
+    mode = tr.next;
+    model_.complete(mode, z);
+    info.z = z;
+    if (!obs.on_event(info)) return RunStatus::ObserverStop;
+    model_.events(t, mode, z, g_start);
+    armed_.fill(true);
+    reset_falling(g_start, index);
+    return std::nullopt;
+  }
+
   struct Hit {
     double t;
     int index;

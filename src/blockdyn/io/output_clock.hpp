@@ -14,6 +14,15 @@ class OutputClock {
     next_ = t0 + interval;
   }
   bool every_step() const { return interval_ <= 0.0; }
+  // Calls f(t) for the output instants of a piece of trajectory ending at t1: its end when every
+  // step is written, else the fixed instants up to t1.
+  template <class F>
+  void emit(double t1, F&& f) {
+    if (every_step())
+      f(t1);
+    else
+      emit_until(t1, f);
+  }
   // Calls f(t) for every output instant in (previous piece, t1].
   template <class F>
   void emit_until(double t1, F&& f) {

@@ -38,10 +38,7 @@ class RigidTrajectoryCsv final : public Observer<Model> {
       m.complete(md, z);
       row(m, t, md, z, "");
     };
-    if (clock_.every_step())
-      write(t1);
-    else
-      clock_.emit_until(t1, write);
+    clock_.emit(t1, write);
     return true;
   }
   bool on_event(const Model& m, const Event& e) override {

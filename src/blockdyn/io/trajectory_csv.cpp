@@ -26,10 +26,7 @@ void TrajectoryCsvSink::on_segment(const WinklerBlock& m, const DenseSegment<kSt
     m.complete(mode, z);
     row(m, t, mode, z, "");
   };
-  if (clock_.every_step())
-    write(t1);
-  else
-    clock_.emit_until(t1, write);
+  clock_.emit(t1, write);
 }
 
 void TrajectoryCsvSink::on_event(const WinklerBlock& m, const EventRecord& e) {
