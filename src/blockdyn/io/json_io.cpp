@@ -35,7 +35,6 @@ json to_json(const IntegratorOptions& o) {
   return {{"method", "dopri5(4) dense output, TOMS748 event location"},
           {"rtol", o.rtol},
           {"atol", o.atol},
-          {"atol_scaling", "h: atol/k, y': atol/sqrt(k) (for k > 1)"},
           {"event_samples", o.event_samples},
           {"max_steps", o.max_steps}};
 }
@@ -119,6 +118,7 @@ json result_json(const BlockParams& p, const GroundMotion& g, const SimulationOp
   j["parameters"] = to_json(p);
   j["ground_motion"] = to_json(g);
   j["tolerances"] = to_json(o.integrator);
+  j["tolerances"]["atol_scaling"] = "h: atol/k, y': atol/sqrt(k) (for k > 1)";
   j["t_start"] = o.t_start;
   j["t_end"] = o.t_end;
   j["initial_state"] = state_json(r.initial_state);
@@ -176,6 +176,9 @@ json rigid_result_json(const RigidBlockParams& p, const GroundMotion& g, const R
   j["parameters"] = to_json(p, r.model);
   j["ground_motion"] = to_json(g);
   j["tolerances"] = to_json(o.integrator);
+  j["tolerances"]["atol_scaling"] = r.model == "housner"
+                                        ? "theta: atol, theta': atol p, works: atol m g R"
+                                        : "x, y: atol h, x', y': atol sqrt(g h), theta: atol, theta': atol p, works: atol m g h";
   j["t_start"] = o.t_start;
   j["t_end"] = o.t_end;
   j["initial_state"] = pose_json(r.initial_state);
