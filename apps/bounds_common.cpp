@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "bounds_common.hpp"
 
 #include <unistd.h>
@@ -109,7 +110,7 @@ void write_table(const std::string& path, const Table& t, json meta) {
   write_file_atomically(path, os.str());
   meta["csv"] = path;
   meta["columns"] = t.columns;
-  emit_json(meta, path + ".json");
+  emit_json(meta, path + ".json", "sidecar");
 }
 
 std::string csv_target(const OutputFlags& out, const std::string& stem) {

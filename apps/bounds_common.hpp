@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Helpers shared by the flight and stability subcommands (cmd_flight.cpp, cmd_stability.cpp):
 // common options, CSV tables with JSON sidecars, JSON views of boundary results.

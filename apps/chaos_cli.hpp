@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Initial-condition flags shared by the response / poincare / lyapunov / energy-surface commands
 // (same names and meaning as `simulate`), built through the scenario machinery.

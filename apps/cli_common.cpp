@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "cli_common.hpp"
 #include "cli_registry.hpp"
 
@@ -30,8 +31,16 @@ void add_tolerance_options(CLI::App& app, IntegratorOptions& o) {
   app.add_option("--atol", o.atol, "absolute tolerance (scaled by 1/k for y), in (0, 1)")->capture_default_str();
 }
 
-void emit_json(const nlohmann::ordered_json& j, const std::string& path) {
-  const std::string text = dump_json(j) + "\n";
+std::string& current_command() {
+  static std::string name;
+  return name;
+}
+
+void emit_json(const nlohmann::ordered_json& j, const std::string& path, const char* kind) {
+  nlohmann::ordered_json out;
+  out["schema"] = schema_name(current_command(), kind);
+  for (auto it = j.begin(); it != j.end(); ++it) out[it.key()] = it.value();
+  const std::string text = dump_json(out) + "\n";
   if (path.empty() || path == "-") {
     std::cout << text << std::flush;
   } else {
@@ -41,8 +50,18 @@ void emit_json(const nlohmann::ordered_json& j, const std::string& path) {
 
 std::string python_dir() {
   if (const char* e = std::getenv("BLOCKDYN_PYTHON_DIR")) return e;
-  // The source tree when run from the build, the installed copy otherwise.
-  if (::access((std::string(BLOCKDYN_PYTHON_DIR) + "/plotkit.py").c_str(), R_OK) == 0) return BLOCKDYN_PYTHON_DIR;
+  auto has_scripts = [](const std::string& d) { return ::access((d + "/plotkit.py").c_str(), R_OK) == 0; };
+  // Installed: share/blockdyn/python beside the program's bin/ (relocatable: a package installs
+  // under /usr, a user under any prefix); run from the build: the source tree.
+  char exe[4096];
+  const ssize_t n = ::readlink("/proc/self/exe", exe, sizeof exe - 1);
+  if (n > 0) {
+    std::string dir(exe, std::size_t(n));
+    dir = dir.substr(0, dir.find_last_of('/'));  // .../bin
+    const std::string d = dir.substr(0, dir.find_last_of('/')) + "/share/blockdyn/python";
+    if (has_scripts(d)) return d;
+  }
+  if (has_scripts(BLOCKDYN_PYTHON_DIR)) return BLOCKDYN_PYTHON_DIR;
   return BLOCKDYN_INSTALLED_PYTHON_DIR;
 }
 

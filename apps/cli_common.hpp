@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Helpers shared by the subcommands: option groups, validation, output, plotting.
 #include <CLI/CLI.hpp>
@@ -25,8 +26,12 @@ void add_block_options(CLI::App& app, BlockParams& p);
 // --rtol --atol bound to o.
 void add_tolerance_options(CLI::App& app, IntegratorOptions& o);
 
-// Writes JSON to `path` atomically, or to stdout when path is "-" or empty.
-void emit_json(const nlohmann::ordered_json& j, const std::string& path);
+// The subcommand being run (set by main before parsing): names the schema of its JSON outputs.
+std::string& current_command();
+// Writes JSON to `path` atomically, or to stdout when path is "-" or empty, with a first key
+// "schema": "blockdyn.<command>.<kind>/<version>" (docs/output-formats.md); kind is "summary"
+// (the --json / --json-out document) or "sidecar" (the JSON beside a CSV table).
+void emit_json(const nlohmann::ordered_json& j, const std::string& path, const char* kind = "summary");
 
 // Directory holding the matplotlib scripts (env BLOCKDYN_PYTHON_DIR overrides).
 std::string python_dir();

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Subcommands register themselves (one file per subcommand under apps/), so adding a command
 // never touches main.cpp.

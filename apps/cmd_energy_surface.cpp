@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // `blockdyn energy-surface`: projections of the energy surface onto the (y, y') and (w, w') planes
 // with the trajectory overlaid (thesis sec. 5.1, Figs. 5.1-5.2); with --ic surface the initial
 // state itself is built on a prescribed energy (Figs. 5.8-5.11).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // `blockdyn equilibria`, `bifurcation`, `bifurcation-curves`: static equilibria of the block on
 // the Winkler foundation and their bifurcations in k (thesis 4.3.3).
 #include <cstdio>
@@ -33,7 +34,7 @@ std::string temp_path(const std::string& stem) {
 // CSV written atomically, with its JSON sidecar <csv>.json.
 void write_csv(const std::string& path, const std::string& text, const json& sidecar) {
   write_file_atomically(path, text);
-  emit_json(sidecar, path + ".json");
+  emit_json(sidecar, path + ".json", "sidecar");
 }
 
 void remove_temp(const std::string& path) {

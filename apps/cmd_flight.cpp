@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Flight studies (thesis 4.2): `flight-time` (time to first flight vs k), `flight-boundary`
 // (k_critical_n(r), k_high(r) and k_min(r)), `kmin` (energy lower bound), `flight-map`
 // (time to first flight over (k, r)).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // `blockdyn lyapunov`: largest Lyapunov exponent along one orbit (thesis sec. 5.2.2), with its
 // convergence history (running estimate against time).
 #include <cstdio>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // `blockdyn map`: the response map of the thesis's chapter 6 (Figs 6.1-6.2). Every point of a
 // (k, 1/r) grid at fixed mu and initial conditions is classified (steady rocking, settle down,
 // zero-friction rock-flight, rock to vertical, overturned) by the sweep engine (threads,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // `blockdyn poincare`: the Poincare section w = 0 of one orbit (thesis sec. 5.2.1, Figs. 5.3-5.14):
 // CSV of the crossing states (y, y', w', x, x') and plots of the (y, y') and (y, w') projections.
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // `blockdyn response`: long-term response of one block (thesis sec. 4.4): response type, metrics,
 // swings (lengths, swing-averaged energies), phase portraits, plot.
 #include <cstdio>

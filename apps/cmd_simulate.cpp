@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // `blockdyn simulate`: one run of any model family (winkler, housner, rigid) from flags or a TOML
 // scenario; JSON summary, CSV trajectory, plot.
 #include <cmath>

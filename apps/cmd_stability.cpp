@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Stability studies (thesis 4.3.1-4.3.2): `overturn` (time and ihor at overturning vs k),
 // `stability-curve` (k2/k3_stability(r) for ic2, k1_stability(r) for ic1), `blowup` (r2_s(mu),
 // r3_s(mu): below them ic2 overturns whatever k is, up to a k cap).

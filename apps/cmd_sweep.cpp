@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // `blockdyn sweep`: a grid of runs, from a TOML definition and/or flags; threads, MPI, resumable
 // journal, progress, CSV + JSON sidecar, plot. The axes come from the model family: k, r (or 1/r),
 // mu and initial conditions for the Winkler block; the block's shape, interface, impact, initial

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The ground-motion flags every command that runs a model accepts: --ground-h... (horizontal)
 // and --ground-v... (vertical), each constant, harmonic, pulse or recorded, in units of g.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // blockdyn command-line program: subcommands register themselves in apps/cmd_*.cpp.
 #include <CLI/CLI.hpp>
 
@@ -16,6 +17,14 @@ int main(int argc, char** argv) {
   auto& reg = blockdyn::cli::command_registry();
   std::sort(reg.begin(), reg.end(), [](const auto& a, const auto& b) { return a.order < b.order; });
   for (const auto& c : reg) c.add(app);
+  // The subcommand names the schema of its JSON outputs.
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    if (!a.empty() && a[0] != '-') {
+      blockdyn::cli::current_command() = a;
+      break;
+    }
+  }
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // MPI driver of `blockdyn sweep`: rank 0 owns the journal/CSV/sidecar (SweepSession) and also
 // computes; every rank takes the pending points i with (position in the pending list) % size ==

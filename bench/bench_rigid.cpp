@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Issue 7 benchmark: a 60 s recorded motion (the synthetic fixture, 6000 samples at 0.01 s, every
 // sample a breakpoint) on Housner's block and on the 3-DOF block. Counters: steps, events (impacts
 // + mechanism changes), rhs evaluations, ns per step and per event.

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: Apache-2.0
 """Figures of docs/rigid-ground.md, computed with the blockdyn program.
 
 usage: fig_rigid_ground.py BLOCKDYN OUTDIR [RECORD.AT2]

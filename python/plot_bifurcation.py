@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """Equilibrium bifurcation diagram w vs k for one aspect ratio (thesis Figs 4.37-4.39).
 
 Usage: plot_bifurcation.py DIAGRAM.csv OUT.png  (reads DIAGRAM.csv.json for k_os, k_uns, ...)

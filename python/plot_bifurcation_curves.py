@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """Critical stiffnesses k_os(r), k_uns(r) and their difference (thesis Fig 4.40).
 
 Usage: plot_bifurcation_curves.py CURVES.csv OUT.png   Writes OUT.png and OUT.svg.

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: Apache-2.0
 """Energy-surface projections onto (y, y') and (w, w') with the trajectory overlaid (thesis
 Figs. 5.1-5.2, 5.8-5.11).
 

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """Arm and energy landscape of the static equilibria (thesis Figs 4.35-4.36).
 
 Usage: plot_equilibria.py LANDSCAPE.csv OUT.png  (reads LANDSCAPE.csv.json for the equilibria)

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: Apache-2.0
 """Plots of the flight studies written by `blockdyn flight-time | flight-boundary | kmin | flight-map`.
 
 usage: plot_flight.py TABLE.csv OUT.png MODE     MODE: time | boundary | kmin | map

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: Apache-2.0
 """Convergence of the largest Lyapunov exponent: running estimate against time.
 
 usage: plot_lyapunov.py HISTORY.csv OUT.png [TITLE]   (an SVG is written beside the PNG)

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: Apache-2.0
 """Response map over (1/r, k) with boundary curves (thesis Figs 6.1-6.2).
 
 usage: plot_map.py MAP.csv BOUNDARIES.csv OUT.png TITLE   (an SVG is written beside the PNG)

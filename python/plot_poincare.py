@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: Apache-2.0
 """Poincare map through w = 0 (thesis Figs. 5.3-5.14): projections onto (y, y') and (y, w').
 
 usage: plot_poincare.py CROSSINGS.csv OUT.png [TITLE]   (an SVG is written beside the PNG)

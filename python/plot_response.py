@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: Apache-2.0
 """Long-term response of one block (thesis Figs. 4.41-4.57): phase portraits (y, y'), (w, w'),
 (x, x') sampled at constant time intervals, swing-averaged energies and swing lengths.
 

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: Apache-2.0
 """Time histories of a rigid-ground run (`blockdyn simulate --model housner|rigid`).
 
 usage: plot_rigid.py TRAJECTORY.csv OUT.png [--alpha A] [--model M] [--status S] [--title T]

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: Apache-2.0
 """Plots of the stability studies written by `blockdyn overturn | stability-curve | blowup`.
 
 usage: plot_stability.py TABLE.csv OUT.png MODE     MODE: overturn | curve | blowup

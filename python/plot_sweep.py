@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """Plot a `blockdyn sweep` CSV: a line over one axis or a map over two axes.
 
 Usage: plot_sweep.py SWEEP.csv OUT.png --x AXIS [--y AXIS] [--column COL] [--logx] [--logy]

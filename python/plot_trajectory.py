@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: Apache-2.0
 """Time histories and phase portraits of one `blockdyn simulate` trajectory CSV.
 
 usage: plot_trajectory.py TRAJECTORY.csv OUT.png   (an SVG is written beside the PNG)

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """Shared helpers for the blockdyn plotting scripts (python/plot_*.py).
 
 Importing this module selects the non-interactive Agg backend; the scripts take `plt` and `np`

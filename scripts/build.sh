@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # Configures and builds blockdyn into ./build (Release). BLOCKDYN_WERROR=ON (set by test.sh, as in
 # CI) turns compiler warnings into errors.
 set -euo pipefail

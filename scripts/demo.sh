@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # From a fresh Debian 12 machine: install dependencies, build, and run the demo simulation
 # (writes out/demo_trajectory.csv, out/demo.png/.svg and out/demo.json).
 set -euo pipefail

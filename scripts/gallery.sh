@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # Regenerates one figure of every analysis family at modest resolution (a few minutes on
 # 2 cores). Usage: scripts/gallery.sh [OUTDIR]   (default out/gallery; needs a built ./build)
 set -euo pipefail

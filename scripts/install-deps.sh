@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # Installs blockdyn's build and plot dependencies from Debian 12 packages (idempotent).
 set -euo pipefail
 PKGS=(build-essential cmake ninja-build pkg-config

@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: Apache-2.0
 """Writes the synthetic earthquake-like accelerogram used by the tests and examples.
 
 Kanai-Tajimi filtered white noise (ground frequency 2.5 Hz, damping 0.6) under a Jennings

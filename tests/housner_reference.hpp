@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Independent references for the rigid-ground models, computed from first integrals of the exact
 // (nonlinear) Housner equation by double-exponential quadrature (Boost tanh_sinh), not by the

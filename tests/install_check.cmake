@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # Installs the build tree into a temporary prefix, then configures, builds and runs a consumer
 # project that finds it with find_package(blockdyn). Run by ctest (InstallAndFindPackage).
 file(REMOVE_RECURSE ${WORK_DIR})
@@ -10,8 +11,20 @@ function(run)
   message("${out}")
 endfunction()
 run(${CMAKE_COMMAND} --install ${BUILD_DIR} --prefix ${WORK_DIR}/prefix)
+# Every installed header compiles on its own against the installed tree (none names an
+# internal header that was not installed).
+file(GLOB_RECURSE headers RELATIVE ${WORK_DIR}/prefix/include ${WORK_DIR}/prefix/include/blockdyn/*.hpp)
+list(LENGTH headers n)
+if(n LESS 20)
+  message(FATAL_ERROR "only ${n} headers installed")
+endif()
+set(tu "")
+foreach(h ${headers})
+  string(APPEND tu "#include \"${h}\"\n")
+endforeach()
+file(WRITE ${WORK_DIR}/all_headers.cpp "${tu}")
 run(${CMAKE_COMMAND} -S ${SOURCE_DIR}/tests/consumer -B ${WORK_DIR}/build -DCMAKE_PREFIX_PATH=${WORK_DIR}/prefix
-    -DCMAKE_BUILD_TYPE=Release)
+    -DCMAKE_BUILD_TYPE=Release -DALL_HEADERS=${WORK_DIR}/all_headers.cpp)
 run(${CMAKE_COMMAND} --build ${WORK_DIR}/build)
 run(${WORK_DIR}/build/consumer)
 if(NOT EXISTS ${WORK_DIR}/prefix/bin/blockdyn)

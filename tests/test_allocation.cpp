@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The integration loop must not touch the heap: count global allocations around simulate().
 #include <gtest/gtest.h>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Boundary finders on synthetic predicates with known answers, and the flight / stability
 // boundaries of the thesis checked against their definitions (not against stored numbers).
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Physical-unit input and output of `blockdyn simulate`: k = k_line a b / (m g), time scale
 // sqrt(a / g), the same run as its non-dimensional twin. With a physical block every time is in
 // seconds (--t-end 3 is 3 s, t_end = 3 / sqrt(a / g) non-dimensional).

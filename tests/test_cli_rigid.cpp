@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // `blockdyn simulate --model housner|rigid` (issue 7): the JSON contract scripts rely on, the
 // trajectory CSV, ground-motion flags (pulses, records) and bad input (exit 2, one line naming
 // the field, no partial output).
@@ -35,6 +36,8 @@ TEST(CliRigid, HousnerJsonContract) {
   const auto r = run_cli(base("housner") + std::vector<std::string>{"--w0", "0.1", "--t-end", "3", "--json"}, d.path);
   ASSERT_EQ(r.code, 0) << r.err;
   const json j = json::parse(r.out);
+  EXPECT_EQ(j["schema"], "blockdyn.simulate.summary/1");  // docs/output-formats.md
+  EXPECT_EQ(j["model"], "housner");
   EXPECT_EQ(j["status"], "t_end");
   EXPECT_EQ(j["final_mode"], "rock");
   EXPECT_DOUBLE_EQ(j["max_abs_rotation"].get<double>(), 0.1);

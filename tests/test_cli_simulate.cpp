@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The `blockdyn simulate` command line (issue 2, item 9): JSON summary, trajectory CSV, TOML
 // scenario equivalence, and rejection of bad input (non-zero exit, a one-line `error:` message
 // naming the field, and no output file left behind). Runs the real binary in a temp directory.

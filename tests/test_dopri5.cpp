@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Validation of the integration engine (issue 2, item 2): the Dormand-Prince 5(4) stepper's
 // order of convergence, its continuous extension, and the event-driven HybridIntegrator on toy
 // hybrid systems whose event times are known in closed form.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Validation of the energy bookkeeping (issue 2, item 4). Without friction and with at most one
 // corner submerged (or the block upright) the model is conservative: E stays at E0 to the
 // integration tolerance. With friction and two submerged corners E changes, and the balance

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Static equilibria and their bifurcations (thesis 4.3.3). Reference values come from
 // closed forms derived independently of the numerical path (docs/equilibria.md):
 //  - upright slope of the arm: 1/2 - r^2 k/12 - 1/(4k)  => k_os root of k^2 r^2 - 6k + 3 = 0;

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Event precision (issue 2, item 6): event times are stable under tightening of the tolerance,
 // the event functions vanish at the recorded event states, and events that follow each other
 // closely (two different events, or a brief flight between samples) are all found, in order,

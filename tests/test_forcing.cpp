@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The ground-motion path (issue 2, item 8). In the frame moving with the ground a horizontal
 // ground acceleration a acts as x'' = Rx - a and a vertical one as y'' = Ry - 1 - a_v.
 //

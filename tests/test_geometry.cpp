@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Validation of the Region geometry (issue 2, item 1): the closed-form integrals of
 // geometry/region.cpp against an independent computation of the lower envelope of the rotated
 // rectangle, the closed forms of the spec, symmetry, continuity at border states, and the

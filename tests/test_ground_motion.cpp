@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Ground motions (issue 7, sec. 2): pulse shapes, PEER .AT2 and CSV records, breakpoints that the
 // integrator lands on, time-unit conversion.
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Housner's rocking block (issue 7, sec. 3) against independent references: first integrals of
 // the exact equation evaluated by double-exponential quadrature (housner_reference.hpp), the
 // linearised closed forms of the spec in the small-alpha limit, energy, symmetry and the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Largest Lyapunov exponent: the two-trajectory estimator on hybrid toy systems with known
 // exponents, then sign expectations on the block (thesis sec. 5.3: > 1 in rock to vertical,
 // > 2 with mu = 0, ~0 in steady rocking and settle down).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // `blockdyn map`: a tiny (k, 1/r) map end to end - classified rows, boundary curves, thread
 // independence, bad input.
 #include <gtest/gtest.h>

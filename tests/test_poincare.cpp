@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Poincare section w = 0 and energy surfaces (thesis sec. 5.1-5.2).
 #include <gtest/gtest.h>
 #include <sys/wait.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Swings, swing-averaged energies, phase sampling and the long-term response classification
 // (thesis sec. 4.4, Table 4.1).
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The 3-DOF rigid block on rigid ground (issue 7, sec. 3): the onset mechanism table and sliding
 // closed forms of the spec, the Housner limit (large friction), the housner and newton impact laws,
 // free flight, energy balance, symmetry, Painleve detection, and the contact problem's closed forms.

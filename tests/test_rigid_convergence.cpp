@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Convergence of the Winkler model to the rigid block on rigid ground (thesis sec. 3.3, "second
 // test", Table 3.2; issue 2, item 5): ic1 with w0 = 0.8, r = 2, mu = 0.3. The block starts in
 // contact, its lowest corner starts sliding left, stops and slides right. The time s_r of that

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Sweeps of the rigid-ground family (issue 7: sweeps take their axes from the model family):
 // axes named after the family's parameters, the same bytes for any thread count, a definition
 // file equivalent to the flags, unknown axes rejected, and every row equal to its single run.
@@ -32,6 +33,7 @@ TEST(RigidSweep, SameBytesForAnyThreadCount) {
   EXPECT_EQ(count_lines(a), 49u);
   EXPECT_EQ(a.rfind("index,ground_h_duration,ground_h_amplitude,status,t_final,final_mode,max_abs_rotation,", 0), 0u);
   const json side = json::parse(slurp(d.path + "/a.json"));
+  EXPECT_EQ(side["schema"], "blockdyn.sweep.sidecar/1");
   EXPECT_EQ(side["definition"]["model"], "housner");
   EXPECT_EQ(side["status"], "complete");
 }

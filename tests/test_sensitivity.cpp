@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Sensitive dependence on initial conditions (thesis sec. 5.2, Table 5.1; issue 2, item 7):
 // mu = 0, k = 1e5, r = 0.3, ic1 against ic1 with y'(0) = 1e-10. Both runs take off at the same
 // time, separate to visibly different states by t = 20, and conserve energy throughout.

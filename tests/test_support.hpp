@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Helpers shared by the validation tests: recording measured numbers in the test report,
 // simulation options, simple initial states, and sampling the completed state along the dense

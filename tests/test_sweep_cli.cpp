@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // `blockdyn sweep` end to end: incremental output, kill + resume, MPI, bad definitions, plots.
 #include <gtest/gtest.h>
 #include <signal.h>

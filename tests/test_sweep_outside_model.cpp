@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A sweep point whose initial state lies outside the model (three corners below the surface on a
 // very soft foundation) is reported in its row, not integrated, and does not stop the sweep.
 #include <gtest/gtest.h>

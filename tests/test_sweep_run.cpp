@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Sweep runs through the library: determinism across thread counts, metrics, journal/resume.
 #include <gtest/gtest.h>
 

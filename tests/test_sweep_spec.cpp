@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Sweep definitions: axes, point order, TOML parsing and validation.
 #include <gtest/gtest.h>
 

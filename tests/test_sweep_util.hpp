@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Helpers for the sweep tests: temporary directories, files, and running the CLI.
 #include <fcntl.h>

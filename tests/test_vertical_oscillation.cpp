@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Validation against the thesis's periodic test solution (sec. 3.3, "Periodic solution"; issue 2,
 // item 3): the upright block dropped from y0 = 1/2 - 3/k at rest oscillates vertically, with
 // flights in between, and never rotates.

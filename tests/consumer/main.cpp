@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Links against an installed blockdyn: one Housner run, printed as its first impact time.
 #include <cstdio>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // A recorded ground acceleration: samples (t_i, a_i) in seconds and units of g, linear between
 // samples, zero outside [t_0, t_last]. Read from a PEER NGA .AT2 file or a two-column CSV.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Horizontal and vertical ground acceleration, in units of g, for every model family. In the
 // frame moving with the ground they act on a body as inertial forces -m a_H, -m a_V.

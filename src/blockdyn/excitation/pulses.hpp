@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Idealised acceleration pulses of unit amplitude, as functions of the time since the pulse
 // began, s in [0, t_p] (zero outside). t_p is the pulse's "duration" parameter:

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Dormand-Prince 5(4) embedded Runge-Kutta pair with FSAL and the order-4 continuous
 // extension of Hairer, Norsett & Wanner (Solving ODEs I, sec. II.6). Fixed-size state,

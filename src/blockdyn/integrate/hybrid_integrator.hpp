@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Generic integrator for piecewise-smooth (hybrid) systems: adaptive Dormand-Prince 5(4),
 // event location on the dense output by bracketing + TOMS 748, restart at each event.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Bracketing root solver for event location on a step's dense output.
 // TOMS 748 (Alefeld, Potra & Shi) from Boost.Math, iterated until the bracket is a few ulps wide.

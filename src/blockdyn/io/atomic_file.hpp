@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Write-to-temporary-then-rename: a reader never sees a partial file, and a failed run leaves
 // no output behind.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "blockdyn/io/json_io.hpp"
 
 #include <cmath>
@@ -105,6 +106,10 @@ json to_json(const RigidEventRecord& e) {
   return j;
 }
 
+std::string schema_name(const std::string& command, const std::string& kind) {
+  return "blockdyn." + command + "." + kind + "/" + std::to_string(kJsonSchemaVersion);
+}
+
 json run_info() {
   return {{"program", "blockdyn"}, {"version", kVersion}, {"git", kGitDescribe}};
 }
@@ -115,6 +120,7 @@ json result_json(const BlockParams& p, const GroundMotion& g, const SimulationOp
                  const SimulationResult& r, const PhysicalBlock* phys) {
   json j;
   j["run"] = run_info();
+  j["model"] = "winkler";
   j["parameters"] = to_json(p);
   j["ground_motion"] = to_json(g);
   j["tolerances"] = to_json(o.integrator);

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // JSON views of parameters, options, states and results (nlohmann::json). Doubles are written
 // with full round-trip precision by nlohmann's serializer.
@@ -18,6 +19,11 @@ nlohmann::ordered_json state_json(const BlockStateVec& z, const UnitScales& s); 
 nlohmann::ordered_json to_json(const Energy& e);
 nlohmann::ordered_json to_json(const EventRecord& e);
 nlohmann::ordered_json run_info();  // program version, for every output
+// Version of the JSON layouts documented in docs/output-formats.md: raised when a key is removed
+// or changes meaning (new keys may be added within a version).
+inline constexpr int kJsonSchemaVersion = 1;
+// "blockdyn.<command>.<kind>/<kJsonSchemaVersion>", e.g. "blockdyn.simulate.summary/1".
+std::string schema_name(const std::string& command, const std::string& kind);
 // Everything `simulate --json` prints (physical block and scales optional).
 nlohmann::ordered_json result_json(const BlockParams& p, const GroundMotion& g, const SimulationOptions& o,
                            const SimulationResult& r, const PhysicalBlock* phys = nullptr);

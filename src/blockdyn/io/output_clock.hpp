@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Output instants t0 + n * interval of a trajectory writer, computed from n so that no rounding
 // drift accumulates; each instant is handed out once, in order, as the run's pieces arrive.

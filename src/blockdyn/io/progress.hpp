@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Progress report for long batch jobs: a redrawn bar with rate and ETA when the stream is a
 // terminal, plain lines every few seconds otherwise (logs, CI), or nothing.

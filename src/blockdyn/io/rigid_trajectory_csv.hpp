@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Trajectory CSV of a rigid-ground run (HousnerBlock or RigidBlock), SI units: one row per
 // output instant (fixed interval, from the dense output) and one row per event (the state after

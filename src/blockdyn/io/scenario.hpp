@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // A simulation scenario: everything one `blockdyn simulate` run needs, readable from TOML so
 // runs are reproducible from a file. Unknown keys are errors (a typo must not be ignored).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Reading helpers shared by the TOML inputs (scenarios, sweeps): every error is a
 // std::invalid_argument "field: what is wrong", naming the offending key.

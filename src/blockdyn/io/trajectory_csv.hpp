@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Streams a trajectory to CSV: one row per output instant (fixed interval, from the dense
 // output) plus one row per event, with mode, reactions and energy components.

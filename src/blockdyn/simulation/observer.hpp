@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Observers of a simulation, shared by every model family: they receive the start, each accepted
 // piece of trajectory (dense output), each event (with the state before and after any jump) and

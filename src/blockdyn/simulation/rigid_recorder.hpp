@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The rigid family's recorder (HousnerBlock and RigidBlock): events with the velocities across
 // impacts, mechanism changes, the largest |theta| (located on the dense output where theta' = 0),

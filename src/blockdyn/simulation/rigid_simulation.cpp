@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "blockdyn/simulation/rigid_simulation.hpp"
 
 #include <cmath>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The rigid-ground family's runs (Housner's 1-DOF block and the 3-DOF block) and what users ask
 // of them: outcome (t_end, overturned, invalid), the mechanism at the end, the largest rotation,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // One run of any hybrid model from a mode and state, with its observers: the integrator's
 // observer protocol bridged to Observer<Model>, the start and end announced.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The Winkler family's run: the block from a state, with what users ask about (events, ihor,
 // first flight, overturn, energy balance), the trajectory streamed to a sink. Built on the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Physical block -> non-dimensional parameters, and the scales to convert results back.
 // Lengths in units of the height a, forces of the weight m g, time of sqrt(a / g).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "blockdyn/analysis/dynamics/lyapunov.hpp"
 
 namespace blockdyn {

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Largest Lyapunov exponent of a hybrid (event-driven) system by two-trajectory renormalisation
 // (Benettin et al. 1980).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Locating a parameter value where a yes/no property of the dynamics changes (flight and
 // stability boundaries). Everything works in log scale: boundaries in k span decades.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Deterministic parallel map over indices 0..n-1: results land at their own index, so the
 // output is identical for any thread count. Work is handed out dynamically (an atomic

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // What the sweep runner (threads, MPI, journal, resume, sidecar) needs of a parameter study, for
 // any model family: a fixed number of points, each row a pure function of the definition and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Parameter sweeps of the rigid-ground family (housner, rigid): axes named after the family's
 // own parameters (block shape, interface, impact, initial state, ground motion) over a base run

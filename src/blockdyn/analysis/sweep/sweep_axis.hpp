@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // One axis of a parameter sweep: an explicit list of values or a range (linear or log-spaced)
 // expanded once, so every consumer (points, CSV, sidecar, fingerprint) sees the same doubles.

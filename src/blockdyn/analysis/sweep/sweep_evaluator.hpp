@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Turns a sweep point into its CSV row. The row is a pure function of the definition and the
 // index (same bytes on any thread, rank or rerun), so it is computed once and stored verbatim.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Crash-safe record of finished sweep rows: `<csv>.journal` holds a first line tying it to the
 // definition, the CSV header, then one row per finished point in completion order. Each row is

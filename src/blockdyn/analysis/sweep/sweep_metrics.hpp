@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Extra per-point columns of a sweep. A metric names its columns and fills them from the point,
 // its SimulationResult and (optionally) a per-point SimulationSink that watched the trajectory.

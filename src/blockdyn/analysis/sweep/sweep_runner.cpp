@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "blockdyn/analysis/sweep/sweep_runner.hpp"
 
 #include <sys/resource.h>
@@ -126,6 +127,7 @@ void SweepSession::record(std::size_t index, const SweepRow& row) {
 
 json SweepSession::sidecar(const std::string& status, int threads) const {
   json j;
+  j["schema"] = schema_name("sweep", "sidecar");
   j["run"] = run_info();
   j["status"] = status;
   j["fingerprint"] = ev_.fingerprint();

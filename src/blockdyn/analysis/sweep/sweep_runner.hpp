@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Running a sweep: rows computed on threads (any order), recorded by one writer (journal +
 // progress), then the sorted CSV and the JSON sidecar. SweepSession is the writer's side; it is

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // A parameter sweep: grid axes over k, r (or 1/r), mu and the initial-condition set, plus the
 // run options shared by every point. Points are numbered in a fixed order (the row id):

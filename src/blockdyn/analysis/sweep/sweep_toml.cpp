@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "blockdyn/analysis/sweep/sweep_toml.hpp"
 
 #include <set>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Reads a sweep definition from TOML. Unknown keys and wrong types are errors naming the key
 // (a typo must not silently sweep the wrong thing). Layout (all tables optional):

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "blockdyn/analysis/winkler/energy_surface.hpp"
 
 #include <boost/math/tools/minima.hpp>

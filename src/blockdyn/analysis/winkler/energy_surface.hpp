@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Energy surfaces and their projections (thesis sec. 5.1, eqs. 5.1-5.3): the sets of states with
 // total energy E (or <= E when friction dissipates), projected onto the (y, y') and (w, w') planes

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Static equilibria of a block resting on the Winkler foundation (thesis 4.3.3).
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Bifurcations of the static equilibria as the foundation stiffness k varies (thesis 4.3.3):
 // k_os(r), below which the upright loses stability (a stable tilted branch is born at w = 0),

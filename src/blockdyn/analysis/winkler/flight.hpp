@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Flight studies of the thesis's section 4.2: time to first flight versus k, the energy lower
 // bound k_min(r), and the critical curves k_critical_n(r) and k_high(r).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Which of the thesis's initial-condition sets a parameter study starts from: ic2, ic1 with the
 // default tilt alpha/2, or an ic1 variant tilted by a fraction of alpha (alpha/4, ...). Studies

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The Winkler block in LyapunovEstimator: Euclidean metric on (sqrt(k) (y - 1/2), w, x', y', w')
 // (x is left out: the dynamics is invariant under horizontal translation, so an x offset never

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Poincare section w = 0 (thesis sec. 5.2.1): the states at the w_zero events, which the
 // integrator locates on the dense output to machine precision. Records (y, y', w', x, x') and the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Long-term response classification (thesis sec. 4.4): steady rocking, settle down, zero-friction
 // rock-flight, rock to vertical, plus overturned. The decision uses measurable quantities only

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Stability against overturning (thesis 4.3.1-4.3.2): time and ihor at overturning versus k,
 // the critical curves k1_stability (ic1), k2_stability and k3_stability (ic2), and the aspect

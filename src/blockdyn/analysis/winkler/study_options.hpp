@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // What the flight and stability studies share: how each run is integrated, and one point of a
 // critical curve (the boundary found at one aspect ratio).

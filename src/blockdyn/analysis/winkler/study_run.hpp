@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // One simulation run of the flight and stability studies.
 #include "blockdyn/analysis/winkler/ic_choice.hpp"

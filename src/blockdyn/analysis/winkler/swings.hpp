@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Swings (thesis sec. 4.4): the motion between two successive sign changes of w'. For each swing:
 // its length (Fig. 4.57) and the five energy components averaged over it (trapezoidal rule at

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Planar rigid-body kinematics of a rectangle: positions, velocities and accelerations of points
 // fixed in the body, in closed form (one sincos per state).

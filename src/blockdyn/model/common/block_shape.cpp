@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "blockdyn/model/common/block_shape.hpp"
 
 #include "blockdyn/model/common/checks.hpp"

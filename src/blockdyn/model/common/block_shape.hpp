@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // A rectangular rigid block in SI units (width b, height h, mass m, gravity g) and the
 // quantities every model of it uses (Housner's notation, see ../shared/spec/rigid-ground-block.md).

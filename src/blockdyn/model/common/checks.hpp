@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Input checks shared by every parameter set: a failed check throws std::invalid_argument
 // "<field> = <value> is out of range: must be <range>".

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Coulomb dry friction shared by every model family: static and kinetic coefficients, the
 // sticking margin and the direction of a sliding force.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The unilateral contact problem of one rigid block touching flat ground at one or two base
 // corners, at force level (accelerations, the mechanism selection of seed 001 sec. 4.2) or at

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Housner's rocking block (1 DOF, seed 001 sec. 4.1): a rigid block on rigid ground that only
 // rocks about a base corner, never slides or flies. theta > 0: rocking on the left corner A.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Impact laws of a rigid block hitting rigid ground at one or two base corners (impulse level).
 //   housner: the impacting corner sticks and the angular momentum about it is conserved

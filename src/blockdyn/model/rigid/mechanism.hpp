@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The five mechanisms of a rigid block on rigid ground (seed 001, sec. 4.2) and the event kinds
 // that the rigid-ground models report.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The full planar rigid block on rigid ground (3 DOF, seed 001 sec. 4.2): five mechanisms (rest,
 // slide, rock and slide-rock about either base corner, flight), static and kinetic Coulomb

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Immutable parameters of a rigid block on rigid ground: the block's shape, the interface
 // (Coulomb friction, static and kinetic) and the impact law. SI units throughout.

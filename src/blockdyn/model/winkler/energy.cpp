@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "blockdyn/model/winkler/energy.hpp"
 
 #include "blockdyn/model/winkler/region.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The five energy components of the thesis (section 4) and the energy balance.
 #include "blockdyn/model/winkler/winkler_params.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Foundation reaction of the thesis's Winkler model: vertical force Ry = (k/r) * area acting
 // at the Region's centroid, its torque about the centre, and the non-potential part of that

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The thesis's initial-condition sets (sec. 3.2). They return the integrated state vector
 // (h = y - 1/2 kept exact: for ic2 h = -1/k, not 0.5 - 1/k - 0.5).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The Region: the part of the Winkler foundation displaced by a tilted rectangular block
 // (lower envelope of the rectangle, including the air gap under a side edge next to a

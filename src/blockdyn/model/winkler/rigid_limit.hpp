@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The rigid block on rigid ground (R-R) check model of the thesis (sec. 2.4): the pivot corner
 // stays on the ground (y = B(w)), w >= 0, contact or slide, no impact (the run stops at w = 0).

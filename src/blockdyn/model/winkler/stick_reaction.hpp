@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The Winkler block's contact mode: reactions with the lowest corner held fixed (stick).
 // The corner on side s sits at (-s A_s, -B_s) from the centre.

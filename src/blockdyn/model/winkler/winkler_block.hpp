@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The thesis's model: a rigid block on a Winkler foundation with Coulomb friction at the
 // lowest corner, moving in contact (pivot fixed), slide or flight. Provides right-hand sides,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Immutable, non-dimensional parameters of a block on a Winkler foundation.
 #include <cmath>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Mutable state of a planar block and the mode it moves in. Kept apart from BlockParams.
 #include <array>
