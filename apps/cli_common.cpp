@@ -32,7 +32,7 @@ void add_tolerance_options(CLI::App& app, IntegratorOptions& o) {
 }
 
 std::string& current_command() {
-  static std::string name;
+  thread_local std::string name;  // per thread: the Python module may run commands concurrently
   return name;
 }
 

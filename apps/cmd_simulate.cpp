@@ -28,7 +28,7 @@ struct SimulateFlags {
   double w0 = 0, x0 = 0, y0 = 0, vx0 = 0, vy0 = 0, vw0 = 0;
   double t_end = 10, output_interval = 0.01;
   std::string trajectory, plot, json_out, units = "nondim";
-  bool json = false;
+  bool json = false, quiet = false;
   GroundFlags ground;
   PhysicalBlock phys;  // --height --width ... (physical input)
   double restitution = 0, mu_s = 0.7, mu_k = 0.7;
@@ -228,7 +228,7 @@ void run_winkler(const SimulateFlags& f, Scenario sc) {
   const SimulationResult r = simulate(sc.params, sc.ground, z0, sc.options, sink.get());
   target.plot_and_clean("plot_trajectory.py", sc.plot);
   emit(result_json(sc.params, sc.ground, sc.options, r, sc.physical ? &*sc.physical : nullptr), f);
-  if (!f.json) print_summary(r, sc.physical ? scales_of(*sc.physical).time : 0.0);
+  if (!f.json && !f.quiet) print_summary(r, sc.physical ? scales_of(*sc.physical).time : 0.0);
 }
 
 std::string block_title(const std::string& model, const RigidBlockParams& p) {
@@ -263,7 +263,7 @@ void run_rigid_family(const SimulateFlags& f, const Scenario& sc, Simulate&& sim
                         {"--alpha", std::to_string(p.shape.alpha()), "--model", sc.model, "--status",
                          to_string(r.status), "--title", block_title(sc.model, p)});
   emit(rigid_result_json(p, sc.ground, o, r), f);
-  if (!f.json) print_summary(r, p.shape.alpha());
+  if (!f.json && !f.quiet) print_summary(r, p.shape.alpha());
 }
 
 void run(const CLI::App& s, const SimulateFlags& f) {
@@ -317,6 +317,7 @@ void add(CLI::App& app) {
   s->add_option("--units", f->units, "winkler: nondim, or physical (needs a physical block: flags or [physical])");
   s->add_flag("--json", f->json, "print the JSON summary on stdout");
   s->add_option("--json-out", f->json_out, "also write the JSON summary to this file");
+  s->add_flag("--quiet", f->quiet, "no text summary on stdout");
   add_ground_flags(*s, f->ground);
   add_physical_flags(*s, *f);
   s->callback([s, f] { run(*s, *f); });

@@ -31,3 +31,19 @@ if(NOT EXISTS ${WORK_DIR}/prefix/bin/blockdyn)
   message(FATAL_ERROR "the blockdyn program was not installed")
 endif()
 run(${WORK_DIR}/prefix/bin/blockdyn --version)
+# The Python package, installed under lib/python3/dist-packages, imports and runs, and finds the
+# installed plot scripts.
+if(EXISTS ${BUILD_DIR}/python/blockdyn/__init__.py)
+  file(GLOB site ${WORK_DIR}/prefix/lib*/python3/dist-packages)
+  if(NOT site)
+    message(FATAL_ERROR "the Python package was not installed")
+  endif()
+  execute_process(COMMAND ${CMAKE_COMMAND} -E env PYTHONPATH=${site}
+                  /usr/bin/python3 -c "import blockdyn, os; r = blockdyn.simulate(model='housner', width=0.2, height=1, w0=0.1, t_end=1, plot='${WORK_DIR}/py.png'); print(r, os.environ['BLOCKDYN_PYTHON_DIR'])"
+                  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(NOT rc EQUAL 0 OR NOT EXISTS ${WORK_DIR}/py.png OR NOT out MATCHES "prefix/share/blockdyn/python")
+    message(FATAL_ERROR "installed Python package failed (${rc}):\n${out}\n${err}")
+  endif()
+  message("${out}")
+endif()
+

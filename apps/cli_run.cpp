@@ -1,0 +1,50 @@
+// SPDX-License-Identifier: Apache-2.0
+#include "cli_run.hpp"
+
+#include <CLI/CLI.hpp>
+
+#include <algorithm>
+#include <iostream>
+#include <stdexcept>
+
+#include "blockdyn/version.hpp"
+#include "cli_common.hpp"
+#include "cli_registry.hpp"
+
+namespace blockdyn::cli {
+
+CliOutcome run_cli(const std::vector<std::string>& args) {
+  CLI::App app{"blockdyn: nonsmooth dynamics of rigid blocks (Winkler foundation, rigid ground)"};
+  app.set_version_flag("--version", std::string(kVersion) + " (" + kGitDescribe + ")");
+  app.require_subcommand(1);
+  auto reg = command_registry();
+  std::sort(reg.begin(), reg.end(), [](const auto& a, const auto& b) { return a.order < b.order; });
+  for (const auto& c : reg) c.add(app);
+  // The subcommand names the schema of its JSON outputs.
+  current_command().clear();
+  for (const auto& a : args)
+    if (!a.empty() && a[0] != '-') {
+      current_command() = a;
+      break;
+    }
+  // CLI11 parses the arguments in reverse order from a vector.
+  std::vector<std::string> rev(args.rbegin(), args.rend());
+  CliOutcome out;
+  try {
+    app.parse(rev);
+  } catch (const CLI::ParseError& e) {
+    if (e.get_exit_code() == 0) {  // --help, --version
+      app.exit(e, std::cout, std::cerr);
+      return out;
+    }
+    // Every usage error exits 2 (CLI11's own codes are not part of the contract).
+    out = {2, e.what()};
+  } catch (const std::invalid_argument& e) {
+    out = {2, e.what()};
+  } catch (const std::exception& e) {
+    out = {1, e.what()};
+  }
+  return out;
+}
+
+}  // namespace blockdyn::cli

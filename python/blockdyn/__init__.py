@@ -1,0 +1,149 @@
+# SPDX-License-Identifier: Apache-2.0
+"""blockdyn from Python: nonsmooth dynamics of rigid blocks.
+
+    import blockdyn
+    r = blockdyn.simulate(model="housner", width=0.3, height=1.5, w0=0.1, t_end=5)
+    r.t, r.state          # NumPy arrays: times, and one row (x, y, w, vx, vy, vw) per output point
+    r.events              # list of dicts, as in `blockdyn simulate --json`
+    r.summary             # the dict `blockdyn simulate --json` prints
+    s = blockdyn.sweep(model="housner", width=0.25, height=1.5, ground_h_pulse="rect",
+                       axis=["ground_h_duration=0.1:1:10", "ground_h_amplitude=0.1:1:10"], t_end=8)
+    s["overturned"]       # one NumPy column per CSV column
+
+Options are the command line's, with dashes written as underscores (`t_end` for `--t-end`,
+`ground_h_amplitude` for `--ground-h-amplitude`); True gives a flag, None or False leaves an
+option out, a list repeats it. The same code runs as for the `blockdyn` program, in this process
+and without the GIL, so results are identical to the command line's to the last digit. Invalid
+input raises ValueError with the program's message (naming the field); other failures RuntimeError.
+"""
+import csv
+import json
+import os
+import tempfile
+
+import numpy as np
+
+from . import _core
+
+__version__ = _core.__version__
+__all__ = ["simulate", "sweep", "map", "run", "Simulation", "__version__"]
+
+# Where the plot scripts are once installed (share/blockdyn/python beside lib/python3/...).
+_here = os.path.dirname(os.path.abspath(__file__))
+for _up in (3, 4):
+    _cand = os.path.join(_here, *([".."] * _up), "share", "blockdyn", "python")
+    if "BLOCKDYN_PYTHON_DIR" not in os.environ and os.path.exists(os.path.join(_cand, "plotkit.py")):
+        os.environ["BLOCKDYN_PYTHON_DIR"] = os.path.normpath(_cand)
+        break
+
+STATE_COLUMNS = ("x", "y", "w", "vx", "vy", "vw")
+
+
+def _number(v):
+    return repr(float(v)) if isinstance(v, float) else str(v)
+
+
+def _args(command, options, positional=()):
+    args = [command, *[str(p) for p in positional]]
+    for key, value in options.items():
+        if value is None or value is False:
+            continue
+        flag = "--" + key.replace("_", "-")
+        if value is True:
+            args.append(flag)
+        elif isinstance(value, (list, tuple)):
+            for v in value:
+                args += [flag, _number(v)]
+        else:
+            args += [flag, _number(value)]
+    return args
+
+
+def run(*args):
+    """Runs `blockdyn ARGS...` in this process; raises ValueError (invalid input) or RuntimeError."""
+    code, message = _core.run_cli([str(a) for a in args])
+    if code == 2:
+        raise ValueError(message)
+    if code != 0:
+        raise RuntimeError(message)
+
+
+def _read_csv(path):
+    """{column: NumPy array} (float where every cell is a number or empty, else str)."""
+    with open(path, newline="") as f:
+        rows = list(csv.reader(f))
+    if not rows:
+        return {}
+    header, body = rows[0], rows[1:]
+    cols = {}
+    for i, name in enumerate(header):
+        cells = [r[i] if i < len(r) else "" for r in body]
+        try:
+            cols[name] = np.array([float(c) if c != "" else np.nan for c in cells], dtype=float)
+        except ValueError:
+            cols[name] = np.array(cells, dtype=object)
+    return cols
+
+
+class Simulation:
+    """One run: `t`, `state` (rows x, y, w, vx, vy, vw), `mode`, `event` (per row), `data` (every
+    trajectory column by name), `events` and `summary` (the JSON of `simulate --json`)."""
+
+    def __init__(self, data, summary):
+        self.data = data
+        self.summary = summary
+        self.t = data["t"]
+        self.state = np.column_stack([data[c] for c in STATE_COLUMNS])
+        self.mode = data["mode"]
+        self.event = data["event"]
+        self.events = summary.get("events", [])
+
+    def __getitem__(self, column):
+        return self.data[column]
+
+    def __repr__(self):
+        s = self.summary
+        return (f"<blockdyn.Simulation model={s.get('model')} status={s.get('status')} "
+                f"t_final={s.get('t_final')} rows={len(self.t)} events={len(self.events)}>")
+
+
+def simulate(scenario=None, **options):
+    """Runs `blockdyn simulate` (optionally from a TOML scenario) and returns a Simulation."""
+    for reserved in ("trajectory", "json", "json_out"):
+        if reserved in options:
+            raise ValueError(f"{reserved}: set by blockdyn.simulate itself")
+    with tempfile.TemporaryDirectory(prefix="blockdyn-py-") as tmp:
+        traj = os.path.join(tmp, "trajectory.csv")
+        summ = os.path.join(tmp, "summary.json")
+        opts = dict(options, trajectory=traj, json_out=summ, quiet=True)
+        run(*_args("simulate", opts, [scenario] if scenario else []))
+        with open(summ) as f:
+            summary = json.load(f)
+        return Simulation(_read_csv(traj), summary)
+
+
+def _table_command(command, definition, options):
+    output = options.pop("output", None)
+    with tempfile.TemporaryDirectory(prefix="blockdyn-py-") as tmp:
+        out = output or os.path.join(tmp, command + ".csv")
+        opts = dict(options, output=out, quiet=True)
+        run(*_args(command, opts, [definition] if definition else []))
+        cols = _read_csv(out)
+        side = os.path.splitext(out)[0] + ".json" if out.endswith(".csv") else out + ".json"
+        with open(side) as f:
+            cols["_sidecar"] = json.load(f)
+        if command == "map":
+            cols["_boundaries"] = _read_csv(os.path.splitext(out)[0] + "_boundaries.csv")
+        return cols
+
+
+def sweep(definition=None, **options):
+    """Runs `blockdyn sweep` and returns {column: NumPy array}, with the sidecar dict under key
+    "_sidecar". Without `output` it writes to a temporary directory."""
+    return _table_command("sweep", definition, options)
+
+
+def map(**options):  # noqa: A001 (the command's name)
+    """Runs `blockdyn map` (response types over (k, 1/r) with boundaries) and returns its table as
+    {column: NumPy array}, "_sidecar", and the boundaries table under "_boundaries"."""
+    return _table_command("map", None, options)

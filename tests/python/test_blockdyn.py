@@ -1,0 +1,111 @@
+# SPDX-License-Identifier: Apache-2.0
+"""The Python module (issue 12): `import blockdyn` gives the command line's results to the last
+digit, as NumPy arrays and dicts; invalid input raises ValueError naming the field; runs release
+the GIL (threads give the same results as sequential runs)."""
+import csv
+import json
+import os
+import subprocess
+import tempfile
+import threading
+
+import numpy as np
+import pytest
+
+import blockdyn
+
+CLI = os.environ["BLOCKDYN_CLI"]
+SRC = os.environ["BLOCKDYN_SOURCE_DIR"]
+RECORD = os.path.join(SRC, "tests", "fixtures", "synthetic_60s.AT2")
+
+CASES = [
+    dict(model="housner", width=0.3, height=1.5, w0=0.1, t_end=4),
+    dict(model="rigid", width=0.3, height=1.2, mu_s=0.3, mu_k=0.25, ground_h_record=RECORD,
+         ground_h_scale=1.5, t_end=15, output_interval=0.005),
+    dict(model="rigid", width=0.3, height=1.0, impact="newton", restitution=0.4, w0=0.08, t_end=3),
+    dict(r=0.2, mu=0.2, k=1e5, ic="ic1", t_end=5),
+    dict(height=1.8, width=0.45, mass=300.0, line_stiffness=2e8, mu=0.5, t_end=2,
+         ground_h_pulse="half-sine", ground_h_amplitude=0.3, ground_h_duration=0.5),
+]
+
+
+def cli(*args):
+    r = subprocess.run([CLI, *map(str, args)], capture_output=True, text=True)
+    assert r.returncode == 0, r.stderr
+    return r.stdout
+
+
+def cli_simulate(opts):
+    with tempfile.TemporaryDirectory() as tmp:
+        traj = os.path.join(tmp, "t.csv")
+        out = cli(*blockdyn._args("simulate", dict(opts, trajectory=traj, json=True)))
+        with open(traj, newline="") as f:
+            rows = list(csv.reader(f))
+        return json.loads(out), rows
+
+
+@pytest.mark.parametrize("opts", CASES, ids=lambda o: o.get("model", "winkler"))
+def test_simulate_equals_the_command_line(opts):
+    summary, rows = cli_simulate(opts)
+    r = blockdyn.simulate(**opts)
+    assert r.summary == summary  # every key, every digit
+    header = rows[0]
+    assert list(r.data.keys()) == header
+    for i, name in enumerate(header):
+        col = [row[i] for row in rows[1:]]
+        got = r.data[name]
+        if got.dtype == object:
+            assert list(got) == col
+        else:
+            np.testing.assert_array_equal(got, np.array([float(c) if c else np.nan for c in col]))
+    assert r.state.shape == (len(rows) - 1, 6)
+    np.testing.assert_array_equal(r.state[:, 2], r["w"])
+    assert r.events == summary["events"]
+
+
+def test_sweep_equals_the_command_line():
+    opts = dict(model="housner", width=0.25, height=1.5, ground_h_pulse="rect",
+                axis=["ground_h_duration=0.1:1:4", "ground_h_amplitude=0.15:0.8:5"], t_end=5)
+    with tempfile.TemporaryDirectory() as tmp:
+        out = os.path.join(tmp, "s.csv")
+        cli(*blockdyn._args("sweep", dict(opts, output=out, quiet=True)))
+        with open(out, newline="") as f:
+            rows = list(csv.reader(f))
+    s = blockdyn.sweep(**opts)
+    assert s["_sidecar"]["schema"] == "blockdyn.sweep.sidecar/1"
+    for i, name in enumerate(rows[0]):
+        col = [row[i] for row in rows[1:]]
+        if s[name].dtype == object:
+            assert list(s[name]) == col
+        else:
+            np.testing.assert_array_equal(s[name], np.array([float(c) if c else np.nan for c in col]))
+    assert len(s["index"]) == 20
+
+
+def test_invalid_input_raises_value_error_naming_the_field():
+    with pytest.raises(ValueError, match="mu-k"):
+        blockdyn.simulate(model="rigid", width=0.3, height=1, mu_s=0.2, mu_k=0.5)
+    with pytest.raises(ValueError, match="restitution"):
+        blockdyn.simulate(model="housner", width=0.3, height=1, restitution=2)
+    with pytest.raises(ValueError):
+        blockdyn.simulate(model="rigid", width=0.3, height=1, no_such_option=1)
+
+
+def test_threads_give_the_sequential_results():
+    opts = [dict(model="housner", width=0.3, height=1.5, w0=0.01 * (i + 1), t_end=20) for i in range(4)]
+    seq = [blockdyn.simulate(**o).summary["events"] for o in opts]
+    par = [None] * len(opts)
+
+    def work(i):
+        par[i] = blockdyn.simulate(**opts[i]).summary["events"]
+
+    threads = [threading.Thread(target=work, args=(i,)) for i in range(len(opts))]
+    for t in threads:
+        t.start()
+    for t in threads:
+        t.join()
+    assert par == seq
+
+
+def test_version_matches_the_program():
+    assert cli("--version").strip().startswith(blockdyn.__version__)
