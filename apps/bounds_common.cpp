@@ -40,6 +40,9 @@ void check_run_options(const StudyRunOptions& run, const OutputFlags& out) {
     throw UsageError("plot = '" + out.plot + "' must be a file name ending in .png");
   if (!out.plot.empty() && out.plot.substr(out.plot.size() - 4) != ".png")
     throw UsageError("plot = '" + out.plot + "' must end in .png (an .svg is written beside it)");
+  require_writable("plot", out.plot);
+  require_writable("csv", out.csv);
+  require_writable("json", out.json_out);
 }
 
 IcChoice parse_ic(const std::string& s) {

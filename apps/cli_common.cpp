@@ -2,10 +2,14 @@
 #include "cli_common.hpp"
 #include "cli_registry.hpp"
 
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <cerrno>
 #include <cmath>
+#include <cstring>
+#include <fstream>
 #include <cstdlib>
 #include <iostream>
 #include <sstream>
@@ -72,14 +76,53 @@ static std::string shell_quote(const std::string& s) {
 }
 
 void run_python(const std::string& script, const std::vector<std::string>& args) {
+  // The script's stderr goes to a temporary file: on failure its last line is the reason.
+  char err_path[] = "/tmp/blockdyn-plot-XXXXXX";
+  const int fd = ::mkstemp(err_path);
+  if (fd >= 0) ::close(fd);
+  const RemoveOnSignal guard(err_path);
   std::ostringstream cmd;
   cmd << "MPLBACKEND=Agg /usr/bin/python3 " << shell_quote(python_dir() + "/" + script);
   for (const auto& a : args) cmd << ' ' << shell_quote(a);
+  if (fd >= 0) cmd << " 2>" << shell_quote(err_path);
   const int rc = std::system(cmd.str().c_str());
-  if (rc != 0)
+  std::string last;
+  if (fd >= 0) {
+    std::ifstream in(err_path);
+    for (std::string line; std::getline(in, line);)
+      if (!line.empty()) last = line;
+    std::remove(err_path);
+  }
+  if (rc != 0) {
+    if (last.find("ModuleNotFoundError") != std::string::npos)
+      throw std::runtime_error("plotting failed (" + script + "): " + last +
+                               "; install python3-matplotlib and python3-numpy for /usr/bin/python3");
     throw std::runtime_error("plotting failed (" + script + ", exit " +
-                             std::to_string(WIFEXITED(rc) ? WEXITSTATUS(rc) : rc) +
-                             "); is python3-matplotlib installed for /usr/bin/python3?");
+                             std::to_string(WIFEXITED(rc) ? WEXITSTATUS(rc) : rc) + ")" +
+                             (last.empty() ? std::string() : ": " + last));
+  }
+}
+
+void require_writable(const std::string& field, const std::string& path) {
+  if (path.empty() || path == "-") return;
+  struct stat st {};
+  if (::stat(path.c_str(), &st) == 0 && S_ISDIR(st.st_mode))
+    throw UsageError(field + " = '" + path + "' is a directory");
+  const auto slash = path.find_last_of('/');
+  const std::string dir = slash == std::string::npos ? "." : (slash == 0 ? "/" : path.substr(0, slash));
+  if (::access(dir.c_str(), W_OK) != 0)
+    throw UsageError(field + " = '" + path + "': cannot write in '" + dir + "': " + std::strerror(errno));
+}
+
+void require_sample_count(const std::string& field, double interval, double span, double max_samples) {
+  if (!(interval > 0.0) || !std::isfinite(span)) return;
+  const double n = span / interval;
+  if (n > max_samples) {
+    std::ostringstream os;
+    os << field << " = " << interval << " gives " << n << " samples over " << span << ": at most " << max_samples
+       << " allowed (give a larger " << field << ")";
+    throw UsageError(os.str());
+  }
 }
 
 void require_range(const std::string& field, double v, double lo, double hi, bool lo_incl, bool hi_incl) {

@@ -38,6 +38,15 @@ std::string python_dir();
 // Runs /usr/bin/python3 <python_dir>/<script> args...; throws on failure.
 void run_python(const std::string& script, const std::vector<std::string>& args);
 
+// A sampling interval that would produce more than max_samples samples over `span` (a trajectory
+// with output-interval 1e-300) is a usage error naming the field; interval <= 0 is left to the
+// caller (often "every step").
+void require_sample_count(const std::string& field, double interval, double span, double max_samples = 1e7);
+
+// Throws UsageError (naming the field) unless a file can be written at path: not a directory, in
+// an existing writable directory. Checked before computing, so a bad path costs no work.
+void require_writable(const std::string& field, const std::string& path);
+
 // Throws UsageError unless v is finite and in [lo, hi] (inclusive flags).
 void require_range(const std::string& field, double v, double lo, double hi, bool lo_incl = true,
                    bool hi_incl = true);

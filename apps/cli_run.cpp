@@ -13,6 +13,19 @@
 
 namespace blockdyn::cli {
 
+namespace {
+
+// An option given an empty value (--mu '') is an error, never a silent zero.
+void reject_empty_values(CLI::App& app) {
+  const CLI::Validator nonempty(
+      [](std::string& v) { return v.empty() ? std::string("the value is empty") : std::string(); }, "", "NONEMPTY");
+  for (CLI::Option* o : app.get_options())
+    if (o->get_expected_min() > 0 && !o->get_positional()) o->check(nonempty);
+  for (CLI::App* sub : app.get_subcommands({})) reject_empty_values(*sub);
+}
+
+}  // namespace
+
 CliOutcome run_cli(const std::vector<std::string>& args) {
   CLI::App app{"blockdyn: nonsmooth dynamics of rigid blocks (Winkler foundation, rigid ground)"};
   app.set_version_flag("--version", std::string(kVersion) + " (" + kGitDescribe + ")");
@@ -20,6 +33,7 @@ CliOutcome run_cli(const std::vector<std::string>& args) {
   auto reg = command_registry();
   std::sort(reg.begin(), reg.end(), [](const auto& a, const auto& b) { return a.order < b.order; });
   for (const auto& c : reg) c.add(app);
+  reject_empty_values(app);
   // The subcommand names the schema of its JSON outputs.
   current_command().clear();
   for (const auto& a : args)

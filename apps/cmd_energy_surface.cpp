@@ -30,8 +30,11 @@ struct SurfaceFlags {
 
 void run(const CLI::App& s, SurfaceFlags& f) {
   validate(f.p);
+  require_writable("plot", f.plot);
+  require_writable("json-out", f.json_out);
   const SimulationOptions so = orbit_run_options(f.t_end, f.integ);
   require_range("phase-dt", f.phase_dt, 0.0, f.t_end, false, true);
+  require_sample_count("phase-dt", f.phase_dt, f.t_end);
   require_range("n", f.n, 2, 100000);
   const BlockStateVec z0 = ic_state(s, f.ic, f.p);
   const double e0 = energy(f.p, z0).total();

@@ -109,6 +109,9 @@ std::string regime(double r, double k, const CriticalStiffness& c) {
 }
 
 void run_equilibria(const EquilibriaFlags& f) {
+  require_writable("plot", f.plot);
+  require_writable("csv", f.csv);
+  require_writable("json-out", f.json_out);
   require_range("r", f.r, kRMin, 1.0);
   require_range("k", f.k, kKMin, kKMax);
   require_range("points", f.points, 2, 1000000);
@@ -196,6 +199,9 @@ void append_diagram(std::ostringstream& os, const char* panel, const std::vector
 }
 
 void run_bifurcation(const BifurcationFlags& f) {
+  require_writable("plot", f.plot);
+  require_writable("csv", f.csv);
+  require_writable("json-out", f.json_out);
   require_range("r", f.r, kRMin, 1.0);
   require_range("k-min", f.k_min, kKMin, kKMax);
   require_range("k-max", f.k_max, f.k_min, kKMax, false, true);
@@ -268,6 +274,9 @@ struct CurvesFlags {
 };
 
 void run_curves(const CurvesFlags& f) {
+  require_writable("plot", f.plot);
+  require_writable("csv", f.csv);
+  require_writable("json-out", f.json_out);
   require_range("r-min", f.r_min, kRMin, 1.0);
   require_range("r-max", f.r_max, f.r_min, 1.0, f.points == 1, true);
   require_range("points", f.points, 1, 100000);

@@ -18,7 +18,7 @@ namespace {
 
 using namespace bounds;
 
-constexpr double kRMax = 100, kMuMax = 10, kKMaxAllowed = 1e15;
+constexpr double kRMax = 100, kMuMax = 10, kKMaxAllowed = kWinklerKMax;
 
 json header(const std::string& command, const IcChoice& ic, double mu, const StudyRunOptions& run) {
   return {{"run_info", run_info()},
@@ -29,12 +29,12 @@ json header(const std::string& command, const IcChoice& ic, double mu, const Stu
 }
 
 void check_k_range(const std::string& lo_name, double lo, const std::string& hi_name, double hi) {
-  require_range(lo_name, lo, 0.0, kKMaxAllowed, false, true);
+  require_range(lo_name, lo, kWinklerKMin, kKMaxAllowed);
   require_range(hi_name, hi, lo, kKMaxAllowed, false, true);
 }
 
 void check_r_range(double lo, double hi) {
-  require_range("r-min", lo, 0.0, kRMax, false, true);
+  require_range("r-min", lo, kWinklerRMin, kRMax);
   require_range("r-max", hi, lo, kRMax, false, true);
 }
 
@@ -52,7 +52,7 @@ struct TimeFlags {
 };
 
 void run_time(const TimeFlags& f) {
-  require_range("r", f.p.r, 0.0, kRMax, false, true);
+  require_range("r", f.p.r, kWinklerRMin, kRMax);
   require_range("mu", f.p.mu, 0.0, kMuMax);
   check_k_range("k-min", f.k_min, "k-max", f.k_max);
   check_points("points", f.points);
@@ -305,7 +305,7 @@ void run_kmin(const KMinFlags& f) {
     for (const auto& c : t.columns) std::printf("%-20s", c.c_str());
     std::printf("\n");
     for (const auto& row : t.rows) {
-      for (const auto& c : row) std::printf("%-20.8g", std::stod(c));
+      for (const auto& c : row) std::printf("%-20.8g", std::strtod(c.c_str(), nullptr));
       std::printf("\n");
     }
   }

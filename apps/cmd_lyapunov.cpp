@@ -33,9 +33,13 @@ void write_history(const std::string& path, const LyapunovResult& r) {
 
 void run(const CLI::App& s, LyapunovFlags& f) {
   validate(f.p);
+  require_writable("plot", f.plot);
+  require_writable("json-out", f.json_out);
+  require_writable("csv", f.csv);
   f.opt.integrator = f.integ;
   f.opt.method = f.method == "section" ? LyapunovMethod::Section : LyapunovMethod::Time;
   validate(f.opt);
+  require_sample_count("interval", f.opt.interval, f.opt.t_end - f.opt.t_start);
   orbit_run_options(f.opt.t_end, f.integ);  // validates t_end and the tolerances
   const BlockStateVec z0 = ic_state(s, f.ic, f.p);
   const LyapunovResult r = block_lyapunov(f.p, z0, f.opt);

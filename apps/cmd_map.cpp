@@ -67,8 +67,11 @@ BoundaryRow boundary_row(double inv_r, double mu, const IcChoice& ic, long n, co
 
 void run(const CLI::App& s, const MapFlags& f) {
   (void)s;
-  require_range("mu", f.mu, 0.0, 1e6);
-  require_range("t-end", f.t_end, 0.0, 1e9, false);
+  require_range("mu", f.mu, 0.0, kWinklerMuMax);
+  require_range("t-end", f.t_end, 0.0, kMaxTime, false);
+  require_range("threads", f.threads, 0, 4096);
+  if (f.output.empty()) throw UsageError("output: the CSV path is empty");
+  require_writable("plot", f.plot);
   if (f.boundary_points < 0 || f.boundary_points > 1000)
     throw UsageError("boundary-points = " + std::to_string(f.boundary_points) + " is out of range: must be in [0, 1000]");
   if (f.critical_n < 2) throw UsageError("critical-n = " + std::to_string(f.critical_n) + " is out of range: must be >= 2");

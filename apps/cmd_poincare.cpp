@@ -26,6 +26,9 @@ struct PoincareFlags {
 
 void run(const CLI::App& s, PoincareFlags& f) {
   validate(f.p);
+  require_writable("plot", f.plot);
+  require_writable("json-out", f.json_out);
+  require_writable("csv", f.csv);
   const SimulationOptions so = orbit_run_options(f.t_end, f.integ);
   require_range("t-min", f.t_min, 0.0, f.t_end);
   const BlockStateVec z0 = ic_state(s, f.ic, f.p);

@@ -61,8 +61,12 @@ void write_csv(const std::string& path, const std::function<void(std::ostream&)>
 
 void run(const CLI::App& s, ResponseFlags& f) {
   validate(f.p);
+  require_writable("plot", f.plot);
+  require_writable("json-out", f.json_out);
   f.opt.integrator = f.integ;
   validate(f.opt);
+  require_sample_count("phase-dt", f.opt.phase_dt, f.opt.t_end);
+  require_sample_count("quadrature-dt", f.opt.quadrature_dt, f.opt.t_end);
   orbit_run_options(f.opt.t_end, f.integ);  // validates t_end and the tolerances
   const BlockStateVec z0 = ic_state(s, f.ic, f.p);
   const bool want_series = !f.csv_prefix.empty() || !f.plot.empty();

@@ -29,6 +29,7 @@ struct SimulateFlags {
   double t_end = 10, output_interval = 0.01;
   std::string trajectory, plot, json_out, units = "nondim";
   bool json = false, quiet = false;
+  double max_output_rows = 1e7;
   GroundFlags ground;
   PhysicalBlock phys;  // --height --width ... (physical input)
   double restitution = 0, mu_s = 0.7, mu_k = 0.7;
@@ -143,6 +144,11 @@ Scenario build_scenario(const CLI::App& s, const SimulateFlags& f) {
   validate(sc.ground);
   validate(sc.options);
   require_range("output-interval", sc.output_interval, 0.0, 1e300);
+  require_writable("plot", sc.plot);
+  require_writable("trajectory", sc.trajectory);
+  require_writable("json-out", f.json_out);
+  if (!sc.trajectory.empty() || !sc.plot.empty())
+    require_sample_count("output-interval", sc.output_interval, sc.options.t_end - sc.options.t_start, f.max_output_rows);
   if (!is_rigid_family(sc.model)) {
     validate(sc.params);
     if (sc.units != "nondim" && sc.units != "physical")
@@ -182,10 +188,12 @@ struct TrajectoryTarget {
   std::string path;
   bool temporary = false;
   std::unique_ptr<AtomicFile> file;
+  std::unique_ptr<RemoveOnSignal> cleanup;  // the temporary CSV while the plot is made
   TrajectoryTarget(const std::string& trajectory, const std::string& plot) : path(trajectory) {
     if (path.empty() && !plot.empty()) {
       temporary = true;
       path = "/tmp/blockdyn-trajectory-" + std::to_string(::getpid()) + ".csv";
+      cleanup = std::make_unique<RemoveOnSignal>(path);
     }
     if (!path.empty()) file = std::make_unique<AtomicFile>(path);
   }
@@ -312,6 +320,8 @@ void add(CLI::App& app) {
   s->add_option("--t-end", f->t_end,
                 "final time: seconds with a physical block and for housner/rigid, else non-dimensional (default 10)");
   s->add_option("--output-interval", f->output_interval, "trajectory output interval (0: every step; default 0.01)");
+  s->add_option("--max-output-rows", f->max_output_rows,
+                "refuse a trajectory of more rows than this at the output interval (default 1e7, ~4 GB)");
   s->add_option("--trajectory", f->trajectory, "write the trajectory CSV here");
   s->add_option("--plot", f->plot, "write a plot of the motion (PNG; an SVG is written beside it)");
   s->add_option("--units", f->units, "winkler: nondim, or physical (needs a physical block: flags or [physical])");

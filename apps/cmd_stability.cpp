@@ -17,7 +17,7 @@ namespace {
 
 using namespace bounds;
 
-constexpr double kRMax = 100, kMuMax = 10, kKMaxAllowed = 1e15;
+constexpr double kRMax = 100, kMuMax = 10, kKMaxAllowed = kWinklerKMax;
 
 json header(const std::string& command, const std::string& ic, const StudyRunOptions& run) {
   return {{"run_info", run_info()}, {"command", command}, {"ic", ic}, {"run_options", run_options_json(run)}};
@@ -32,7 +32,7 @@ void add_search_options(CLI::App& s, StabilitySearchOptions& o) {
 }
 
 void check_search(const StabilitySearchOptions& o) {
-  require_range("k-lo", o.k_lo, 0.0, kKMaxAllowed, false, true);
+  require_range("k-lo", o.k_lo, kWinklerKMin, kKMaxAllowed);
   require_range("k-hi", o.k_hi, o.k_lo, kKMaxAllowed, false, true);
   require_range("per-decade", o.per_decade, 0.5, 1000);
   require_range("rel-tol", o.bisect.rel_tol, 1e-12, 1, false, false);
@@ -67,9 +67,9 @@ struct OverturnFlags {
 };
 
 void run_overturn(const OverturnFlags& f) {
-  require_range("r", f.p.r, 0.0, kRMax, false, true);
+  require_range("r", f.p.r, kWinklerRMin, kRMax);
   require_range("mu", f.p.mu, 0.0, kMuMax);
-  require_range("k-min", f.k_min, 0.0, kKMaxAllowed, false, true);
+  require_range("k-min", f.k_min, kWinklerKMin, kKMaxAllowed);
   require_range("k-max", f.k_max, f.k_min, kKMaxAllowed, false, true);
   require_range("points", f.points, 2, 100000);
   check_run_options(f.run, f.out);
@@ -129,7 +129,7 @@ struct CurveFlags {
 
 void run_curve(const CurveFlags& f) {
   require_range("mu", f.mu, 0.0, kMuMax);
-  require_range("r-min", f.r_min, 0.0, kRMax, false, true);
+  require_range("r-min", f.r_min, kWinklerRMin, kRMax);
   require_range("r-max", f.r_max, f.r_min, kRMax, false, true);
   require_range("points", f.points, 1, 100000);
   check_search(f.search);
@@ -238,7 +238,7 @@ struct BlowupFlags {
 void run_blowup(const BlowupFlags& f) {
   const auto mus = parse_list("mu-list", f.mu_list);
   for (double mu : mus) require_range("mu-list entry", mu, 0.0, kMuMax);
-  require_range("r-min", f.r_min, 0.0, kRMax, false, true);
+  require_range("r-min", f.r_min, kWinklerRMin, kRMax);
   require_range("r-max", f.r_max, f.r_min, kRMax, false, true);
   require_range("r-per-decade", f.r_per_decade, 0.5, 1000);
   require_range("r-rel-tol", f.r_bisect.rel_tol, 1e-12, 1, false, false);

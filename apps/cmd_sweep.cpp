@@ -96,6 +96,7 @@ SweepSpec build_spec(const CLI::App& s, const SweepFlags& f) {
   if (given(s, "--plot-column")) sp.plot_column = f.plot_column;
   validate(sp);
   if (sp.output.empty()) throw UsageError("output: the CSV path is empty");
+  require_writable("plot", sp.plot);
   return sp;
 }
 
@@ -228,6 +229,7 @@ RigidSweepSpec build_rigid_spec(const CLI::App& s, const SweepFlags& f, const st
                      ": --width and --height [m] (or [physical] in the definition, or an axis)");
   validate(sp);
   if (sp.output.empty()) throw UsageError("output: the CSV path is empty");
+  require_writable("plot", sp.plot);
   return sp;
 }
 

@@ -1,17 +1,70 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "blockdyn/io/atomic_file.hpp"
 
+#include <sys/stat.h>
 #include <unistd.h>
+
+#include <atomic>
+#include <cerrno>
+#include <csignal>
+#include <cstring>
+#include <mutex>
 
 #include <cstdio>
 #include <stdexcept>
 
 namespace blockdyn {
 
+namespace {
+
+// Fixed slots, written before a path is published (ready = true) and read by the handler with
+// async-signal-safe calls only.
+constexpr int kSlots = 64;
+struct Slot {
+  std::atomic<bool> ready{false};
+  char path[4096];
+};
+Slot g_slots[kSlots];
+std::mutex g_slots_mutex;
+
+extern "C" void cleanup_and_reraise(int sig) {
+  for (auto& s : g_slots)
+    if (s.ready.load()) ::unlink(s.path);
+  ::signal(sig, SIG_DFL);
+  ::raise(sig);
+}
+
+std::string reason() { return std::strerror(errno); }
+
+}  // namespace
+
+RemoveOnSignal::RemoveOnSignal(const std::string& path) {
+  if (path.size() >= sizeof(Slot::path)) return;
+  std::lock_guard<std::mutex> lock(g_slots_mutex);
+  for (int i = 0; i < kSlots; ++i) {
+    if (g_slots[i].ready.load()) continue;
+    std::memcpy(g_slots[i].path, path.c_str(), path.size() + 1);
+    g_slots[i].ready.store(true);
+    slot_ = i;
+    return;
+  }
+}
+
+RemoveOnSignal::~RemoveOnSignal() {
+  if (slot_ >= 0) g_slots[slot_].ready.store(false);
+}
+
+void install_signal_cleanup() {
+  for (int sig : {SIGINT, SIGTERM, SIGHUP}) ::signal(sig, cleanup_and_reraise);
+}
+
 AtomicFile::AtomicFile(std::string path)
-    : path_(std::move(path)), tmp_(path_ + ".tmp." + std::to_string(::getpid())) {
+    : path_(std::move(path)), tmp_(path_ + ".tmp." + std::to_string(::getpid())), guard_(tmp_) {
+  struct stat st {};
+  if (::stat(path_.c_str(), &st) == 0 && S_ISDIR(st.st_mode))
+    throw std::invalid_argument("output '" + path_ + "' is a directory");
   out_.open(tmp_, std::ios::out | std::ios::trunc);
-  if (!out_) throw std::runtime_error("cannot open '" + path_ + "' for writing");
+  if (!out_) throw std::invalid_argument("cannot open '" + path_ + "' for writing: " + reason());
   out_.precision(17);
 }
 
@@ -27,7 +80,7 @@ void AtomicFile::commit() {
   if (!out_) throw std::runtime_error("write to '" + path_ + "' failed");
   out_.close();
   if (std::rename(tmp_.c_str(), path_.c_str()) != 0)
-    throw std::runtime_error("cannot rename '" + tmp_ + "' to '" + path_ + "'");
+    throw std::runtime_error("cannot rename '" + tmp_ + "' to '" + path_ + "': " + reason());
   committed_ = true;
 }
 

@@ -7,6 +7,23 @@
 
 namespace blockdyn {
 
+// Files to delete if the process is interrupted (SIGINT, SIGTERM, SIGHUP) before they are done
+// with: an AtomicFile's temporary registers itself; others (a temporary CSV made for a plot) use
+// a RemoveOnSignal. install_signal_cleanup() sets the handlers (the command-line program does;
+// an embedding application keeps its own): they delete the registered files, then let the
+// signal end the process as it would have.
+class RemoveOnSignal {
+ public:
+  explicit RemoveOnSignal(const std::string& path);
+  ~RemoveOnSignal();
+  RemoveOnSignal(const RemoveOnSignal&) = delete;
+  RemoveOnSignal& operator=(const RemoveOnSignal&) = delete;
+
+ private:
+  int slot_ = -1;
+};
+void install_signal_cleanup();
+
 class AtomicFile {
  public:
   explicit AtomicFile(std::string path);
@@ -21,10 +38,13 @@ class AtomicFile {
  private:
   std::string path_, tmp_;
   std::ofstream out_;
+  RemoveOnSignal guard_;
   bool committed_ = false;
 };
 
 // Convenience: write a whole string atomically.
 void write_file_atomically(const std::string& path, const std::string& content);
+
+
 
 }  // namespace blockdyn

@@ -87,6 +87,8 @@ Scenario parse_scenario(const std::string& text, const std::string& source, cons
     read(*b, "block", "mu", s.params.mu);
     read(*b, "block", "k", s.params.k);
   }
+  if (root.contains("block") && root.contains("physical"))
+    fail("block", "[block] (r, mu, k) and [physical] both given: describe the block once");
   if (const auto* p = sub(root, source, "physical")) {
     if (rigid)
       check_keys(*p, "physical", {"height", "width", "mass", "density", "thickness", "g"});
@@ -121,8 +123,9 @@ Scenario parse_scenario(const std::string& text, const std::string& source, cons
     read(*r, "run", "rtol", s.options.integrator.rtol);
     read(*r, "run", "atol", s.options.integrator.atol);
     read(*r, "run", "output_interval", s.output_interval);
-    if (auto v = opt_number(*r, "run", "max_steps")) s.options.integrator.max_steps = long(*v);
-    if (auto v = opt_number(*r, "run", "event_samples")) s.options.integrator.event_samples = int(*v);
+    if (auto v = toml_read::opt_integer(*r, "run", "max_steps", 1, 1'000'000'000'000))
+      s.options.integrator.max_steps = long(*v);
+    if (auto v = toml_read::opt_integer(*r, "run", "event_samples", 1, 64)) s.options.integrator.event_samples = int(*v);
   }
   if (const auto* g = sub(root, source, "ground")) {
     check_keys(*g, "ground", {"horizontal", "vertical"});
@@ -149,11 +152,12 @@ RigidBlockParams rigid_params(const Scenario& s) {
   RigidBlockParams p;
   if (!s.physical) throw std::invalid_argument("the " + s.model + " model needs the block's width and height (--width --height, or [physical])");
   const PhysicalBlock& b = *s.physical;
-  if (!(b.width > 0) && b.width == 0) throw std::invalid_argument("width is missing (--width, or physical.width) [m]");
-  if (!(b.height > 0) && b.height == 0) throw std::invalid_argument("height is missing (--height, or physical.height) [m]");
+  if (b.width == 0.0) throw std::invalid_argument("width is missing: give the block's width [m] (--width, physical.width)");
+  if (b.height == 0.0) throw std::invalid_argument("height is missing: give the block's height [m] (--height, physical.height)");
   p.shape.width = b.width;
   p.shape.height = b.height;
   p.shape.g = b.g;
+  if (b.mass && b.density) throw std::invalid_argument("physical block: mass and density both given: give one");
   if (b.mass || (b.density && b.thickness)) p.shape.mass = mass_of(b);
   else if (b.density || b.thickness) throw std::invalid_argument("density needs thickness (and thickness density) to give the mass");
   p.interface = s.interface;

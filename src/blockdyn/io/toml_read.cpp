@@ -2,6 +2,10 @@
 #include "blockdyn/io/toml_read.hpp"
 
 #include <cmath>
+#include <sys/stat.h>
+
+#include <cerrno>
+#include <cstring>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
@@ -13,11 +17,41 @@ void fail(const std::string& field, const std::string& msg) {
 }
 
 std::string read_file(const std::string& path, const std::string& what) {
-  std::ifstream in(path);
+  // A definition is a small text file: not a directory, a device (/dev/zero) or megabytes.
+  constexpr std::size_t kMaxBytes = 1u << 20;
+  struct stat st {};
+  if (::stat(path.c_str(), &st) != 0)
+    throw std::invalid_argument(what + " '" + path + "' cannot be read: " + std::strerror(errno));
+  if (!S_ISREG(st.st_mode)) throw std::invalid_argument(what + " '" + path + "' is not a regular file");
+  if (std::size_t(st.st_size) > kMaxBytes)
+    throw std::invalid_argument(what + " '" + path + "' is larger than 1 MiB: not a definition file");
+  std::ifstream in(path, std::ios::binary);
   if (!in) throw std::invalid_argument(what + " '" + path + "' cannot be read");
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
+  std::string text(std::size_t(st.st_size), '\0');
+  in.read(text.data(), std::streamsize(text.size()));
+  text.resize(std::size_t(in.gcount()));
+  if (text.find('\0') != std::string::npos) throw std::invalid_argument(what + " '" + path + "' is not a text file");
+  return text;
+}
+
+std::optional<long long> opt_integer(const toml::table& t, const std::string& where, const char* key,
+                                     long long lo, long long hi) {
+  const toml::node* n = t.get(key);
+  if (!n) return std::nullopt;
+  const std::string field = where + "." + key;
+  const std::string range = "must be a whole number in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]";
+  if (n->is_integer()) {
+    const long long v = *n->value<std::int64_t>();
+    if (v < lo || v > hi) fail(field, std::to_string(v) + " is out of range: " + range);
+    return v;
+  }
+  const double v = number(*n, field);
+  if (v != std::floor(v) || v < double(lo) || v > double(hi)) {
+    std::ostringstream os;
+    os << v << " is out of range: " << range;
+    fail(field, os.str());
+  }
+  return static_cast<long long>(v);
 }
 
 toml::table parse(const std::string& text, const std::string& source) {

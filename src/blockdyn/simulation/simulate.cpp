@@ -24,13 +24,15 @@ void validate(const SimulationOptions& o) {
     os << f << " = " << v << " is out of range: must be " << range;
     throw std::invalid_argument(os.str());
   };
-  if (!std::isfinite(o.t_start) || o.t_start < 0) bad("t-start", "finite and >= 0", o.t_start);
-  if (!std::isfinite(o.t_end) || o.t_end <= o.t_start) bad("t-end", "finite and > t-start", o.t_end);
+  // Bounded: a run of 1e7 time units is already days of computation at the default tolerances.
+  if (!std::isfinite(o.t_start) || o.t_start < 0 || o.t_start > kMaxTime) bad("t-start", "in [0, 1e7]", o.t_start);
+  if (!std::isfinite(o.t_end) || o.t_end <= o.t_start || o.t_end > kMaxTime)
+    bad("t-end", "> t-start and <= 1e7", o.t_end);
   const auto& i = o.integrator;
   if (!std::isfinite(i.rtol) || i.rtol <= 0 || i.rtol >= 1) bad("rtol", "in (0, 1)", i.rtol);
   if (!std::isfinite(i.atol) || i.atol <= 0 || i.atol >= 1) bad("atol", "in (0, 1)", i.atol);
   if (!(i.h_max > 0)) bad("h-max", "> 0", i.h_max);
-  if (i.max_steps <= 0) bad("max-steps", "> 0", double(i.max_steps));
+  if (i.max_steps <= 0 || i.max_steps > 1'000'000'000'000) bad("max-steps", "in [1, 1e12]", double(i.max_steps));
   if (i.event_samples < 1 || i.event_samples > 64) bad("event-samples", "in [1, 64]", i.event_samples);
 }
 

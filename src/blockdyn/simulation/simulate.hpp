@@ -80,4 +80,7 @@ SimulationResult simulate(const BlockParams& p, const GroundMotion& g, const Blo
 
 void validate(const SimulationOptions& opt);
 
+// Longest run accepted (model time units: non-dimensional or seconds).
+inline constexpr double kMaxTime = 1e7;
+
 }  // namespace blockdyn

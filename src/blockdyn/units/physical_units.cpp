@@ -19,6 +19,8 @@ void positive(const char* field, double v) {
 }  // namespace
 
 double mass_of(const PhysicalBlock& b) {
+  if (b.mass && b.density)
+    throw std::invalid_argument("physical block: mass and density both given: give one");
   if (b.mass) {
     positive("mass", *b.mass);
     return *b.mass;
@@ -31,6 +33,8 @@ double mass_of(const PhysicalBlock& b) {
 }
 
 BlockParams to_nondimensional(const PhysicalBlock& b) {
+  if (b.height == 0.0) throw std::invalid_argument("height is missing: give the block's height [m] (--height, physical.height)");
+  if (b.width == 0.0) throw std::invalid_argument("width is missing: give the block's width [m] (--width, physical.width)");
   positive("height", b.height);
   positive("width", b.width);
   positive("g", b.g);

@@ -109,7 +109,7 @@ const std::vector<std::pair<std::string, std::string>>& rigid_axis_catalog() {
 
 std::size_t point_count(const RigidSweepSpec& s) {
   std::size_t n = 1;
-  for (const auto& a : s.axes) n *= a.values.size();
+  for (const auto& a : s.axes) n = std::min(n * a.values.size(), kMaxSweepPoints + 1);  // saturates
   return n;
 }
 
@@ -161,7 +161,8 @@ void validate(const RigidSweepSpec& s) {
     throw std::invalid_argument("initial: give either w0 or w0_over_alpha, not both");
   validate(s.options);
   const std::size_t n = point_count(s);
-  if (n == 0 || n > 1'000'000'000) throw std::invalid_argument("the sweep has " + std::to_string(n) + " points: must be in [1, 1e9]");
+  if (n == 0 || n > kMaxSweepPoints)
+    throw std::invalid_argument("the sweep has " + std::to_string(n) + " points: must be in [1, 1e8]");
   for (std::size_t i = 0; i < n; ++i) {
     const RigidSweepPoint p = sweep_point(s, i);
     try {

@@ -45,7 +45,8 @@ double to_double(const std::string& name, const std::string& tok) {
 
 SweepAxis axis_range(const std::string& name, double min, double max, long points, AxisSpacing spacing) {
   if (!std::isfinite(min) || !std::isfinite(max)) fail(name, "min and max must be finite");
-  if (points < 1 || points > 100'000'000) fail(name, "points = " + std::to_string(points) + " is out of range: must be in [1, 1e8]");
+  if (points < 1 || points > kMaxAxisPoints)
+    fail(name, "points = " + std::to_string(points) + " is out of range: must be in [1, 1e6]");
   if (min > max) fail(name, "min must be <= max");
   if (points == 1 && min != max) fail(name, "points = 1 needs min == max (or give a list of values)");
   if (spacing == AxisSpacing::Log && !(min > 0)) fail(name, "log spacing needs min > 0");
@@ -74,6 +75,7 @@ SweepAxis axis_range(const std::string& name, double min, double max, long point
 }
 
 SweepAxis axis_list(const std::string& name, std::vector<double> values) {
+  if (values.size() > std::size_t(kMaxAxisPoints)) fail(name, "more than 1e6 values");
   if (values.empty()) fail(name, "the list of values is empty");
   for (double v : values)
     if (!std::isfinite(v)) fail(name, "values must be finite");
@@ -96,7 +98,9 @@ SweepAxis parse_axis(const std::string& name, const std::string& text, AxisSpaci
     }
     if (parts.size() != 3) fail(name, "'" + t + "' is not of the form min:max:points[:log|:lin]");
     const double n = to_double(name, parts[2]);
-    if (n != std::floor(n)) fail(name, "points = " + parts[2] + " must be an integer");
+    // Checked as a double before the conversion (1e300 points must not wrap to a negative long).
+    if (n != std::floor(n) || !(n >= 1) || n > double(kMaxAxisPoints))
+      fail(name, "points = " + parts[2] + " is out of range: must be an integer in [1, 1e6]");
     return axis_range(name, to_double(name, parts[0]), to_double(name, parts[1]), long(n), sp);
   }
   std::vector<double> v;

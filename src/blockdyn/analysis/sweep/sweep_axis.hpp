@@ -4,12 +4,17 @@
 // expanded once, so every consumer (points, CSV, sidecar, fingerprint) sees the same doubles.
 #include <nlohmann/json.hpp>
 
+#include <cstddef>
 #include <string>
 #include <vector>
 
 namespace blockdyn {
 
 enum class AxisSpacing { Linear, Log };
+
+// Most values one axis may have, and most points a sweep may have.
+inline constexpr long kMaxAxisPoints = 1'000'000;
+inline constexpr std::size_t kMaxSweepPoints = 100'000'000;
 const char* to_string(AxisSpacing s);
 
 struct SweepAxis {

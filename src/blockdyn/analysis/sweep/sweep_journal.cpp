@@ -32,6 +32,17 @@ void write_all(int fd, const std::string& s, const std::string& path) {
   }
 }
 
+// Number of fields of one CSV line (RFC 4180 quoting).
+std::size_t field_count(const std::string& line) {
+  std::size_t n = 1;
+  bool quoted = false;
+  for (char c : line) {
+    if (c == '"') quoted = !quoted;
+    else if (c == ',' && !quoted) ++n;
+  }
+  return n;
+}
+
 }  // namespace
 
 std::size_t row_index(const std::string& row) {
@@ -97,6 +108,9 @@ void SweepJournal::load() {
       fail(std::string("is corrupt: ") + e.what());
     }
     if (idx >= rows_.size()) fail("is corrupt: row index " + std::to_string(idx) + " out of range");
+    if (field_count(row) != field_count(header_))
+      fail("is corrupt: row " + std::to_string(idx) + " has " + std::to_string(field_count(row)) +
+           " fields, the header " + std::to_string(field_count(header_)));
     if (rows_[idx].empty()) {
       rows_[idx] = std::move(row);
       ++done_;

@@ -2,10 +2,13 @@
 #include "blockdyn/analysis/sweep/sweep_runner.hpp"
 
 #include <sys/resource.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
+#include <cerrno>
 #include <chrono>
 #include <cstdio>
+#include <cstring>
 #include <ctime>
 #include <fstream>
 #include <sstream>
@@ -87,6 +90,15 @@ SweepSession::SweepSession(const PointTable& ev, const SweepRunOptions& o)
   t_start_ = now_seconds();
   started_utc_ = utc_now();
   load_at_start_ = load_average();
+  // The outputs must be writable before anything is computed (not after hours of work).
+  if (paths_.csv.empty()) throw std::invalid_argument("output: the CSV path is empty");
+  struct stat st {};
+  if (::stat(paths_.csv.c_str(), &st) == 0 && S_ISDIR(st.st_mode))
+    throw std::invalid_argument("output: '" + paths_.csv + "' is a directory");
+  const auto slash = paths_.csv.find_last_of('/');
+  const std::string dir = slash == std::string::npos ? "." : (slash == 0 ? "/" : paths_.csv.substr(0, slash));
+  if (::access(dir.c_str(), W_OK) != 0)
+    throw std::invalid_argument("output: cannot write in '" + dir + "': " + std::strerror(errno));
   const bool have_journal = exists(paths_.journal), have_csv = exists(paths_.csv);
   if (!o.resume && !o.overwrite) {
     if (have_journal)

@@ -79,7 +79,8 @@ void validate(const SweepSpec& s) {
     throw std::invalid_argument("run.stop_at_ihor = " + std::to_string(s.options.stop_at_ihor) +
                                 " is out of range: must be >= 0 (0: never stop)");
   const std::size_t n = point_count(s);
-  if (n == 0 || n > 1'000'000'000) throw std::invalid_argument("the sweep has " + std::to_string(n) + " points: must be in [1, 1e9]");
+  if (n == 0 || n > kMaxSweepPoints)
+    throw std::invalid_argument("the sweep has " + std::to_string(n) + " points: must be in [1, 1e8]");
   // Every point's start is built up front: a definition error must not surface hours later.
   // A start that is well defined but outside the model (e.g. three corners below the surface on
   // a very soft foundation) is not a definition error: its row reports status outside_model.

@@ -24,10 +24,12 @@ double static_height(const BlockParams& p, double w, double Ry) {
   // Two corners: Ry(h) decreases monotonically in h; bracket and solve.
   auto f = [&](double h) { return p.k / p.r * region_integrals(p.r, h, a).area - Ry; };
   double hi = -at_surface.lowest;  // lowest corner at the surface: Ry = 0
-  double lo = hi - 1.0 / p.k;
-  while (f(lo) < 0.0) {
+  // 1/k may be below the spacing of doubles at hi: start the bracket at least a few ulps down,
+  // and widen it a bounded number of times.
+  double lo = hi - std::fmax(1.0 / p.k, 4.0 * (std::nextafter(std::fabs(hi), INFINITY) - std::fabs(hi)) + 1e-300);
+  for (int i = 0; f(lo) < 0.0; ++i) {
     lo = hi - 2.0 * (hi - lo);
-    if (hi - lo > 10.0) throw std::invalid_argument("cannot find a resting height for this tilt");
+    if (hi - lo > 10.0 || i > 200) throw std::invalid_argument("cannot find a resting height for this tilt");
   }
   std::uintmax_t it = 200;
   auto tol = boost::math::tools::eps_tolerance<double>(52);

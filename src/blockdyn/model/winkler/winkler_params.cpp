@@ -8,9 +8,10 @@
 namespace blockdyn {
 
 void validate(const BlockParams& p) {
-  require(std::isfinite(p.r) && p.r > 0.0, "r", "a finite number > 0", p.r);
-  require(std::isfinite(p.mu) && p.mu >= 0.0, "mu", "a finite number >= 0", p.mu);
-  require(std::isfinite(p.k) && p.k > 0.0, "k", "a finite number > 0", p.k);
+  require(std::isfinite(p.r) && p.r >= kWinklerRMin && p.r <= kWinklerRMax, "r", "in [1e-3, 1e3]", p.r);
+  require(std::isfinite(p.mu) && p.mu >= 0.0 && p.mu <= kWinklerMuMax, "mu", "in [0, 1e3]", p.mu);
+  require(std::isfinite(p.k) && p.k >= kWinklerKMin && p.k <= kWinklerKMax, "k",
+          "in [1e-6, 1e12] (a stiffer foundation is rigid: --model rigid)", p.k);
 }
 
 }  // namespace blockdyn
