@@ -1,0 +1,231 @@
+// SPDX-License-Identifier: Apache-2.0
+// Hostile input (issue 11): every case ends within seconds with exit status 2 and one `error:`
+// line naming the field, and leaves no file behind; a bounded random generator of command lines
+// and scenario files (fixed seed, a fixed budget in CI) never crashes, hangs or floods the disk.
+#include <gtest/gtest.h>
+#include <signal.h>
+
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <random>
+#include <set>
+#include <thread>
+
+#include "test_sweep_util.hpp"
+
+using namespace sweep_test;
+namespace fs = std::filesystem;
+
+namespace {
+
+std::set<std::string> files_in(const std::string& dir) {
+  std::set<std::string> s;
+  for (const auto& e : fs::directory_iterator(dir)) s.insert(e.path().filename().string());
+  return s;
+}
+
+// Runs with a time limit; the outputs of run_cli itself are not counted as left-behind files.
+CliResult limited(const std::vector<std::string>& args, const std::string& dir, int seconds = 20) {
+  return run_cli(args, dir, "timeout -s KILL " + std::to_string(seconds));
+}
+
+struct Case {
+  std::vector<std::string> args;
+  std::string field;  // must appear in the message
+};
+
+void expect_usage_error(const Case& c, const std::string& dir) {
+  const auto before = files_in(dir);
+  const auto t0 = std::chrono::steady_clock::now();
+  const CliResult r = limited(c.args, dir);
+  const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  std::string line;
+  for (const auto& a : c.args) line += a + " ";
+  EXPECT_EQ(r.code, 2) << line << "\n" << r.err;
+  EXPECT_EQ(r.err.rfind("error: ", 0), 0u) << line << "\n" << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << line << "\n" << r.err;
+  EXPECT_NE(r.err.find(c.field), std::string::npos) << line << "\nexpected '" << c.field << "' in: " << r.err;
+  EXPECT_LT(secs, 10.0) << line;
+  auto after = files_in(dir);
+  after.erase("cli.out");
+  after.erase("cli.err");
+  EXPECT_TRUE(std::includes(before.begin(), before.end(), after.begin(), after.end())) << line << ": left a file";
+}
+
+}  // namespace
+
+TEST(CliRobustness, HostileCommandLinesAreUsageErrors) {
+  TmpDir d("hostile");
+  fs::create_directory(d.path + "/adir");
+  const std::vector<Case> cases = {
+      {{"simulate", "--r", "1e15"}, "r = "},
+      {{"simulate", "--r", "1e308"}, "r = "},
+      {{"response", "--r", "1e308"}, "r = "},
+      {{"poincare", "--r", "1e308"}, "r = "},
+      {{"lyapunov", "--r", "1e308"}, "r = "},
+      {{"energy-surface", "--r", "1e308"}, "r = "},
+      {{"simulate", "--k", "1e30", "--t-end", "0.01"}, "k = "},
+      {{"simulate", "--k", "4.9e-324"}, "k = "},
+      {{"energy-surface", "--phase-dt", "1e-300"}, "phase-dt"},
+      {{"lyapunov", "--interval", "1e-300"}, "interval"},
+      {{"simulate", "--output-interval", "1e-300", "--trajectory", "t.csv"}, "output-interval"},
+      {{"simulate", "--t-end", "1e308"}, "t-end"},
+      {{"simulate", "--ground-h-amplitude", "1", "--ground-h-frequency", "1e9"}, "frequency"},
+      {{"simulate", "--ground-h-amplitude", "1", "--ground-h-frequency", "1e300"}, "frequency"},
+      {{"sweep", "--k", "1e3:1e4:1e300", "-o", "s.csv"}, "points"},
+      {{"sweep", "--k", "1e3:1e4:100000000", "-o", "s.csv"}, "points"},
+      {{"simulate", "/dev/zero"}, "/dev/zero"},
+      {{"simulate", "adir"}, "adir"},
+      {{"simulate", "--mu", ""}, "--mu"},
+      {{"simulate", "--y0", ""}, "--y0"},
+      {{"map", "--threads", "-1"}, "threads"},
+      {{"map", "-o", ""}, "output"},
+      {{"sweep", "-o", "adir", "--overwrite", "--k", "1e3"}, "adir"},
+      {{"kmin", "--r-min", "1e-310"}, "r-min"},
+      {{"blowup", "--r-min", "4.9e-324"}, "r-min"},
+      {{"simulate", "--height", "1", "--mass", "2", "--line-stiffness", "1e6"}, "width is missing"},
+      {{"simulate", "--trajectory", "adir"}, "adir"},
+      {{"simulate", "--plot", "nodir/p.png"}, "nodir"},
+      {{"simulate", "--no-such-option", "1"}, "no-such-option"},
+  };
+  for (const Case& c : cases) expect_usage_error(c, d.path);
+}
+
+TEST(CliRobustness, HostileScenariosAreUsageErrors) {
+  TmpDir d("hostile-toml");
+  const std::vector<std::pair<std::string, std::string>> files = {
+      {"[run]\nmax_steps = 1.5\n", "run.max_steps"},
+      {"[run]\nmax_steps = 1e300\n", "run.max_steps"},
+      {"[run]\nevent_samples = -3\n", "run.event_samples"},
+      {"[block]\nr = 0.2\n[physical]\nheight = 1\nwidth = 0.2\nmass = 1\nline_stiffness = 1e6\n", "block"},
+      {"[physical]\nheight = 1\nwidth = 0.2\nmass = 1\ndensity = 2000\nthickness = 0.1\nline_stiffness = 1e6\n",
+       "mass and density"},
+      {"[physical]\nheight = 1\nmass = 1\nline_stiffness = 1e6\n", "width is missing"},
+      {"[block]\nr = \"x\"\n", "block.r"},
+      {"[run]\nt_end = 10\noutput_interval = 1e-300\n[output]\ntrajectory = \"t.csv\"\n", "output-interval"},
+      {"model = \"rigid\"\n[physical]\nwidth = 0.3\nheight = 1\n[interface]\nmu_s = 0.2\nmu_k = 0.5\n", "mu-k"},
+      {"[block\nr = 0.2\n", "s.toml"},
+  };
+  for (const auto& [text, field] : files) {
+    std::ofstream(d.path + "/s.toml") << text;
+    expect_usage_error({{"simulate", "s.toml"}, field}, d.path);
+    fs::remove(d.path + "/s.toml");
+  }
+}
+
+TEST(CliRobustness, CorruptJournalRowIsRefused) {
+  TmpDir d("journal");
+  const std::vector<std::string> args = {"sweep", "--k", "1e3:1e4:3", "--r", "0.3", "--t-end", "2", "-o", "s.csv",
+                                         "--quiet"};
+  ASSERT_EQ(run_cli(args, d.path).code, 0);
+  // Rebuild a journal from the finished CSV, with a garbage row appended.
+  const std::string csv = slurp(d.path + "/s.csv");
+  const std::string side = slurp(d.path + "/s.json");
+  const auto fp_at = side.find("\"fingerprint\": \"") + 16;
+  const std::string fp = side.substr(fp_at, 16);
+  std::ofstream(d.path + "/s.csv.journal") << "# blockdyn sweep journal v1 fingerprint=" << fp << " points=3\n"
+                                          << csv.substr(0, csv.find('\n') + 1) << "2,garbage\n";
+  fs::remove(d.path + "/s.csv");
+  auto resumed = args;
+  resumed.push_back("--resume");
+  const CliResult r = run_cli(resumed, d.path);
+  EXPECT_EQ(r.code, 2) << r.err;
+  EXPECT_NE(r.err.find("corrupt"), std::string::npos) << r.err;
+  EXPECT_FALSE(exists(d.path + "/s.csv"));
+}
+
+// SIGTERM while the trajectory is being written: the temporary file is removed.
+TEST(CliRobustness, InterruptedRunLeavesNoTemporaryFile) {
+  TmpDir d("sigterm");
+  const pid_t pid = spawn_cli({"simulate", "--r", "0.2", "--k", "1e8", "--t-end", "2000", "--output-interval", "0",
+                               "--trajectory", "t.csv"},
+                              d.path);
+  ASSERT_GT(pid, 0);
+  bool temp_seen = false;
+  for (int i = 0; i < 2000 && !temp_seen; ++i) {
+    for (const auto& f : files_in(d.path)) temp_seen |= f.rfind("t.csv.tmp.", 0) == 0;
+    if (!temp_seen) std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+  ASSERT_TRUE(temp_seen);
+  std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  ASSERT_EQ(::kill(pid, SIGTERM), 0);
+  int st = 0;
+  ASSERT_EQ(::waitpid(pid, &st, 0), pid);
+  EXPECT_TRUE(WIFSIGNALED(st) && WTERMSIG(st) == SIGTERM);
+  for (const auto& f : files_in(d.path)) EXPECT_EQ(f.find(".tmp."), std::string::npos) << f;
+  EXPECT_FALSE(exists(d.path + "/t.csv"));
+}
+
+// A bounded random generator (fixed seed): command lines from the options of `simulate` and
+// `sweep` with hostile values, and scenario files mutated from a valid one. Every run ends by
+// itself within the time limit, exits 0, 1 or 2 (never a signal), a usage error is one line, and
+// nothing is left in the directory but what was asked for.
+TEST(CliRobustness, RandomHostileInputNeverCrashesOrHangs) {
+  TmpDir d("fuzz");
+  std::mt19937_64 rng(20261123);
+  const std::vector<std::string> values = {
+      "", "nan", "inf", "-inf", "-1", "0", "1e308", "-1e308", "1e-310", "4.9e-324", "1e300", "abc", "1e3:1e4:5",
+      "0.2", "1", "2", "0.5", "-0.3", "1e9", "1,2,3", "1e3:1e4:1e300", "..", "/dev/zero", "/", "%s%n", "9999999999999999999"};
+  const std::vector<std::string> opts = {
+      "--r", "--mu", "--k", "--w0", "--vw0", "--x0", "--y0", "--vx0", "--vy0", "--rtol", "--atol", "--ic",
+      "--ground-h", "--ground-h-amplitude", "--ground-h-frequency", "--ground-h-phase", "--ground-h-duration",
+      "--ground-h-pulse", "--ground-h-start", "--ground-v", "--width", "--height", "--mass", "--mu-s", "--mu-k",
+      "--restitution", "--impact", "--model", "--output-interval", "--units", "--density", "--thickness"};
+  const auto t0 = std::chrono::steady_clock::now();
+  int runs = 0;
+  for (int i = 0; i < 120; ++i) {
+    std::vector<std::string> args = {"simulate", "--t-end", (rng() % 2) ? "0.5" : "3"};
+    const int n = 1 + int(rng() % 5);
+    for (int j = 0; j < n; ++j) {
+      args.push_back(opts[rng() % opts.size()]);
+      args.push_back(values[rng() % values.size()]);
+    }
+    if (rng() % 4 == 0) {
+      args.push_back("--model");
+      args.push_back((rng() % 2) ? "rigid" : "housner");
+    }
+    const CliResult r = limited(args, d.path, 30);
+    ++runs;
+    std::string line;
+    for (const auto& a : args) line += "'" + a + "' ";
+    ASSERT_TRUE(r.code == 0 || r.code == 1 || r.code == 2) << line << " exit " << r.code << "\n" << r.err;
+    if (r.code == 2) {
+      EXPECT_EQ(r.err.rfind("error: ", 0), 0u) << line << "\n" << r.err;
+      EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << line << "\n" << r.err;
+    }
+  }
+  const std::string valid =
+      "[block]\nr = 0.2\nmu = 0.3\nk = 1e5\n[initial]\nset = \"ic1\"\n[run]\nt_end = 1.0\nmax_steps = 100000\n"
+      "[ground.horizontal]\namplitude = 0.1\nfrequency = 0.5\n";
+  for (int i = 0; i < 60; ++i) {
+    std::string text = valid;
+    const int kind = int(rng() % 4);
+    if (kind == 0) {
+      text = text.substr(0, rng() % text.size());  // truncated
+    } else if (kind == 1) {  // a value replaced by a hostile one
+      const auto eq = text.find(" = ", rng() % text.size());
+      if (eq != std::string::npos) {
+        const auto nl = text.find('\n', eq);
+        text = text.substr(0, eq + 3) + "\"" + values[rng() % values.size()] + "\"" + text.substr(nl);
+      }
+    } else if (kind == 2) {
+      text.insert(rng() % text.size(), std::string(1, char(rng() % 128)));  // a stray character
+    } else {
+      text += "[extra]\nkey = " + values[rng() % values.size()] + "\n";
+    }
+    std::ofstream(d.path + "/f.toml") << text;
+    const CliResult r = limited({"simulate", "f.toml"}, d.path, 30);
+    ++runs;
+    ASSERT_TRUE(r.code == 0 || r.code == 1 || r.code == 2) << text << " exit " << r.code << "\n" << r.err;
+    if (r.code == 2) {
+      EXPECT_EQ(r.err.rfind("error: ", 0), 0u) << text << "\n" << r.err;
+    }
+  }
+  auto left = files_in(d.path);
+  for (const char* f : {"cli.out", "cli.err", "f.toml"}) left.erase(f);
+  EXPECT_TRUE(left.empty()) << *left.begin();
+  const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  ::testing::Test::RecordProperty("fuzz_runs", runs);
+  ::testing::Test::RecordProperty("fuzz_seconds", std::to_string(secs));
+}
