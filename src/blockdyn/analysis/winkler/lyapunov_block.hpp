@@ -23,7 +23,7 @@ class BlockLyapunovAdapter {
   bool compatible(const Mode& mr, const Mode& mp) const;
   void rescale(const Mode& mr, const State& zr, Mode& mp, State& zp, double s) const;
   void perturb(const Mode& mr, const State& zr, double d, Mode& mp, State& zp) const;
-  bool is_section_event(int event_index) const { return event_index == kEvWZero; }
+  bool is_section_event(int event_index) const { return event_index == WinklerBlock::kEvWZero; }
   int crossing_sign(const State& z) const { return (z[kVW] > 0) - (z[kVW] < 0); }
 
  private:

@@ -23,8 +23,6 @@ enum class EventKind : int {
 };
 const char* to_string(EventKind k);
 
-// Event functions; each stays >= 0 while the current mode is valid.
-enum BlockEvent : int { kEvOverturn, kEvInvalid, kEvSurface, kEvWZero, kEvFriction, kNumBlockEvents };
 
 // Everything the equations of motion compute at one state (also used for output).
 struct BlockForces {
@@ -38,6 +36,8 @@ struct BlockForces {
 
 class WinklerBlock {
  public:
+  // Event functions; each stays >= 0 while the current mode is valid.
+  enum Event : int { kEvOverturn, kEvInvalid, kEvSurface, kEvWZero, kEvFriction, kNumBlockEvents };
   static constexpr std::size_t kDim = kStateDim;
   static constexpr std::size_t kNumEvents = kNumBlockEvents;
   using Mode = BlockMode;
