@@ -27,7 +27,8 @@ struct SimulateFlags {
   std::string ic = "ic1";
   double w0 = 0, x0 = 0, y0 = 0, vx0 = 0, vy0 = 0, vw0 = 0;
   double t_end = 10, output_interval = 0.01;
-  std::string trajectory, plot, json_out, units = "nondim";
+  std::string trajectory, plot, json_out, units = "nondim", animate;
+  int animate_frames = 120;
   bool json = false, quiet = false;
   double max_output_rows = 1e7;
   GroundFlags ground;
@@ -145,9 +146,16 @@ Scenario build_scenario(const CLI::App& s, const SimulateFlags& f) {
   validate(sc.options);
   require_range("output-interval", sc.output_interval, 0.0, 1e300);
   require_writable("plot", sc.plot);
+  require_writable("animate", f.animate);
+  if (!f.animate.empty()) {
+    const auto dot = f.animate.find_last_of('.');
+    const std::string ext = dot == std::string::npos ? "" : f.animate.substr(dot);
+    if (ext != ".gif" && ext != ".mp4") throw UsageError("animate = '" + f.animate + "' must end in .gif or .mp4");
+  }
+  require_range("animate-frames", f.animate_frames, 2, 5000);
   require_writable("trajectory", sc.trajectory);
   require_writable("json-out", f.json_out);
-  if (!sc.trajectory.empty() || !sc.plot.empty())
+  if (!sc.trajectory.empty() || !sc.plot.empty() || !f.animate.empty())
     require_sample_count("output-interval", sc.output_interval, sc.options.t_end - sc.options.t_start, f.max_output_rows);
   if (!is_rigid_family(sc.model)) {
     validate(sc.params);
@@ -190,26 +198,33 @@ struct TrajectoryTarget {
   std::unique_ptr<AtomicFile> file;
   std::unique_ptr<RemoveOnSignal> cleanup;  // the temporary CSV while the plot is made
   TrajectoryTarget(const std::string& trajectory, const std::string& plot) : path(trajectory) {
-    if (path.empty() && !plot.empty()) {
+    if (path.empty() && !plot.empty()) {  // plot: any figure made from the trajectory
       temporary = true;
       path = "/tmp/blockdyn-trajectory-" + std::to_string(::getpid()) + ".csv";
       cleanup = std::make_unique<RemoveOnSignal>(path);
     }
     if (!path.empty()) file = std::make_unique<AtomicFile>(path);
   }
-  void plot_and_clean(const std::string& script, const std::string& plot, const std::vector<std::string>& extra = {}) {
+  // Figures from the trajectory (script, output, extra arguments); the temporary CSV is removed
+  // afterwards (also when a script fails).
+  struct Figure {
+    std::string script, out;
+    std::vector<std::string> extra;
+  };
+  void figures_and_clean(const std::vector<Figure>& figs) {
     if (file) file->commit();
-    if (!plot.empty()) {
-      std::vector<std::string> args{path, plot};
-      args.insert(args.end(), extra.begin(), extra.end());
-      try {
-        run_python(script, args);
-      } catch (...) {
-        if (temporary) std::remove(path.c_str());
-        throw;
+    try {
+      for (const Figure& fg : figs) {
+        if (fg.out.empty()) continue;
+        std::vector<std::string> args{path, fg.out};
+        args.insert(args.end(), fg.extra.begin(), fg.extra.end());
+        run_python(fg.script, args);
       }
+    } catch (...) {
       if (temporary) std::remove(path.c_str());
+      throw;
     }
+    if (temporary) std::remove(path.c_str());
   }
 };
 
@@ -230,11 +245,18 @@ void run_winkler(const SimulateFlags& f, Scenario sc) {
   const BlockStateVec z0 = initial_state(sc);
   std::optional<UnitScales> scales;
   if (sc.units == "physical") scales = scales_of(*sc.physical);
-  TrajectoryTarget target(sc.trajectory, sc.plot);
+  TrajectoryTarget target(sc.trajectory, sc.plot.empty() ? f.animate : sc.plot);
   std::unique_ptr<TrajectoryCsvSink> sink;
   if (target.file) sink = std::make_unique<TrajectoryCsvSink>(target.file->stream(), sc.output_interval, scales);
   const SimulationResult r = simulate(sc.params, sc.ground, z0, sc.options, sink.get());
-  target.plot_and_clean("plot_trajectory.py", sc.plot);
+  char title[256];
+  std::snprintf(title, sizeof title, "winkler block r = %.4g, mu = %.4g, k = %.4g: %s at t = %.6g", sc.params.r,
+                sc.params.mu, sc.params.k, to_string(r.status), r.t_final);
+  target.figures_and_clean(
+      {{"plot_trajectory.py", sc.plot, {"--alpha", std::to_string(sc.params.alpha()), "--title", title}},
+       {"animate_block.py", f.animate,
+        {"--model", "winkler", "--width", std::to_string(sc.params.r), "--height", "1", "--frames",
+         std::to_string(f.animate_frames), "--title", title}}});
   emit(result_json(sc.params, sc.ground, sc.options, r, sc.physical ? &*sc.physical : nullptr), f);
   if (!f.json && !f.quiet) print_summary(r, sc.physical ? scales_of(*sc.physical).time : 0.0);
 }
@@ -263,13 +285,18 @@ void run_rigid_family(const SimulateFlags& f, const Scenario& sc, Simulate&& sim
   o.t_start = sc.options.t_start;
   o.t_end = sc.options.t_end;
   o.integrator = sc.options.integrator;
-  TrajectoryTarget target(sc.trajectory, sc.plot);
+  TrajectoryTarget target(sc.trajectory, sc.plot.empty() ? f.animate : sc.plot);
   std::unique_ptr<RigidTrajectoryCsv<Model>> csv;
   if (target.file) csv = std::make_unique<RigidTrajectoryCsv<Model>>(target.file->stream(), sc.output_interval);
   const RigidResult r = sim(p, sc.ground, init, o, csv.get());
-  target.plot_and_clean("plot_rigid.py", sc.plot,
-                        {"--alpha", std::to_string(p.shape.alpha()), "--model", sc.model, "--status",
-                         to_string(r.status), "--title", block_title(sc.model, p)});
+  target.figures_and_clean(
+      {{"plot_rigid.py", sc.plot,
+        {"--alpha", std::to_string(p.shape.alpha()), "--model", sc.model, "--status", to_string(r.status), "--title",
+         block_title(sc.model, p)}},
+       {"animate_block.py", f.animate,
+        {"--model", sc.model, "--width", std::to_string(p.shape.width), "--height", std::to_string(p.shape.height),
+         "--frames", std::to_string(f.animate_frames), "--title",
+         block_title(sc.model, p) + ": " + to_string(r.status)}}});
   emit(rigid_result_json(p, sc.ground, o, r), f);
   if (!f.json && !f.quiet) print_summary(r, p.shape.alpha());
 }
@@ -324,6 +351,8 @@ void add(CLI::App& app) {
                 "refuse a trajectory of more rows than this at the output interval (default 1e7, ~4 GB)");
   s->add_option("--trajectory", f->trajectory, "write the trajectory CSV here");
   s->add_option("--plot", f->plot, "write a plot of the motion (PNG; an SVG is written beside it)");
+  s->add_option("--animate", f->animate, "write an animation of the motion: F.gif (Pillow) or F.mp4 (ffmpeg)");
+  s->add_option("--animate-frames", f->animate_frames, "frames of the animation, uniform in time (default 120)");
   s->add_option("--units", f->units, "winkler: nondim, or physical (needs a physical block: flags or [physical])");
   s->add_flag("--json", f->json, "print the JSON summary on stdout");
   s->add_option("--json-out", f->json_out, "also write the JSON summary to this file");

@@ -1,20 +1,19 @@
 #!/usr/bin/env python3
 # SPDX-License-Identifier: Apache-2.0
-"""Time histories and phase portraits of one `blockdyn simulate` trajectory CSV.
+"""Time histories and phase portrait of one Winkler-block trajectory (`blockdyn simulate`).
 
-usage: plot_trajectory.py TRAJECTORY.csv OUT.png   (an SVG is written beside the PNG)
+usage: plot_trajectory.py TRAJECTORY.csv OUT.png [--alpha A] [--title T]
+
+Panels: rotation with +-alpha and the mode (contact / slide / flight) as coloured bands, take-offs
+marked; heave of the centre; horizontal position; the (w, w') phase portrait; the foundation's
+reactions Rx, Ry; the energy components with the closed balance. An SVG is written beside the PNG.
 """
+import argparse
 import csv
-import os
-import sys
 
-import matplotlib
+from plotkit import np, plt, save
 
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
-import numpy as np  # noqa: E402
-
-MODE_CODE = {"contact": 0, "slide": 1, "flight": 2}
+MODE_COLOURS = {"contact": "0.93", "slide": "#cfe8ff", "flight": "#e4d4ff"}
 
 
 def load(path):
@@ -23,50 +22,69 @@ def load(path):
     if not rows:
         raise SystemExit(f"{path}: no rows")
     num = lambda k: np.array([float(r[k]) for r in rows])  # noqa: E731
-    data = {k: num(k) for k in ("t", "x", "y", "w", "vx", "vy", "vw", "Ry", "E_total",
-                                "E_kin_x", "E_kin_y", "E_rot", "E_grav", "E_springs")}
-    data["mode"] = np.array([MODE_CODE[r["mode"]] for r in rows])
+    data = {k: num(k) for k in ("t", "x", "y", "w", "vx", "vy", "vw", "Rx", "Ry", "E_total", "E_kin_x",
+                                "E_kin_y", "E_rot", "E_grav", "E_springs", "energy_balance")}
+    data["mode"] = [r["mode"] for r in rows]
     data["event"] = [r["event"] for r in rows]
     return data
 
 
-def main(argv):
-    if len(argv) != 3:
-        raise SystemExit(__doc__)
-    d = load(argv[1])
-    out = argv[2]
+def bands(ax, t, mode):
+    """Mode as coloured spans (one per run of equal mode): readable on long runs too."""
+    start = 0
+    for i in range(1, len(t) + 1):
+        if i == len(t) or mode[i] != mode[start]:
+            ax.axvspan(t[start], t[min(i, len(t) - 1)], color=MODE_COLOURS.get(mode[start], "white"), lw=0, zorder=0)
+            start = i
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("csv")
+    ap.add_argument("out")
+    ap.add_argument("--alpha", type=float)
+    ap.add_argument("--title", default="")
+    a = ap.parse_args()
+    d = load(a.csv)
     t = d["t"]
-    fig, ax = plt.subplots(3, 2, figsize=(11, 9), constrained_layout=True)
-    ax[0, 0].plot(t, d["w"], lw=0.8)
-    ax[0, 0].set_ylabel("w [rad]")
-    ax[0, 0].set_title("rotation")
+    fig, ax = plt.subplots(3, 2, figsize=(12, 9.5), constrained_layout=True)
+    bands(ax[0, 0], t, d["mode"])
+    ax[0, 0].plot(t, d["w"], lw=0.8, color="C0")
+    if a.alpha:
+        for s in (1, -1):
+            ax[0, 0].axhline(s * a.alpha, color="C3", lw=0.7, ls="--")
+        ax[0, 0].text(t[0], a.alpha, " +alpha", color="C3", va="bottom", fontsize=8)
+    takeoffs = [i for i, e in enumerate(d["event"]) if e == "takeoff"]
+    ax[0, 0].plot(t[takeoffs], d["w"][takeoffs], "k^", ms=3, label="take-off")
+    handles = [plt.Rectangle((0, 0), 1, 1, color=c) for c in MODE_COLOURS.values()]
+    ax[0, 0].legend(handles + ax[0, 0].lines[-1:], list(MODE_COLOURS) + ["take-off"], fontsize=7, ncol=4,
+                    loc="lower left", bbox_to_anchor=(0, 1.0), frameon=False)
+    ax[0, 0].set_ylabel("rotation w [rad]")
     ax[1, 0].plot(t, d["y"] - 0.5, lw=0.8, color="C1")
-    ax[1, 0].set_ylabel("y - 1/2")
-    ax[1, 0].set_title("vertical position of the centre")
+    ax[1, 0].set_ylabel("heave y - 1/2")
     ax[2, 0].plot(t, d["x"], lw=0.8, color="C2")
     ax[2, 0].set_ylabel("x")
     ax[2, 0].set_xlabel("t")
-    ax[2, 0].set_title("horizontal position")
     ax[0, 1].plot(d["w"], d["vw"], lw=0.5)
     ax[0, 1].set_xlabel("w")
     ax[0, 1].set_ylabel("w'")
-    ax[0, 1].set_title("phase portrait (w, w')")
-    ax[1, 1].step(t, d["mode"], where="post", lw=0.8, color="C3")
-    ax[1, 1].set_yticks([0, 1, 2], ["contact", "slide", "flight"])
-    ax[1, 1].set_title("mode")
+    ax[0, 1].set_title("phase portrait (w, w')", fontsize=9)
+    ax[1, 1].plot(t, d["Ry"], lw=0.8, label="Ry")
+    ax[1, 1].plot(t, d["Rx"], lw=0.8, label="Rx")
+    ax[1, 1].set_ylabel("foundation reaction [m g]")
+    ax[1, 1].legend(fontsize=7, loc="upper right")
     for name, col in (("E_kin_x", "C0"), ("E_kin_y", "C1"), ("E_rot", "C2"), ("E_grav", "C3"),
                       ("E_springs", "C4"), ("E_total", "k")):
         ax[2, 1].plot(t, d[name], lw=0.8, color=col, label=name)
     ax[2, 1].set_xlabel("t")
-    ax[2, 1].set_title("energy components")
-    ax[2, 1].legend(fontsize=7, ncol=3)
-    flights = [i for i, e in enumerate(d["event"]) if e == "takeoff"]
-    for i in flights[:200]:
-        ax[0, 0].axvline(t[i], color="0.85", lw=0.5, zorder=0)
-    fig.suptitle(os.path.basename(argv[1]))
-    fig.savefig(out, dpi=110)
-    fig.savefig(os.path.splitext(out)[0] + ".svg")
+    ax[2, 1].set_ylabel("energy [m g a]")
+    ax[2, 1].legend(fontsize=7, ncol=6, loc="lower left", bbox_to_anchor=(0, 1.0), frameon=False)
+    bal = ax[2, 1].twinx()
+    bal.plot(t, d["energy_balance"] - d["energy_balance"][0], lw=0.6, color="0.4", ls=":")
+    bal.set_ylabel("balance error", fontsize=8)
+    fig.suptitle(a.title or a.csv, fontsize=10)
+    save(fig, a.out)
 
 
 if __name__ == "__main__":
-    main(sys.argv)
+    main()

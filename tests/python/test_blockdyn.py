@@ -109,3 +109,23 @@ def test_threads_give_the_sequential_results():
 
 def test_version_matches_the_program():
     assert cli("--version").strip().startswith(blockdyn.__version__)
+
+
+@pytest.mark.parametrize("opts", [dict(model="housner", width=0.3, height=1.5, w0=0.1, t_end=2),
+                                  dict(r=0.3, mu=0.3, k=1e4, ic="ic1", t_end=2)],
+                         ids=["housner", "winkler"])
+def test_animation_has_the_requested_frames(opts):
+    from PIL import Image
+    with tempfile.TemporaryDirectory() as tmp:
+        gif = os.path.join(tmp, "a.gif")
+        cli(*blockdyn._args("simulate", dict(opts, animate=gif, animate_frames=17, quiet=True)))
+        assert os.path.getsize(gif) > 1000
+        with Image.open(gif) as im:
+            assert im.n_frames == 17
+            assert im.size[0] > 100 and im.size[1] > 100
+
+
+def test_animation_rejects_unknown_extension():
+    r = subprocess.run([CLI, "simulate", "--model", "housner", "--width", "0.3", "--height", "1",
+                        "--animate", "x.avi"], capture_output=True, text=True)
+    assert r.returncode == 2 and "animate" in r.stderr
