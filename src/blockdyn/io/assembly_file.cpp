@@ -1,0 +1,132 @@
+// SPDX-License-Identifier: Apache-2.0
+#include "blockdyn/io/assembly_file.hpp"
+
+#include <cmath>
+#include <set>
+
+#include "blockdyn/io/toml_read.hpp"
+
+namespace blockdyn {
+
+namespace {
+
+using namespace toml_read;
+
+const std::set<std::string> kLawKeys{"k_normal", "k_tangential", "restitution", "damping", "phi", "phi_kinetic",
+                                     "mu_s", "mu_k"};
+
+// Friction from an angle in degrees (90: no sliding) or from coefficients.
+void read_law(const toml::table& t, const std::string& where, ContactLaw& l) {
+  if (auto v = opt_number(t, where, "k_normal")) l.k_normal = *v;
+  if (auto v = opt_number(t, where, "k_tangential")) l.k_tangential = *v;
+  if (auto v = opt_number(t, where, "restitution")) l.restitution = *v;
+  if (auto v = opt_number(t, where, "damping")) l.damping = *v;
+  const auto phi = opt_number(t, where, "phi"), phik = opt_number(t, where, "phi_kinetic");
+  const auto mus = opt_number(t, where, "mu_s"), muk = opt_number(t, where, "mu_k");
+  if ((phi || phik) && (mus || muk)) fail(where, "give the friction as phi (degrees) or as mu_s/mu_k, not both");
+  if (phi) {
+    l.mu_s = l.mu_k = friction_of_angle(*phi, where + ".phi");
+    if (phik) l.mu_k = friction_of_angle(*phik, where + ".phi_kinetic");
+  } else if (phik) {
+    fail(where + ".phi_kinetic", "needs phi");
+  }
+  if (mus) l.mu_s = l.mu_k = *mus;
+  if (muk) l.mu_k = *muk;
+}
+
+}  // namespace
+
+double friction_of_angle(double deg, const std::string& field) {
+  if (!(deg >= 0 && deg <= 90)) fail(field, "= " + std::to_string(deg) + " must be in [0, 90] degrees");
+  // 90 degrees: no sliding; a coefficient so large that the static cone is never left, kept
+  // finite so that mu N stays a number at N = 0.
+  if (deg >= 90) return kNoSlip;
+  return std::tan(deg * M_PI / 180.0);
+}
+
+Assembly read_assembly_file(const std::string& path) {
+  const toml::table root = parse(read_file(path, "assembly file"), path);
+  if (auto k = first_unknown_key(root, {"assembly", "contact", "block", "interface"}); !k.empty())
+    fail(k, "unknown table (allowed: assembly, contact, [[block]], [[interface]])");
+  Assembly a;
+  ContactLaw base;
+  if (const toml::table* t = sub_table(root, "assembly", "assembly")) {
+    if (auto k = first_unknown_key(*t, {"g", "collapse_rotation", "min_bearing"}); !k.empty())
+      fail("assembly." + k, "unknown key (allowed: g, collapse_rotation, min_bearing)");
+    if (auto v = opt_number(*t, "assembly", "g")) a.g = *v;
+    if (auto v = opt_number(*t, "assembly", "collapse_rotation")) a.collapse_rotation = *v;
+    if (auto v = opt_number(*t, "assembly", "min_bearing")) a.min_bearing = *v;
+  }
+  if (const toml::table* t = sub_table(root, "contact", "contact")) {
+    if (auto k = first_unknown_key(*t, kLawKeys); !k.empty())
+      fail("contact." + k, "unknown key (allowed: " + joined(kLawKeys) + ")");
+    read_law(*t, "contact", base);
+  }
+  const toml::array* blocks = root["block"].as_array();
+  if (!blocks || blocks->empty()) fail("block", "at least one [[block]] is needed");
+  const std::set<std::string> block_keys{"name", "width", "height", "mass", "density", "thickness",
+                                         "x", "y", "theta", "vx", "vy", "omega"};
+  for (std::size_t i = 0; i < blocks->size(); ++i) {
+    const std::string w = "block[" + std::to_string(i) + "]";
+    const toml::table* t = (*blocks)[i].as_table();
+    if (!t) fail(w, "must be a table");
+    if (auto k = first_unknown_key(*t, block_keys); !k.empty())
+      fail(w + "." + k, "unknown key (allowed: " + joined(block_keys) + ")");
+    AssemblyBlock b;
+    b.name = opt_string(*t, w, "name").value_or("block " + std::to_string(i));
+    const auto width = opt_number(*t, w, "width"), height = opt_number(*t, w, "height");
+    if (!width) fail(w + ".width", "is missing");
+    if (!height) fail(w + ".height", "is missing");
+    b.width = *width;
+    b.height = *height;
+    const auto mass = opt_number(*t, w, "mass"), rho = opt_number(*t, w, "density"),
+               depth = opt_number(*t, w, "thickness");
+    if (mass && rho) fail(w, "give mass or density (with thickness), not both");
+    if (mass) {
+      b.mass = *mass;
+    } else if (rho && depth) {
+      b.mass = *rho * b.width * b.height * *depth;
+    } else {
+      fail(w + ".mass", "is missing (or give density and thickness)");
+    }
+    b.x = opt_number(*t, w, "x").value_or(0.0);
+    b.theta = opt_number(*t, w, "theta").value_or(0.0);
+    const auto y = opt_number(*t, w, "y");
+    if (!y) fail(w + ".y", "is missing (the height of the block's centre)");
+    b.y = *y;
+    b.vx = opt_number(*t, w, "vx").value_or(0.0);
+    b.vy = opt_number(*t, w, "vy").value_or(0.0);
+    b.omega = opt_number(*t, w, "omega").value_or(0.0);
+    a.blocks.push_back(b);
+  }
+  const toml::array* faces = root["interface"].as_array();
+  if (!faces || faces->empty()) fail("interface", "at least one [[interface]] is needed (lower, upper)");
+  std::set<std::string> iface_keys = kLawKeys;
+  iface_keys.insert({"lower", "upper"});
+  const long long nb = static_cast<long long>(a.blocks.size());
+  for (std::size_t i = 0; i < faces->size(); ++i) {
+    const std::string w = "interface[" + std::to_string(i) + "]";
+    const toml::table* t = (*faces)[i].as_table();
+    if (!t) fail(w, "must be a table");
+    if (auto k = first_unknown_key(*t, iface_keys); !k.empty())
+      fail(w + "." + k, "unknown key (allowed: " + joined(iface_keys) + ")");
+    AssemblyInterface f;
+    f.law = base;
+    const auto upper = opt_integer(*t, w, "upper", 0, nb - 1);
+    if (!upper) fail(w + ".upper", "is missing (the index of the block standing on this face)");
+    f.upper = int(*upper);
+    if (const auto s = (*t)["lower"].as_string()) {
+      if (s->get() != "ground") fail(w + ".lower", "must be \"ground\" or a block index");
+      f.lower = -1;
+    } else {
+      const auto lower = opt_integer(*t, w, "lower", -1, nb - 1);
+      if (!lower) fail(w + ".lower", "is missing (\"ground\" or a block index)");
+      f.lower = int(*lower);
+    }
+    read_law(*t, w, f.law);
+    a.interfaces.push_back(f);
+  }
+  return a;
+}
+
+}  // namespace blockdyn

@@ -1,0 +1,274 @@
+// SPDX-License-Identifier: Apache-2.0
+#include "blockdyn/model/assembly/assembly_params.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+#include "blockdyn/model/assembly/contact_point.hpp"
+
+namespace blockdyn {
+
+namespace {
+
+std::string num(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.6g", v);
+  return buf;
+}
+
+// Penetration d(t) and its rate of a unit-frequency oscillator d'' + 2 z d' + d = 0 after
+// touching down with d(0) = 0, d'(0) = 1.
+void drop(double z, double t, double& d, double& v) {
+  if (z < 1.0) {
+    const double wd = std::sqrt(1.0 - z * z), e = std::exp(-z * t);
+    d = e * std::sin(wd * t) / wd;
+    v = e * (std::cos(wd * t) - z / wd * std::sin(wd * t));
+  } else if (z == 1.0) {
+    d = t * std::exp(-t);
+    v = (1.0 - t) * std::exp(-t);
+  } else {
+    const double g = std::sqrt(z * z - 1.0), r1 = -z + g, r2 = -z - g;
+    d = (std::exp(r1 * t) - std::exp(r2 * t)) / (2.0 * g);
+    v = (r1 * std::exp(r1 * t) - r2 * std::exp(r2 * t)) / (2.0 * g);
+  }
+}
+
+// Restitution of the drop with damping ratio z when the force d + 2 z d' is released as it
+// vanishes (it is positive at touchdown and changes sign exactly once).
+double restitution_of_ratio(double z) {
+  if (z == 0.0) return 1.0;
+  auto force = [z](double t) {
+    double d, v;
+    drop(z, t, d, v);
+    return d + 2.0 * z * v;
+  };
+  double lo = 0.0, hi = 1e-3;
+  while (force(hi) > 0.0) {
+    lo = hi;
+    hi *= 2.0;
+    if (hi > 1e9) return 0.0;
+  }
+  for (int k = 0; k < 200 && hi - lo > 1e-15 * hi; ++k) {
+    const double mid = 0.5 * (lo + hi);
+    (force(mid) > 0.0 ? lo : hi) = mid;
+  }
+  double d, v;
+  drop(z, hi, d, v);
+  return -v;
+}
+
+}  // namespace
+
+double restitution_of_damping(double c, double m, double k) {
+  // Two points of stiffness k and damping c under mass m: omega^2 = 2k/m, zeta = c / sqrt(2 k m).
+  return restitution_of_ratio(c / std::sqrt(2.0 * k * m));
+}
+
+double damping_for_restitution(double e, double m, double k) {
+  if (!(e > 0.0 && e <= 1.0)) throw std::invalid_argument("restitution = " + num(e) + " must be in (0, 1]");
+  if (e == 1.0) return 0.0;
+  double lo = 0.0, hi = 1.0;
+  while (restitution_of_ratio(hi) > e) {
+    lo = hi;
+    hi *= 2.0;
+    if (hi > 1e6) throw std::invalid_argument("restitution = " + num(e) + " is too small (>= 1e-4)");
+  }
+  for (int k2 = 0; k2 < 200 && hi - lo > 1e-14 * hi; ++k2) {
+    const double mid = 0.5 * (lo + hi);
+    (restitution_of_ratio(mid) > e ? lo : hi) = mid;
+  }
+  return 0.5 * (lo + hi) * std::sqrt(2.0 * k * m);
+}
+
+namespace {
+
+AssemblyBlock make_block(std::string name, double b, double h, const PresetOptions& o) {
+  AssemblyBlock k;
+  k.name = std::move(name);
+  k.width = b;
+  k.height = h;
+  k.mass = o.density * b * h * o.thickness;
+  return k;
+}
+
+// Turns a block about the ground-frame point `pivot` by theta (from its upright pose).
+void turn_about(AssemblyBlock& k, const Vec2& pivot, double theta) {
+  const BodyRotation q = BodyRotation::of(theta);
+  const Vec2 r = q.offset(k.x - pivot.x, k.y - pivot.y);
+  k.x = pivot.x + r.x;
+  k.y = pivot.y + r.y;
+  k.theta = theta;
+}
+
+}  // namespace
+
+Assembly make_preset(const std::string& name, const PresetOptions& o) {
+  if (!(o.slenderness >= 0.1 && o.slenderness <= 100))
+    throw std::invalid_argument("slenderness = " + num(o.slenderness) + " must be in [0.1, 100]");
+  if (!(o.block_width > 0 && o.block_width <= 100))
+    throw std::invalid_argument("block-width = " + num(o.block_width) + " must be in (0, 100] m");
+  if (!(o.thickness > 0 && o.thickness <= 100))
+    throw std::invalid_argument("thickness = " + num(o.thickness) + " must be in (0, 100] m");
+  if (!(o.density > 0 && o.density <= 1e5))
+    throw std::invalid_argument("density = " + num(o.density) + " must be in (0, 1e5] kg/m^3");
+  if (!(std::fabs(o.tilt) < 1.5)) throw std::invalid_argument("tilt = " + num(o.tilt) + " must be in (-1.5, 1.5) rad");
+  const double b = o.block_width, h = o.slenderness * b, g = 9.81;
+  const double s = o.tilt >= 0 ? 1.0 : -1.0;  // theta > 0 turns about the left base corner
+  Assembly a;
+  a.preset = name;
+  if (name == "block") {
+    AssemblyBlock k = make_block("block", b, h, o);
+    const double sink = o.tilt == 0 ? k.mass * g / (2 * o.ground_law.k_normal) : k.mass * g / o.ground_law.k_normal;
+    k.y = 0.5 * h;
+    turn_about(k, {-s * 0.5 * b, 0}, o.tilt);
+    k.y -= sink;
+    a.blocks = {k};
+    a.interfaces = {{-1, 0, o.ground_law}};
+  } else if (name == "column") {
+    if (o.drums < 1 || o.drums > 8) throw std::invalid_argument("drums = " + std::to_string(o.drums) + " must be in [1, 8]");
+    const double hd = h / o.drums;
+    double total = 0;
+    for (int k = 0; k < o.drums; ++k) {
+      a.blocks.push_back(make_block("drum " + std::to_string(k), b, hd, o));
+      total += a.blocks.back().mass;
+    }
+    double sink = 0, above = total;
+    for (int k = 0; k < o.drums; ++k) {
+      const ContactLaw& law = k == 0 ? o.ground_law : o.block_law;
+      sink += (o.tilt == 0 ? 0.5 : 1.0) * above * g / law.k_normal;
+      above -= a.blocks[k].mass;
+      AssemblyBlock& d = a.blocks[k];
+      d.y = (k + 0.5) * hd;
+      turn_about(d, {-s * 0.5 * b, 0}, o.tilt);
+      d.y -= sink;
+      a.interfaces.push_back({k - 1, k, law});
+    }
+  } else if (name == "trilith") {
+    const double L = o.lintel_length > 0 ? o.lintel_length : h;
+    const double xc = 0.5 * L - o.overhang - 0.5 * b;  // column centres at -xc, +xc
+    if (!(xc > 0.5 * b))
+      throw std::invalid_argument("trilith: the lintel (length " + num(L) + " m, overhang " + num(o.overhang) +
+                                  " m) must span a clear opening between the columns");
+    if (!(L <= 1e3)) throw std::invalid_argument("lintel-length = " + num(L) + " must be at most 1000 m");
+    AssemblyBlock c0 = make_block("left column", b, h, o), c1 = make_block("right column", b, h, o);
+    AssemblyBlock li = make_block("lintel", L, b, o);
+    const double sink_g = (o.tilt == 0 ? 0.5 : 1.0) * (c0.mass + 0.5 * li.mass) * g / o.ground_law.k_normal;
+    const double sink_l = (o.tilt == 0 ? 0.5 : 1.0) * 0.5 * li.mass * g / o.block_law.k_normal;
+    c0.x = -xc;
+    c1.x = xc;
+    c0.y = c1.y = 0.5 * h;
+    li.y = h + 0.5 * b;
+    // The rocking mode of the frame: both columns turn about the same-side base corner and the
+    // lintel translates with the supporting top corners (a four-bar mechanism).
+    const Vec2 before{c0.x + s * 0.5 * b, h};
+    const Vec2 pivot0{c0.x - s * 0.5 * b, 0};
+    turn_about(c0, pivot0, o.tilt);
+    turn_about(c1, {c1.x - s * 0.5 * b, 0}, o.tilt);
+    const Vec2 after = pivot0 + BodyRotation::of(o.tilt).offset(s * b, h);
+    li.x += after.x - before.x;
+    li.y += after.y - before.y;
+    c0.y -= sink_g;
+    c1.y -= sink_g;
+    li.y -= sink_g + sink_l;
+    a.blocks = {c0, c1, li};
+    a.interfaces = {{-1, 0, o.ground_law}, {-1, 1, o.ground_law}, {0, 2, o.block_law}, {1, 2, o.block_law}};
+  } else {
+    throw std::invalid_argument("preset = '" + name + "' must be block, trilith or column");
+  }
+  return a;
+}
+
+namespace {
+
+void check_law(const ContactLaw& l, const std::string& where) {
+  if (!(l.k_normal >= 1.0 && l.k_normal <= 1e13))
+    throw std::invalid_argument(where + ".k_normal = " + num(l.k_normal) + " must be in [1, 1e13] N/m");
+  if (!(l.k_tangential < 0 || (l.k_tangential >= 1.0 && l.k_tangential <= 1e13)))
+    throw std::invalid_argument(where + ".k_tangential = " + num(l.k_tangential) + " must be in [1, 1e13] N/m");
+  if (!(l.restitution >= 1e-3 && l.restitution <= 1.0))
+    throw std::invalid_argument(where + ".restitution = " + num(l.restitution) + " must be in [0.001, 1]");
+  if (!(l.damping < 0 || (std::isfinite(l.damping) && l.damping <= 1e12)))
+    throw std::invalid_argument(where + ".damping = " + num(l.damping) + " must be in [0, 1e12] N s/m");
+  if (!(l.mu_s >= 0 && l.mu_k >= 0 && l.mu_k <= l.mu_s && std::isfinite(l.mu_s)))
+    throw std::invalid_argument(where + ": friction mu_s = " + num(l.mu_s) + ", mu_k = " + num(l.mu_k) +
+                                " must satisfy 0 <= mu_k <= mu_s (finite)");
+}
+
+}  // namespace
+
+void validate(const Assembly& a) {
+  const int nb = int(a.blocks.size());
+  if (nb < 1 || nb > 8) throw std::invalid_argument("blocks: " + std::to_string(nb) + " given, 1 to 8 allowed");
+  if (a.interfaces.empty() || a.interfaces.size() > std::size_t(nb + 1))
+    throw std::invalid_argument("interfaces: " + std::to_string(a.interfaces.size()) + " given, 1 to " +
+                                std::to_string(nb + 1) + " allowed for " + std::to_string(nb) + " blocks");
+  if (!(a.g > 0 && a.g <= 1e3)) throw std::invalid_argument("g = " + num(a.g) + " must be in (0, 1000] m/s^2");
+  if (!(a.collapse_rotation > 0 && a.collapse_rotation <= 10))
+    throw std::invalid_argument("collapse_rotation = " + num(a.collapse_rotation) + " must be in (0, 10]");
+  if (!(a.min_bearing >= 0 && std::isfinite(a.min_bearing)))
+    throw std::invalid_argument("min_bearing = " + num(a.min_bearing) + " must be >= 0 m");
+  double min_size = INFINITY;
+  for (int i = 0; i < nb; ++i) {
+    const AssemblyBlock& k = a.blocks[i];
+    const std::string w = "block " + std::to_string(i);
+    if (!(k.width > 0 && k.width <= 1e3)) throw std::invalid_argument(w + ".width = " + num(k.width) + " must be in (0, 1000] m");
+    if (!(k.height > 0 && k.height <= 1e3))
+      throw std::invalid_argument(w + ".height = " + num(k.height) + " must be in (0, 1000] m");
+    if (!(k.mass > 0 && k.mass <= 1e12)) throw std::invalid_argument(w + ".mass = " + num(k.mass) + " must be in (0, 1e12] kg");
+    for (double v : {k.x, k.y, k.theta, k.vx, k.vy, k.omega})
+      if (!(std::isfinite(v) && std::fabs(v) <= 1e6)) throw std::invalid_argument(w + ": initial pose and rates must be finite");
+    if (!(std::fabs(k.theta) < 1.5)) throw std::invalid_argument(w + ".theta = " + num(k.theta) + " must be in (-1.5, 1.5) rad");
+    min_size = std::fmin(min_size, std::fmin(k.width, k.height));
+  }
+  std::vector<int> supports(nb, 0);
+  for (std::size_t j = 0; j < a.interfaces.size(); ++j) {
+    const AssemblyInterface& f = a.interfaces[j];
+    const std::string w = "interface " + std::to_string(j);
+    if (f.upper < 0 || f.upper >= nb) throw std::invalid_argument(w + ".upper = " + std::to_string(f.upper) + " is not a block");
+    if (f.lower < -1 || f.lower >= nb || f.lower == f.upper)
+      throw std::invalid_argument(w + ".lower = " + std::to_string(f.lower) + " must be -1 (ground) or another block");
+    for (std::size_t k = 0; k < j; ++k)
+      if (a.interfaces[k].lower == f.lower && a.interfaces[k].upper == f.upper)
+        throw std::invalid_argument(w + " repeats interface " + std::to_string(k));
+    check_law(f.law, w);
+    ++supports[f.upper];
+  }
+  for (int i = 0; i < nb; ++i)
+    if (supports[i] == 0) throw std::invalid_argument("block " + std::to_string(i) + " stands on nothing (no interface has it as upper)");
+  // The initial configuration: every interface bears, touches (a block floating above its
+  // support is an input error, not a drop test) and does not interpenetrate.
+  auto pose_of = [&](int i) {
+    BodyPose p;
+    if (i < 0) return p;
+    const AssemblyBlock& k = a.blocks[i];
+    p.x = k.x;
+    p.y = k.y;
+    p.theta = k.theta;
+    p.q = BodyRotation::of(k.theta);
+    return p;
+  };
+  const double touch = 1e-3 * min_size, deep = 0.02 * min_size;
+  for (std::size_t j = 0; j < a.interfaces.size(); ++j) {
+    const AssemblyInterface& f = a.interfaces[j];
+    const BodyPose lp = pose_of(f.lower), up = pose_of(f.upper);
+    const Face lf = f.lower < 0 ? ground_face() : top_face(lp, a.blocks[f.lower].width, a.blocks[f.lower].height);
+    const Face uf = base_face(up, a.blocks[f.upper].width, a.blocks[f.upper].height);
+    const std::string w = "interface " + std::to_string(j) + " (block " + std::to_string(f.upper) + " on " +
+                          (f.lower < 0 ? std::string("the ground") : "block " + std::to_string(f.lower)) + ")";
+    if (!(overlap(lf, uf) > 0)) throw std::invalid_argument(w + ": the faces do not overlap at the start");
+    double min_gap = INFINITY;
+    for (int end = 0; end < 2; ++end) {
+      const int owner = owner_margin(lf, uf, end, 0) >= 0 ? 0 : 1;
+      const FaceContact c = contact_point(lp, lf, up, uf, end, owner);
+      min_gap = std::fmin(min_gap, c.gap);
+      if (-c.gap > deep)
+        throw std::invalid_argument(w + ": the blocks overlap by " + num(-c.gap) + " m at the start (at most " +
+                                    num(deep) + " m, 2% of the smallest block size)");
+    }
+    if (min_gap > touch)
+      throw std::invalid_argument(w + ": block " + std::to_string(f.upper) + " floats " + num(min_gap) +
+                                  " m above its support at the start (it must touch, within " + num(touch) + " m)");
+  }
+}
+
+}  // namespace blockdyn

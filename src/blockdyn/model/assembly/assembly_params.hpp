@@ -1,0 +1,72 @@
+// SPDX-License-Identifier: Apache-2.0
+#pragma once
+// An assembly of rectangular blocks on the moving ground (spec block-assemblies.md): the blocks
+// (size, mass, initial pose), the interfaces between a block's base and the face it stands on,
+// and each interface's contact law. Presets build seed 002's trilith, a single block and a
+// column of drums. Units are SI; angles in radians.
+#include <string>
+#include <vector>
+
+namespace blockdyn {
+
+// Friction coefficient standing for a 90 degree friction angle: no sliding at all.
+inline constexpr double kNoSlipFriction = 1e12;
+
+// The per-point deformable law of an interface (deformable_contact.hpp).
+struct ContactLaw {
+  double k_normal = 1e7;      // N/m per contact point (seed 002: k_C = 1e4 kN/m)
+  double k_tangential = -1;   // N/m per point; < 0: k_normal / 3 (seed 002's k_E)
+  double restitution = 0.5;   // normal restitution of a flat drop of the upper block
+  double mu_s = kNoSlipFriction, mu_k = kNoSlipFriction;  // static and kinetic friction
+  double damping = -1;        // N s/m per point; < 0: calibrated from restitution
+};
+
+struct AssemblyBlock {
+  std::string name;
+  double width = 0, height = 0, mass = 0;  // m, m, kg
+  double x = 0, y = 0, theta = 0;          // initial centre and rotation (counter-clockwise)
+  double vx = 0, vy = 0, omega = 0;        // initial rates
+  double inertia() const { return mass * (width * width + height * height) / 12.0; }
+};
+
+// The base of block `upper` on the top face of block `lower` (-1: the ground).
+struct AssemblyInterface {
+  int lower = -1, upper = 0;
+  ContactLaw law;
+};
+
+struct Assembly {
+  std::string preset = "custom";  // block | trilith | column | custom
+  std::vector<AssemblyBlock> blocks;
+  std::vector<AssemblyInterface> interfaces;
+  double g = 9.81;
+  double collapse_rotation = 1.0;  // mode 1: |theta| >= this fraction of the block's atan(b/h)
+  double min_bearing = 0.0;        // mode 2: an interface's overlap falls to this length (m)
+};
+
+// Preset geometry (seed 002: b = 0.12 m, thickness 0.06 m, density 2700 kg/m^3).
+struct PresetOptions {
+  double slenderness = 4;     // column height / width
+  double block_width = 0.12;  // m
+  double thickness = 0.06;    // m, out of plane
+  double density = 2700;      // kg/m^3
+  int drums = 4;              // column preset
+  double lintel_length = -1;  // trilith: < 0 means the column height (seed 002's layout)
+  double overhang = 0;        // trilith: lintel beyond each column's outer face (m; < 0 inset)
+  double tilt = 0;            // initial rotation of the assembly's rocking mode (rad)
+  ContactLaw ground_law, block_law;
+};
+
+Assembly make_preset(const std::string& name, const PresetOptions& o);
+
+// Checks sizes, masses, friction, indices and the initial configuration (overlapping blocks, a
+// block floating above its support); throws std::invalid_argument naming the field.
+void validate(const Assembly& a);
+
+// Damping per point that gives restitution e to a flat drop of mass m on two points of
+// stiffness k each, with the force released when it vanishes (max(0, k d + c d')).
+double damping_for_restitution(double e, double m, double k);
+// The restitution such a drop realises (closed form), the inverse of the above.
+double restitution_of_damping(double c, double m, double k);
+
+}  // namespace blockdyn

@@ -1,0 +1,83 @@
+// SPDX-License-Identifier: Apache-2.0
+#pragma once
+// Runs of block assemblies (model/assembly) and what users ask of them (spec block-assemblies.md,
+// seed 002): the outcome (t_end, collapsed, invalid), the motion class (rest: no contact ever
+// opened or slipped; stable: moved, no failure; collapse), the collapse mode (1: a block's
+// rotation reached its limit; 2: an interface lost its bearing) and t*, per block the largest
+// rotation and sliding and the final state, the energy terms and their closed balance, and the
+// events. SI units.
+#include <array>
+#include <optional>
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include "blockdyn/excitation/ground_motion.hpp"
+#include "blockdyn/integrate/hybrid_integrator.hpp"
+#include "blockdyn/model/assembly/assembly_params.hpp"
+
+namespace blockdyn {
+
+struct AssemblyRunOptions {
+  double t_end = 10.0;
+  IntegratorOptions integrator{1e-8, 1e-10};
+  double output_interval = 0.01;  // trajectory CSV (s)
+  bool record_events = true;      // keep the event list (counts are always kept)
+  long max_events = 1'000'000;    // kept in the list; further events are counted only
+};
+void validate(const AssemblyRunOptions& o);
+
+struct AssemblyEventRecord {
+  double t = 0;
+  std::string kind;  // open, close, slip, stick, end_switch, w_zero, failure, invalid
+  int block = -1;    // the block concerned (contacts: the upper block of the interface)
+  int interface = -1, end = -1;
+  int collapse_mode = 0;
+  std::array<double, 3> pose{};  // x, y, theta of `block` after the event
+};
+
+struct AssemblyBlockSummary {
+  std::string name;
+  double max_abs_rotation = 0, t_max_abs_rotation = 0;
+  double rotation_limit = 0;
+  double max_abs_sliding = 0;  // largest slip over the interfaces it stands on (m)
+  std::array<double, 6> final_state{};
+};
+
+struct AssemblyInterfaceSummary {
+  int lower = -1, upper = 0;
+  double max_abs_sliding = 0;  // largest accumulated slip of its two contact ends (m)
+  double final_overlap = 0;    // length of the faces' overlap at the end (m)
+  long opens = 0, slips = 0;
+};
+
+struct AssemblyEnergy {
+  double kinetic = 0, gravity = 0, normal_spring = 0, tangential_spring = 0, total = 0;
+};
+
+struct AssemblyResult {
+  std::string status = "t_end";  // t_end | collapsed | invalid
+  std::string motion = "rest";   // rest | stable | collapse
+  std::optional<int> collapse_mode;
+  std::optional<double> t_failure;
+  int failed_block = -1, failed_interface = -1;
+  std::string integrator_status = "t_end";
+  std::string note;
+  double t_final = 0;
+  std::vector<AssemblyBlockSummary> blocks;
+  std::vector<AssemblyInterfaceSummary> interfaces;
+  AssemblyEnergy energy_initial, energy_final;
+  double work_ground = 0, work_normal = 0, work_friction = 0, work_switch = 0;
+  double max_abs_energy_error = 0, max_abs_energy_change = 0;
+  std::array<long, 16> event_counts{};  // by AssemblyEventKind
+  long events_total = 0;
+  std::vector<AssemblyEventRecord> events;
+  long steps = 0, rejected_steps = 0, rhs_evals = 0;
+  std::vector<double> damping;  // calibrated damping per interface (N s/m per point)
+};
+
+// One run. `trajectory` (optional) receives the CSV. Throws std::invalid_argument on bad input.
+AssemblyResult simulate_assembly(const Assembly& a, const GroundMotion& g, const AssemblyRunOptions& o,
+                                 std::ostream* trajectory = nullptr);
+
+}  // namespace blockdyn
