@@ -1,0 +1,147 @@
+// SPDX-License-Identifier: Apache-2.0
+// `blockdyn assembly` (issue 8): the JSON contract scripts rely on, an assembly file equal to the
+// preset it describes, the trajectory CSV, and bad input (exit 2, one line naming the field).
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <fstream>
+
+#include "test_sweep_util.hpp"
+
+using nlohmann::json;
+using sweep_test::exists;
+using sweep_test::run_cli;
+using sweep_test::slurp;
+using sweep_test::TmpDir;
+
+namespace {
+
+std::vector<std::string> operator+(std::vector<std::string> a, const std::vector<std::string>& b) {
+  a.insert(a.end(), b.begin(), b.end());
+  return a;
+}
+
+// Seed 002's trilith, lambda = 4, as an assembly file (the preset's upright layout, settled).
+std::string trilith_file(const json& preset) {
+  std::string s = "[contact]\nk_normal = 1e7\nrestitution = 0.5\nphi = 20\n\n";
+  for (const auto& b : preset["assembly"]["blocks"]) {
+    char buf[512];
+    const auto& z = b["initial_state"];
+    std::snprintf(buf, sizeof buf,
+                  "[[block]]\nname = \"%s\"\nwidth = %.17g\nheight = %.17g\nmass = %.17g\nx = %.17g\ny = %.17g\n\n",
+                  b["name"].get<std::string>().c_str(), b["width"].get<double>(), b["height"].get<double>(),
+                  b["mass"].get<double>(), z[0].get<double>(), z[1].get<double>());
+    s += buf;
+  }
+  s += "[[interface]]\nlower = \"ground\"\nupper = 0\n\n[[interface]]\nlower = \"ground\"\nupper = 1\n\n";
+  s += "[[interface]]\nlower = 0\nupper = 2\n\n[[interface]]\nlower = 1\nupper = 2\n";
+  return s;
+}
+
+const std::vector<std::string> kHarmonic{"--ground-h-amplitude", "0.4", "--ground-h-frequency", "2",
+                                         "--ground-h-phase", "1.5707963267948966"};
+
+}  // namespace
+
+TEST(CliAssembly, JsonContract) {
+  TmpDir d("asm_json");
+  const auto r = run_cli(std::vector<std::string>{"assembly", "--preset", "trilith", "--phi-s", "20", "--phi-l", "20",
+                                                  "--t-end", "2", "--json"} +
+                             kHarmonic,
+                         d.path);
+  ASSERT_EQ(r.code, 0) << r.err;
+  const json j = json::parse(r.out);
+  EXPECT_EQ(j["schema"], "blockdyn.assembly.summary/1");
+  EXPECT_EQ(j["model"], "assembly");
+  for (const char* k : {"status", "motion", "collapse_mode", "t_failure", "blocks", "energy", "max_abs_energy_error",
+                        "events", "interfaces", "run", "tolerances", "ground_motion"})
+    EXPECT_TRUE(j.contains(k)) << k;
+  EXPECT_TRUE(j["status"] == "t_end" || j["status"] == "collapsed");
+  EXPECT_TRUE(j["motion"] == "stable" || j["motion"] == "collapse");
+  ASSERT_EQ(j["blocks"].size(), 3u);
+  EXPECT_EQ(j["blocks"][2]["name"], "lintel");
+  for (const auto& b : j["blocks"]) {
+    EXPECT_TRUE(b.contains("max_abs_rotation"));
+    EXPECT_TRUE(b.contains("max_abs_sliding"));
+    EXPECT_EQ(b["final_state"].size(), 6u);
+  }
+  bool w_zero = false, open = false;
+  for (const auto& e : j["events"]) {
+    ASSERT_TRUE(e.contains("t") && e.contains("kind") && e.contains("block"));
+    w_zero |= e["kind"] == "w_zero";
+    open |= e["kind"] == "open";
+  }
+  EXPECT_TRUE(w_zero);
+  EXPECT_TRUE(open);
+  EXPECT_LT(j["max_abs_energy_error"].get<double>(), 1e-3);
+}
+
+TEST(CliAssembly, AnAssemblyFileGivesThePresetsResult) {
+  TmpDir d("asm_file");
+  const std::vector<std::string> common = std::vector<std::string>{"--t-end", "1.5", "--json"} + kHarmonic;
+  const auto p = run_cli(std::vector<std::string>{"assembly", "--preset", "trilith", "--phi-s", "20", "--phi-l", "20"} +
+                             common,
+                         d.path);
+  ASSERT_EQ(p.code, 0) << p.err;
+  const json jp = json::parse(p.out);
+  std::ofstream(d.path + "/trilith.toml") << trilith_file(jp);
+  const auto f = run_cli(std::vector<std::string>{"assembly", "trilith.toml"} + common, d.path);
+  ASSERT_EQ(f.code, 0) << f.err;
+  const json jf = json::parse(f.out);
+  EXPECT_EQ(jf["blocks"], jp["blocks"]);
+  EXPECT_EQ(jf["events"], jp["events"]);
+}
+
+TEST(CliAssembly, TrajectoryAndFigures) {
+  TmpDir d("asm_traj");
+  const auto r = run_cli({"assembly", "--preset", "column", "--drums", "3", "--tilt", "0.05", "--t-end", "1",
+                          "--trajectory", "c.csv", "--plot", "c.png", "--quiet"},
+                         d.path);
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_TRUE(exists(d.path + "/c.png"));
+  const std::string csv = slurp(d.path + "/c.csv");
+  const std::string header = csv.substr(0, csv.find('\n'));
+  for (const char* c : {"t,event,x_0", "theta_2", "fn_0_0", "ft_2_1", "state_1_0", "energy_balance"})
+    EXPECT_NE(header.find(c), std::string::npos) << c;
+  EXPECT_NE(csv.find(",close,"), std::string::npos);
+}
+
+TEST(CliAssembly, BadInputIsAUsageError) {
+  TmpDir d("asm_bad");
+  std::ofstream(d.path + "/float.toml") << "[[block]]\nwidth = 0.1\nheight = 0.4\nmass = 5\ny = 0.25\n"
+                                           "[[interface]]\nlower = \"ground\"\nupper = 0\n";
+  std::ofstream(d.path + "/deep.toml") << "[[block]]\nwidth = 0.1\nheight = 0.4\nmass = 5\ny = 0.15\n"
+                                          "[[interface]]\nlower = \"ground\"\nupper = 0\n";
+  std::ofstream(d.path + "/negative.toml") << "[[block]]\nwidth = -0.1\nheight = 0.4\nmass = 5\ny = 0.2\n"
+                                              "[[interface]]\nlower = \"ground\"\nupper = 0\n";
+  std::ofstream(d.path + "/malformed.toml") << "[[block]\nwidth = 0.1\n";
+  std::ofstream(d.path + "/unknown.toml") << "[[block]]\nwidth = 0.1\nheight = 0.4\nmass = 5\ny = 0.2\ncolour = 1\n"
+                                             "[[interface]]\nlower = \"ground\"\nupper = 0\n";
+  const std::vector<std::pair<std::vector<std::string>, std::string>> cases{
+      {{"assembly", "float.toml"}, "floats"},
+      {{"assembly", "deep.toml"}, "overlap"},
+      {{"assembly", "negative.toml"}, "width"},
+      {{"assembly", "malformed.toml"}, "malformed.toml"},
+      {{"assembly", "unknown.toml"}, "colour"},
+      {{"assembly", "missing.toml"}, "missing.toml"},
+      {{"assembly", "--preset", "arch"}, "preset"},
+      {{"assembly", "--preset", "trilith", "--contact", "elastic"}, "contact"},
+      {{"assembly", "--preset", "trilith", "--contact", "rigid"}, "rigid"},
+      {{"assembly", "--preset", "trilith", "--phi-s", "95"}, "phi-s"},
+      {{"assembly", "--preset", "trilith", "--phi-l", "-1"}, "phi-l"},
+      {{"assembly", "--preset", "trilith", "--slenderness", "-4"}, "slenderness"},
+      {{"assembly", "--preset", "column", "--drums", "0"}, "drums"},
+      {{"assembly", "--preset", "block", "--drums", "3"}, "drums"},
+      {{"assembly", "--preset", "trilith", "--restitution", "0"}, "restitution"},
+      {{"assembly", "--preset", "trilith", "--t-end", "-1"}, "t-end"},
+      {{"assembly", "--preset", "trilith", "--tilt", "2"}, "tilt"},
+      {{"assembly"}, "--preset"},
+      {{"assembly", "--preset", "trilith", "float.toml"}, "not both"},
+  };
+  for (const auto& [args, word] : cases) {
+    const auto r = run_cli(args, d.path);
+    EXPECT_EQ(r.code, 2) << args.back() << ": " << r.err;
+    EXPECT_NE(r.err.find(word), std::string::npos) << args.back() << ": " << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  }
+}
