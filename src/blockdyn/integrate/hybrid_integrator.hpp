@@ -364,13 +364,18 @@ class HybridIntegrator {
           root = locate_root(gi, lo, ts[j], glo, gb);
         } else if (falling && ga > 0.0 && gb > ga) {
           const int a = (j >= 2) ? j - 2 : 0;
-          root = dip_root(gi, ts[a], ts[j], gs[a][i]);
+          // A smooth minimum lies at most about the variation seen around it below the lowest
+          // sample: a dip can only reach zero if that sample is within a multiple of it. (At rest
+          // the samples wobble at rounding level far from zero: no search.)
+          const double variation = std::fmax(gb - ga, gs[a][i] - ga);
+          if (ga < kDipReach * variation) root = dip_root(gi, ts[a], ts[j], gs[a][i]);
         }
         falling = gb < ga;
       }
       if (!root && any_falling_end && gs[S][i] > 0.0 && gs[S][i] < gs[S - 1][i]) {
         if (g_before_end[i] < gs[S][i]) {  // rising again at the end: minimum inside
-          root = dip_root(gi, ts[S - 1], t1, gs[S - 1][i]);
+          if (g_before_end[i] < kDipReach * (gs[S - 1][i] - g_before_end[i]))
+            root = dip_root(gi, ts[S - 1], t1, gs[S - 1][i]);
         } else {
           falling_next[i] = true;
         }
@@ -408,6 +413,7 @@ class HybridIntegrator {
   }
 
   static constexpr int kMaxSamples = 64;
+  static constexpr double kDipReach = 100.0;
   const Model& model_;
   IntegratorOptions opt_;
   Dopri5<N> stepper_;
