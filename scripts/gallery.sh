@@ -39,4 +39,6 @@ run $B map --k 1e1:1e8:12 --inv-r 1:20:10 --mu 0.2 --ic ic1 --t-end 30 --boundar
 run $B simulate examples/housner_pulse.toml --trajectory "$O/housner_pulse.csv" --plot "$O/housner_pulse.png"
 run $B simulate examples/rigid_record.toml --trajectory "$O/rigid_record.csv" --plot "$O/rigid_record.png"
 run /usr/bin/python3 python/fig_rigid_ground.py "$B" "$O" tests/fixtures/synthetic_60s.AT2
+# Block assemblies (seed 002 trilith): frame rocking, the harmonic case, a figure and an animation
+run /usr/bin/python3 python/fig_assembly.py "$B" "$O"
 echo "gallery written to $O"
