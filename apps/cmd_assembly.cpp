@@ -31,11 +31,12 @@ struct AssemblyFlags {
   double max_output_rows = 1e7;
 };
 
-ContactLaw law_from_flags(const AssemblyFlags& f, double phi, const char* field) {
+ContactLaw law_from_flags(const CLI::App& s, const AssemblyFlags& f, double phi, const char* field) {
   ContactLaw l;
   l.k_normal = f.k_normal;
   l.k_tangential = f.k_tangential;
-  l.restitution = f.restitution;
+  // The rigid law's Newton restitution defaults to 0 (a plastic contact, as Housner's block).
+  l.restitution = f.contact == "rigid" && !given(s, "--restitution") ? 0.0 : f.restitution;
   try {
     l.mu_s = l.mu_k = friction_of_angle(phi, field);
   } catch (const std::invalid_argument& e) {
@@ -45,9 +46,6 @@ ContactLaw law_from_flags(const AssemblyFlags& f, double phi, const char* field)
 }
 
 Assembly build(const CLI::App& s, const AssemblyFlags& f) {
-  if (f.contact == "rigid")
-    throw UsageError("contact = 'rigid' is not available for assemblies yet (the single block on rigid ground is "
-                     "`blockdyn simulate --model rigid`); use --contact deformable");
   if (f.file.empty() == f.preset.empty())
     throw UsageError(f.file.empty() ? "give --preset block|trilith|column or an assembly FILE.toml"
                                     : "give either --preset or an assembly file, not both");
@@ -56,7 +54,12 @@ Assembly build(const CLI::App& s, const AssemblyFlags& f) {
   require_range("tilt", f.tilt, -1.5, 1.5, false, false);
   require_range("normal-stiffness", f.k_normal, 1, 1e13);
   if (given(s, "--tangential-stiffness")) require_range("tangential-stiffness", f.k_tangential, 1, 1e13);
-  require_range("restitution", f.restitution, 1e-3, 1);
+  const bool rigid = f.contact == "rigid";
+  require_range("restitution", f.restitution, rigid ? 0.0 : 1e-3, 1);
+  if (rigid)
+    for (const char* n : {"--normal-stiffness", "--tangential-stiffness", "--rtol", "--atol"})
+      if (given(s, n)) throw UsageError(std::string(n) + " belongs to --contact deformable (the rigid law has --step)");
+  if (!rigid && given(s, "--step")) throw UsageError("--step belongs to --contact rigid");
   require_range("collapse-rotation", f.collapse_rotation, 0, 10, false);
   require_range("min-bearing", f.min_bearing, 0, 1e3);
   require_range("g", f.g, 0, 1e3, false);
@@ -78,11 +81,13 @@ Assembly build(const CLI::App& s, const AssemblyFlags& f) {
         if (!ground && given(s, "--phi-l")) l.mu_s = l.mu_k = friction_of_angle(f.phi_l, "phi-l");
       }
       if (given(s, "--g")) a.g = f.g;
+      a.contact = f.contact;
     } else {
       PresetOptions o = f.preset_opt;
       o.tilt = f.tilt;
-      o.ground_law = law_from_flags(f, f.phi_s, "phi-s");
-      o.block_law = law_from_flags(f, f.phi_l, "phi-l");
+      o.ground_law = law_from_flags(s, f, f.phi_s, "phi-s");
+      o.block_law = law_from_flags(s, f, f.phi_l, "phi-l");
+      o.rigid_contacts = rigid;
       if (given(s, "--drums") && f.preset != "column") throw UsageError("--drums belongs to --preset column");
       for (const char* n : {"--lintel-length", "--overhang"})
         if (given(s, n) && f.preset != "trilith") throw UsageError(std::string(n) + " belongs to --preset trilith");
@@ -119,6 +124,7 @@ void run(const CLI::App& s, const AssemblyFlags& f) {
   apply_ground_flags(s, f.ground, g);
   AssemblyRunOptions o = f.run;
   require_range("t-end", o.t_end, 0, 1e7, false);
+  require_range("step", o.step, 1e-7, 1e-2);
   require_range("rtol", o.integrator.rtol, 1e-14, 1e-2);
   require_range("atol", o.integrator.atol, 1e-16, 1e-2);
   require_range("output-interval", o.output_interval, 0, 1e7);
@@ -168,7 +174,9 @@ void add(CLI::App& app) {
   s->add_option("file", f->file, "assembly file (TOML: [[block]], [[interface]], [contact])");
   s->add_option("--preset", f->preset, "block (one block), trilith (seed 002: two columns and a lintel), column (n drums)")
       ->check(CLI::IsMember({"block", "trilith", "column"}));
-  s->add_option("--contact", f->contact, "contact law: deformable (default); rigid is not available for assemblies yet")
+  s->add_option("--contact", f->contact,
+                "contact law: deformable (spring-dashpot + elastic Coulomb, default) or rigid (unilateral, Coulomb, "
+                "Newton impacts; Moreau-Jean time-stepping)")
       ->check(CLI::IsMember({"deformable", "rigid"}));
   s->add_option("--slenderness", f->preset_opt.slenderness, "column (or block) height / width (default 4)");
   s->add_option("--drums", f->preset_opt.drums, "column: number of drums, 1 to 8 (default 4)");
@@ -184,12 +192,14 @@ void add(CLI::App& app) {
   s->add_option("--normal-stiffness", f->k_normal, "normal stiffness per contact point [N/m] (default 1e7)");
   s->add_option("--tangential-stiffness", f->k_tangential, "tangential stiffness per point [N/m] (default normal / 3)");
   s->add_option("--restitution", f->restitution,
-                "normal restitution of a flat drop, sets the dashpots, in [0.001, 1] (default 0.5)");
+                "deformable: restitution of a flat drop, sets the dashpots, in [0.001, 1] (default 0.5); rigid: "
+                "Newton's coefficient in [0, 1] (default 0)");
   s->add_option("--collapse-rotation", f->collapse_rotation,
                 "collapse mode 1 when a block's |theta| reaches this fraction of atan(width/height) (default 1)");
   s->add_option("--min-bearing", f->min_bearing,
                 "collapse mode 2 when the overlap of two blocks' faces falls to this length [m] (default 0)");
   s->add_option("--g", f->g, "gravity [m/s^2] (default 9.81)");
+  s->add_option("--step", f->run.step, "rigid: time step [s] (default 1e-4)");
   s->add_option("--t-end", f->run.t_end, "duration [s] (default 10)");
   s->add_option("--rtol", f->run.integrator.rtol, "relative tolerance (default 1e-8)");
   s->add_option("--atol", f->run.integrator.atol, "absolute tolerance in m, rad, m/s, rad/s, J (default 1e-10)");

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // Issue 8 benchmark: seed 002's trilith (lambda = 4, deformable contacts k_N = 1e7 N/m) under a
 // harmonic ground motion for 300 s, at the default tolerances and at the seed's looser ones, and
-// the same trilith at rest. Counters: steps, contact events, rhs evaluations, ns per rhs.
+// the same trilith at rest; the same with the rigid law (Moreau-Jean, h = 1e-4 s). Counters: steps, contact events, rhs evaluations, ns per rhs.
 #include <benchmark/benchmark.h>
 
 #include <cmath>
@@ -12,8 +12,10 @@ using namespace blockdyn;
 
 namespace {
 
-Assembly trilith(double phi_deg) {
+Assembly trilith(double phi_deg, bool rigid = false) {
   PresetOptions o;
+  o.rigid_contacts = rigid;
+  if (rigid) o.ground_law.restitution = o.block_law.restitution = 0.0;
   o.ground_law.mu_s = o.ground_law.mu_k = o.block_law.mu_s = o.block_law.mu_k =
       phi_deg >= 90 ? kNoSlipFriction : std::tan(phi_deg * M_PI / 180);
   return make_preset("trilith", o);
@@ -29,8 +31,10 @@ GroundMotion seed_harmonic(double beta, double omega) {
   return g;
 }
 
-void run(benchmark::State& state, const Assembly& a, const GroundMotion& g, double rtol, double atol, double t_end) {
+void run(benchmark::State& state, const Assembly& a, const GroundMotion& g, double rtol, double atol, double t_end,
+         double step = 1e-4) {
   AssemblyRunOptions o;
+  o.step = step;
   o.t_end = t_end;
   o.integrator.rtol = rtol;
   o.integrator.atol = atol;
@@ -50,6 +54,9 @@ void BM_TrilithHarmonic300s(benchmark::State& s) { run(s, trilith(90), seed_harm
 void BM_TrilithHarmonic300sLoose(benchmark::State& s) { run(s, trilith(90), seed_harmonic(4, 10), 1e-6, 1e-8, 300); }
 void BM_TrilithFriction300s(benchmark::State& s) { run(s, trilith(20), seed_harmonic(1.5, 3), 1e-8, 1e-10, 300); }
 void BM_TrilithAtRest100s(benchmark::State& s) { run(s, trilith(90), {}, 1e-8, 1e-10, 100); }
+// The rigid law (Moreau-Jean, h = 1e-4 s): the seed's harmonic case and the trilith at rest.
+void BM_RigidTrilithHarmonic300s(benchmark::State& s) { run(s, trilith(90, true), seed_harmonic(4, 10), 1e-8, 1e-10, 300); }
+void BM_RigidTrilithAtRest100s(benchmark::State& s) { run(s, trilith(90, true), {}, 1e-8, 1e-10, 100); }
 
 }  // namespace
 
@@ -57,3 +64,5 @@ BENCHMARK(BM_TrilithHarmonic300s)->Unit(benchmark::kMillisecond)->Iterations(1);
 BENCHMARK(BM_TrilithHarmonic300sLoose)->Unit(benchmark::kMillisecond)->Iterations(1);
 BENCHMARK(BM_TrilithFriction300s)->Unit(benchmark::kMillisecond)->Iterations(1);
 BENCHMARK(BM_TrilithAtRest100s)->Unit(benchmark::kMillisecond)->Iterations(1);
+BENCHMARK(BM_RigidTrilithHarmonic300s)->Unit(benchmark::kMillisecond)->Iterations(1);
+BENCHMARK(BM_RigidTrilithAtRest100s)->Unit(benchmark::kMillisecond)->Iterations(1);

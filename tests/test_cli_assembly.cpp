@@ -76,6 +76,25 @@ TEST(CliAssembly, JsonContract) {
   EXPECT_LT(j["max_abs_energy_error"].get<double>(), 1e-3);
 }
 
+TEST(CliAssembly, RigidLawJsonContract) {
+  TmpDir d("asm_rigid");
+  const auto r = run_cli({"assembly", "--preset", "trilith", "--contact", "rigid", "--tilt", "0.05", "--t-end", "1",
+                          "--json"},
+                         d.path);
+  ASSERT_EQ(r.code, 0) << r.err;
+  const json j = json::parse(r.out);
+  EXPECT_EQ(j["contact"], "rigid");
+  EXPECT_EQ(j["step"], 1e-4);
+  EXPECT_EQ(j["status"], "t_end");
+  EXPECT_EQ(j["motion"], "stable");
+  EXPECT_EQ(j["assembly"]["interfaces"][0]["contact"]["law"], "rigid");
+  EXPECT_EQ(j["assembly"]["interfaces"][0]["contact"]["restitution"], 0.0);  // plastic by default
+  int impacts = 0;
+  for (const auto& e : j["events"]) impacts += e["kind"] == "impact";
+  EXPECT_GE(impacts, 2);
+  EXPECT_EQ(j["impacts"], impacts);
+}
+
 TEST(CliAssembly, AnAssemblyFileGivesThePresetsResult) {
   TmpDir d("asm_file");
   const std::vector<std::string> common = std::vector<std::string>{"--t-end", "1.5", "--json"} + kHarmonic;
@@ -126,7 +145,9 @@ TEST(CliAssembly, BadInputIsAUsageError) {
       {{"assembly", "missing.toml"}, "missing.toml"},
       {{"assembly", "--preset", "arch"}, "preset"},
       {{"assembly", "--preset", "trilith", "--contact", "elastic"}, "contact"},
-      {{"assembly", "--preset", "trilith", "--contact", "rigid"}, "rigid"},
+      {{"assembly", "--preset", "trilith", "--contact", "rigid", "--normal-stiffness", "1e8"}, "deformable"},
+      {{"assembly", "--preset", "trilith", "--step", "1e-3"}, "step"},
+      {{"assembly", "--preset", "trilith", "--contact", "rigid", "--step", "1"}, "step"},
       {{"assembly", "--preset", "trilith", "--phi-s", "95"}, "phi-s"},
       {{"assembly", "--preset", "trilith", "--phi-l", "-1"}, "phi-l"},
       {{"assembly", "--preset", "trilith", "--slenderness", "-4"}, "slenderness"},

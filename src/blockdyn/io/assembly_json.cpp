@@ -10,7 +10,9 @@ using json = nlohmann::ordered_json;
 
 namespace {
 
-json law_json(const ContactLaw& l, double damping) {
+json law_json(const ContactLaw& l, double damping, const std::string& contact) {
+  if (contact == "rigid")
+    return {{"law", "rigid"}, {"restitution", l.restitution}, {"mu_s", l.mu_s}, {"mu_k", l.mu_k}};
   return {{"law", "deformable"},
           {"k_normal", l.k_normal},
           {"k_tangential", l.k_tangential > 0 ? l.k_tangential : l.k_normal / 3.0},
@@ -54,7 +56,7 @@ json assembly_result_json(const Assembly& a, const GroundMotion& g, const Assemb
   json j;
   j["run"] = run_info();
   j["model"] = "assembly";
-  j["contact"] = "deformable";
+  j["contact"] = a.contact;
   j["units"] = "SI (s, m, rad, kg, N, J); ground accelerations in g";
   j["assembly"] = to_json(a);
   json ifs = json::array();
@@ -62,7 +64,7 @@ json assembly_result_json(const Assembly& a, const GroundMotion& g, const Assemb
     const AssemblyInterface& f = a.interfaces[i];
     ifs.push_back({{"lower", f.lower < 0 ? json("ground") : json(f.lower)},
                    {"upper", f.upper},
-                   {"contact", law_json(f.law, i < r.damping.size() ? r.damping[i] : 0.0)}});
+                   {"contact", law_json(f.law, i < r.damping.size() ? r.damping[i] : 0.0, a.contact)}});
   }
   j["assembly"]["interfaces"] = ifs;
   j["ground_motion"] = to_json(g);
@@ -104,6 +106,10 @@ json assembly_result_json(const Assembly& a, const GroundMotion& g, const Assemb
                  {"balance_final", r.energy_final.total - r.energy_initial.total - r.work_ground - r.work_normal -
                                        r.work_friction - r.work_switch}};
   j["max_abs_energy_error"] = r.max_abs_energy_error;
+  if (a.contact == "rigid") {
+    j["step"] = o.step;
+    j["impacts"] = r.impacts;
+  }
   j["max_abs_energy_change"] = r.max_abs_energy_change;
   j["steps"] = r.steps;
   j["rejected_steps"] = r.rejected_steps;

@@ -1,12 +1,14 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "blockdyn/simulation/assembly_simulation.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <memory>
 #include <stdexcept>
 
 #include "blockdyn/io/output_clock.hpp"
 #include "blockdyn/model/assembly/assembly_model.hpp"
+#include "blockdyn/model/assembly/moreau_jean.hpp"
 #include "blockdyn/simulation/observer.hpp"
 #include "blockdyn/simulation/run.hpp"
 
@@ -17,6 +19,8 @@ void validate(const AssemblyRunOptions& o) {
   if (!(o.integrator.rtol >= 1e-14 && o.integrator.rtol <= 1e-2)) throw std::invalid_argument("rtol must be in [1e-14, 1e-2]");
   if (!(o.integrator.atol >= 1e-16 && o.integrator.atol <= 1e-2)) throw std::invalid_argument("atol must be in [1e-16, 1e-2]");
   if (!(o.output_interval >= 0 && o.output_interval <= 1e7)) throw std::invalid_argument("output-interval must be in [0, 1e7] s");
+  if (!(o.step >= 1e-7 && o.step <= 1e-2)) throw std::invalid_argument("step must be in [1e-7, 1e-2] s");
+  if (!(o.t_end / o.step <= 2e9)) throw std::invalid_argument("t-end / step must be at most 2e9 steps");
 }
 
 namespace {
@@ -253,12 +257,232 @@ AssemblyResult run(const Assembly& a, const GroundMotion& g, const AssemblyRunOp
   return r;
 }
 
+
+// The rigid law: Moreau-Jean time-stepping (model/assembly/moreau_jean.hpp). Events are found
+// between consecutive steps: contact ends opening and closing (an impact when the end
+// approached), stick and slip, passages of theta through 0 and the collapse criteria, the
+// crossings of theta interpolated linearly within the step.
+AssemblyResult run_rigid(const Assembly& a, const GroundMotion& g, const AssemblyRunOptions& o, std::ostream* csv) {
+  MoreauJeanOptions mo;
+  mo.h = o.step;
+  MoreauJean mj(a, g, mo);
+  const int nb = mj.blocks(), ni = mj.interfaces(), np = 2 * ni;
+  AssemblyResult r;
+  r.damping.assign(ni, 0.0);
+  r.blocks.resize(nb);
+  r.interfaces.resize(ni);
+  std::vector<double> q(3 * nb), v(3 * nb), theta_prev(nb), slip(np, 0.0);
+  std::vector<int> side(nb, 1);
+  // A passage through theta = 0 counts once theta is this far on the other side (rounding).
+  constexpr double kBand = 1e-12;
+  for (int b = 0; b < nb; ++b) {
+    const AssemblyBlock& k = a.blocks[b];
+    q[3 * b] = k.x, q[3 * b + 1] = k.y, q[3 * b + 2] = k.theta;
+    v[3 * b] = k.vx, v[3 * b + 1] = k.vy, v[3 * b + 2] = k.omega;
+    r.blocks[b].name = k.name;
+    r.blocks[b].rotation_limit = mj.rotation_limit(b);
+    r.blocks[b].max_abs_rotation = std::fabs(k.theta);
+    side[b] = k.theta < 0 ? -1 : 1;
+  }
+  for (int i = 0; i < ni; ++i) {
+    r.interfaces[i].lower = a.interfaces[i].lower;
+    r.interfaces[i].upper = a.interfaces[i].upper;
+  }
+  // Contact end states: 'O' open, 'K' stick, 'P'/'N' slip.
+  std::vector<char> state(np, 'O'), next(np, 'O');
+  const double e0 = mj.kinetic_energy(v) + mj.gravity_energy(q);
+  r.energy_initial.kinetic = mj.kinetic_energy(v);
+  r.energy_initial.total = e0;
+  double w_ground = 0, w_normal = 0, w_tangent = 0, max_err = 0, max_change = 0;
+  auto add_event = [&](double t, int kind_code, const char* kind, int block, int iface, int end, int mode) {
+    ++r.events_total;
+    if (kind_code >= 0) ++r.event_counts[kind_code];
+    if (!o.record_events || long(r.events.size()) >= o.max_events) return;
+    AssemblyEventRecord e;
+    e.t = t;
+    e.kind = kind;
+    e.block = block;
+    e.interface = iface;
+    e.end = end;
+    e.collapse_mode = mode;
+    if (block >= 0) e.pose = {q[3 * block], q[3 * block + 1], q[3 * block + 2]};
+    r.events.push_back(e);
+  };
+  auto write_row = [&](double t, const char* ev) {
+    if (!csv) return;
+    char buf[64];
+    auto put = [&](double x) {
+      const int k = std::snprintf(buf, sizeof buf, ",%.17g", x);
+      csv->write(buf, k);
+    };
+    std::snprintf(buf, sizeof buf, "%.17g,%s", t, ev);
+    *csv << buf;
+    for (int b = 0; b < nb; ++b) {
+      for (int k = 0; k < 3; ++k) put(q[3 * b + k]);
+      for (int k = 0; k < 3; ++k) put(v[3 * b + k]);
+    }
+    const auto acc = mj.ground_acceleration(t);
+    put(acc[0]);
+    put(acc[1]);
+    for (int p = 0; p < np; ++p) {
+      const auto& e = mj.ends()[p];
+      put(e.c.P.x);
+      put(e.c.P.y);
+      put(e.pn / o.step);  // the step's mean contact force
+      put(e.pt / o.step);
+      *csv << ',' << state[p];
+    }
+    const double ek = mj.kinetic_energy(v), eg = mj.gravity_energy(q);
+    for (double x : {ek, eg, 0.0, 0.0, ek + eg, w_ground, w_normal, w_tangent, 0.0, ek + eg - e0 - w_ground - w_normal - w_tangent})
+      put(x);
+    *csv << '\n';
+  };
+  if (csv) {
+    *csv << "t,event";
+    for (int b = 0; b < nb; ++b)
+      for (const char* c : {"x", "y", "theta", "vx", "vy", "omega"}) *csv << ',' << c << '_' << b;
+    *csv << ",a_h,a_v";
+    for (int p = 0; p < np; ++p)
+      for (const char* c : {"px", "py", "fn", "ft", "state"}) *csv << ',' << c << '_' << p / 2 << '_' << p % 2;
+    *csv << ",E_kin,E_grav,E_spring_n,E_spring_t,E_total,W_ground,W_normal,W_friction,W_switch,energy_balance\n";
+    write_row(0.0, "start");
+  }
+  const long steps = long(std::ceil(o.t_end / o.step - 1e-9));
+  long next_out = 1;
+  double t = 0;
+  // An end closes with an impact when it approaches faster than one step of free fall.
+  const double v_tol = a.g * o.step;
+  for (long k = 0; k < steps; ++k) {
+    for (int b = 0; b < nb; ++b) theta_prev[b] = q[3 * b + 2];
+    if (!mj.step(t, q, v)) {
+      r.status = "invalid";
+      r.note = "the contact problem (LCP) has no solution at t = " + std::to_string(t) + " s";
+      add_event(t, kAsmInvalid, "invalid", -1, -1, -1, 0);
+      break;
+    }
+    const double t1 = (k + 1) * o.step;
+    for (int p = 0; p < np; ++p) {
+      const auto& e = mj.ends()[p];
+      // An end is closed while it touches (active), whether or not this step needed an impulse.
+      next[p] = !e.active ? 'O' : !e.slipping ? 'K' : (e.ut_after > 0 ? 'P' : 'N');
+      const int blk = a.interfaces[p / 2].upper;
+      if (k == 0) {
+        // The contacts the assembly starts on are not events; a slip from the start is.
+        if (next[p] == 'P' || next[p] == 'N') {
+          add_event(t1, kAsmSlip, "slip", blk, p / 2, p % 2, 0);
+          ++r.interfaces[p / 2].slips;
+        }
+      } else if (next[p] != 'O' && state[p] == 'O') {
+        const bool impact = e.un_before < -v_tol;
+        add_event(t1, impact ? kAsmImpact : kAsmClose, impact ? "impact" : "close", blk, p / 2, p % 2, 0);
+        if (impact) ++r.impacts;
+      } else if (next[p] == 'O' && state[p] != 'O') {
+        add_event(t1, kAsmOpen, "open", blk, p / 2, p % 2, 0);
+        ++r.interfaces[p / 2].opens;
+      } else if ((next[p] == 'P' || next[p] == 'N') && state[p] == 'K') {
+        add_event(t1, kAsmSlip, "slip", blk, p / 2, p % 2, 0);
+        ++r.interfaces[p / 2].slips;
+      } else if (next[p] == 'K' && (state[p] == 'P' || state[p] == 'N')) {
+        add_event(t1, kAsmStick, "stick", blk, p / 2, p % 2, 0);
+      }
+      if (next[p] == 'P' || next[p] == 'N') slip[p] += e.ut_after * o.step;
+      state[p] = next[p];
+    }
+    w_ground += mj.work_ground;
+    w_normal += mj.work_normal;
+    w_tangent += mj.work_tangential;
+    const double ek = mj.kinetic_energy(v), eg = mj.gravity_energy(q);
+    max_err = std::fmax(max_err, std::fabs(ek + eg - e0 - w_ground - w_normal - w_tangent));
+    max_change = std::fmax(max_change, std::fabs(ek + eg - e0));
+    bool stop = false;
+    for (int b = 0; b < nb && !stop; ++b) {
+      const double th0 = theta_prev[b], th1 = q[3 * b + 2];
+      if (side[b] * th1 < -kBand) {
+        const double tc = t + o.step * (th0 / (th0 - th1));  // linear within the step
+        add_event(std::clamp(tc, t, t1), kAsmWZero, "w_zero", b, -1, -1, 0);
+        side[b] = -side[b];
+      }
+      if (std::fabs(th1) > r.blocks[b].max_abs_rotation) {
+        r.blocks[b].max_abs_rotation = std::fabs(th1);
+        r.blocks[b].t_max_abs_rotation = t1;
+      }
+      const double lim = r.blocks[b].rotation_limit;
+      if (std::fabs(th1) >= lim) {
+        const double s = th1 > 0 ? 1.0 : -1.0;
+        const double tf = t + o.step * (lim - s * th0) / (s * th1 - s * th0);
+        add_event(tf, kAsmCollapse1, "failure", b, -1, -1, 1);
+        r.collapse_mode = 1;
+        r.t_failure = tf;
+        r.failed_block = b;
+        stop = true;
+      }
+    }
+    for (int i = 0; i < ni && !stop; ++i) {
+      if (a.interfaces[i].lower < 0) continue;
+      if (mj.overlap_of(q, i) <= a.min_bearing) {
+        add_event(t1, kAsmCollapse2, "failure", a.interfaces[i].upper, i, -1, 2);
+        r.collapse_mode = 2;
+        r.t_failure = t1;
+        r.failed_block = a.interfaces[i].upper;
+        r.failed_interface = i;
+        stop = true;
+      }
+    }
+    for (int i = 0; i < ni; ++i)
+      r.interfaces[i].max_abs_sliding =
+          std::fmax(r.interfaces[i].max_abs_sliding, std::fmax(std::fabs(slip[2 * i]), std::fabs(slip[2 * i + 1])));
+    t = t1;
+    if (csv) {
+      while (o.output_interval > 0 && next_out * o.output_interval <= t + 1e-12 * o.step) {
+        write_row(t, "");
+        ++next_out;
+      }
+      if (o.output_interval <= 0) write_row(t, "");
+    }
+    if (stop) {
+      r.status = "collapsed";
+      break;
+    }
+  }
+  r.t_final = t;
+  r.steps = long(std::lround(t / o.step));
+  r.rhs_evals = r.steps;
+  for (int b = 0; b < nb; ++b) {
+    for (int k = 0; k < 3; ++k) {
+      r.blocks[b].final_state[k] = q[3 * b + k];
+      r.blocks[b].final_state[3 + k] = v[3 * b + k];
+    }
+    for (int i = 0; i < ni; ++i)
+      if (a.interfaces[i].upper == b)
+        r.blocks[b].max_abs_sliding = std::fmax(r.blocks[b].max_abs_sliding, r.interfaces[i].max_abs_sliding);
+  }
+  for (int i = 0; i < ni; ++i) r.interfaces[i].final_overlap = mj.overlap_of(q, i);
+  r.energy_final.kinetic = mj.kinetic_energy(v);
+  r.energy_final.gravity = mj.gravity_energy(q);
+  r.energy_final.total = r.energy_final.kinetic + r.energy_final.gravity;
+  r.work_ground = w_ground;
+  r.work_normal = w_normal;
+  r.work_friction = w_tangent;
+  r.max_abs_energy_error = max_err;
+  r.max_abs_energy_change = max_change;
+  r.integrator_status = r.status == "invalid" ? "lcp_failure" : r.status == "collapsed" ? "model_stop" : "t_end";
+  if (r.collapse_mode)
+    r.motion = "collapse";
+  else if (r.event_counts[kAsmOpen] > 0 || r.event_counts[kAsmSlip] > 0 || r.event_counts[kAsmClose] > 0 ||
+           r.event_counts[kAsmImpact] > 0)
+    r.motion = "stable";
+  else
+    r.motion = "rest";
+  return r;
+}
+
 }  // namespace
 
 AssemblyResult simulate_assembly(const Assembly& a, const GroundMotion& g, const AssemblyRunOptions& o,
                                  std::ostream* trajectory) {
   validate(a);
   validate(o);
+  if (a.contact == "rigid") return run_rigid(a, g, o, trajectory);
   const int n = int(a.blocks.size());
   if (n == 1 && a.interfaces.size() <= 2) return run<1>(a, g, o, trajectory);
   if (n <= 3 && a.interfaces.size() <= 4) return run<3>(a, g, o, trajectory);

@@ -24,6 +24,7 @@ struct AssemblyRunOptions {
   double output_interval = 0.01;  // trajectory CSV (s)
   bool record_events = true;      // keep the event list (counts are always kept)
   long max_events = 1'000'000;    // kept in the list; further events are counted only
+  double step = 1e-4;             // rigid law: Moreau-Jean time step (s)
 };
 void validate(const AssemblyRunOptions& o);
 
@@ -74,6 +75,7 @@ struct AssemblyResult {
   std::vector<AssemblyEventRecord> events;
   long steps = 0, rejected_steps = 0, rhs_evals = 0;
   std::vector<double> damping;  // calibrated damping per interface (N s/m per point)
+  long impacts = 0;              // rigid law: contact ends closing with an approach velocity
 };
 
 // One run. `trajectory` (optional) receives the CSV. Throws std::invalid_argument on bad input.

@@ -18,6 +18,7 @@ const char* assembly_event_name(int kind) {
     case kAsmCollapse2: return "failure";
     case kAsmInvalid: return "invalid";
     case kAsmBreakpoint: return "breakpoint";
+    case kAsmImpact: return "impact";
   }
   return "?";
 }

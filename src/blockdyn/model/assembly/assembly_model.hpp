@@ -31,7 +31,7 @@ namespace blockdyn {
 // Kinds of assembly events reported to observers.
 enum AssemblyEventKind : int {
   kAsmOpen = 1, kAsmClose, kAsmSlip, kAsmStick, kAsmEndSwitch, kAsmWZero, kAsmCollapse1, kAsmCollapse2,
-  kAsmInvalid, kAsmBreakpoint
+  kAsmInvalid, kAsmBreakpoint, kAsmImpact
 };
 const char* assembly_event_name(int kind);
 

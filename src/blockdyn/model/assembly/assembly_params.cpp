@@ -116,9 +116,12 @@ Assembly make_preset(const std::string& name, const PresetOptions& o) {
   const double s = o.tilt >= 0 ? 1.0 : -1.0;  // theta > 0 turns about the left base corner
   Assembly a;
   a.preset = name;
+  a.contact = o.rigid_contacts ? "rigid" : "deformable";
+  // Rigid contacts do not settle: a factor 0 on every spring sink below.
+  const double settle = o.rigid_contacts ? 0.0 : 1.0;
   if (name == "block") {
     AssemblyBlock k = make_block("block", b, h, o);
-    const double sink = o.tilt == 0 ? k.mass * g / (2 * o.ground_law.k_normal) : k.mass * g / o.ground_law.k_normal;
+    const double sink = settle * (o.tilt == 0 ? k.mass * g / (2 * o.ground_law.k_normal) : k.mass * g / o.ground_law.k_normal);
     k.y = 0.5 * h;
     turn_about(k, {-s * 0.5 * b, 0}, o.tilt);
     k.y -= sink;
@@ -135,7 +138,7 @@ Assembly make_preset(const std::string& name, const PresetOptions& o) {
     double sink = 0, above = total;
     for (int k = 0; k < o.drums; ++k) {
       const ContactLaw& law = k == 0 ? o.ground_law : o.block_law;
-      sink += (o.tilt == 0 ? 0.5 : 1.0) * above * g / law.k_normal;
+      sink += settle * (o.tilt == 0 ? 0.5 : 1.0) * above * g / law.k_normal;
       above -= a.blocks[k].mass;
       AssemblyBlock& d = a.blocks[k];
       d.y = (k + 0.5) * hd;
@@ -152,8 +155,8 @@ Assembly make_preset(const std::string& name, const PresetOptions& o) {
     if (!(L <= 1e3)) throw std::invalid_argument("lintel-length = " + num(L) + " must be at most 1000 m");
     AssemblyBlock c0 = make_block("left column", b, h, o), c1 = make_block("right column", b, h, o);
     AssemblyBlock li = make_block("lintel", L, b, o);
-    const double sink_g = (o.tilt == 0 ? 0.5 : 1.0) * (c0.mass + 0.5 * li.mass) * g / o.ground_law.k_normal;
-    const double sink_l = (o.tilt == 0 ? 0.5 : 1.0) * 0.5 * li.mass * g / o.block_law.k_normal;
+    const double sink_g = settle * (o.tilt == 0 ? 0.5 : 1.0) * (c0.mass + 0.5 * li.mass) * g / o.ground_law.k_normal;
+    const double sink_l = settle * (o.tilt == 0 ? 0.5 : 1.0) * 0.5 * li.mass * g / o.block_law.k_normal;
     c0.x = -xc;
     c1.x = xc;
     c0.y = c1.y = 0.5 * h;
@@ -180,13 +183,14 @@ Assembly make_preset(const std::string& name, const PresetOptions& o) {
 
 namespace {
 
-void check_law(const ContactLaw& l, const std::string& where) {
+void check_law(const ContactLaw& l, const std::string& where, bool rigid) {
   if (!(l.k_normal >= 1.0 && l.k_normal <= 1e13))
     throw std::invalid_argument(where + ".k_normal = " + num(l.k_normal) + " must be in [1, 1e13] N/m");
   if (!(l.k_tangential < 0 || (l.k_tangential >= 1.0 && l.k_tangential <= 1e13)))
     throw std::invalid_argument(where + ".k_tangential = " + num(l.k_tangential) + " must be in [1, 1e13] N/m");
-  if (!(l.restitution >= 1e-3 && l.restitution <= 1.0))
-    throw std::invalid_argument(where + ".restitution = " + num(l.restitution) + " must be in [0.001, 1]");
+  if (!(l.restitution >= (rigid ? 0.0 : 1e-3) && l.restitution <= 1.0))
+    throw std::invalid_argument(where + ".restitution = " + num(l.restitution) + " must be in [" +
+                                (rigid ? "0" : "0.001") + ", 1]");
   if (!(l.damping < 0 || (std::isfinite(l.damping) && l.damping <= 1e12)))
     throw std::invalid_argument(where + ".damping = " + num(l.damping) + " must be in [0, 1e12] N s/m");
   if (!(l.mu_s >= 0 && l.mu_k >= 0 && l.mu_k <= l.mu_s && std::isfinite(l.mu_s)))
@@ -202,6 +206,8 @@ void validate(const Assembly& a) {
   if (a.interfaces.empty() || a.interfaces.size() > std::size_t(nb + 1))
     throw std::invalid_argument("interfaces: " + std::to_string(a.interfaces.size()) + " given, 1 to " +
                                 std::to_string(nb + 1) + " allowed for " + std::to_string(nb) + " blocks");
+  if (a.contact != "deformable" && a.contact != "rigid")
+    throw std::invalid_argument("contact = '" + a.contact + "' must be deformable or rigid");
   if (!(a.g > 0 && a.g <= 1e3)) throw std::invalid_argument("g = " + num(a.g) + " must be in (0, 1000] m/s^2");
   if (!(a.collapse_rotation > 0 && a.collapse_rotation <= 10))
     throw std::invalid_argument("collapse_rotation = " + num(a.collapse_rotation) + " must be in (0, 10]");
@@ -230,7 +236,7 @@ void validate(const Assembly& a) {
     for (std::size_t k = 0; k < j; ++k)
       if (a.interfaces[k].lower == f.lower && a.interfaces[k].upper == f.upper)
         throw std::invalid_argument(w + " repeats interface " + std::to_string(k));
-    check_law(f.law, w);
+    check_law(f.law, w, a.contact == "rigid");
     ++supports[f.upper];
   }
   for (int i = 0; i < nb; ++i)

@@ -37,6 +37,7 @@ struct AssemblyInterface {
 
 struct Assembly {
   std::string preset = "custom";  // block | trilith | column | custom
+  std::string contact = "deformable";  // deformable | rigid (Moreau-Jean time-stepping)
   std::vector<AssemblyBlock> blocks;
   std::vector<AssemblyInterface> interfaces;
   double g = 9.81;
@@ -54,6 +55,7 @@ struct PresetOptions {
   double lintel_length = -1;  // trilith: < 0 means the column height (seed 002's layout)
   double overhang = 0;        // trilith: lintel beyond each column's outer face (m; < 0 inset)
   double tilt = 0;            // initial rotation of the assembly's rocking mode (rad)
+  bool rigid_contacts = false;  // no settlement into the contacts (the rigid law)
   ContactLaw ground_law, block_law;
 };
 
