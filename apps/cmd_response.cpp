@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // `blockdyn response`: long-term response of one block (thesis sec. 4.4): response type, metrics,
 // swings (lengths, swing-averaged energies), phase portraits, plot.
+#include <cmath>
 #include <cstdio>
 #include <memory>
 
@@ -35,6 +36,9 @@ nlohmann::ordered_json metrics_json(const ResponseMetrics& m) {
   j["work_friction"] = m.work_friction;
   j["dissipated_fraction"] = m.dissipated_fraction;
   j["late_dissipated_fraction"] = m.late_dissipated_fraction;
+  j["late_energy_max"] =
+      std::isfinite(m.late_energy_max) ? nlohmann::ordered_json(m.late_energy_max) : nlohmann::ordered_json();
+  j["late_energy_fraction"] = m.late_energy_fraction;
   j["max_abs_energy_balance_error"] = m.max_abs_energy_error;
   j["ihor"] = m.ihor;
   j["takeoffs"] = m.takeoffs;
@@ -96,9 +100,13 @@ void run(const CLI::App& s, ResponseFlags& f) {
                   {"late_fraction", f.opt.late_fraction},
                   {"quadrature_dt", f.opt.quadrature_dt},
                   {"phase_dt", f.opt.phase_dt},
+                  {"steady_flight_fraction", f.opt.criteria.steady_flight_fraction},
+                  {"settled_energy", f.opt.criteria.settled_energy},
                   {"settle_dissipation", f.opt.criteria.settle_dissipation},
+                  {"settle_rotation_share", f.opt.criteria.settle_rotation_share},
                   {"vertical_trend", f.opt.criteria.vertical_trend},
-                  {"early_swings", f.opt.criteria.early_swings}};
+                  {"early_swings", f.opt.criteria.early_swings},
+                  {"conserved_dissipation", f.opt.criteria.conserved_dissipation}};
   j["type"] = to_string(run.report.type);
   j["reason"] = run.report.reason;
   j["metrics"] = metrics_json(run.report.metrics);
@@ -125,6 +133,9 @@ void add(CLI::App& app) {
   s->add_option("--phase-dt", f->opt.phase_dt, "phase-portrait sampling interval (>= 0)")->capture_default_str();
   s->add_option("--steady-flight-fraction", f->opt.criteria.steady_flight_fraction,
                 "steady rocking if the late flight fraction is below this, in (0, 1)")
+      ->capture_default_str();
+  s->add_option("--settled-energy", f->opt.criteria.settled_energy,
+                "settled if E < 0 late and the energy above rest is at most this fraction of E0 - E_rest, in (0, 1)")
       ->capture_default_str();
   s->add_option("--settle-rotation-share", f->opt.criteria.settle_rotation_share,
                 "settle down needs a late rotational share of kinetic energy below this, in (0, 1)")
