@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: Apache-2.0
 // `blockdyn map`: the response map of the thesis's chapter 6 (Figs 6.1-6.2). Every point of a
 // (k, 1/r) grid at fixed mu and initial conditions is classified (steady rocking, settle down,
-// zero-friction rock-flight, rock to vertical, overturned) by the sweep engine (threads,
-// resumable journal), and the stability boundary, k_high and k_critical are computed on a
-// coarser set of 1/r values and overlaid.
+// settled, zero-friction rock-flight, rock to vertical, overturned; optionally sensitive
+// dependence) by the sweep engine (threads, resumable journal), and the stability boundary,
+// k_high and k_critical are computed on a coarser set of 1/r values and overlaid.
 #include <cmath>
 #include <map>
 #include <memory>
@@ -29,7 +29,7 @@ struct MapFlags {
   long max_steps = 20'000'000;
   int threads = 0, boundary_points = 10;
   long critical_n = 10;
-  bool resume = false, overwrite = false, quiet = false;
+  bool resume = false, overwrite = false, quiet = false, sensitivity = false;
 };
 
 struct BoundaryRow {
@@ -87,6 +87,7 @@ void run(const CLI::App& s, const MapFlags& f) {
   spec.options.integrator = f.integ;
   spec.options.integrator.max_steps = f.max_steps;
   spec.metrics = {"response_type"};
+  if (f.sensitivity) spec.metrics.push_back("sensitive_dependence");
   spec.output = f.output;
   validate(spec);
   const SweepEvaluator ev(spec);
@@ -150,6 +151,8 @@ void add(CLI::App& app) {
   s->add_option("--max-steps", f->max_steps, "step cap per run (reported as numerical_failure)")->capture_default_str();
   s->add_option("--boundary-points", f->boundary_points, "1/r values for the boundary curves (0: none)")->capture_default_str();
   s->add_option("--critical-n", f->critical_n, "n of k_critical_n (no flight while ihor < n)")->capture_default_str();
+  s->add_flag("--sensitivity", f->sensitivity,
+              "also run every point from y'(0) + 1e-8 and mark sensitive dependence (twice the cost)");
   s->add_option("--threads", f->threads, "worker threads (0: all cores)")->capture_default_str();
   s->add_option("-o,--output", f->output, "map CSV (journal, sidecar and boundaries CSV beside it)")->capture_default_str();
   s->add_flag("--resume", f->resume, "continue an interrupted map, recomputing nothing finished");

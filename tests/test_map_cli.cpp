@@ -102,3 +102,35 @@ TEST(MapCli, BadInputIsRejected) {
     EXPECT_FALSE(sweep_test::exists(d.path + "/x.csv"));
   }
 }
+
+TEST(MapCli, SensitivityMarksTheChaoticPoint) {
+  // mu = 0.2, 1/r = 4.45, ic1, t = 30: k = 1e3 rocks steadily, k = 1e6 rocks to vertical and is
+  // chaotic (a 1e-8 kick to y'(0) grows to the size of the motion); see docs/map.md.
+  TmpDir d("mapsens");
+  const auto r = run_cli({"map", "--k", "1e3,1e6", "--inv-r", "4.45", "--mu", "0.2", "--ic", "ic1", "--t-end", "30",
+                          "--boundary-points", "0", "--sensitivity", "-o", "s.csv", "--quiet"},
+                         d.path);
+  ASSERT_EQ(r.code, 0) << r.err;
+  std::istringstream in(slurp(d.path + "/s.csv"));
+  std::string line;
+  std::getline(in, line);
+  const auto head = split(line);
+  std::size_t c_k = 0, c_sep = 0, c_sens = 0;
+  for (std::size_t i = 0; i < head.size(); ++i) {
+    if (head[i] == "k") c_k = i;
+    if (head[i] == "w_separation") c_sep = i;
+    if (head[i] == "sensitive_dependence") c_sens = i;
+  }
+  ASSERT_GT(c_sep, 0u) << line;
+  ASSERT_GT(c_sens, 0u) << line;
+  int rows = 0;
+  while (std::getline(in, line)) {
+    const auto f = split(line);
+    ++rows;
+    const bool chaotic = std::stod(f[c_k]) == 1e6;
+    EXPECT_EQ(f[c_sens], chaotic ? "1" : "0") << line;
+    if (chaotic) EXPECT_GT(std::stod(f[c_sep]), 0.1) << line;
+    else EXPECT_LT(std::stod(f[c_sep]), 1e-4) << line;
+  }
+  EXPECT_EQ(rows, 2);
+}
