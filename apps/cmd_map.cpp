@@ -28,6 +28,7 @@ struct MapFlags {
   IntegratorOptions integ;
   long max_steps = 20'000'000;
   int threads = 0, boundary_points = 10;
+  double fine_per_decade = 48;  // fine scan next to the flight boundaries (docs/flight.md)
   long critical_n = 10;
   bool resume = false, overwrite = false, quiet = false, sensitivity = false;
 };
@@ -43,8 +44,8 @@ std::string boundaries_path(const std::string& csv) {
 }
 
 // Stability boundary (k1 for ic1, k2 for ic2), k_high and k_critical_n at one aspect ratio.
-BoundaryRow boundary_row(double inv_r, double mu, const IcChoice& ic, long n, const StudyRunOptions& run,
-                         double k_lo, double k_hi) {
+BoundaryRow boundary_row(double inv_r, double mu, const IcChoice& ic, long n, const StudyRunOptions& run, double k_lo,
+                         double k_hi, double fine_per_decade) {
   BoundaryRow b;
   b.inv_r = inv_r;
   b.r = 1.0 / inv_r;
@@ -59,6 +60,7 @@ BoundaryRow boundary_row(double inv_r, double mu, const IcChoice& ic, long n, co
   fs.k_hi = k_hi;
   fs.per_decade = 4;
   fs.bisect.rel_tol = 1e-2;
+  fs.refine.per_decade = fine_per_decade;
   const FirstImpact fi = ic.is_ic1() ? FirstImpact::WNegative : FirstImpact::IhorBelow2;
   b.high = k_high(b.r, mu, ic, fi, run, fs);
   b.critical = k_critical(b.r, mu, ic, n, run, fs);
@@ -74,6 +76,7 @@ void run(const CLI::App& s, const MapFlags& f) {
   require_writable("plot", f.plot);
   if (f.boundary_points < 0 || f.boundary_points > 1000)
     throw UsageError("boundary-points = " + std::to_string(f.boundary_points) + " is out of range: must be in [0, 1000]");
+  require_range("fine-per-decade", f.fine_per_decade, 0.0, 1000);
   if (f.critical_n < 2) throw UsageError("critical-n = " + std::to_string(f.critical_n) + " is out of range: must be >= 2");
   const IcChoice ic = bounds::parse_ic(f.ic);
 
@@ -110,7 +113,7 @@ void run(const CLI::App& s, const MapFlags& f) {
     const int nb = f.boundary_points;
     rows = parallel_map<BoundaryRow>(std::size_t(nb), f.threads, [&](std::size_t i) {
       const double ir = nb == 1 ? ir_lo : ir_lo + (ir_hi - ir_lo) * double(i) / double(nb - 1);
-      return boundary_row(ir, f.mu, ic, f.critical_n, run, k_lo, k_hi);
+      return boundary_row(ir, f.mu, ic, f.critical_n, run, k_lo, k_hi, f.fine_per_decade);
     });
   }
   bounds::Table t;
@@ -129,6 +132,7 @@ void run(const CLI::App& s, const MapFlags& f) {
                        {"stability_curve", ic.is_ic1() ? "k1_stability" : "k2_stability"},
                        {"k_high_criterion", ic.is_ic1() ? "w_negative" : "ihor2"},
                        {"k_critical_n", f.critical_n},
+                       {"fine_points_per_decade", f.fine_per_decade},
                        {"k_range", {k_lo, k_hi}},
                        {"run_options", bounds::run_options_json(run)}};
   bounds::write_table(bpath, t, meta);
@@ -150,6 +154,9 @@ void add(CLI::App& app) {
   add_tolerance_options(*s, f->integ);
   s->add_option("--max-steps", f->max_steps, "step cap per run (reported as numerical_failure)")->capture_default_str();
   s->add_option("--boundary-points", f->boundary_points, "1/r values for the boundary curves (0: none)")->capture_default_str();
+  s->add_option("--fine-per-decade", f->fine_per_decade,
+                "fine grid next to k_high and k_critical (points per decade; 0: coarse search only)")
+      ->capture_default_str();
   s->add_option("--critical-n", f->critical_n, "n of k_critical_n (no flight while ihor < n)")->capture_default_str();
   s->add_flag("--sensitivity", f->sensitivity,
               "also run every point from y'(0) + 1e-8 and mark sensitive dependence (twice the cost)");
