@@ -19,7 +19,7 @@ struct ResponseFlags {
   IntegratorOptions integ;
   IcFlags ic;
   ResponseOptions opt;
-  std::string csv_prefix, plot, json_out;
+  std::string csv_prefix, plot, json_out, energy_axis = "lin";
   bool json = false;
 };
 
@@ -65,6 +65,8 @@ void write_csv(const std::string& path, const std::function<void(std::ostream&)>
 
 void run(const CLI::App& s, ResponseFlags& f) {
   validate(f.p);
+  if (f.energy_axis != "lin" && f.energy_axis != "log")
+    throw UsageError("energy-axis = '" + f.energy_axis + "' is not one of: lin, log");
   require_writable("plot", f.plot);
   require_writable("json-out", f.json_out);
   f.opt.integrator = f.integ;
@@ -88,7 +90,9 @@ void run(const CLI::App& s, ResponseFlags& f) {
     char title[256];
     std::snprintf(title, sizeof title, "r=%g k=%g mu=%g %s: %s", f.p.r, f.p.k, f.p.mu, f.ic.ic.c_str(),
                   to_string(run.report.type));
-    run_python("plot_response.py", {prefix + "_swings.csv", prefix + "_phase.csv", f.plot, title});
+    std::vector<std::string> args = {prefix + "_swings.csv", prefix + "_phase.csv", f.plot, title};
+    if (f.energy_axis == "log") args.insert(args.begin(), "--log-energy");
+    run_python("plot_response.py", args);
     if (temp) {
       std::remove((prefix + "_swings.csv").c_str());
       std::remove((prefix + "_phase.csv").c_str());
@@ -129,6 +133,9 @@ void add(CLI::App& app) {
   s->add_option("--late-fraction", f->opt.late_fraction, "late window starts at this fraction of t-end, in [0, 1)")
       ->capture_default_str();
   s->add_option("--quadrature-dt", f->opt.quadrature_dt, "largest sample spacing of the swing averages (> 0)")
+      ->capture_default_str();
+  s->add_option("--energy-axis", f->energy_axis,
+                "energy axis of the plot: lin, or log (symmetric log: early rises of small components show)")
       ->capture_default_str();
   s->add_option("--phase-dt", f->opt.phase_dt, "phase-portrait sampling interval (>= 0)")->capture_default_str();
   s->add_option("--steady-flight-fraction", f->opt.criteria.steady_flight_fraction,

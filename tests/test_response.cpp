@@ -3,10 +3,14 @@
 // (thesis sec. 4.4, Table 4.1).
 #include <gtest/gtest.h>
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <string>
 
 #include "blockdyn/analysis/winkler/response_type.hpp"
@@ -222,7 +226,28 @@ TEST(ResponseCli, BadInputExitsWithStatus2) {
   EXPECT_EQ(cli("response --t-end -5"), 2);
   EXPECT_EQ(cli("response --settle-dissipation 2 --t-end 1"), 2);
   EXPECT_EQ(cli("response --settled-energy 0 --t-end 1"), 2);
+  EXPECT_EQ(cli("response --energy-axis cubic --t-end 1"), 2);
   EXPECT_EQ(cli("response --r -1 --t-end 1"), 2);
   EXPECT_EQ(cli("response --ic ic1 --w0 5 --t-end 1"), 2);
   EXPECT_EQ(cli("response --mu 0 --r 0.5 --k 100 --t-end 5"), 0);
+}
+
+// --energy-axis log: the energy panel of the plot on a symmetric-log axis (issue 12: early rises
+// of small components visible). matplotlib writes each text of the SVG as a comment.
+TEST(ResponseCli, LogEnergyAxisReachesThePlot) {
+  if (std::system("/usr/bin/python3 -c 'import matplotlib' >/dev/null 2>&1") != 0)
+    GTEST_SKIP() << "matplotlib not available for /usr/bin/python3";
+  const auto dir = std::filesystem::temp_directory_path() / ("blockdyn_resp_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  const auto svg_text = [&](const std::string& axis) {
+    const std::string png = (dir / (axis + ".png")).string();
+    EXPECT_EQ(cli("response --mu 0 --r 0.5 --k 100 --t-end 20 --energy-axis " + axis + " --plot " + png), 0);
+    std::ifstream in((dir / (axis + ".svg")).string());
+    return std::string(std::istreambuf_iterator<char>(in), {});
+  };
+  const std::string log = svg_text("log"), lin = svg_text("lin");
+  EXPECT_NE(log.find("swing-averaged energy (symmetric log)"), std::string::npos);
+  EXPECT_EQ(lin.find("symmetric log"), std::string::npos);
+  EXPECT_NE(lin.find("swing-averaged energy"), std::string::npos);
+  std::filesystem::remove_all(dir);
 }
