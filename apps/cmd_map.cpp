@@ -6,6 +6,7 @@
 // k_high and k_critical are computed on a coarser set of 1/r values and overlaid.
 #include <cmath>
 #include <map>
+#include <optional>
 #include <memory>
 
 #include "blockdyn/analysis/winkler/flight.hpp"
@@ -36,6 +37,7 @@ struct MapFlags {
 struct BoundaryRow {
   double inv_r = 0, r = 0;
   CurvePoint stability, high, critical;
+  std::optional<K3Point> k3;  // ic2 only: overturning before the third passage (docs/stability.md)
 };
 
 std::string boundaries_path(const std::string& csv) {
@@ -55,6 +57,9 @@ BoundaryRow boundary_row(double inv_r, double mu, const IcChoice& ic, long n, co
   ss.per_decade = 4;
   ss.bisect.rel_tol = 1e-2;
   b.stability = ic.is_ic1() ? k1_stability(b.r, mu, ic, run, ss) : k2_stability(b.r, mu, run, ss);
+  // ic2: k2 is where overturning on the first swing ends; the slender blocks above it can still
+  // overturn on the second, up to k3 (the thesis's Fig 6.2 discussion).
+  if (!ic.is_ic1()) b.k3 = k3_stability(b.r, mu, b.stability.result, run, ss);
   BoundarySearchOptions fs;
   fs.k_lo = k_lo;
   fs.k_hi = k_hi;
@@ -119,17 +124,21 @@ void run(const CLI::App& s, const MapFlags& f) {
   bounds::Table t;
   t.columns = {"inv_r", "r", "k_stability", "stability_status", "k_high", "k_high_status", "k_critical",
                "k_critical_status"};
+  t.columns.insert(t.columns.end(), {"k3_stability", "k3_status"});
   for (const auto& b : rows)
     t.rows.push_back({bounds::num(b.inv_r), bounds::num(b.r), bounds::num(bounds::cell(b.stability.result)),
                       to_string(b.stability.result.status), bounds::num(bounds::cell(b.high.result)),
                       to_string(b.high.result.status), bounds::num(bounds::cell(b.critical.result)),
-                      to_string(b.critical.result.status)});
+                      to_string(b.critical.result.status),
+                      b.k3 ? bounds::num(bounds::cell(b.k3->point.result)) : bounds::num(NAN),
+                      b.k3 ? to_string(b.k3->point.result.status) : "not_applicable"});
   const std::string bpath = boundaries_path(out.paths.csv);
   bounds::json meta = {{"run", run_info()},
                        {"what", "boundaries of the response map"},
                        {"mu", f.mu},
                        {"ic", ic.name()},
                        {"stability_curve", ic.is_ic1() ? "k1_stability" : "k2_stability"},
+                       {"k3_curve", ic.is_ic1() ? "none (ic2 only)" : "k3_stability"},
                        {"k_high_criterion", ic.is_ic1() ? "w_negative" : "ihor2"},
                        {"k_critical_n", f.critical_n},
                        {"fine_points_per_decade", f.fine_per_decade},

@@ -67,8 +67,9 @@ def main(argv):
         brows = list(csv.DictReader(f))
     for col, style, label in (("k_stability", "-", "stability boundary"),
                               ("k_high", "--", "k_high (early flight boundary)"),
-                              ("k_critical", "-.", "k_critical (no flight boundary)")):
-        pts = [(float(b["inv_r"]), num(b[col])) for b in brows]
+                              ("k_critical", "-.", "k_critical (no flight boundary)"),
+                              ("k3_stability", ":", "k3 (ic2: overturning on the 2nd swing below)")):
+        pts = [(float(b["inv_r"]), num(b.get(col))) for b in brows]
         pts = [(x, math.log10(v)) for x, v in pts if v]
         if pts:
             xs, ys = zip(*pts)
