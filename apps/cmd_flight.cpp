@@ -117,7 +117,11 @@ struct BoundaryFlags {
   int points = 12;
   std::string n_list = "2,10";
   std::string high = "";  // default depends on the ic
-  BoundarySearchOptions search;
+  BoundarySearchOptions search = [] {
+    BoundarySearchOptions o;
+    o.refine.per_decade = 48;  // smooth curves (docs/flight.md); 0 restores the coarse search
+    return o;
+  }();
   StudyRunOptions run;
   OutputFlags out;
 };
@@ -129,6 +133,8 @@ void run_boundary(const BoundaryFlags& f) {
   check_k_range("k-lo", f.search.k_lo, "k-hi", f.search.k_hi);
   require_range("per-decade", f.search.per_decade, 0.5, 1000);
   require_range("rel-tol", f.search.bisect.rel_tol, 1e-12, 1, false, false);
+  require_range("fine-per-decade", f.search.refine.per_decade, 0.0, 1000);
+  require_range("fine-span", f.search.refine.span_decades, 0.0, 10, false);
   check_run_options(f.run, f.out);
   const IcChoice ic = parse_ic(f.ic);
   std::vector<long> ns;
@@ -201,9 +207,12 @@ void run_boundary(const BoundaryFlags& f) {
   meta["search"] = {{"k_range", {f.search.k_lo, f.search.k_hi}},
                     {"points_per_decade", f.search.per_decade},
                     {"bisection_rel_tol", f.search.bisect.rel_tol},
+                    {"fine_points_per_decade", f.search.refine.per_decade},
+                    {"fine_span_decades", f.search.refine.span_decades},
                     {"definitions",
                      "k_critical_n = sup K: no flight while ihor < n for all k < K; k_high = inf K: flight "
-                     "during the first impact for all k > K; coarse log grid + bisection"}};
+                     "during the first impact for all k > K; coarse log grid + bisection, then a fine grid "
+                     "(anchored at k_lo) over fine_span_decades on the holding side, repeated until clean"}};
   json summary = meta;
   summary["points"] = points;
   finish(f.out, csv_target(f.out, "flight-boundary"), t, meta, "plot_flight.py", {"boundary"}, summary);
@@ -243,6 +252,12 @@ void add_boundary(CLI::App& app) {
   s->add_option("--k-hi", f->search.k_hi, "highest k searched")->capture_default_str();
   s->add_option("--per-decade", f->search.per_decade, "coarse grid points per decade of k")->capture_default_str();
   s->add_option("--rel-tol", f->search.bisect.rel_tol, "relative tolerance of the bisection in k")->capture_default_str();
+  s->add_option("--fine-per-decade", f->search.refine.per_decade,
+                "fine grid points per decade scanned next to each boundary (0: coarse search only)")
+      ->capture_default_str();
+  s->add_option("--fine-span", f->search.refine.span_decades,
+                "decades of k next to the boundary that the fine grid must find clean")
+      ->capture_default_str();
   add_run_options(*s, f->run, 100);
   add_output_options(*s, f->out);
   s->callback([f] { run_boundary(*f); });

@@ -1,11 +1,12 @@
 // SPDX-License-Identifier: Apache-2.0
 // `blockdyn map`: the response map of the thesis's chapter 6 (Figs 6.1-6.2). Every point of a
 // (k, 1/r) grid at fixed mu and initial conditions is classified (steady rocking, settle down,
-// zero-friction rock-flight, rock to vertical, overturned) by the sweep engine (threads,
-// resumable journal), and the stability boundary, k_high and k_critical are computed on a
-// coarser set of 1/r values and overlaid.
+// settled, zero-friction rock-flight, rock to vertical, overturned; optionally sensitive
+// dependence) by the sweep engine (threads, resumable journal), and the stability boundary,
+// k_high and k_critical are computed on a coarser set of 1/r values and overlaid.
 #include <cmath>
 #include <map>
+#include <optional>
 #include <memory>
 
 #include "blockdyn/analysis/winkler/flight.hpp"
@@ -28,13 +29,15 @@ struct MapFlags {
   IntegratorOptions integ;
   long max_steps = 20'000'000;
   int threads = 0, boundary_points = 10;
+  double fine_per_decade = 48;  // fine scan next to the flight boundaries (docs/flight.md)
   long critical_n = 10;
-  bool resume = false, overwrite = false, quiet = false;
+  bool resume = false, overwrite = false, quiet = false, sensitivity = false;
 };
 
 struct BoundaryRow {
   double inv_r = 0, r = 0;
   CurvePoint stability, high, critical;
+  std::optional<K3Point> k3;  // ic2 only: overturning before the third passage (docs/stability.md)
 };
 
 std::string boundaries_path(const std::string& csv) {
@@ -43,8 +46,8 @@ std::string boundaries_path(const std::string& csv) {
 }
 
 // Stability boundary (k1 for ic1, k2 for ic2), k_high and k_critical_n at one aspect ratio.
-BoundaryRow boundary_row(double inv_r, double mu, const IcChoice& ic, long n, const StudyRunOptions& run,
-                         double k_lo, double k_hi) {
+BoundaryRow boundary_row(double inv_r, double mu, const IcChoice& ic, long n, const StudyRunOptions& run, double k_lo,
+                         double k_hi, double fine_per_decade) {
   BoundaryRow b;
   b.inv_r = inv_r;
   b.r = 1.0 / inv_r;
@@ -54,11 +57,15 @@ BoundaryRow boundary_row(double inv_r, double mu, const IcChoice& ic, long n, co
   ss.per_decade = 4;
   ss.bisect.rel_tol = 1e-2;
   b.stability = ic.is_ic1() ? k1_stability(b.r, mu, ic, run, ss) : k2_stability(b.r, mu, run, ss);
+  // ic2: k2 is where overturning on the first swing ends; the slender blocks above it can still
+  // overturn on the second, up to k3 (the thesis's Fig 6.2 discussion).
+  if (!ic.is_ic1()) b.k3 = k3_stability(b.r, mu, b.stability.result, run, ss);
   BoundarySearchOptions fs;
   fs.k_lo = k_lo;
   fs.k_hi = k_hi;
   fs.per_decade = 4;
   fs.bisect.rel_tol = 1e-2;
+  fs.refine.per_decade = fine_per_decade;
   const FirstImpact fi = ic.is_ic1() ? FirstImpact::WNegative : FirstImpact::IhorBelow2;
   b.high = k_high(b.r, mu, ic, fi, run, fs);
   b.critical = k_critical(b.r, mu, ic, n, run, fs);
@@ -74,6 +81,7 @@ void run(const CLI::App& s, const MapFlags& f) {
   require_writable("plot", f.plot);
   if (f.boundary_points < 0 || f.boundary_points > 1000)
     throw UsageError("boundary-points = " + std::to_string(f.boundary_points) + " is out of range: must be in [0, 1000]");
+  require_range("fine-per-decade", f.fine_per_decade, 0.0, 1000);
   if (f.critical_n < 2) throw UsageError("critical-n = " + std::to_string(f.critical_n) + " is out of range: must be >= 2");
   const IcChoice ic = bounds::parse_ic(f.ic);
 
@@ -87,6 +95,7 @@ void run(const CLI::App& s, const MapFlags& f) {
   spec.options.integrator = f.integ;
   spec.options.integrator.max_steps = f.max_steps;
   spec.metrics = {"response_type"};
+  if (f.sensitivity) spec.metrics.push_back("sensitive_dependence");
   spec.output = f.output;
   validate(spec);
   const SweepEvaluator ev(spec);
@@ -109,25 +118,30 @@ void run(const CLI::App& s, const MapFlags& f) {
     const int nb = f.boundary_points;
     rows = parallel_map<BoundaryRow>(std::size_t(nb), f.threads, [&](std::size_t i) {
       const double ir = nb == 1 ? ir_lo : ir_lo + (ir_hi - ir_lo) * double(i) / double(nb - 1);
-      return boundary_row(ir, f.mu, ic, f.critical_n, run, k_lo, k_hi);
+      return boundary_row(ir, f.mu, ic, f.critical_n, run, k_lo, k_hi, f.fine_per_decade);
     });
   }
   bounds::Table t;
   t.columns = {"inv_r", "r", "k_stability", "stability_status", "k_high", "k_high_status", "k_critical",
                "k_critical_status"};
+  t.columns.insert(t.columns.end(), {"k3_stability", "k3_status"});
   for (const auto& b : rows)
     t.rows.push_back({bounds::num(b.inv_r), bounds::num(b.r), bounds::num(bounds::cell(b.stability.result)),
                       to_string(b.stability.result.status), bounds::num(bounds::cell(b.high.result)),
                       to_string(b.high.result.status), bounds::num(bounds::cell(b.critical.result)),
-                      to_string(b.critical.result.status)});
+                      to_string(b.critical.result.status),
+                      b.k3 ? bounds::num(bounds::cell(b.k3->point.result)) : bounds::num(NAN),
+                      b.k3 ? to_string(b.k3->point.result.status) : "not_applicable"});
   const std::string bpath = boundaries_path(out.paths.csv);
   bounds::json meta = {{"run", run_info()},
                        {"what", "boundaries of the response map"},
                        {"mu", f.mu},
                        {"ic", ic.name()},
                        {"stability_curve", ic.is_ic1() ? "k1_stability" : "k2_stability"},
+                       {"k3_curve", ic.is_ic1() ? "none (ic2 only)" : "k3_stability"},
                        {"k_high_criterion", ic.is_ic1() ? "w_negative" : "ihor2"},
                        {"k_critical_n", f.critical_n},
+                       {"fine_points_per_decade", f.fine_per_decade},
                        {"k_range", {k_lo, k_hi}},
                        {"run_options", bounds::run_options_json(run)}};
   bounds::write_table(bpath, t, meta);
@@ -149,7 +163,12 @@ void add(CLI::App& app) {
   add_tolerance_options(*s, f->integ);
   s->add_option("--max-steps", f->max_steps, "step cap per run (reported as numerical_failure)")->capture_default_str();
   s->add_option("--boundary-points", f->boundary_points, "1/r values for the boundary curves (0: none)")->capture_default_str();
+  s->add_option("--fine-per-decade", f->fine_per_decade,
+                "fine grid next to k_high and k_critical (points per decade; 0: coarse search only)")
+      ->capture_default_str();
   s->add_option("--critical-n", f->critical_n, "n of k_critical_n (no flight while ihor < n)")->capture_default_str();
+  s->add_flag("--sensitivity", f->sensitivity,
+              "also run every point from y'(0) + 1e-8 and mark sensitive dependence (twice the cost)");
   s->add_option("--threads", f->threads, "worker threads (0: all cores)")->capture_default_str();
   s->add_option("-o,--output", f->output, "map CSV (journal, sidecar and boundaries CSV beside it)")->capture_default_str();
   s->add_flag("--resume", f->resume, "continue an interrupted map, recomputing nothing finished");

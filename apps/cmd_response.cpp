@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // `blockdyn response`: long-term response of one block (thesis sec. 4.4): response type, metrics,
 // swings (lengths, swing-averaged energies), phase portraits, plot.
+#include <cmath>
 #include <cstdio>
 #include <memory>
 
@@ -18,7 +19,7 @@ struct ResponseFlags {
   IntegratorOptions integ;
   IcFlags ic;
   ResponseOptions opt;
-  std::string csv_prefix, plot, json_out;
+  std::string csv_prefix, plot, json_out, energy_axis = "lin";
   bool json = false;
 };
 
@@ -35,6 +36,9 @@ nlohmann::ordered_json metrics_json(const ResponseMetrics& m) {
   j["work_friction"] = m.work_friction;
   j["dissipated_fraction"] = m.dissipated_fraction;
   j["late_dissipated_fraction"] = m.late_dissipated_fraction;
+  j["late_energy_max"] =
+      std::isfinite(m.late_energy_max) ? nlohmann::ordered_json(m.late_energy_max) : nlohmann::ordered_json();
+  j["late_energy_fraction"] = m.late_energy_fraction;
   j["max_abs_energy_balance_error"] = m.max_abs_energy_error;
   j["ihor"] = m.ihor;
   j["takeoffs"] = m.takeoffs;
@@ -61,6 +65,8 @@ void write_csv(const std::string& path, const std::function<void(std::ostream&)>
 
 void run(const CLI::App& s, ResponseFlags& f) {
   validate(f.p);
+  if (f.energy_axis != "lin" && f.energy_axis != "log")
+    throw UsageError("energy-axis = '" + f.energy_axis + "' is not one of: lin, log");
   require_writable("plot", f.plot);
   require_writable("json-out", f.json_out);
   f.opt.integrator = f.integ;
@@ -84,7 +90,9 @@ void run(const CLI::App& s, ResponseFlags& f) {
     char title[256];
     std::snprintf(title, sizeof title, "r=%g k=%g mu=%g %s: %s", f.p.r, f.p.k, f.p.mu, f.ic.ic.c_str(),
                   to_string(run.report.type));
-    run_python("plot_response.py", {prefix + "_swings.csv", prefix + "_phase.csv", f.plot, title});
+    std::vector<std::string> args = {prefix + "_swings.csv", prefix + "_phase.csv", f.plot, title};
+    if (f.energy_axis == "log") args.insert(args.begin(), "--log-energy");
+    run_python("plot_response.py", args);
     if (temp) {
       std::remove((prefix + "_swings.csv").c_str());
       std::remove((prefix + "_phase.csv").c_str());
@@ -96,9 +104,13 @@ void run(const CLI::App& s, ResponseFlags& f) {
                   {"late_fraction", f.opt.late_fraction},
                   {"quadrature_dt", f.opt.quadrature_dt},
                   {"phase_dt", f.opt.phase_dt},
+                  {"steady_flight_fraction", f.opt.criteria.steady_flight_fraction},
+                  {"settled_energy", f.opt.criteria.settled_energy},
                   {"settle_dissipation", f.opt.criteria.settle_dissipation},
+                  {"settle_rotation_share", f.opt.criteria.settle_rotation_share},
                   {"vertical_trend", f.opt.criteria.vertical_trend},
-                  {"early_swings", f.opt.criteria.early_swings}};
+                  {"early_swings", f.opt.criteria.early_swings},
+                  {"conserved_dissipation", f.opt.criteria.conserved_dissipation}};
   j["type"] = to_string(run.report.type);
   j["reason"] = run.report.reason;
   j["metrics"] = metrics_json(run.report.metrics);
@@ -122,9 +134,15 @@ void add(CLI::App& app) {
       ->capture_default_str();
   s->add_option("--quadrature-dt", f->opt.quadrature_dt, "largest sample spacing of the swing averages (> 0)")
       ->capture_default_str();
+  s->add_option("--energy-axis", f->energy_axis,
+                "energy axis of the plot: lin, or log (symmetric log: early rises of small components show)")
+      ->capture_default_str();
   s->add_option("--phase-dt", f->opt.phase_dt, "phase-portrait sampling interval (>= 0)")->capture_default_str();
   s->add_option("--steady-flight-fraction", f->opt.criteria.steady_flight_fraction,
                 "steady rocking if the late flight fraction is below this, in (0, 1)")
+      ->capture_default_str();
+  s->add_option("--settled-energy", f->opt.criteria.settled_energy,
+                "settled if E < 0 late and the energy above rest is at most this fraction of E0 - E_rest, in (0, 1)")
       ->capture_default_str();
   s->add_option("--settle-rotation-share", f->opt.criteria.settle_rotation_share,
                 "settle down needs a late rotational share of kinetic energy below this, in (0, 1)")

@@ -6,7 +6,10 @@
 #include <cstdio>
 #include <memory>
 
+#include <algorithm>
+
 #include "blockdyn/analysis/sweep/parallel_map.hpp"
+#include "blockdyn/analysis/winkler/equilibrium_bifurcation.hpp"
 #include "blockdyn/analysis/winkler/stability.hpp"
 #include "blockdyn/io/json_io.hpp"
 #include "bounds_common.hpp"
@@ -62,9 +65,14 @@ struct OverturnFlags {
   std::string ic = "ic2";
   double k_min = 10, k_max = 1e5;
   int points = 120;
+  int window_points = 0;
   StudyRunOptions run;
   OutputFlags out;
 };
+
+// k_uns(r): below it no stable equilibrium exists, so the block falls over from any start
+// (docs/equilibria.md). Defined for r <= 1; NaN beyond.
+double k_uns_or_nan(double r) { return r <= 1.0 ? find_k_uns(r) : NAN; }
 
 void run_overturn(const OverturnFlags& f) {
   require_range("r", f.p.r, kWinklerRMin, kRMax);
@@ -73,8 +81,32 @@ void run_overturn(const OverturnFlags& f) {
   require_range("k-max", f.k_max, f.k_min, kKMaxAllowed, false, true);
   require_range("points", f.points, 2, 100000);
   check_run_options(f.run, f.out);
+  require_range("window-points", f.window_points, 0, 100000);
   const IcChoice ic = parse_ic(f.ic);
-  const auto ks = log_grid(f.k_min, f.k_max, f.points);
+  auto ks = log_grid(f.k_min, f.k_max, f.points);
+  // ic2: the k window where the block overturns on its second swing, (k2, k3), is a few per cent
+  // wide (r = 0.1: 730-794) and gets 2-3 points of the log grid; --window-points adds a fine grid
+  // over it, located first with the stability searches.
+  json window = nullptr;
+  if (f.window_points > 0 && !ic.is_ic1()) {
+    StabilitySearchOptions ss;
+    ss.k_lo = f.k_min;
+    ss.k_hi = f.k_max;
+    ss.bisect.rel_tol = 1e-3;
+    const CurvePoint k2 = k2_stability(f.p.r, f.p.mu, f.run, ss);
+    const K3Point k3 = k3_stability(f.p.r, f.p.mu, k2.result, f.run, ss);
+    if (k2.result.found() && k3.point.result.found() && k3.point.result.value > k2.result.value) {
+      const double lo = std::max(f.k_min, k2.result.value / 1.02), hi = std::min(f.k_max, k3.point.result.value * 1.02);
+      if (hi > lo) {
+        for (double k : log_grid(lo, hi, std::max(2, f.window_points))) ks.push_back(k);
+        std::sort(ks.begin(), ks.end());
+        ks.erase(std::unique(ks.begin(), ks.end()), ks.end());
+      }
+      window = {{"k2_stability", k2.result.value}, {"k3_stability", k3.point.result.value}, {"k_range", {lo, hi}}};
+    } else {
+      window = {{"k2_stability", cell(k2.result)}, {"k3_stability", cell(k3.point.result)}, {"k_range", nullptr}};
+    }
+  }
   const auto runs = overturn_scan(f.p, ic, ks, f.run, f.out.threads);
   Table t{{"k", "overturned", "time", "ihor", "status"}, {}};
   int over = 0, failed = 0;
@@ -90,6 +122,9 @@ void run_overturn(const OverturnFlags& f) {
   meta["mu"] = f.p.mu;
   meta["k_range"] = {f.k_min, f.k_max};
   meta["points"] = f.points;
+  meta["window_points"] = f.window_points;
+  meta["second_swing_window"] = window;
+  meta["k_uns"] = std::isfinite(k_uns_or_nan(f.p.r)) ? json(k_uns_or_nan(f.p.r)) : json(nullptr);
   json summary = meta;
   summary["runs"] = runs.size();
   summary["overturned"] = over;
@@ -111,6 +146,9 @@ void add_overturn(CLI::App& app) {
   s->add_option("--k-min", f->k_min, "lowest k (log grid)")->capture_default_str();
   s->add_option("--k-max", f->k_max, "highest k")->capture_default_str();
   s->add_option("--points", f->points, "number of k values")->capture_default_str();
+  s->add_option("--window-points", f->window_points,
+                "ic2: add this many points over the second-swing window (k2_stability, k3_stability)")
+      ->capture_default_str();
   add_run_options(*s, f->run, 30);
   add_output_options(*s, f->out);
   s->callback([f] { run_overturn(*f); });
@@ -167,6 +205,7 @@ void run_curve(const CurveFlags& f) {
   for (const auto& n : names) t.columns.push_back(n + "_stability");
   for (const auto& n : names) t.columns.push_back(n + "_status");
   if (want_k3) t.columns.push_back("k3_equals_k2");
+  t.columns.push_back("k_uns");  // below it no stable equilibrium: overturning from any start
   json points = json::array();
   for (std::size_t i = 0; i < rs.size(); ++i) {
     const Row& row = rows[i];
@@ -177,8 +216,11 @@ void run_curve(const CurveFlags& f) {
     for (const auto& n : names) cells.push_back(num(cell(result_of(n))));
     for (const auto& n : names) cells.push_back(to_string(result_of(n).status));
     if (want_k3) cells.push_back(row.k3.coincides_with_k2 ? "1" : "0");
+    const double k_uns = k_uns_or_nan(rs[i]);
+    cells.push_back(num(k_uns));
     t.rows.push_back(cells);
     json p = {{"r", rs[i]}};
+    p["k_uns"] = std::isfinite(k_uns) ? json(k_uns) : json(nullptr);
     for (const auto& n : names) p[n + "_stability"] = boundary_json(result_of(n), true);
     if (want_k3) p["k3_equals_k2"] = row.k3.coincides_with_k2;
     points.push_back(p);

@@ -162,7 +162,8 @@ void list_metrics() {
     const auto cols = m.make()->columns();
     std::string c;
     for (const auto& x : cols) c += (c.empty() ? "" : ",") + x;
-    std::printf("%-14s %s\n               columns: %s\n", m.name.c_str(), m.description.c_str(), c.c_str());
+    // Name on its own line: names are longer than any fixed column (sensitive_dependence).
+    std::printf("%s\n    %s\n    columns: %s\n", m.name.c_str(), m.description.c_str(), c.c_str());
   }
 }
 

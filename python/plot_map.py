@@ -17,8 +17,9 @@ import matplotlib.pyplot as plt  # noqa: E402
 STYLE = {  # response type -> (marker, face colour, label)
     "steady_rocking": ("s", "none", "steady rocking"),
     "settle_down": ("o", "none", "settle down"),
+    "settled": ("o", "C0", "settled (at rest)"),
     "rock_to_vertical": ("v", "C3", "rock to vertical"),
-    "zero_friction_rock_flight": ("+", "C2", "zero-friction rock-flight"),
+    "zero_friction_rock_flight": ("*", "C2", "zero-friction rock-flight"),  # "+" is sensitive dependence
     "overturned": (".", "0.6", "overturned"),
     "unclassified": ("d", "C4", "unclassified"),
     "failed": ("x", "C1", "failed"),
@@ -46,7 +47,7 @@ def main(argv):
         t = r.get("response_type") or (status if status == "outside_model" else
                                        "failed" if status in ("error", "numerical_failure") else "unclassified")
         groups.setdefault(t, []).append((float(r["inv_r"]), math.log10(float(r["k"]))))
-    fig, ax = plt.subplots(figsize=(8, 6.5), constrained_layout=True)
+    fig, ax = plt.subplots(figsize=(10.5, 6.5), constrained_layout=True)
     for t, pts in sorted(groups.items()):
         m, fc, label = STYLE.get(t, ("*", "k", t))
         xs, ys = zip(*pts)
@@ -56,12 +57,19 @@ def main(argv):
         else:
             kw.update(c=fc, linewidths=0.9)
         ax.scatter(xs, ys, **kw)
+    # Sensitive dependence (map --sensitivity): a "+" over the point, as in the thesis's Figs 6.1-6.2;
+    # it is not exclusive of the response type (a rock-to-vertical point is also chaotic).
+    sens = [(float(r["inv_r"]), math.log10(float(r["k"]))) for r in rows if r.get("sensitive_dependence") == "1"]
+    if sens:
+        xs, ys = zip(*sens)
+        ax.scatter(xs, ys, marker="+", s=70, c="C1", linewidths=1.2, label=f"sensitive dependence ({len(sens)})")
     with open(bnd_csv, newline="") as f:
         brows = list(csv.DictReader(f))
     for col, style, label in (("k_stability", "-", "stability boundary"),
                               ("k_high", "--", "k_high (early flight boundary)"),
-                              ("k_critical", "-.", "k_critical (no flight boundary)")):
-        pts = [(float(b["inv_r"]), num(b[col])) for b in brows]
+                              ("k_critical", "-.", "k_critical (no flight boundary)"),
+                              ("k3_stability", ":", "k3 (ic2: overturning on the 2nd swing below)")):
+        pts = [(float(b["inv_r"]), num(b.get(col))) for b in brows]
         pts = [(x, math.log10(v)) for x, v in pts if v]
         if pts:
             xs, ys = zip(*pts)
@@ -69,7 +77,8 @@ def main(argv):
     ax.set_xlabel("1/r = height/width")
     ax.set_ylabel("log10 k")
     ax.set_title(f"response types in the (k, 1/r) plane, {title}")
-    ax.legend(fontsize=8, loc="lower right", framealpha=0.9)
+    # Outside the axes: inside, it hid the lower-right corner of the grid.
+    ax.legend(fontsize=8, loc="upper left", bbox_to_anchor=(1.01, 1.0), borderaxespad=0.0)
     fig.savefig(out, dpi=110)
     fig.savefig(os.path.splitext(out)[0] + ".svg")
 

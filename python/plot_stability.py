@@ -19,6 +19,16 @@ def plot_overturn(rows, meta, out):
     a.plot(k[~over], t[~over], "x", color="0.6", ms=4, label="no overturning by t_end")
     b.plot(k[over], ihor[over], "k.", ms=4)
     b.plot(k[~over], ihor[~over], "x", color="0.6", ms=4)
+    # Below k_uns no stable equilibrium exists: overturning from any start.
+    if meta.get("k_uns"):
+        for ax in (a, b):
+            ax.axvline(meta["k_uns"], color="C0", ls=":", lw=1.2,
+                       label="k_uns (no stable equilibrium below)" if ax is a else None)
+    win = meta.get("second_swing_window") or {}
+    if win.get("k_range"):  # the fine window between k2 and k3 (overturn --window-points)
+        for ax in (a, b):
+            ax.axvspan(*win["k_range"], color="C1", alpha=0.12, lw=0,
+                       label=f"k2-k3 window ({meta.get('window_points')} extra points)" if ax is a else None)
     finish_k_scan(fig, (a, b), meta, out, "time at overturning", "ihor at overturning\n(at t_end if none)")
 
 
@@ -30,6 +40,10 @@ def plot_curve(rows, meta, out):
         v = col(rows, name)
         ok = np.isfinite(v)
         ax.plot(1.0 / r[ok], v[ok], styles.get(name, "-"), marker="o", ms=3, label=name)
+    if "k_uns" in rows[0]:  # static limit: below k_uns no stable equilibrium (docs/equilibria.md)
+        v = col(rows, "k_uns")
+        ok = np.isfinite(v)
+        ax.plot(1.0 / r[ok], v[ok], ":", color="0.3", lw=1.5, label="k_uns (no stable equilibrium below)")
     ax.set_yscale("log")
     ax.set_xlabel("1/r")
     ax.set_ylabel("critical k")

@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <string>
 
+#include "blockdyn/analysis/winkler/twin_divergence.hpp"
 #include "blockdyn/model/winkler/initial_conditions.hpp"
 #include "blockdyn/simulation/simulate.hpp"
 
@@ -88,4 +89,37 @@ TEST(Sensitivity, Table51TwoNearbyStartsSeparate) {
   // Many passages through w = 0 in 20 time units (the thesis reports 25 and 33).
   EXPECT_GT(a.ihor, 15);
   EXPECT_GT(b.ihor, 15);
+}
+
+// The opt-in map class (twin_divergence.hpp): a 1e-8 kick to y'(0) takes the Table 5.1 block
+// apart within t = 20 but leaves steady rocking and a settled block together.
+TEST(TwinDivergence, ChaoticPointDivergesRegularOnesDoNot) {
+  const BlockParams chaotic{0.3, 0.0, 1e5};
+  const TwinDivergence a = twin_divergence(chaotic, {}, ic1(chaotic), sim_options(20.0));
+  EXPECT_TRUE(a.divergent);
+  EXPECT_FALSE(a.outcome_differs);
+  EXPECT_GT(a.separation, 0.1);
+  EXPECT_EQ(a.compared, std::size_t(TwinOptions{}.samples));
+
+  const BlockParams rock{0.5, 0.0, 100};  // Fig. 4.41, steady rocking
+  const TwinDivergence b = twin_divergence(rock, {}, ic1(rock), sim_options(30.0));
+  EXPECT_FALSE(b.divergent);
+  EXPECT_LT(b.separation, 1e-4) << "a 1e-8 kick must stay small without sensitive dependence";
+
+  const BlockParams rest{1.0, 0.2, 1e6};  // flies, then settles (docs/response.md)
+  const TwinDivergence c = twin_divergence(rest, {}, ic2(rest), sim_options(30.0));
+  EXPECT_FALSE(c.divergent) << c.separation;
+
+  // The threshold decides: asking for less than the measured separation flags the point.
+  TwinOptions o;
+  o.threshold = 0.5 * b.separation;
+  EXPECT_TRUE(twin_divergence(rock, {}, ic1(rock), sim_options(30.0), o).divergent);
+}
+
+TEST(TwinDivergence, OnlyOneOverturningCountsAsDivergent) {
+  // Below k_uns the block falls over whatever the kick: same outcome, nothing compared.
+  const BlockParams p{0.2, 0.2, 1e2};
+  const TwinDivergence d = twin_divergence(p, {}, ic1(p), sim_options(20.0));
+  EXPECT_FALSE(d.outcome_differs);
+  EXPECT_FALSE(d.divergent);
 }

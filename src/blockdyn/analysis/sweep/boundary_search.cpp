@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "blockdyn/analysis/sweep/boundary_search.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -171,6 +172,104 @@ BoundaryResult inf_all_above(const Predicate& pred, const std::vector<double>& g
     res.status = BoundaryStatus::BelowRange;
     res.value = grid.front();
   });
+}
+
+namespace {
+
+// Fine grid points strictly inside (a, b), ascending, on the anchored grid.
+std::vector<double> fine_points(double a, double b, const RefineOptions& ro) {
+  std::vector<double> g;
+  const double la = std::log10(a / ro.anchor) * ro.per_decade, lb = std::log10(b / ro.anchor) * ro.per_decade;
+  for (double j = std::floor(la) + 1; j < lb; ++j) {
+    const double x = ro.anchor * std::pow(10.0, j / ro.per_decade);
+    if (x > a && x < b) g.push_back(x);
+  }
+  return g;
+}
+
+void check_refine(const RefineOptions& ro) {
+  if (!(ro.per_decade > 0) || !std::isfinite(ro.per_decade) || !(ro.span_decades > 0) ||
+      !std::isfinite(ro.span_decades) || !(ro.anchor > 0) || !std::isfinite(ro.anchor))
+    throw std::invalid_argument("boundary refinement needs per_decade > 0, span_decades > 0 and anchor > 0");
+}
+
+}  // namespace
+
+BoundaryResult refine_sup_all_below(const Predicate& pred, BoundaryResult res, double k_floor, const RefineOptions& ro,
+                                    const BisectionOptions& opt) {
+  if (!res.found() || ro.per_decade <= 0) return res;
+  check_refine(ro);
+  const double span = std::pow(10.0, ro.span_decades);
+  try {
+    Evaluator ev{pred, res};
+    double checked = res.lo;  // every fine point in [checked, res.lo] holds, and res.lo holds
+    for (;;) {
+      double bottom = std::max(k_floor, res.lo / span);
+      if (!(bottom < checked)) break;  // a whole window below the boundary holds
+      // The scan runs upward from a point that holds; if the window's bottom fails, the
+      // boundary is lower still: step down by windows until one holds.
+      double top = checked;
+      bool top_fails = false;
+      while (!ev(bottom)) {
+        if (bottom <= k_floor) {
+          res.status = BoundaryStatus::BelowRange;
+          res.value = res.lo = k_floor;
+          return res;
+        }
+        top = bottom;
+        top_fails = true;
+        bottom = std::max(k_floor, bottom / span);
+      }
+      // Upward: the first failure is the lowest one on the fine grid.
+      double last_hold = bottom;
+      bool failed = false;
+      for (double x : fine_points(bottom, top, ro)) {
+        if (ev(x)) {
+          last_hold = x;
+          continue;
+        }
+        bisect_into(ev, last_hold, x, true, opt, res);
+        failed = true;
+        break;
+      }
+      if (!failed && top_fails) bisect_into(ev, last_hold, top, true, opt, res);
+      checked = bottom;
+    }
+  } catch (const std::exception& e) {
+    res.status = BoundaryStatus::Error;
+    res.message = e.what();
+  }
+  return res;
+}
+
+BoundaryResult refine_inf_all_above(const Predicate& pred, BoundaryResult res, double k_ceiling,
+                                    const RefineOptions& ro, const BisectionOptions& opt) {
+  // inf { K : pred(k) for all k > K } = 1 / sup { Y : pred(1/y) for all y < Y }: mirror in log.
+  if (!res.found() || ro.per_decade <= 0) return res;
+  check_refine(ro);
+  RefineOptions mo = ro;
+  mo.anchor = 1.0 / ro.anchor;
+  BoundaryResult m = res;
+  m.lo = 1.0 / res.hi;
+  m.hi = 1.0 / res.lo;
+  m.value = 1.0 / res.value;
+  m.samples.clear();
+  m.evaluations = 0;
+  const Predicate mirrored = [&pred](double y) { return pred(1.0 / y); };
+  BoundaryResult out = refine_sup_all_below(mirrored, m, 1.0 / k_ceiling, mo, opt);
+  BoundaryResult back = res;
+  back.status = out.status == BoundaryStatus::BelowRange ? BoundaryStatus::AboveRange : out.status;
+  back.message = out.message;
+  back.evaluations += out.evaluations;
+  for (const auto& smp : out.samples) back.samples.push_back({1.0 / smp.x, smp.value});
+  if (out.found()) {
+    back.lo = 1.0 / out.hi;
+    back.hi = 1.0 / out.lo;
+    back.value = std::sqrt(back.lo * back.hi);
+  } else if (back.status == BoundaryStatus::AboveRange) {
+    back.value = back.hi = k_ceiling;
+  }
+  return back;
 }
 
 }  // namespace blockdyn

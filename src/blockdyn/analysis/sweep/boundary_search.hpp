@@ -14,6 +14,13 @@
 //    the grid sees, is missed; and when the predicate flips several times inside the final
 //    bracket the bisection converges to one of those flips, not necessarily the outermost one.
 //    The result is exact only for predicates that change once between grid neighbours.
+//  - refine_sup_all_below / refine_inf_all_above: the cure for the first caveat. After the
+//    coarse search, a fine grid (anchored at a fixed k, so neighbouring searches sample the same
+//    k values) is scanned over `span_decades` on the side that must hold, moving outward from
+//    the far end of that window toward the boundary; a failure found there becomes the new
+//    boundary (bisected as before) and the window moves with it, until one whole window holds.
+//    A non-monotone predicate (flight windows below k_critical) is then resolved to the fine
+//    spacing near the boundary, which is where the coarse grid misses windows.
 #include <functional>
 #include <string>
 #include <vector>
@@ -72,6 +79,20 @@ BoundaryResult sup_all_below(const Predicate& pred, const std::vector<double>& g
 // AboveRange: pred fails at grid.back(); BelowRange: pred holds on the whole grid.
 BoundaryResult inf_all_above(const Predicate& pred, const std::vector<double>& grid,
                              const BisectionOptions& opt = {});
+
+struct RefineOptions {
+  double per_decade = 0;    // fine grid density (0: no refinement)
+  double span_decades = 1;  // width of the window checked next to the boundary
+  double anchor = 1;        // fine grid points are anchor * 10^(j / per_decade), j integer
+};
+
+// Refines a Found result of sup_all_below (k_floor: lowest k that may be evaluated) or of
+// inf_all_above (k_ceiling: highest); other results are returned unchanged. Evaluations and
+// samples are appended to those of `coarse`.
+BoundaryResult refine_sup_all_below(const Predicate& pred, BoundaryResult coarse, double k_floor,
+                                    const RefineOptions& ro, const BisectionOptions& opt = {});
+BoundaryResult refine_inf_all_above(const Predicate& pred, BoundaryResult coarse, double k_ceiling,
+                                    const RefineOptions& ro, const BisectionOptions& opt = {});
 
 // Bisection in log between a point where pred is `value_lo` (lo) and one where it is not (hi).
 // Returns the final bracket; lo < hi, both > 0.

@@ -2,6 +2,7 @@
 #include "blockdyn/analysis/sweep/sweep_metrics.hpp"
 
 #include "blockdyn/analysis/winkler/response_type.hpp"
+#include "blockdyn/analysis/winkler/twin_divergence.hpp"
 
 #include <mutex>
 #include <stdexcept>
@@ -82,6 +83,28 @@ class ResponseTypeMetric : public PointMetric {
   }
 };
 
+// Sensitive dependence (thesis sec. 5.2, the "+" of Figs 6.1-6.2): the point is run a second time
+// with y'(0) + 1e-8 and w of the two runs compared over the second half (twin_divergence.hpp).
+// Doubles the cost of the point, hence opt-in.
+class SensitiveDependenceMetric : public PointMetric {
+ public:
+  std::vector<std::string> columns() const override { return {"w_separation", "sensitive_dependence"}; }
+  std::unique_ptr<SimulationSink> make_sink(const PointContext& c) const override {
+    return std::make_unique<RotationSampler>(c.options.t_end, TwinOptions{});
+  }
+  void compute(const PointContext& c, const SimulationResult& r, const SimulationSink* sink,
+               std::vector<MetricValue>& out) const override {
+    const auto& ref = static_cast<const RotationSampler&>(*sink);
+    const TwinDivergence d =
+        twin_divergence(c.point.params, {}, c.initial_state, c.options, TwinOptions{}, ref, r.status);
+    if (d.compared > 0)
+      out.emplace_back(d.separation);
+    else
+      out.emplace_back(std::monostate{});
+    out.emplace_back((long long)(d.divergent ? 1 : 0));
+  }
+};
+
 std::mutex& registry_mutex() {
   static std::mutex m;
   return m;
@@ -102,6 +125,10 @@ std::vector<MetricInfo> builtin_metrics() {
        [] { return std::make_unique<RegimeTimeMetric>(); }},
       {"response_type", "long-term response class (thesis sec. 4.4) and the criterion that decided it",
        [] { return std::make_unique<ResponseTypeMetric>(); }},
+      {"sensitive_dependence",
+       "a second run with y'(0) + 1e-8: max |w difference| / amplitude of w over the second half, and 1 if "
+       ">= 0.1 or only one run overturned (doubles the cost)",
+       [] { return std::make_unique<SensitiveDependenceMetric>(); }},
   };
 }
 

@@ -184,13 +184,19 @@ Predicate counting(Check check, int& undecided) {
   };
 }
 
-// The boundary in k at aspect ratio r: search (sup_all_below / inf_all_above) over the grid of s.
-template <class Check, class Search>
-CurvePoint curve_point(double r, const BoundarySearchOptions& s, Check check, Search search) {
+// The boundary in k at aspect ratio r: search (sup_all_below / inf_all_above) over the grid of s,
+// then the fine scan next to it.
+template <class Check, class Search, class Refine>
+CurvePoint curve_point(double r, const BoundarySearchOptions& s, Check check, Search search, Refine refine,
+                       double k_limit) {
   CurvePoint cp;
   cp.r = r;
   const auto grid = log_grid_per_decade(s.k_lo, s.k_hi, s.per_decade);
-  cp.result = search(counting(check, cp.undecided), grid, s.bisect);
+  const Predicate pred = counting(check, cp.undecided);
+  cp.result = search(pred, grid, s.bisect);
+  RefineOptions ro = s.refine;
+  ro.anchor = s.k_lo;
+  cp.result = refine(pred, std::move(cp.result), k_limit, ro, s.bisect);
   return cp;
 }
 
@@ -199,13 +205,13 @@ CurvePoint curve_point(double r, const BoundarySearchOptions& s, Check check, Se
 CurvePoint k_critical(double r, double mu, const IcChoice& ic, long n, const StudyRunOptions& o,
                       const BoundarySearchOptions& s) {
   auto check = [&](double k) { return no_flight_while_ihor_below(BlockParams{r, mu, k}, ic, n, o); };
-  return curve_point(r, s, check, sup_all_below);
+  return curve_point(r, s, check, sup_all_below, refine_sup_all_below, s.k_lo);
 }
 
 CurvePoint k_high(double r, double mu, const IcChoice& ic, FirstImpact c, const StudyRunOptions& o,
                   const BoundarySearchOptions& s) {
   auto check = [&](double k) { return flies_during_first_impact(BlockParams{r, mu, k}, ic, c, o); };
-  return curve_point(r, s, check, inf_all_above);
+  return curve_point(r, s, check, inf_all_above, refine_inf_all_above, s.k_hi);
 }
 
 }  // namespace blockdyn

@@ -75,6 +75,11 @@ struct BoundarySearchOptions {
   double k_lo = 1e1, k_hi = 1e10;  // k range scanned
   double per_decade = 6;           // coarse grid density
   BisectionOptions bisect;
+  // Fine scan next to the boundary (boundary_search.hpp). The flight predicates flip in narrow
+  // k windows below k_critical (above k_high); a coarse grid misses some of them at one r and
+  // not at the next, which made the curves jagged. Anchored at k_lo, so every r samples the
+  // same k values.
+  RefineOptions refine;
 };
 
 CurvePoint k_critical(double r, double mu, const IcChoice& ic, long n, const StudyRunOptions& o,

@@ -10,6 +10,7 @@ namespace blockdyn {
 const char* to_string(ResponseType t) {
   switch (t) {
     case ResponseType::SteadyRocking: return "steady_rocking";
+    case ResponseType::Settled: return "settled";
     case ResponseType::SettleDown: return "settle_down";
     case ResponseType::ZeroFrictionRockFlight: return "zero_friction_rock_flight";
     case ResponseType::RockToVertical: return "rock_to_vertical";
@@ -31,6 +32,7 @@ void validate(const ResponseOptions& o) {
   const auto& c = o.criteria;
   if (!(c.steady_flight_fraction > 0 && c.steady_flight_fraction < 1))
     bad("steady-flight-fraction", "in (0, 1)", c.steady_flight_fraction);
+  if (!(c.settled_energy > 0 && c.settled_energy < 1)) bad("settled-energy", "in (0, 1)", c.settled_energy);
   if (!(c.settle_dissipation > 0 && c.settle_dissipation < 1)) bad("settle-dissipation", "in (0, 1)", c.settle_dissipation);
   if (!(c.settle_rotation_share > 0 && c.settle_rotation_share < 1))
     bad("settle-rotation-share", "in (0, 1)", c.settle_rotation_share);
@@ -90,6 +92,8 @@ ResponseMetrics compute_metrics(const BlockParams& p, const SimulationResult& r,
     const double avail_late = acc.late_energy() - m.e_rest;
     m.late_dissipated_fraction =
         avail_late > 0 ? -(m.work_friction - acc.late_work_friction()) / avail_late : 0.0;
+    m.late_energy_max = std::fmax(acc.late_energy(), m.e_final);
+    if (avail > 0) m.late_energy_fraction = (m.late_energy_max - m.e_rest) / avail;
   }
   m.max_abs_energy_error = r.max_abs_energy_error;
   m.ihor = r.ihor;
@@ -142,7 +146,13 @@ ResponseReport classify(const BlockParams& p, const ResponseMetrics& m, const Re
   if (m.status == SimStatus::Overturned) return set(ResponseType::Overturned, fmt("overturned at t = %.6g", *m.overturn_time));
   if (m.status != SimStatus::TEnd && m.status != SimStatus::EarlyStop)
     return set(ResponseType::Failed, std::string("run ended with status ") + to_string(m.status));
-  // Settle down is tested first: a block that flew, lost most of its energy to friction and
+  // At rest: flight impossible from the late window on (E < 0) and almost all of the energy gone.
+  // Tested before settle down, which keeps the blocks that still hop (E >= 0).
+  if (m.late_energy_max < 0 && m.late_energy_fraction <= c.settled_energy)
+    return set(ResponseType::Settled,
+               fmt("E <= %.3g < 0 late (no flight possible); energy above rest %.3g of E0 - E_rest <= %.3g",
+                   m.late_energy_max, m.late_energy_fraction, c.settled_energy));
+  // Settle down is tested next: a block that flew, lost most of its energy to friction and
   // stopped rocking has settled whether or not its remaining heave still lifts it off.
   if (p.mu > 0 && m.takeoffs > 0 && m.dissipated_fraction >= c.settle_dissipation &&
       m.late_rotation_share < c.settle_rotation_share)
@@ -152,7 +162,8 @@ ResponseReport classify(const BlockParams& p, const ResponseMetrics& m, const Re
                    double(m.takeoffs), m.dissipated_fraction, m.late_rotation_share));
   if (m.late_flight_fraction < c.steady_flight_fraction)
     return set(ResponseType::SteadyRocking,
-               fmt("late flight fraction %.3g < %.3g", m.late_flight_fraction, c.steady_flight_fraction));
+               fmt("late flight fraction %.3g < %.3g; energy above rest %.3g of E0 - E_rest", m.late_flight_fraction,
+                   c.steady_flight_fraction, m.late_energy_fraction));
   if (m.early_rotation_share > 0 && m.late_rotation_share <= c.vertical_trend * m.early_rotation_share)
     return set(ResponseType::RockToVertical,
                fmt("flies late; rotational share of kinetic energy fell from %.3g to %.3g", m.early_rotation_share,
