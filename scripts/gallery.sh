@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: Apache-2.0
-# Regenerates one figure of every analysis family at modest resolution (about 2 minutes on
-# 2 cores, the map 52 s of it; see README). Usage: scripts/gallery.sh [OUTDIR]
+# Regenerates one figure of every analysis family at modest resolution (about 2.5 minutes on
+# 2 cores, the map 52 s and the assembly figures 42 s of it; see README). Usage: scripts/gallery.sh [OUTDIR]
 # (default out/gallery; needs a built ./build)
 set -euo pipefail
 cd "$(dirname "$0")/.."
