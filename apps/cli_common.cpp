@@ -135,4 +135,14 @@ void require_range(const std::string& field, double v, double lo, double hi, boo
   }
 }
 
+void require_animation(const std::string& path, int frames) {
+  require_writable("animate", path);
+  if (!path.empty()) {
+    const auto dot = path.find_last_of('.');
+    const std::string ext = dot == std::string::npos ? "" : path.substr(dot);
+    if (ext != ".gif" && ext != ".mp4") throw UsageError("animate = '" + path + "' must end in .gif or .mp4");
+  }
+  require_range("animate-frames", frames, 2, 5000);
+}
+
 }  // namespace blockdyn::cli

@@ -47,6 +47,9 @@ void require_sample_count(const std::string& field, double interval, double span
 // an existing writable directory. Checked before computing, so a bad path costs no work.
 void require_writable(const std::string& field, const std::string& path);
 
+// --animate F.gif|F.mp4 and --animate-frames: a writable path with a known extension, 2 to 5000
+// frames.
+void require_animation(const std::string& path, int frames);
 // Throws UsageError unless v is finite and in [lo, hi] (inclusive flags).
 void require_range(const std::string& field, double v, double lo, double hi, bool lo_incl = true,
                    bool hi_incl = true);

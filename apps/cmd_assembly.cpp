@@ -133,13 +133,7 @@ void run(const CLI::App& s, const AssemblyFlags& f) {
   require_writable("trajectory", f.trajectory);
   require_writable("plot", f.plot);
   require_writable("json-out", f.json_out);
-  require_writable("animate", f.animate);
-  if (!f.animate.empty()) {
-    const auto dot = f.animate.find_last_of('.');
-    const std::string ext = dot == std::string::npos ? "" : f.animate.substr(dot);
-    if (ext != ".gif" && ext != ".mp4") throw UsageError("animate = '" + f.animate + "' must end in .gif or .mp4");
-  }
-  require_range("animate-frames", f.animate_frames, 2, 5000);
+  require_animation(f.animate, f.animate_frames);
   TrajectoryTarget target(f.trajectory, f.plot.empty() ? f.animate : f.plot);
   AssemblyResult r;
   try {

@@ -147,13 +147,7 @@ Scenario build_scenario(const CLI::App& s, const SimulateFlags& f) {
   validate(sc.options);
   require_range("output-interval", sc.output_interval, 0.0, 1e300);
   require_writable("plot", sc.plot);
-  require_writable("animate", f.animate);
-  if (!f.animate.empty()) {
-    const auto dot = f.animate.find_last_of('.');
-    const std::string ext = dot == std::string::npos ? "" : f.animate.substr(dot);
-    if (ext != ".gif" && ext != ".mp4") throw UsageError("animate = '" + f.animate + "' must end in .gif or .mp4");
-  }
-  require_range("animate-frames", f.animate_frames, 2, 5000);
+  require_animation(f.animate, f.animate_frames);
   require_writable("trajectory", sc.trajectory);
   require_writable("json-out", f.json_out);
   if (!sc.trajectory.empty() || !sc.plot.empty() || !f.animate.empty())

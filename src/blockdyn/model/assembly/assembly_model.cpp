@@ -85,6 +85,13 @@ BodyPose AssemblyModel<Cap>::pose(const State& z, int b) const {
 }
 
 template <int Cap>
+bool AssemblyModel<Cap>::any_slip(const Mode& m) const {
+  for (int p = 0; p < 2 * ni_; ++p)
+    if (slip_sign(m.point[p]) != 0) return true;
+  return false;
+}
+
+template <int Cap>
 void AssemblyModel<Cap>::geometry(const State& z, Geometry& g) const {
   for (int b = 0; b < nb_; ++b) g.pose[b] = pose(z, b);
   for (int i = 0; i < ni_; ++i) {
@@ -173,12 +180,10 @@ void AssemblyModel<Cap>::dynamics(double t, const Mode& m, const State& z, const
 
 template <int Cap>
 void AssemblyModel<Cap>::rhs(double t, const Mode& m, const State& z, State& dz) const {
-  bool any_slip = false;
-  for (int p = 0; p < 2 * ni_; ++p) any_slip |= slip_sign(m.point[p]) != 0;
   Geometry geo;
   geometry(z, geo);
   Dynamics d;
-  dynamics(t, m, z, geo, d, any_slip);
+  dynamics(t, m, z, geo, d, any_slip(m));
   dz.fill(0.0);
   for (int b = 0; b < nb_; ++b)
     for (int k = 0; k < 3; ++k) {
@@ -211,12 +216,10 @@ void AssemblyModel<Cap>::rhs(double t, const Mode& m, const State& z, State& dz)
 template <int Cap>
 void AssemblyModel<Cap>::events(double t, const Mode& m, const State& z, std::array<double, kNumEvents>& g) const {
   g.fill(1.0);
-  bool any_slip = false;
-  for (int p = 0; p < 2 * ni_; ++p) any_slip |= slip_sign(m.point[p]) != 0;
   Geometry geo;
   geometry(z, geo);
   Dynamics d;
-  dynamics(t, m, z, geo, d, any_slip);
+  dynamics(t, m, z, geo, d, any_slip(m));
   for (int p = 0; p < 2 * ni_; ++p) {
     const int i = p / 2;
     const PointForce& pf = d.pf[p];
@@ -243,9 +246,7 @@ void AssemblyModel<Cap>::events(double t, const Mode& m, const State& z, std::ar
 
 template <int Cap>
 void AssemblyModel<Cap>::complete(const Mode& m, State& z) const {
-  bool any_slip = false;
-  for (int p = 0; p < 2 * ni_; ++p) any_slip |= slip_sign(m.point[p]) != 0;
-  if (!any_slip) return;
+  if (!any_slip(m)) return;
   Geometry geo;
   geometry(z, geo);
   for (int p = 0; p < 2 * ni_; ++p) {

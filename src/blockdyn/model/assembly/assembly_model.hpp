@@ -140,6 +140,8 @@ class AssemblyModel {
 
  private:
   // The state of a point re-derived from the geometry (after an end switch).
+  // Whether a point slips (then the slip rates need the normal forces' rates).
+  bool any_slip(const Mode& m) const;
   PointState consistent_state(const Mode& m, const State& z, const Geometry& g, int p) const;
 
   Assembly asm_;
