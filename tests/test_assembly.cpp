@@ -436,3 +436,21 @@ TEST(AssemblyRigidLaw, RestSlidingAndSymmetry) {
       EXPECT_NEAR(r2.blocks[swap[b]].final_state[k], sign * r1.blocks[b].final_state[k], 1e-6) << b << ' ' << k;
     }
 }
+
+TEST(AssemblyRigidLaw, QuasiStaticUpliftAtGTanAlphaWhateverTheLintel) {
+  // The rigid four-bar frame uplifts at a_H = g tan(alpha) whatever the lintel (virtual work on
+  // the mechanism: the lintel's weight and inertia act on the same lever arms h : b as the
+  // columns'). A slow ramp of acceleration: the first base to open, block and trilith.
+  double a_block = 0;
+  for (const char* preset : {"block", "trilith"}) {
+    const Assembly a = make_preset(preset, rigid_preset());
+    const double tan_alpha = a.blocks[0].width / a.blocks[0].height, f = 0.05;
+    const AssemblyResult r = simulate_assembly(a, harmonic(2 * tan_alpha, f), rigid_run(4.9, 1e-4));
+    const double t_open = first_event(r, "open", -1, 1);
+    ASSERT_TRUE(std::isfinite(t_open)) << preset;
+    const double ratio = 2 * std::sin(2 * M_PI * f * t_open);
+    EXPECT_NEAR(ratio, 1.0, 1e-2) << preset;
+    if (std::string(preset) == "block") a_block = ratio;
+    else EXPECT_NEAR(ratio, a_block, 1e-3);
+  }
+}
