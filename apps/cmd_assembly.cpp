@@ -27,7 +27,7 @@ struct AssemblyFlags {
   GroundFlags ground;
   std::string trajectory, plot, animate, json_out;
   int animate_frames = 120;
-  bool json = false, quiet = false;
+  bool json = false, quiet = false, rock_only = false;
   double max_output_rows = 1e7;
 };
 
@@ -93,6 +93,16 @@ Assembly build(const CLI::App& s, const AssemblyFlags& f) {
         if (given(s, n) && f.preset != "trilith") throw UsageError(std::string(n) + " belongs to --preset trilith");
       a = make_preset(f.preset, o);
       a.g = f.g;
+    }
+    if (f.rock_only) {
+      if (!rigid) throw UsageError("--columns-rock-only (seed 001's 5-DOF restriction) needs --contact rigid");
+      // No sliding and plastic impacts on the ground: the blocks standing on it only rock.
+      a.rock_only_on_ground = true;
+      for (AssemblyInterface& i : a.interfaces)
+        if (i.lower < 0) {
+          i.law.mu_s = i.law.mu_k = kNoSlip;
+          i.law.restitution = 0.0;
+        }
     }
     if (given(s, "--collapse-rotation") || f.file.empty()) a.collapse_rotation = f.collapse_rotation;
     if (given(s, "--min-bearing") || f.file.empty()) a.min_bearing = f.min_bearing;
@@ -194,6 +204,9 @@ void add(CLI::App& app) {
                 "collapse mode 2 when the overlap of two blocks' faces falls to this length [m] (default 0)");
   s->add_option("--g", f->g, "gravity [m/s^2] (default 9.81)");
   s->add_option("--step", f->run.step, "rigid: time step [s] (default 1e-4)");
+  s->add_flag("--columns-rock-only", f->rock_only,
+              "rigid: seed 001's 5-DOF restriction - the blocks on the ground only rock (no sliding, plastic "
+              "impacts); a block leaving the ground is reported, not integrated");
   s->add_option("--t-end", f->run.t_end, "duration [s] (default 10)");
   s->add_option("--rtol", f->run.integrator.rtol, "relative tolerance (default 1e-8)");
   s->add_option("--atol", f->run.integrator.atol, "absolute tolerance in m, rad, m/s, rad/s, J (default 1e-10)");

@@ -454,3 +454,28 @@ TEST(AssemblyRigidLaw, QuasiStaticUpliftAtGTanAlphaWhateverTheLintel) {
     else EXPECT_NEAR(ratio, a_block, 1e-3);
   }
 }
+
+TEST(AssemblyRigidLaw, ColumnsRockOnlyRestriction) {
+  // Seed 001's 5-DOF trilith: the columns only rock on the ground (no sliding there), the
+  // lintel slides, rocks and lifts on them; a block leaving the ground is reported.
+  PresetOptions o = rigid_preset();
+  o.block_law.mu_s = o.block_law.mu_k = std::tan(20 * M_PI / 180);
+  Assembly a = make_preset("trilith", o);
+  a.rock_only_on_ground = true;
+  for (AssemblyInterface& i : a.interfaces)
+    if (i.lower < 0) i.law.mu_s = i.law.mu_k = kNoSlipFriction;
+  const AssemblyResult r = simulate_assembly(a, harmonic(0.3, 2.0), rigid_run(3, 1e-4));
+  EXPECT_GT(r.event_counts[kAsmOpen], 0);
+  EXPECT_EQ(r.interfaces[0].slips + r.interfaces[1].slips, 0);
+  EXPECT_EQ(r.blocks[0].max_abs_sliding, 0.0);
+  EXPECT_GT(r.interfaces[2].slips + r.interfaces[3].slips, 0);
+  Assembly jump = make_preset("block", rigid_preset());
+  jump.rock_only_on_ground = true;
+  jump.blocks[0].vy = 0.5;
+  const AssemblyResult j = simulate_assembly(jump, {}, rigid_run(1, 1e-4));
+  EXPECT_EQ(j.status, "invalid");
+  EXPECT_NE(j.note.find("left the ground"), std::string::npos) << j.note;
+  EXPECT_LT(j.t_final, 0.01);
+  jump.contact = "deformable";
+  EXPECT_THROW(validate(jump), std::invalid_argument);
+}

@@ -38,6 +38,7 @@ json to_json(const Assembly& a) {
   j["g"] = a.g;
   j["collapse_rotation"] = a.collapse_rotation;
   j["min_bearing"] = a.min_bearing;
+  j["columns_rock_only"] = a.rock_only_on_ground;
   json blocks = json::array();
   for (const AssemblyBlock& b : a.blocks)
     blocks.push_back({{"name", b.name},

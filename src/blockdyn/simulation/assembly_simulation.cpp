@@ -395,6 +395,15 @@ AssemblyResult run_rigid(const Assembly& a, const GroundMotion& g, const Assembl
     max_err = std::fmax(max_err, std::fabs(ek + eg - e0 - w_ground - w_normal - w_tangent));
     max_change = std::fmax(max_change, std::fabs(ek + eg - e0));
     bool stop = false;
+    if (a.rock_only_on_ground)
+      for (int i = 0; i < ni && !stop; ++i)
+        if (a.interfaces[i].lower < 0 && state[2 * i] == 'O' && state[2 * i + 1] == 'O') {
+          r.status = "invalid";
+          r.note = "block " + std::to_string(a.interfaces[i].upper) + " left the ground at t = " + std::to_string(t1) +
+                   " s: outside seed 001's 5-DOF restriction (blocks on the ground only rock)";
+          add_event(t1, kAsmInvalid, "invalid", a.interfaces[i].upper, i, -1, 0);
+          stop = true;
+        }
     for (int b = 0; b < nb && !stop; ++b) {
       const double th0 = theta_prev[b], th1 = q[3 * b + 2];
       if (side[b] * th1 < -kBand) {
@@ -440,7 +449,7 @@ AssemblyResult run_rigid(const Assembly& a, const GroundMotion& g, const Assembl
       if (o.output_interval <= 0) write_row(t, "");
     }
     if (stop) {
-      r.status = "collapsed";
+      if (r.status != "invalid") r.status = "collapsed";
       break;
     }
   }

@@ -208,6 +208,8 @@ void validate(const Assembly& a) {
                                 std::to_string(nb + 1) + " allowed for " + std::to_string(nb) + " blocks");
   if (a.contact != "deformable" && a.contact != "rigid")
     throw std::invalid_argument("contact = '" + a.contact + "' must be deformable or rigid");
+  if (a.rock_only_on_ground && a.contact != "rigid")
+    throw std::invalid_argument("columns-rock-only (seed 001's 5-DOF restriction) needs the rigid contact law");
   if (!(a.g > 0 && a.g <= 1e3)) throw std::invalid_argument("g = " + num(a.g) + " must be in (0, 1000] m/s^2");
   if (!(a.collapse_rotation > 0 && a.collapse_rotation <= 10))
     throw std::invalid_argument("collapse_rotation = " + num(a.collapse_rotation) + " must be in (0, 10]");

@@ -43,6 +43,9 @@ struct Assembly {
   double g = 9.81;
   double collapse_rotation = 1.0;  // mode 1: |theta| >= this fraction of the block's atan(b/h)
   double min_bearing = 0.0;        // mode 2: an interface's overlap falls to this length (m)
+  // Seed 001's 5-DOF restriction (rigid law): blocks on the ground only rock on it (no sliding,
+  // no plastic-impact bounce); a block leaving the ground is outside the model and is reported.
+  bool rock_only_on_ground = false;
 };
 
 // Preset geometry (seed 002: b = 0.12 m, thickness 0.06 m, density 2700 kg/m^3).
