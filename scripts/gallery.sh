@@ -40,6 +40,11 @@ run $B map --k 1e1:1e8:12 --inv-r 1:20:10 --mu 0.2 --ic ic1 --t-end 30 --boundar
 run $B simulate examples/housner_pulse.toml --trajectory "$O/housner_pulse.csv" --plot "$O/housner_pulse.png"
 run $B simulate examples/rigid_record.toml --trajectory "$O/rigid_record.csv" --plot "$O/rigid_record.png"
 run /usr/bin/python3 python/fig_rigid_ground.py "$B" "$O" tests/fixtures/synthetic_60s.AT2
+# Overturning spectra (Housner block, rectangular and one-sine pulses)
+run $B spectrum --model housner --width 0.3 --height 1.5 --pulse rect --duration-min 0.05 --duration-max 5 \
+  --duration-points 30 --plot "$O/spectrum_rect.png" --quiet
+run $B spectrum --model housner --width 0.3 --height 1.5 --pulse one-sine --duration-min 0.1 --duration-max 5 \
+  --duration-points 30 --scan-points 80 --amplitude-max 10 --plot "$O/spectrum_one_sine.png" --quiet
 # Block assemblies (seed 002 trilith): frame rocking, the harmonic case, a figure and an animation
 run /usr/bin/python3 python/fig_assembly.py "$B" "$O"
 echo "gallery written to $O"

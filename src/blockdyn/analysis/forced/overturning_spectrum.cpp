@@ -1,0 +1,81 @@
+// SPDX-License-Identifier: Apache-2.0
+#include "blockdyn/analysis/forced/overturning_spectrum.hpp"
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include "blockdyn/analysis/sweep/parallel_map.hpp"
+
+namespace blockdyn {
+
+void validate(const SpectrumOptions& o) {
+  if (o.durations.empty() || o.durations.size() > 100000)
+    throw std::invalid_argument("durations: 1 to 100000 values are needed");
+  for (double d : o.durations)
+    if (!(d > 0 && d <= 1e4)) throw std::invalid_argument("duration = " + std::to_string(d) + " must be in (0, 1e4] s");
+  if (!(o.amplitude_min > 0 && o.amplitude_max > o.amplitude_min && o.amplitude_max <= 1e3))
+    throw std::invalid_argument("amplitude-min, amplitude-max: need 0 < min < max <= 1000 g");
+  if (!(o.scan_points >= 2 && o.scan_points <= 100000)) throw std::invalid_argument("scan-points must be in [2, 100000]");
+  if (!(o.rel_tol >= 1e-12 && o.rel_tol <= 0.1)) throw std::invalid_argument("rel-tol must be in [1e-12, 0.1]");
+}
+
+double rect_pulse_overturning_linear(double alpha, double p, double t_p) {
+  return alpha / (1.0 - std::exp(-p * t_p));
+}
+
+namespace {
+
+SpectrumRow one_duration(const OverturnTest& overturns, const SpectrumOptions& o, double duration) {
+  SpectrumRow row;
+  row.duration = duration;
+  const int n = o.scan_points;
+  std::vector<double> amp(n);
+  std::vector<char> over(n);
+  for (int j = 0; j < n; ++j) {
+    amp[j] = o.amplitude_min * std::pow(o.amplitude_max / o.amplitude_min, double(j) / (n - 1));
+    over[j] = overturns(amp[j], duration);
+    ++row.runs;
+  }
+  int k = 0;
+  while (k < n && !over[k]) ++k;
+  if (k == n) return row;
+  if (k == 0) {
+    row.at_scan_floor = true;
+    row.min_overturning_amplitude = amp[0];
+  } else {
+    double lo = amp[k - 1], hi = amp[k];
+    while ((hi - lo) > o.rel_tol * hi) {
+      const double mid = std::sqrt(lo * hi);
+      const bool o_mid = overturns(mid, duration);
+      ++row.runs;
+      (o_mid ? hi : lo) = mid;
+    }
+    row.min_overturning_amplitude = hi;
+  }
+  for (int j = k + 1; j < n; ++j) {
+    if (over[j]) continue;
+    SpectrumIsland is{amp[j], amp[j]};
+    while (j + 1 < n && !over[j + 1]) is.to = amp[++j];
+    row.safe_islands.push_back(is);
+  }
+  return row;
+}
+
+}  // namespace
+
+std::vector<SpectrumRow> overturning_spectrum(const OverturnTest& overturns, const SpectrumOptions& o,
+                                              const std::function<void(std::size_t)>& progress) {
+  validate(o);
+  std::vector<SpectrumRow> rows(o.durations.size());
+  std::size_t done = 0;
+  parallel_for(
+      rows.size(), o.threads, [&](std::size_t i) { rows[i] = one_duration(overturns, o, o.durations[i]); },
+      [&](std::size_t) {
+        ++done;
+        if (progress) progress(done);
+      });
+  return rows;
+}
+
+}  // namespace blockdyn

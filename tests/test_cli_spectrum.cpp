@@ -1,0 +1,61 @@
+// SPDX-License-Identifier: Apache-2.0
+// `blockdyn spectrum` (issue 9): the JSON rows scripts rely on, the CSV and plot, an assembly
+// preset, and bad input (exit 2 naming the field).
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "test_sweep_util.hpp"
+
+using nlohmann::json;
+using sweep_test::exists;
+using sweep_test::run_cli;
+using sweep_test::slurp;
+using sweep_test::TmpDir;
+
+TEST(CliSpectrum, JsonRowsCsvAndPlot) {
+  TmpDir d("spectrum");
+  const auto r = run_cli({"spectrum", "--model", "housner", "--width", "0.3", "--height", "1.5", "--pulse", "rect",
+                          "--durations", "0.1,0.5", "--json", "--quiet", "--csv", "s.csv", "--plot", "s.png"},
+                         d.path);
+  ASSERT_EQ(r.code, 0) << r.err;
+  const json j = json::parse(r.out);
+  EXPECT_EQ(j["schema"], "blockdyn.spectrum.summary/1");
+  ASSERT_EQ(j["rows"].size(), 2u);
+  EXPECT_EQ(j["rows"][0]["duration"], 0.1);
+  EXPECT_GT(j["rows"][0]["min_overturning_amplitude"].get<double>(), j["rows"][1]["min_overturning_amplitude"].get<double>());
+  EXPECT_TRUE(exists(d.path + "/s.png"));
+  EXPECT_EQ(slurp(d.path + "/s.csv").substr(0, 35), "duration,min_overturning_amplitude,");
+}
+
+TEST(CliSpectrum, AssemblyPreset) {
+  TmpDir d("spectrum_asm");
+  const auto r = run_cli({"spectrum", "--model", "assembly", "--preset", "block", "--contact", "rigid", "--pulse",
+                          "half-sine", "--durations", "0.2", "--scan-points", "8", "--rel-tol", "1e-3", "--t-after", "2",
+                          "--json", "--quiet"},
+                         d.path);
+  ASSERT_EQ(r.code, 0) << r.err;
+  const json j = json::parse(r.out);
+  EXPECT_EQ(j["model"]["contact"], "rigid");
+  EXPECT_GT(j["rows"][0]["min_overturning_amplitude"].get<double>(), 0.25);  // above uplift, tan(alpha)
+}
+
+TEST(CliSpectrum, BadInputIsAUsageError) {
+  TmpDir d("spectrum_bad");
+  const std::vector<std::pair<std::vector<std::string>, std::string>> cases{
+      {{"spectrum", "--model", "housner", "--width", "0.3", "--height", "1.5"}, "durations"},
+      {{"spectrum", "--model", "housner", "--width", "0.3", "--height", "1.5", "--durations", "0.1",
+        "--duration-min", "0.1"}, "not both"},
+      {{"spectrum", "--model", "housner", "--width", "0.3", "--height", "1.5", "--durations", "-1"}, "duration"},
+      {{"spectrum", "--model", "housner", "--height", "1.5", "--durations", "1"}, "--width"},
+      {{"spectrum", "--model", "housner", "--width", "0.3", "--height", "1.5", "--durations", "1", "--pulse", "square"},
+       "pulse"},
+      {{"spectrum", "--model", "housner", "--width", "0.3", "--height", "1.5", "--durations", "1", "--amplitude-min",
+        "2", "--amplitude-max", "1"}, "amplitude"},
+      {{"spectrum", "--model", "assembly", "--durations", "1"}, "--preset"},
+  };
+  for (const auto& [args, word] : cases) {
+    const auto r = run_cli(args, d.path);
+    EXPECT_EQ(r.code, 2) << r.err;
+    EXPECT_NE(r.err.find(word), std::string::npos) << r.err;
+  }
+}
