@@ -13,20 +13,16 @@
 #include "blockdyn/io/atomic_file.hpp"
 #include "blockdyn/io/json_io.hpp"
 #include "blockdyn/io/progress.hpp"
-#include "blockdyn/simulation/assembly_simulation.hpp"
-#include "blockdyn/simulation/rigid_simulation.hpp"
 #include "cli_common.hpp"
 #include "cli_registry.hpp"
+#include "forced_model.hpp"
 
 namespace blockdyn::cli {
 namespace {
 
 struct SpectrumFlags {
-  std::string model = "housner", pulse = "rect", preset, contact = "deformable";
-  double width = 0, height = 0, mass = 1, g = 9.81, mu_s = 0.7, mu_k = -1, restitution = -1;
-  std::string impact = "housner";
-  PresetOptions preset_opt;
-  double phi_s = 90, phi_l = 90;
+  ForcedModelFlags m;
+  std::string pulse = "rect";
   std::vector<double> durations;
   double duration_min = 0, duration_max = 0;
   int duration_points = 0;
@@ -76,64 +72,14 @@ void run(const CLI::App& s, const SpectrumFlags& f) {
   require_writable("csv", f.csv);
   require_writable("plot", f.plot);
   require_writable("json-out", f.json_out);
-  nlohmann::ordered_json model;
-  OverturnTest test;
-  double alpha = 0, p = 0;
-  RigidBlockParams rp;
-  Assembly asmb;
-  if (f.model == "housner" || f.model == "rigid") {
-    if (!given(s, "--width") || !given(s, "--height")) throw UsageError("--width and --height are needed for --model " + f.model);
-    rp.shape = {f.width, f.height, f.mass, f.g};
-    rp.interface = {f.mu_s, f.mu_k < 0 ? f.mu_s : f.mu_k};
-    rp.impact = f.impact == "newton" ? ImpactLaw::Newton : ImpactLaw::Housner;
-    if (f.restitution >= 0) rp.restitution = f.restitution;
-    try {
-      validate(rp);
-    } catch (const std::invalid_argument& e) {
-      throw UsageError(e.what());
-    }
-    alpha = rp.shape.alpha();
-    p = rp.shape.p();
-    model = to_json(rp, f.model);
-    const bool housner = f.model == "housner";
-    const double t_after = f.t_after;
-    test = [rp, housner, shape, t_after](double amplitude, double duration) {
-      RigidRunOptions ro;
-      ro.t_end = pulse_support(*shape) * duration + t_after;
-      ro.record_events = false;
-      const GroundMotion g = pulse_motion(*shape, amplitude, duration);
-      const RigidResult r = housner ? simulate_housner(rp.shape, rp.restitution, g, {}, ro)
-                                    : simulate_rigid(rp, g, {}, ro);
-      return r.status == SimStatus::Overturned;
-    };
-  } else {
-    if (f.preset.empty()) throw UsageError("--model assembly needs --preset block|trilith|column");
-    PresetOptions po = f.preset_opt;
-    po.rigid_contacts = f.contact == "rigid";
-    for (ContactLaw* l : {&po.ground_law, &po.block_law}) {
-      const double phi = l == &po.ground_law ? f.phi_s : f.phi_l;
-      require_range(l == &po.ground_law ? "phi-s" : "phi-l", phi, 0, 90);
-      l->mu_s = l->mu_k = phi >= 90 ? kNoSlipFriction : std::tan(phi * M_PI / 180);
-      if (po.rigid_contacts) l->restitution = f.restitution >= 0 ? f.restitution : 0.0;
-      else if (f.restitution >= 0) l->restitution = f.restitution;
-    }
-    try {
-      asmb = make_preset(f.preset, po);
-      validate(asmb);
-    } catch (const std::invalid_argument& e) {
-      throw UsageError(e.what());
-    }
-    alpha = std::atan2(asmb.blocks[0].width, asmb.blocks[0].height);
-    p = std::sqrt(0.75 * asmb.g / (0.5 * std::hypot(asmb.blocks[0].width, asmb.blocks[0].height)));
-    model = {{"model", "assembly"}, {"preset", f.preset}, {"contact", asmb.contact}, {"blocks", asmb.blocks.size()}};
-    const double t_after = f.t_after;
-    test = [asmb, shape, t_after](double amplitude, double duration) {
-      AssemblyRunOptions ao;
-      ao.t_end = pulse_support(*shape) * duration + t_after;
-      ao.record_events = false;
-      return simulate_assembly(asmb, pulse_motion(*shape, amplitude, duration), ao).collapse_mode.has_value();
-    };
-  }
+  const ForcedModel fm = build_forced_model(s, f.m);
+  const double alpha = fm.alpha, p = fm.p;
+  const nlohmann::ordered_json& model = fm.description;
+  const double t_after = f.t_after;
+  const PulseShape pulse = *shape;
+  const OverturnTest test = [&fm, pulse, t_after](double amplitude, double duration) {
+    return fm.run(pulse_motion(pulse, amplitude, duration), pulse_support(pulse) * duration + t_after).collapse_mode.has_value();
+  };
   Progress bar("spectrum", o.durations.size(), 0, f.quiet ? ProgressMode::None : parse_progress_mode(f.progress));
   const auto rows = overturning_spectrum(test, o, [&](std::size_t) { bar.advance(); });
   bar.finish();
@@ -147,7 +93,7 @@ void run(const CLI::App& s, const SpectrumFlags& f) {
   j["units"] = "durations in s, amplitudes in g";
   j["options"] = {{"amplitude_min", o.amplitude_min}, {"amplitude_max", o.amplitude_max},
                   {"scan_points", o.scan_points}, {"rel_tol", o.rel_tol}, {"t_after", f.t_after},
-                  {"overturn", f.model == "assembly" ? "collapse (mode 1 or 2)" : "|theta| reaches pi/2"}};
+                  {"overturn", fm.overturn_rule}};
   nlohmann::ordered_json arr = nlohmann::ordered_json::array();
   long runs = 0;
   for (const SpectrumRow& r : rows) {
@@ -191,7 +137,7 @@ void run(const CLI::App& s, const SpectrumFlags& f) {
     if (!f.plot.empty()) {
       try {
         run_python("plot_spectrum.py", {path, f.plot, "--title",
-                                        std::string(f.model) + " " + (f.preset.empty() ? "" : f.preset + " ") +
+                                        f.m.model + " " + (f.m.preset.empty() ? "" : f.m.preset + " ") +
                                             to_string(*shape) + " pulse"});
       } catch (...) {
         if (f.csv.empty()) std::remove(path.c_str());
@@ -217,8 +163,7 @@ void add(CLI::App& app) {
   CLI::App* s = app.add_subcommand("spectrum",
                                    "overturning spectrum: the smallest pulse amplitude that overturns a block (or "
                                    "collapses an assembly), per pulse duration (s, g)");
-  s->add_option("--model", f->model, "housner, rigid (a block on rigid ground) or assembly (with --preset)")
-      ->check(CLI::IsMember({"housner", "rigid", "assembly"}));
+  add_forced_model_flags(*s, f->m);
   s->add_option("--pulse", f->pulse, std::string("pulse shape: ") + pulse_names() + " (default rect)");
   s->add_option("--durations", f->durations, "pulse durations t_p [s], comma separated")->delimiter(',');
   s->add_option("--duration-min", f->duration_min, "smallest duration [s] (geometric range)");
@@ -230,21 +175,6 @@ void add(CLI::App& app) {
   s->add_option("--rel-tol", f->spec.rel_tol, "relative tolerance of the minimum (default 1e-6)");
   s->add_option("--t-after", f->t_after, "simulated time after the pulse [s] (default 10)");
   s->add_option("--threads", f->spec.threads, "worker threads (0: all cores; default 0)");
-  s->add_option("--width", f->width, "housner/rigid: block width [m]");
-  s->add_option("--height", f->height, "housner/rigid: block height [m]");
-  s->add_option("--mass", f->mass, "housner/rigid: mass [kg] (default 1)");
-  s->add_option("--g", f->g, "gravity [m/s^2] (default 9.81)");
-  s->add_option("--mu-s", f->mu_s, "rigid: static friction (default 0.7)");
-  s->add_option("--mu-k", f->mu_k, "rigid: kinetic friction (default mu-s)");
-  s->add_option("--impact", f->impact, "rigid: housner or newton")->check(CLI::IsMember({"housner", "newton"}));
-  s->add_option("--restitution", f->restitution, "restitution (housner/rigid as in simulate; assembly as in assembly)");
-  s->add_option("--preset", f->preset, "assembly: block, trilith or column")->check(CLI::IsMember({"block", "trilith", "column"}));
-  s->add_option("--contact", f->contact, "assembly: deformable or rigid")->check(CLI::IsMember({"deformable", "rigid"}));
-  s->add_option("--slenderness", f->preset_opt.slenderness, "assembly: height / width (default 4)");
-  s->add_option("--block-width", f->preset_opt.block_width, "assembly: width [m] (default 0.12)");
-  s->add_option("--drums", f->preset_opt.drums, "assembly column: drums (default 4)");
-  s->add_option("--phi-s", f->phi_s, "assembly: friction angle on the ground [deg] (default 90)");
-  s->add_option("--phi-l", f->phi_l, "assembly: friction angle between blocks [deg] (default 90)");
   s->add_option("--csv", f->csv, "write the spectrum as CSV");
   s->add_option("--plot", f->plot, "plot the spectrum (PNG + SVG), with the linearised closed form for rect");
   s->add_flag("--json", f->json, "print the JSON summary");

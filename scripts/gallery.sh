@@ -45,6 +45,9 @@ run $B spectrum --model housner --width 0.3 --height 1.5 --pulse rect --duration
   --duration-points 30 --plot "$O/spectrum_rect.png" --quiet
 run $B spectrum --model housner --width 0.3 --height 1.5 --pulse one-sine --duration-min 0.1 --duration-max 5 \
   --duration-points 30 --scan-points 80 --amplitude-max 10 --plot "$O/spectrum_one_sine.png" --quiet
+# Survival domain of the Housner block (40 x 40, 20 forcing periods)
+run $B survival --model housner --width 0.3 --height 1.5 --beta-min 0.5 --beta-max 6 --beta-points 40 \
+  --omega-min 1 --omega-max 20 --omega-points 40 --periods 20 --plot "$O/survival_housner.png" --quiet
 # Block assemblies (seed 002 trilith): frame rocking, the harmonic case, a figure and an animation
 run /usr/bin/python3 python/fig_assembly.py "$B" "$O"
 echo "gallery written to $O"

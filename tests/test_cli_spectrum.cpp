@@ -59,3 +59,42 @@ TEST(CliSpectrum, BadInputIsAUsageError) {
     EXPECT_NE(r.err.find(word), std::string::npos) << r.err;
   }
 }
+
+TEST(CliSurvival, JsonPointsAndPlot) {
+  TmpDir d("survival");
+  const auto r = run_cli({"survival", "--model", "housner", "--width", "0.3", "--height", "1.5", "--beta-min", "0.5",
+                          "--beta-max", "4", "--beta-points", "4", "--omega-min", "1", "--omega-max", "10",
+                          "--omega-points", "3", "--t-end", "10", "--out", "s.csv", "--plot", "s.png", "--json",
+                          "--quiet"},
+                         d.path);
+  ASSERT_EQ(r.code, 0) << r.err;
+  const json j = json::parse(r.out);
+  EXPECT_EQ(j["schema"], "blockdyn.survival.summary/1");
+  ASSERT_EQ(j["points"].size(), 12u);
+  for (const auto& p : j["points"]) {
+    for (const char* k : {"beta", "omega", "motion", "collapse_mode", "t_failure", "max_abs_rotation", "cycle"})
+      EXPECT_TRUE(p.contains(k)) << k;
+    EXPECT_TRUE(p["motion"] == "rest" || p["motion"] == "stable" || p["motion"] == "collapse");
+  }
+  EXPECT_EQ(j["points"][0]["motion"], "rest");  // beta 0.5: below uplift
+  EXPECT_TRUE(exists(d.path + "/s.png"));
+  EXPECT_EQ(slurp(d.path + "/s.csv").substr(0, 17), "beta,omega,motion");
+}
+
+TEST(CliSurvival, BadInputIsAUsageError) {
+  TmpDir d("survival_bad");
+  const std::vector<std::pair<std::vector<std::string>, std::string>> cases{
+      {{"survival", "--model", "housner", "--width", "0.3", "--height", "1.5", "--excitation", "square"}, "excitation"},
+      {{"survival", "--model", "housner", "--width", "0.3", "--height", "1.5", "--beta-min", "2", "--beta-max", "1"},
+       "beta"},
+      {{"survival", "--model", "housner", "--width", "0.3", "--height", "1.5", "--omega-points", "0"}, "omega-points"},
+      {{"survival", "--model", "housner", "--width", "0.3", "--height", "1.5", "--t-end", "5", "--periods", "3"},
+       "not both"},
+      {{"survival", "--model", "assembly"}, "--preset"},
+  };
+  for (const auto& [args, word] : cases) {
+    const auto r = run_cli(args, d.path);
+    EXPECT_EQ(r.code, 2) << r.err;
+    EXPECT_NE(r.err.find(word), std::string::npos) << r.err;
+  }
+}

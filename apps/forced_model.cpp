@@ -1,0 +1,108 @@
+// SPDX-License-Identifier: Apache-2.0
+#include "forced_model.hpp"
+
+#include <cmath>
+
+#include "blockdyn/io/json_io.hpp"
+#include "blockdyn/simulation/assembly_simulation.hpp"
+#include "blockdyn/simulation/rigid_simulation.hpp"
+#include "cli_common.hpp"
+
+namespace blockdyn::cli {
+
+void add_forced_model_flags(CLI::App& s, ForcedModelFlags& f) {
+  s.add_option("--model", f.model, "housner, rigid (a block on rigid ground) or assembly (with --preset)")
+      ->check(CLI::IsMember({"housner", "rigid", "assembly"}));
+  s.add_option("--width", f.width, "housner/rigid: block width [m]");
+  s.add_option("--height", f.height, "housner/rigid: block height [m]");
+  s.add_option("--mass", f.mass, "housner/rigid: mass [kg] (default 1)");
+  s.add_option("--g", f.g, "gravity [m/s^2] (default 9.81)");
+  s.add_option("--mu-s", f.mu_s, "rigid: static friction (default 0.7)");
+  s.add_option("--mu-k", f.mu_k, "rigid: kinetic friction (default mu-s)");
+  s.add_option("--impact", f.impact, "rigid: housner or newton")->check(CLI::IsMember({"housner", "newton"}));
+  s.add_option("--restitution", f.restitution, "restitution (housner/rigid as in simulate; assembly as in assembly)");
+  s.add_option("--preset", f.preset, "assembly: block, trilith or column")->check(CLI::IsMember({"block", "trilith", "column"}));
+  s.add_option("--contact", f.contact, "assembly: deformable or rigid")->check(CLI::IsMember({"deformable", "rigid"}));
+  s.add_option("--slenderness", f.preset_opt.slenderness, "assembly: height / width (default 4)");
+  s.add_option("--block-width", f.preset_opt.block_width, "assembly: width [m] (default 0.12)");
+  s.add_option("--drums", f.preset_opt.drums, "assembly column: drums (default 4)");
+  s.add_option("--phi-s", f.phi_s, "assembly: friction angle on the ground [deg] (default 90)");
+  s.add_option("--phi-l", f.phi_l, "assembly: friction angle between blocks [deg] (default 90)");
+}
+
+ForcedModel build_forced_model(const CLI::App& s, const ForcedModelFlags& f) {
+  ForcedModel fm;
+  if (f.model == "housner" || f.model == "rigid") {
+    if (!given(s, "--width") || !given(s, "--height")) throw UsageError("--width and --height are needed for --model " + f.model);
+    RigidBlockParams rp;
+    rp.shape = {f.width, f.height, f.mass, f.g};
+    rp.interface = {f.mu_s, f.mu_k < 0 ? f.mu_s : f.mu_k};
+    rp.impact = f.impact == "newton" ? ImpactLaw::Newton : ImpactLaw::Housner;
+    if (f.restitution >= 0) rp.restitution = f.restitution;
+    try {
+      validate(rp);
+    } catch (const std::invalid_argument& e) {
+      throw UsageError(e.what());
+    }
+    fm.alpha = rp.shape.alpha();
+    fm.p = rp.shape.p();
+    fm.description = to_json(rp, f.model);
+    fm.overturn_rule = "|theta| reaches pi/2";
+    const bool housner = f.model == "housner";
+    fm.run = [rp, housner](const GroundMotion& g, double t_end) {
+      RigidRunOptions ro;
+      ro.t_end = t_end;
+      ro.record_events = false;
+      const RigidResult r = housner ? simulate_housner(rp.shape, rp.restitution, g, {}, ro) : simulate_rigid(rp, g, {}, ro);
+      ForcedOutcome out;
+      out.moved = r.first_motion_time.has_value();
+      out.max_abs_rotation = r.max_abs_rotation;
+      out.invalid = r.status == SimStatus::Invalid || r.status == SimStatus::NumericalFailure;
+      if (r.status == SimStatus::Overturned) {
+        out.collapse_mode = 1;
+        out.t_failure = r.overturn_time;
+      }
+      return out;
+    };
+    return fm;
+  }
+  if (f.preset.empty()) throw UsageError("--model assembly needs --preset block|trilith|column");
+  PresetOptions po = f.preset_opt;
+  po.rigid_contacts = f.contact == "rigid";
+  require_range("phi-s", f.phi_s, 0, 90);
+  require_range("phi-l", f.phi_l, 0, 90);
+  for (ContactLaw* l : {&po.ground_law, &po.block_law}) {
+    const double phi = l == &po.ground_law ? f.phi_s : f.phi_l;
+    l->mu_s = l->mu_k = phi >= 90 ? kNoSlipFriction : std::tan(phi * M_PI / 180);
+    if (po.rigid_contacts) l->restitution = f.restitution >= 0 ? f.restitution : 0.0;
+    else if (f.restitution >= 0) l->restitution = f.restitution;
+  }
+  Assembly a;
+  try {
+    a = make_preset(f.preset, po);
+    validate(a);
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(e.what());
+  }
+  fm.alpha = std::atan2(a.blocks[0].width, a.blocks[0].height);
+  fm.p = std::sqrt(0.75 * a.g / (0.5 * std::hypot(a.blocks[0].width, a.blocks[0].height)));
+  fm.description = {{"model", "assembly"}, {"preset", f.preset}, {"contact", a.contact}, {"blocks", a.blocks.size()},
+                    {"phi_s", f.phi_s}, {"phi_l", f.phi_l}, {"slenderness", po.slenderness}};
+  fm.overturn_rule = "collapse mode 1 (rotation) or 2 (bearing)";
+  fm.run = [a](const GroundMotion& g, double t_end) {
+    AssemblyRunOptions ao;
+    ao.t_end = t_end;
+    ao.record_events = false;
+    const AssemblyResult r = simulate_assembly(a, g, ao);
+    ForcedOutcome out;
+    out.moved = r.motion != "rest";
+    out.collapse_mode = r.collapse_mode;
+    out.t_failure = r.t_failure;
+    out.invalid = r.status == "invalid";
+    for (const auto& b : r.blocks) out.max_abs_rotation = std::fmax(out.max_abs_rotation, b.max_abs_rotation);
+    return out;
+  };
+  return fm;
+}
+
+}  // namespace blockdyn::cli

@@ -1,0 +1,61 @@
+# SPDX-License-Identifier: Apache-2.0
+"""Survival domain over (omega, beta) in the style of seed 002 Figs. 6-9: collapse points marked
+by their t* class (stars <= 5 s, triangles short, diamonds medium, squares long, circles very
+long), filled for mode 2 and hollow for mode 1; stable points as small grey dots, rest as
+crosses. Usage: plot_survival.py POINTS.csv OUT.png [--title T]"""
+import argparse
+import csv
+import os
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+MARKERS = {"short": "^", "medium": "D", "long": "s", "very long": "o"}
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("csv")
+    ap.add_argument("out")
+    ap.add_argument("--title", default="")
+    a = ap.parse_args()
+    with open(a.csv, newline="") as f:
+        rows = list(csv.DictReader(f))
+    fig, ax = plt.subplots(figsize=(7.5, 5))
+    groups = {}  # label -> (xs, ys, style): one scatter call per group
+
+    def put(x, y, label, **kw):
+        groups.setdefault(label, ([], [], kw))
+        groups[label][0].append(x)
+        groups[label][1].append(y)
+
+    for r in rows:
+        w, b = float(r["omega"]), float(r["beta"])
+        if r["motion"] == "rest":
+            put(w, b, "rest", marker="x", color="0.6", s=14)
+        elif r["motion"] == "stable":
+            put(w, b, "stable", marker=".", color="tab:blue", s=20)
+        elif r["motion"] == "invalid":
+            put(w, b, "invalid", marker="$?$", color="tab:red", s=20)
+        else:
+            cls, mode = r["t_star_class"], r["collapse_mode"]
+            marker = "*" if cls.startswith("<=") else MARKERS.get(cls, "o")
+            filled = mode == "2"
+            put(w, b, f"collapse mode {mode}, t* {cls}", marker=marker, s=40,
+                facecolors="k" if filled else "none", edgecolors="k")
+    for label, (xs, ys, kw) in groups.items():
+        ax.scatter(xs, ys, label=label, **kw)
+    ax.set_xlabel("omega = Omega / p")
+    ax.set_ylabel("beta")
+    ax.set_title(a.title, fontsize=9)
+    ax.grid(alpha=0.3)
+    ax.legend(fontsize=7, loc="upper left", bbox_to_anchor=(1.01, 1.0))
+    fig.tight_layout()
+    fig.savefig(a.out, dpi=120)
+    fig.savefig(os.path.splitext(a.out)[0] + ".svg")
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,81 @@
+// SPDX-License-Identifier: Apache-2.0
+#include "blockdyn/analysis/forced/survival_map.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+#include "blockdyn/analysis/sweep/parallel_map.hpp"
+
+namespace blockdyn {
+
+void validate(const SurvivalOptions& o) {
+  if (o.excitation != "harmonic" && o.excitation != "half-sine" && o.excitation != "half-cosine" && o.excitation != "rect")
+    throw std::invalid_argument("excitation = '" + o.excitation + "' must be harmonic, half-sine, half-cosine or rect");
+  if (!(o.beta_min > 0 && o.beta_max >= o.beta_min && o.beta_max <= 1e3))
+    throw std::invalid_argument("beta-min, beta-max: need 0 < min <= max <= 1000");
+  if (!(o.omega_min > 0 && o.omega_max >= o.omega_min && o.omega_max <= 1e4))
+    throw std::invalid_argument("omega-min, omega-max: need 0 < min <= max <= 1e4");
+  if (!(o.beta_points >= 1 && o.omega_points >= 1 && double(o.beta_points) * o.omega_points <= 1e7))
+    throw std::invalid_argument("beta-points, omega-points: at least 1 each, at most 1e7 points");
+  if (!(o.t_end > 0 && o.t_end <= 1e5)) throw std::invalid_argument("t-end must be in (0, 1e5] s");
+  if (!(o.periods >= 0 && o.periods <= 1e5)) throw std::invalid_argument("periods must be in [0, 1e5]");
+  if (!(std::isfinite(o.phase))) throw std::invalid_argument("phase must be finite");
+}
+
+GroundMotion survival_motion(const SurvivalOptions& o, double beta, double omega, double alpha, double p) {
+  GroundMotion g;
+  const double Omega = omega * p;
+  if (o.excitation == "harmonic") {
+    // cos(Omega t + phase) = sin(Omega t + phase + pi/2).
+    g.horizontal.amplitude = beta * alpha;
+    g.horizontal.frequency = Omega / (2 * M_PI);
+    g.horizontal.phase = o.phase + 0.5 * M_PI;
+  } else {
+    g.horizontal.amplitude = beta * alpha;
+    g.horizontal.duration = M_PI / Omega;  // half a forcing period
+    g.horizontal.pulse = o.excitation == "half-sine" ? PulseShape::HalfSine
+                         : o.excitation == "half-cosine" ? PulseShape::HalfCosine
+                                                          : PulseShape::Rect;
+  }
+  return g;
+}
+
+std::string t_star_class(const SurvivalOptions& o, double t) {
+  static const char* names[] = {"<=5 s", "short", "medium", "long", "very long"};
+  for (std::size_t k = 0; k < o.t_star_classes.size() && k < 4; ++k)
+    if (t <= o.t_star_classes[k]) return k == 0 ? "<=" + std::to_string(int(std::lround(o.t_star_classes[0]))) + " s" : names[k];
+  return names[4];
+}
+
+std::vector<SurvivalPoint> survival_map(const SurvivalRun& run, const SurvivalOptions& o, double alpha, double p,
+                                        const std::function<void(std::size_t)>& progress) {
+  validate(o);
+  auto grid = [](double lo, double hi, int n, int i) { return n == 1 ? lo : lo + (hi - lo) * i / (n - 1); };
+  const std::size_t n = std::size_t(o.beta_points) * o.omega_points;
+  std::vector<SurvivalPoint> pts(n);
+  std::size_t done = 0;
+  parallel_for(
+      n, o.threads,
+      [&](std::size_t k) {
+        SurvivalPoint& pt = pts[k];
+        pt.beta = grid(o.beta_min, o.beta_max, o.beta_points, int(k / o.omega_points));
+        pt.omega = grid(o.omega_min, o.omega_max, o.omega_points, int(k % o.omega_points));
+        const double t_end = o.periods > 0 ? o.periods * 2 * M_PI / (pt.omega * p) : o.t_end;
+        const SurvivalOutcome r = run(survival_motion(o, pt.beta, pt.omega, alpha, p), t_end);
+        pt.max_abs_rotation = r.max_abs_rotation;
+        pt.collapse_mode = r.collapse_mode;
+        pt.t_failure = r.t_failure;
+        if (r.invalid) pt.motion = "invalid";
+        else if (r.collapse_mode) pt.motion = "collapse";
+        else if (r.moved) pt.motion = "stable";
+        else pt.motion = "rest";
+        if (r.collapse_mode && r.t_failure) pt.t_star_class = t_star_class(o, *r.t_failure);
+      },
+      [&](std::size_t) {
+        ++done;
+        if (progress) progress(done);
+      });
+  return pts;
+}
+
+}  // namespace blockdyn

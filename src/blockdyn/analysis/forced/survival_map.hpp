@@ -1,0 +1,56 @@
+// SPDX-License-Identifier: Apache-2.0
+#pragma once
+// Survival domains (issue 9; seed 002 Figs. 2, 6-9): over a grid of (beta, omega), with
+// a_H = beta alpha g cos(Omega t + phase) and omega = Omega / p, each point is run from rest and
+// classified: rest (never left rest), stable (moved, did not fail) or collapse, with the collapse
+// mode, t* and its duration class, and the largest rotation. Pulses (half-sine, half-cosine,
+// rect) last half a forcing period, pi / Omega. Points run in parallel and land at their own
+// index: the map is identical for any thread count.
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "blockdyn/excitation/ground_motion.hpp"
+
+namespace blockdyn {
+
+struct SurvivalOptions {
+  std::string excitation = "harmonic";  // harmonic | half-sine | half-cosine | rect
+  double phase = 0.0;                    // rad, of cos(Omega t + phase)
+  double beta_min = 0.5, beta_max = 5, omega_min = 1, omega_max = 20;
+  int beta_points = 10, omega_points = 10;
+  double t_end = 20;                     // s; with periods > 0: that many forcing periods instead
+  double periods = 0;
+  std::vector<double> t_star_classes{5, 30, 100, 300};  // upper bounds of the t* classes (s)
+  int threads = 0;
+};
+void validate(const SurvivalOptions& o);
+
+struct SurvivalPoint {
+  double beta = 0, omega = 0;
+  std::string motion = "rest";  // rest | stable | collapse | invalid
+  std::optional<int> collapse_mode;
+  std::optional<double> t_failure;
+  std::string t_star_class;  // "<=5 s", "short", "medium", "long", "very long" (collapse only)
+  double max_abs_rotation = 0;
+};
+
+struct SurvivalOutcome {
+  bool moved = false, invalid = false;
+  std::optional<int> collapse_mode;
+  std::optional<double> t_failure;
+  double max_abs_rotation = 0;
+};
+// Thread-safe: one run under g to t_end (s).
+using SurvivalRun = std::function<SurvivalOutcome(const GroundMotion& g, double t_end)>;
+
+// The ground motion of a point: amplitude beta alpha (g), Omega = omega p.
+GroundMotion survival_motion(const SurvivalOptions& o, double beta, double omega, double alpha, double p);
+std::string t_star_class(const SurvivalOptions& o, double t_star);
+
+// Points in row-major order: beta outer, omega inner.
+std::vector<SurvivalPoint> survival_map(const SurvivalRun& run, const SurvivalOptions& o, double alpha, double p,
+                                        const std::function<void(std::size_t)>& progress = {});
+
+}  // namespace blockdyn
