@@ -26,7 +26,8 @@ import numpy as np
 from . import _core
 
 __version__ = _core.__version__
-__all__ = ["simulate", "sweep", "map", "run", "Simulation", "__version__"]
+__all__ = ["simulate", "assembly", "spectrum", "survival", "sweep", "map", "run", "Simulation", "Assembly",
+           "__version__"]
 
 # Where the plot scripts are once installed (share/blockdyn/python beside lib/python3/...).
 _here = os.path.dirname(os.path.abspath(__file__))
@@ -120,6 +121,77 @@ def simulate(scenario=None, **options):
         with open(summ) as f:
             summary = json.load(f)
         return Simulation(_read_csv(traj), summary)
+
+
+class Assembly:
+    """One assembly run: `t`, `data` (every trajectory column by name: x_b, y_b, theta_b, ... per
+    block, px/py/fn/ft/state per contact end, energies), `theta` (rows: time, columns: blocks),
+    `events` and `summary` (the JSON of `assembly --json`)."""
+
+    def __init__(self, data, summary):
+        self.data = data
+        self.summary = summary
+        self.t = data["t"]
+        nb = len(summary["blocks"])
+        self.theta = np.column_stack([data[f"theta_{b}"] for b in range(nb)])
+        self.events = summary.get("events", [])
+
+    def __getitem__(self, column):
+        return self.data[column]
+
+    def __repr__(self):
+        s = self.summary
+        return (f"<blockdyn.Assembly preset={s['assembly'].get('preset')} contact={s.get('contact')} "
+                f"status={s.get('status')} motion={s.get('motion')} t_final={s.get('t_final')}>")
+
+
+def assembly(file=None, **options):
+    """Runs `blockdyn assembly` (a preset, e.g. preset="trilith", or an assembly TOML file) and
+    returns an Assembly with NumPy arrays."""
+    for reserved in ("trajectory", "json", "json_out"):
+        if reserved in options:
+            raise ValueError(f"{reserved}: set by blockdyn.assembly itself")
+    with tempfile.TemporaryDirectory(prefix="blockdyn-py-") as tmp:
+        traj = os.path.join(tmp, "trajectory.csv")
+        summ = os.path.join(tmp, "summary.json")
+        opts = dict(options, trajectory=traj, json_out=summ, quiet=True)
+        run(*_args("assembly", opts, [file] if file else []))
+        with open(summ) as f:
+            summary = json.load(f)
+        return Assembly(_read_csv(traj), summary)
+
+
+def _json_command(command, options):
+    with tempfile.TemporaryDirectory(prefix="blockdyn-py-") as tmp:
+        summ = os.path.join(tmp, "summary.json")
+        run(*_args(command, dict(options, json_out=summ, quiet=True)))
+        with open(summ) as f:
+            return json.load(f)
+
+
+def spectrum(**options):
+    """Runs `blockdyn spectrum` and returns its JSON summary, with the rows also as arrays under
+    "duration" and "min_overturning_amplitude" (NaN where nothing in the scan overturns)."""
+    j = _json_command("spectrum", options)
+    rows = j["rows"]
+    j["duration"] = np.array([r["duration"] for r in rows], dtype=float)
+    j["min_overturning_amplitude"] = np.array(
+        [np.nan if r["min_overturning_amplitude"] is None else r["min_overturning_amplitude"] for r in rows],
+        dtype=float)
+    return j
+
+
+def survival(**options):
+    """Runs `blockdyn survival` and returns its JSON summary, with arrays "beta", "omega",
+    "motion", "t_failure" (NaN without failure) and "max_abs_rotation" over the points."""
+    j = _json_command("survival", options)
+    pts = j["points"]
+    j["beta"] = np.array([p["beta"] for p in pts], dtype=float)
+    j["omega"] = np.array([p["omega"] for p in pts], dtype=float)
+    j["motion"] = np.array([p["motion"] for p in pts], dtype=object)
+    j["t_failure"] = np.array([np.nan if p["t_failure"] is None else p["t_failure"] for p in pts], dtype=float)
+    j["max_abs_rotation"] = np.array([p["max_abs_rotation"] for p in pts], dtype=float)
+    return j
 
 
 def _table_command(command, definition, options):

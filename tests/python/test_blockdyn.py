@@ -129,3 +129,22 @@ def test_animation_rejects_unknown_extension():
     r = subprocess.run([CLI, "simulate", "--model", "housner", "--width", "0.3", "--height", "1",
                         "--animate", "x.avi"], capture_output=True, text=True)
     assert r.returncode == 2 and "animate" in r.stderr
+
+
+def test_assembly_spectrum_and_survival_from_python():
+    a = blockdyn.assembly(preset="trilith", tilt=0.05, t_end=1)
+    assert a.summary["status"] == "t_end" and a.summary["motion"] == "stable"
+    assert a.theta.shape == (len(a.t), 3)
+    assert abs(a.theta[0, 0] - 0.05) < 1e-15 and np.all(np.isfinite(a.theta))
+    with tempfile.TemporaryDirectory() as tmp:
+        traj = os.path.join(tmp, "a.csv")
+        out = json.loads(cli("assembly", "--preset", "trilith", "--tilt", "0.05", "--t-end", "1",
+                             "--trajectory", traj, "--json"))
+    assert out["events"] == a.summary["events"] and out["blocks"] == a.summary["blocks"]
+    s = blockdyn.spectrum(model="housner", width=0.3, height=1.5, durations=[0.1, 0.5])
+    assert s["duration"].tolist() == [0.1, 0.5]
+    assert s["min_overturning_amplitude"][0] > s["min_overturning_amplitude"][1] > 0
+    v = blockdyn.survival(model="housner", width=0.3, height=1.5, beta_points=3, omega_points=2, t_end=5)
+    assert len(v["beta"]) == 6 and v["motion"][0] == "rest"
+    with pytest.raises(ValueError, match="preset"):
+        blockdyn.assembly(preset="arch")
