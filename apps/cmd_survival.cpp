@@ -44,6 +44,7 @@ void run(const CLI::App& s, const SurvivalFlags& f) {
     out.collapse_mode = r.collapse_mode;
     out.t_failure = r.t_failure;
     out.max_abs_rotation = r.max_abs_rotation;
+    out.max_sliding = r.max_sliding;
     return out;
   };
   const std::size_t n = std::size_t(o.beta_points) * o.omega_points;

@@ -46,6 +46,7 @@ ForcedModel build_forced_model(const CLI::App& s, const ForcedModelFlags& f) {
     }
     fm.alpha = rp.shape.alpha();
     fm.p = rp.shape.p();
+    fm.width = rp.shape.width;
     fm.description = to_json(rp, f.model);
     fm.overturn_rule = "|theta| reaches pi/2";
     const bool housner = f.model == "housner";
@@ -85,6 +86,7 @@ ForcedModel build_forced_model(const CLI::App& s, const ForcedModelFlags& f) {
     throw UsageError(e.what());
   }
   fm.alpha = std::atan2(a.blocks[0].width, a.blocks[0].height);
+  fm.width = a.blocks[0].width;
   fm.p = std::sqrt(0.75 * a.g / (0.5 * std::hypot(a.blocks[0].width, a.blocks[0].height)));
   fm.description = {{"model", "assembly"}, {"preset", f.preset}, {"contact", a.contact}, {"blocks", a.blocks.size()},
                     {"phi_s", f.phi_s}, {"phi_l", f.phi_l}, {"slenderness", po.slenderness}};
@@ -100,6 +102,8 @@ ForcedModel build_forced_model(const CLI::App& s, const ForcedModelFlags& f) {
     out.t_failure = r.t_failure;
     out.invalid = r.status == "invalid";
     for (const auto& b : r.blocks) out.max_abs_rotation = std::fmax(out.max_abs_rotation, b.max_abs_rotation);
+    for (const auto& i : r.interfaces)
+      if (i.lower >= 0) out.max_sliding = std::fmax(out.max_sliding, i.max_abs_sliding);
     return out;
   };
   return fm;

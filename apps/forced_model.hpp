@@ -27,11 +27,13 @@ struct ForcedOutcome {
   std::optional<int> collapse_mode;   // 1 (rotation) or 2 (bearing); blocks: 1 when overturned
   std::optional<double> t_failure;    // s
   double max_abs_rotation = 0;        // rad (assemblies: the largest over the blocks)
+  double max_sliding = 0;             // m: assemblies, the largest slip between blocks (0 otherwise)
   bool invalid = false;               // the run left the model's validity
 };
 
 struct ForcedModel {
   double alpha = 0, p = 0;  // of the (first) block: slenderness angle and frequency parameter
+  double width = 0;         // of the (first) block (m): the scale of sliding
   nlohmann::ordered_json description;
   std::string overturn_rule;
   // Thread-safe: one simulation from rest to t_end (s) under g.

@@ -109,7 +109,7 @@ TEST(AssemblyStatics, SettlementEqualsTheSpringClosedFormAndNothingDrifts) {
         EXPECT_NEAR(r.blocks[b].final_state[k], start, 1e-9) << preset << b << k;
         EXPECT_NEAR(r.blocks[b].final_state[k], half.blocks[b].final_state[k], 1e-10) << preset << b << k;
       }
-      EXPECT_EQ(r.blocks[b].max_abs_sliding, 0.0);
+      EXPECT_LT(r.blocks[b].max_abs_sliding, 1e-9);  // integration error only
     }
   }
   // The block's sink is m g / (2 k_N) per point (two points).
@@ -126,9 +126,13 @@ TEST(AssemblyFriction, ABlockOnARampBelowItsFrictionAngleStaysAndAboveItSlides) 
   o.ground_law.mu_s = o.ground_law.mu_k = std::tan(15 * M_PI / 180);
   // The slope rises slowly to 0.2 (a quarter period of 5 s), below tan 15 deg = 0.268: a sudden
   // step would overshoot the elastic springs and slip.
-  AssemblyResult r = simulate_assembly(make_preset("block", o), harmonic(0.2, 0.05), run_to(5));
+  const Assembly ramp = make_preset("block", o);
+  AssemblyResult r = simulate_assembly(ramp, harmonic(0.2, 0.05), run_to(5));
   EXPECT_EQ(r.event_counts[kAsmSlip], 0);
-  EXPECT_EQ(r.blocks[0].max_abs_sliding, 0.0);
+  // The base only shifts by the tangential springs' deflection under the peak load:
+  // 0.2 m g shared by two points of stiffness k_N / 3.
+  const double deflection = 0.2 * ramp.blocks[0].mass * 9.81 / (2 * 1e7 / 3);
+  EXPECT_NEAR(r.blocks[0].max_abs_sliding / deflection, 1.0, 2e-2);
   // Above: once slipping, the block accelerates at x'' = -(a - mu) g relative to the ground.
   GroundMotion g;
   g.horizontal.constant = 0.4;
@@ -467,7 +471,11 @@ TEST(AssemblyRigidLaw, ColumnsRockOnlyRestriction) {
   const AssemblyResult r = simulate_assembly(a, harmonic(0.3, 2.0), rigid_run(3, 1e-4));
   EXPECT_GT(r.event_counts[kAsmOpen], 0);
   EXPECT_EQ(r.interfaces[0].slips + r.interfaces[1].slips, 0);
-  EXPECT_EQ(r.blocks[0].max_abs_sliding, 0.0);
+  // Rocking about a base corner without slip moves the base centre by (b/2)(1 - cos theta) at most,
+  // up to the pivot's play inside the activation band g h^2 (twice: both ends of the motion).
+  const double play = 2 * 9.81 * 1e-4 * 1e-4;
+  for (int b = 0; b < 2; ++b)
+    EXPECT_LE(r.blocks[b].max_abs_sliding, 0.5 * a.blocks[b].width * (1 - std::cos(r.blocks[b].max_abs_rotation)) + play);
   EXPECT_GT(r.interfaces[2].slips + r.interfaces[3].slips, 0);
   Assembly jump = make_preset("block", rigid_preset());
   jump.rock_only_on_ground = true;

@@ -98,3 +98,22 @@ TEST(CliSurvival, BadInputIsAUsageError) {
     EXPECT_NE(r.err.find(word), std::string::npos) << r.err;
   }
 }
+
+TEST(CliResponseCurve, RotationVersusFrequencyPerAmplitude) {
+  TmpDir d("curve");
+  const auto r = run_cli({"response-curve", "--model", "housner", "--width", "0.3", "--height", "1.5", "--betas",
+                          "0.5,3", "--omega-min", "2", "--omega-max", "20", "--omega-points", "5", "--t-end", "10",
+                          "--plot", "c.png", "--json", "--quiet"},
+                         d.path);
+  ASSERT_EQ(r.code, 0) << r.err;
+  const json j = json::parse(r.out);
+  EXPECT_EQ(j["schema"], "blockdyn.response-curve.summary/1");
+  ASSERT_EQ(j["points"].size(), 10u);
+  for (int k = 0; k < 5; ++k) EXPECT_EQ(j["points"][k]["theta_max_over_alpha"], 0.0);  // beta 0.5: below uplift
+  // beta = 3: the response falls as the frequency rises (seed 001/002's trend).
+  EXPECT_GT(j["points"][6]["theta_max_over_alpha"].get<double>(), j["points"][9]["theta_max_over_alpha"].get<double>());
+  EXPECT_TRUE(exists(d.path + "/c.png"));
+  const auto bad = run_cli({"response-curve", "--model", "housner", "--width", "0.3", "--height", "1.5"}, d.path);
+  EXPECT_EQ(bad.code, 2);
+  EXPECT_NE(bad.err.find("--betas"), std::string::npos) << bad.err;
+}

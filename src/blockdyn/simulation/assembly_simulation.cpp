@@ -109,13 +109,19 @@ class AssemblyRecorder final : public Observer<Model<Cap>> {
         r_.blocks[b].t_max_abs_rotation = t;
       }
     }
+    typename M::Geometry geo;
+    m.geometry(z, geo);
     for (int i = 0; i < m.interfaces(); ++i) {
-      const double s = std::fmax(std::fabs(z[M::is(2 * i)]), std::fabs(z[M::is(2 * i + 1)]));
-      r_.interfaces[i].max_abs_sliding = std::fmax(r_.interfaces[i].max_abs_sliding, s);
+      const double s = base_position(geo.lower[i], geo.upper[i]);
+      if (!started_) s0_[i] = s;
+      r_.interfaces[i].max_abs_sliding = std::fmax(r_.interfaces[i].max_abs_sliding, std::fabs(s - s0_[i]));
     }
+    started_ = true;
   }
   AssemblyResult& r_;
   const AssemblyRunOptions& o_;
+  std::array<double, Cap + 1> s0_{};
+  bool started_ = false;
 };
 
 // Trajectory CSV: one row per output instant (dense output) and one per event.
@@ -271,7 +277,7 @@ AssemblyResult run_rigid(const Assembly& a, const GroundMotion& g, const Assembl
   r.damping.assign(ni, 0.0);
   r.blocks.resize(nb);
   r.interfaces.resize(ni);
-  std::vector<double> q(3 * nb), v(3 * nb), theta_prev(nb), slip(np, 0.0);
+  std::vector<double> q(3 * nb), v(3 * nb), theta_prev(nb), s0(ni);
   std::vector<int> side(nb, 1);
   // A passage through theta = 0 counts once theta is this far on the other side (rounding).
   constexpr double kBand = 1e-12;
@@ -287,6 +293,7 @@ AssemblyResult run_rigid(const Assembly& a, const GroundMotion& g, const Assembl
   for (int i = 0; i < ni; ++i) {
     r.interfaces[i].lower = a.interfaces[i].lower;
     r.interfaces[i].upper = a.interfaces[i].upper;
+    s0[i] = mj.base_position_of(q, i);
   }
   // Contact end states: 'O' open, 'K' stick, 'P'/'N' slip.
   std::vector<char> state(np, 'O'), next(np, 'O');
@@ -385,7 +392,6 @@ AssemblyResult run_rigid(const Assembly& a, const GroundMotion& g, const Assembl
       } else if (next[p] == 'K' && (state[p] == 'P' || state[p] == 'N')) {
         add_event(t1, kAsmStick, "stick", blk, p / 2, p % 2, 0);
       }
-      if (next[p] == 'P' || next[p] == 'N') slip[p] += e.ut_after * o.step;
       state[p] = next[p];
     }
     w_ground += mj.work_ground;
@@ -439,7 +445,7 @@ AssemblyResult run_rigid(const Assembly& a, const GroundMotion& g, const Assembl
     }
     for (int i = 0; i < ni; ++i)
       r.interfaces[i].max_abs_sliding =
-          std::fmax(r.interfaces[i].max_abs_sliding, std::fmax(std::fabs(slip[2 * i]), std::fabs(slip[2 * i + 1])));
+          std::fmax(r.interfaces[i].max_abs_sliding, std::fabs(mj.base_position_of(q, i) - s0[i]));
     t = t1;
     if (csv) {
       while (o.output_interval > 0 && next_out * o.output_interval <= t + 1e-12 * o.step) {

@@ -47,7 +47,7 @@ struct AssemblyBlockSummary {
 
 struct AssemblyInterfaceSummary {
   int lower = -1, upper = 0;
-  double max_abs_sliding = 0;  // largest accumulated slip of its two contact ends (m)
+  double max_abs_sliding = 0;  // largest |change| of the upper base centre along the lower face (m)
   double final_overlap = 0;    // length of the faces' overlap at the end (m)
   long opens = 0, slips = 0;
 };

@@ -11,6 +11,8 @@ namespace blockdyn {
 void validate(const SurvivalOptions& o) {
   if (o.excitation != "harmonic" && o.excitation != "half-sine" && o.excitation != "half-cosine" && o.excitation != "rect")
     throw std::invalid_argument("excitation = '" + o.excitation + "' must be harmonic, half-sine, half-cosine or rect");
+  for (double b : o.betas)
+    if (!(b > 0 && b <= 1e3)) throw std::invalid_argument("betas: each must be in (0, 1000]");
   if (!(o.beta_min > 0 && o.beta_max >= o.beta_min && o.beta_max <= 1e3))
     throw std::invalid_argument("beta-min, beta-max: need 0 < min <= max <= 1000");
   if (!(o.omega_min > 0 && o.omega_max >= o.omega_min && o.omega_max <= 1e4))
@@ -50,6 +52,8 @@ std::string t_star_class(const SurvivalOptions& o, double t) {
 std::vector<SurvivalPoint> survival_map(const SurvivalRun& run, const SurvivalOptions& o, double alpha, double p,
                                         const std::function<void(std::size_t)>& progress) {
   validate(o);
+  if (!o.betas.empty() && int(o.betas.size()) != o.beta_points)
+    throw std::invalid_argument("betas: beta-points must equal the number of betas given");
   auto grid = [](double lo, double hi, int n, int i) { return n == 1 ? lo : lo + (hi - lo) * i / (n - 1); };
   const std::size_t n = std::size_t(o.beta_points) * o.omega_points;
   std::vector<SurvivalPoint> pts(n);
@@ -58,11 +62,13 @@ std::vector<SurvivalPoint> survival_map(const SurvivalRun& run, const SurvivalOp
       n, o.threads,
       [&](std::size_t k) {
         SurvivalPoint& pt = pts[k];
-        pt.beta = grid(o.beta_min, o.beta_max, o.beta_points, int(k / o.omega_points));
+        const int bi = int(k / o.omega_points);
+        pt.beta = o.betas.empty() ? grid(o.beta_min, o.beta_max, o.beta_points, bi) : o.betas[bi];
         pt.omega = grid(o.omega_min, o.omega_max, o.omega_points, int(k % o.omega_points));
         const double t_end = o.periods > 0 ? o.periods * 2 * M_PI / (pt.omega * p) : o.t_end;
         const SurvivalOutcome r = run(survival_motion(o, pt.beta, pt.omega, alpha, p), t_end);
         pt.max_abs_rotation = r.max_abs_rotation;
+        pt.max_sliding = r.max_sliding;
         pt.collapse_mode = r.collapse_mode;
         pt.t_failure = r.t_failure;
         if (r.invalid) pt.motion = "invalid";

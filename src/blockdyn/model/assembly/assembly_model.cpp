@@ -206,7 +206,6 @@ void AssemblyModel<Cap>::rhs(double t, const Mode& m, const State& z, State& dz)
     } else if (slip_sign(s) != 0) {
       const double rate = slipping_rate(l, slip_sign(s), pf.c.slip_rate, d.fn_rate[p]);
       w_friction -= l.mu_k * pf.fn * rate;
-      dz[is(p)] = l.frictionless() ? pf.c.slip_rate : slip_sign(s) * rate;
     }
   }
   dz[kWNormal] = w_normal;

@@ -12,7 +12,7 @@
 // The capacity Cap (blocks) fixes the state size at compile time (no allocation in the loop);
 // an assembly with fewer blocks leaves the spare slots at zero.
 // State: (x, y, theta) per block, their rates, the tangential elastic displacement of each
-// contact point, its accumulated slip, and the accumulated works of the ground, of the normal contacts (dashpots),
+// contact point, and the accumulated works of the ground, of the normal contacts (dashpots),
 // of friction and of the contact-end switches.
 #include <array>
 #include <cmath>
@@ -47,7 +47,7 @@ template <int Cap>
 class AssemblyModel {
  public:
   static constexpr int kBlocks = Cap, kIfaces = Cap + 1, kPoints = 2 * kIfaces;
-  static constexpr std::size_t kDim = 6 * Cap + 2 * kPoints + 4;
+  static constexpr std::size_t kDim = 6 * Cap + kPoints + 4;
   // Per point: normal, tangential, end owner, validity; per block: theta = 0 and collapse;
   // per interface: bearing.
   static constexpr std::size_t kNumEvents = 4 * kPoints + 2 * Cap + kIfaces;
@@ -58,9 +58,7 @@ class AssemblyModel {
   static constexpr std::size_t ix(int b) { return 3 * b; }
   static constexpr std::size_t iv(int b) { return 3 * Cap + 3 * b; }
   static constexpr std::size_t iu(int p) { return 6 * Cap + p; }
-  // Accumulated plastic slip of a point (m, signed along the lower face).
-  static constexpr std::size_t is(int p) { return 6 * Cap + kPoints + p; }
-  static constexpr std::size_t kWGround = 6 * Cap + 2 * kPoints, kWNormal = kWGround + 1, kWFriction = kWGround + 2,
+  static constexpr std::size_t kWGround = 6 * Cap + kPoints, kWNormal = kWGround + 1, kWFriction = kWGround + 2,
                                kWSwitch = kWGround + 3;
   // Event index layout.
   static constexpr int ev_normal(int p) { return p; }

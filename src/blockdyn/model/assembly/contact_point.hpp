@@ -62,6 +62,10 @@ inline double overlap(const Face& lower, const Face& upper) {
   return std::fmin(along_lower(lower, upper, +1), lower.half) - std::fmax(along_lower(lower, upper, -1), -lower.half);
 }
 
+// Where the upper base's centre lies along the lower face: its change is the relative sliding of
+// the interface (first order in the slip, second order in a relative rocking).
+inline double base_position(const Face& lower, const Face& upper) { return dot(upper.c - lower.c, lower.t); }
+
 // >= 0 while `owner` is the right owner of end `end` (0 left, 1 right); changes sign where the
 // upper corner passes the lower face's corner.
 inline double owner_margin(const Face& lower, const Face& upper, int end, int owner) {

@@ -110,13 +110,22 @@ double MoreauJean::gravity_energy(const std::vector<double>& q) const {
   return e;
 }
 
-double MoreauJean::overlap_of(const std::vector<double>& q, int i) const {
+std::pair<Face, Face> MoreauJean::faces(const std::vector<double>& q, int i) const {
   const AssemblyInterface& f = asm_.interfaces[i];
-  const std::vector<double> zero(q.size(), 0.0);
-  const BodyPose up = pose(q, zero, f.upper), lp = pose(q, zero, f.lower);
+  const BodyPose up = pose(q, q, f.upper), lp = pose(q, q, f.lower);  // rates unused
   const Face uf = base_face(up, asm_.blocks[f.upper].width, asm_.blocks[f.upper].height);
   const Face lf = f.lower < 0 ? ground_face() : top_face(lp, asm_.blocks[f.lower].width, asm_.blocks[f.lower].height);
+  return {lf, uf};
+}
+
+double MoreauJean::overlap_of(const std::vector<double>& q, int i) const {
+  const auto [lf, uf] = faces(q, i);
   return overlap(lf, uf);
+}
+
+double MoreauJean::base_position_of(const std::vector<double>& q, int i) const {
+  const auto [lf, uf] = faces(q, i);
+  return base_position(lf, uf);
 }
 
 bool MoreauJean::step(double t, std::vector<double>& q, std::vector<double>& v) {

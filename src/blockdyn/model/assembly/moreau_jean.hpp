@@ -14,6 +14,7 @@
 //   q+ = q_m + h/2 v+.
 // Events (contacts opening and closing, impacts, stick and slip) are known to within one step.
 #include <array>
+#include <utility>
 #include <string>
 #include <vector>
 
@@ -61,11 +62,14 @@ class MoreauJean {
   double kinetic_energy(const std::vector<double>& v) const;
   double gravity_energy(const std::vector<double>& q) const;
   double overlap_of(const std::vector<double>& q, int iface) const;
+  // The upper base centre along the lower face (its change: the interface's relative sliding).
+  double base_position_of(const std::vector<double>& q, int iface) const;
   double rotation_limit(int b) const;
   std::array<double, 2> ground_acceleration(double t) const;
 
  private:
   BodyPose pose(const std::vector<double>& q, const std::vector<double>& v, int b) const;
+  std::pair<Face, Face> faces(const std::vector<double>& q, int iface) const;  // lower, upper
   Assembly asm_;
   GroundMotion ground_;
   bool forced_;
