@@ -13,6 +13,7 @@
 #include "cli_common.hpp"
 #include "cli_registry.hpp"
 #include "forced_model.hpp"
+#include "trajectory_target.hpp"
 
 namespace blockdyn::cli {
 namespace {
@@ -39,20 +40,9 @@ void run(const CLI::App& s, const CurveFlags& f) {
   require_writable("plot", f.plot);
   require_writable("json-out", f.json_out);
   const ForcedModel fm = build_forced_model(s, f.m);
-  const SurvivalRun run_point = [&fm](const GroundMotion& g, double t_end) {
-    const ForcedOutcome r = fm.run(g, t_end);
-    SurvivalOutcome out;
-    out.moved = r.moved;
-    out.invalid = r.invalid;
-    out.collapse_mode = r.collapse_mode;
-    out.t_failure = r.t_failure;
-    out.max_abs_rotation = r.max_abs_rotation;
-    out.max_sliding = r.max_sliding;
-    return out;
-  };
   Progress bar("response-curve", std::size_t(o.beta_points) * o.omega_points, 0,
                f.quiet ? ProgressMode::None : parse_progress_mode(f.progress));
-  const auto pts = survival_map(run_point, o, fm.alpha, fm.p, [&](std::size_t) { bar.advance(); });
+  const auto pts = survival_map(fm.run, o, fm.alpha, fm.p, [&](std::size_t) { bar.advance(); });
   bar.finish();
 
   using json = nlohmann::ordered_json;
@@ -74,35 +64,25 @@ void run(const CLI::App& s, const CurveFlags& f) {
                    {"motion", p.motion},
                    {"t_failure", p.t_failure ? json(*p.t_failure) : json(nullptr)}});
   j["points"] = arr;
-  if (!f.out.empty() || !f.plot.empty()) {
-    const std::string path = f.out.empty() ? "/tmp/blockdyn-curve-" + std::to_string(::getpid()) + ".csv" : f.out;
-    {
-      AtomicFile out(path);
-      out.stream() << "beta,omega,theta_max_over_alpha,max_sliding_over_b,motion,t_failure\n";
-      char buf[256];
-      for (const SurvivalPoint& p : pts) {
-        std::snprintf(buf, sizeof buf, "%.17g,%.17g,%.17g,%.17g,%s,", p.beta, p.omega, p.max_abs_rotation / fm.alpha,
-                      p.max_sliding / fm.width, p.motion.c_str());
-        out.stream() << buf;
-        if (p.t_failure) {
-          std::snprintf(buf, sizeof buf, "%.17g", *p.t_failure);
-          out.stream() << buf;
-        }
-        out.stream() << '\n';
+  // The table, or a temporary one when only the figure is asked for.
+  TrajectoryTarget table(f.out, f.plot);
+  if (table.file) {
+    std::ostream& os = table.file->stream();
+    os << "beta,omega,theta_max_over_alpha,max_sliding_over_b,motion,t_failure\n";
+    char buf[256];
+    for (const SurvivalPoint& p : pts) {
+      std::snprintf(buf, sizeof buf, "%.17g,%.17g,%.17g,%.17g,%s,", p.beta, p.omega, p.max_abs_rotation / fm.alpha,
+                    p.max_sliding / fm.width, p.motion.c_str());
+      os << buf;
+      if (p.t_failure) {
+        std::snprintf(buf, sizeof buf, "%.17g", *p.t_failure);
+        os << buf;
       }
-      out.commit();
+      os << '\n';
     }
-    if (!f.plot.empty()) {
-      const std::string title = f.m.model + (f.m.preset.empty() ? "" : " " + f.m.preset) + ", " + o.excitation;
-      try {
-        run_python("plot_response_curve.py", {path, f.plot, "--title", title});
-      } catch (...) {
-        if (f.out.empty()) std::remove(path.c_str());
-        throw;
-      }
-    }
-    if (f.out.empty()) std::remove(path.c_str());
   }
+  const std::string title = f.m.model + (f.m.preset.empty() ? "" : " " + f.m.preset) + ", " + o.excitation;
+  table.figures_and_clean({{"plot_response_curve.py", f.plot, {"--title", title}}});
   if (!f.json_out.empty()) emit_json(j, f.json_out);
   if (f.json) emit_json(j, "-");
   if (!f.json && !f.quiet) std::printf("%zu points\n", pts.size());
@@ -115,15 +95,7 @@ void add(CLI::App& app) {
                                    "Omega/p for several beta, under a_H = beta alpha g cos(Omega t + phase)");
   add_forced_model_flags(*s, f->m);
   s->add_option("--betas", f->o.betas, "amplitudes beta, comma separated (a_H = beta alpha g ...)")->delimiter(',');
-  s->add_option("--excitation", f->o.excitation, "harmonic (default), half-sine, half-cosine or rect")
-      ->check(CLI::IsMember({"harmonic", "half-sine", "half-cosine", "rect"}));
-  s->add_option("--phase", f->o.phase, "phase of cos(Omega t + phase) [rad] (default 0)");
-  s->add_option("--omega-min", f->o.omega_min, "smallest omega (default 1)");
-  s->add_option("--omega-max", f->o.omega_max, "largest omega (default 20)");
-  s->add_option("--omega-points", f->o.omega_points, "omegas, uniform (default 10)");
-  s->add_option("--t-end", f->o.t_end, "duration of each run [s] (default 20): the transient window");
-  s->add_option("--periods", f->o.periods, "duration of each run in forcing periods (instead of --t-end)");
-  s->add_option("--threads", f->o.threads, "worker threads (0: all cores; default 0)");
+  add_excitation_grid_flags(*s, f->o);
   s->add_option("--out", f->out, "write the points as CSV");
   s->add_option("--plot", f->plot, "plot theta_MAX / alpha versus omega, one curve per beta (PNG + SVG)");
   s->add_flag("--json", f->json, "print the JSON summary");

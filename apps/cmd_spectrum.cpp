@@ -16,6 +16,7 @@
 #include "cli_common.hpp"
 #include "cli_registry.hpp"
 #include "forced_model.hpp"
+#include "trajectory_target.hpp"
 
 namespace blockdyn::cli {
 namespace {
@@ -112,40 +113,30 @@ void run(const CLI::App& s, const SpectrumFlags& f) {
   }
   j["rows"] = arr;
   j["runs"] = runs;
-  if (!f.csv.empty() || !f.plot.empty()) {
-    const std::string path = f.csv.empty() ? "/tmp/blockdyn-spectrum-" + std::to_string(::getpid()) + ".csv" : f.csv;
-    {
-      AtomicFile out(path);
-      out.stream() << "duration,min_overturning_amplitude,linearised_rect,safe_islands\n";
-      char buf[160];
-      for (const auto& x : arr) {
-        std::snprintf(buf, sizeof buf, "%.17g,", x["duration"].get<double>());
-        out.stream() << buf;
-        if (!x["min_overturning_amplitude"].is_null()) {
-          std::snprintf(buf, sizeof buf, "%.17g", x["min_overturning_amplitude"].get<double>());
-          out.stream() << buf;
-        }
-        out.stream() << ',';
-        if (x.contains("linearised_rect")) {
-          std::snprintf(buf, sizeof buf, "%.17g", x["linearised_rect"].get<double>());
-          out.stream() << buf;
-        }
-        out.stream() << ',' << x["safe_islands"].size() << '\n';
+  // The table, or a temporary one when only the figure is asked for.
+  TrajectoryTarget table(f.csv, f.plot);
+  if (table.file) {
+    std::ostream& os = table.file->stream();
+    os << "duration,min_overturning_amplitude,linearised_rect,safe_islands\n";
+    char buf[160];
+    for (const auto& x : arr) {
+      std::snprintf(buf, sizeof buf, "%.17g,", x["duration"].get<double>());
+      os << buf;
+      if (!x["min_overturning_amplitude"].is_null()) {
+        std::snprintf(buf, sizeof buf, "%.17g", x["min_overturning_amplitude"].get<double>());
+        os << buf;
       }
-      out.commit();
-    }
-    if (!f.plot.empty()) {
-      try {
-        run_python("plot_spectrum.py", {path, f.plot, "--title",
-                                        f.m.model + " " + (f.m.preset.empty() ? "" : f.m.preset + " ") +
-                                            to_string(*shape) + " pulse"});
-      } catch (...) {
-        if (f.csv.empty()) std::remove(path.c_str());
-        throw;
+      os << ',';
+      if (x.contains("linearised_rect")) {
+        std::snprintf(buf, sizeof buf, "%.17g", x["linearised_rect"].get<double>());
+        os << buf;
       }
+      os << ',' << x["safe_islands"].size() << '\n';
     }
-    if (f.csv.empty()) std::remove(path.c_str());
   }
+  table.figures_and_clean({{"plot_spectrum.py", f.plot, {"--title",
+                                        f.m.model + " " + (f.m.preset.empty() ? "" : f.m.preset + " ") +
+                                            to_string(*shape) + " pulse"}}});
   if (!f.json_out.empty()) emit_json(j, f.json_out);
   if (f.json) emit_json(j, "-");
   if (!f.json && !f.quiet) {

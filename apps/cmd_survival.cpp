@@ -12,6 +12,7 @@
 #include "cli_common.hpp"
 #include "cli_registry.hpp"
 #include "forced_model.hpp"
+#include "trajectory_target.hpp"
 
 namespace blockdyn::cli {
 namespace {
@@ -36,20 +37,9 @@ void run(const CLI::App& s, const SurvivalFlags& f) {
   require_writable("plot", f.plot);
   require_writable("json-out", f.json_out);
   const ForcedModel fm = build_forced_model(s, f.m);
-  const SurvivalRun run_point = [&fm](const GroundMotion& g, double t_end) {
-    const ForcedOutcome r = fm.run(g, t_end);
-    SurvivalOutcome out;
-    out.moved = r.moved;
-    out.invalid = r.invalid;
-    out.collapse_mode = r.collapse_mode;
-    out.t_failure = r.t_failure;
-    out.max_abs_rotation = r.max_abs_rotation;
-    out.max_sliding = r.max_sliding;
-    return out;
-  };
   const std::size_t n = std::size_t(o.beta_points) * o.omega_points;
   Progress bar("survival", n, 0, f.quiet ? ProgressMode::None : parse_progress_mode(f.progress));
-  const auto pts = survival_map(run_point, o, fm.alpha, fm.p, [&](std::size_t) { bar.advance(); });
+  const auto pts = survival_map(fm.run, o, fm.alpha, fm.p, [&](std::size_t) { bar.advance(); });
   bar.finish();
 
   using json = nlohmann::ordered_json;
@@ -79,37 +69,27 @@ void run(const CLI::App& s, const SurvivalFlags& f) {
   }
   j["counts"] = {{"rest", counts[0]}, {"stable", counts[1]}, {"collapse", counts[2]}, {"invalid", counts[3]}};
   j["points"] = arr;
-  if (!f.out.empty() || !f.plot.empty()) {
-    const std::string path = f.out.empty() ? "/tmp/blockdyn-survival-" + std::to_string(::getpid()) + ".csv" : f.out;
-    {
-      AtomicFile out(path);
-      out.stream() << "beta,omega,motion,collapse_mode,t_failure,t_star_class,max_abs_rotation\n";
-      char buf[256];
-      for (const SurvivalPoint& p : pts) {
-        std::snprintf(buf, sizeof buf, "%.17g,%.17g,%s,", p.beta, p.omega, p.motion.c_str());
-        out.stream() << buf;
-        if (p.collapse_mode) out.stream() << *p.collapse_mode;
-        out.stream() << ',';
-        if (p.t_failure) {
-          std::snprintf(buf, sizeof buf, "%.17g", *p.t_failure);
-          out.stream() << buf;
-        }
-        std::snprintf(buf, sizeof buf, ",%s,%.17g\n", p.t_star_class.c_str(), p.max_abs_rotation);
-        out.stream() << buf;
+  // The table, or a temporary one when only the figure is asked for.
+  TrajectoryTarget table(f.out, f.plot);
+  if (table.file) {
+    std::ostream& os = table.file->stream();
+    os << "beta,omega,motion,collapse_mode,t_failure,t_star_class,max_abs_rotation\n";
+    char buf[256];
+    for (const SurvivalPoint& p : pts) {
+      std::snprintf(buf, sizeof buf, "%.17g,%.17g,%s,", p.beta, p.omega, p.motion.c_str());
+      os << buf;
+      if (p.collapse_mode) os << *p.collapse_mode;
+      os << ',';
+      if (p.t_failure) {
+        std::snprintf(buf, sizeof buf, "%.17g", *p.t_failure);
+        os << buf;
       }
-      out.commit();
+      std::snprintf(buf, sizeof buf, ",%s,%.17g\n", p.t_star_class.c_str(), p.max_abs_rotation);
+      os << buf;
     }
-    if (!f.plot.empty()) {
-      const std::string title = f.m.model + (f.m.preset.empty() ? "" : " " + f.m.preset) + ", " + o.excitation;
-      try {
-        run_python("plot_survival.py", {path, f.plot, "--title", title});
-      } catch (...) {
-        if (f.out.empty()) std::remove(path.c_str());
-        throw;
-      }
-    }
-    if (f.out.empty()) std::remove(path.c_str());
   }
+  const std::string title = f.m.model + (f.m.preset.empty() ? "" : " " + f.m.preset) + ", " + o.excitation;
+  table.figures_and_clean({{"plot_survival.py", f.plot, {"--title", title}}});
   if (!f.json_out.empty()) emit_json(j, f.json_out);
   if (f.json) emit_json(j, "-");
   if (!f.json && !f.quiet)
@@ -123,22 +103,14 @@ void add(CLI::App& app) {
       "survival", "survival domain over (beta, omega): rest, stable or collapse per point for a_H = beta alpha g "
                   "cos(Omega t + phase), omega = Omega/p (seed 002), harmonic or as a half-period pulse");
   add_forced_model_flags(*s, f->m);
-  s->add_option("--excitation", f->o.excitation, "harmonic (default), half-sine, half-cosine or rect (pulses last pi/Omega)")
-      ->check(CLI::IsMember({"harmonic", "half-sine", "half-cosine", "rect"}));
-  s->add_option("--phase", f->o.phase, "phase of cos(Omega t + phase) [rad] (default 0)");
+  add_excitation_grid_flags(*s, f->o);
   s->add_option("--beta-min", f->o.beta_min, "smallest beta (default 0.5)");
   s->add_option("--beta-max", f->o.beta_max, "largest beta (default 5)");
   s->add_option("--beta-points", f->o.beta_points, "betas, uniform (default 10)");
-  s->add_option("--omega-min", f->o.omega_min, "smallest omega = Omega/p (default 1)");
-  s->add_option("--omega-max", f->o.omega_max, "largest omega (default 20)");
-  s->add_option("--omega-points", f->o.omega_points, "omegas, uniform (default 10)");
-  s->add_option("--t-end", f->o.t_end, "duration of each run [s] (default 20)");
-  s->add_option("--periods", f->o.periods, "duration of each run in forcing periods (instead of --t-end)");
   s->add_option("--t-star-classes", f->o.t_star_classes,
                 "upper bounds [s] of the t* classes <=5 s, short, medium, long (default 5,30,100,300)")
       ->delimiter(',')
       ->expected(4);
-  s->add_option("--threads", f->o.threads, "worker threads (0: all cores; default 0)");
   s->add_option("--out", f->out, "write the points as CSV");
   s->add_option("--plot", f->plot, "plot the survival domain (PNG + SVG) in the style of seed 002");
   s->add_flag("--json", f->json, "print the JSON summary");

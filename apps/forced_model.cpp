@@ -30,6 +30,18 @@ void add_forced_model_flags(CLI::App& s, ForcedModelFlags& f) {
   s.add_option("--phi-l", f.phi_l, "assembly: friction angle between blocks [deg] (default 90)");
 }
 
+void add_excitation_grid_flags(CLI::App& s, SurvivalOptions& o) {
+  s.add_option("--excitation", o.excitation, "harmonic (default), half-sine, half-cosine or rect (pulses last pi/Omega)")
+      ->check(CLI::IsMember({"harmonic", "half-sine", "half-cosine", "rect"}));
+  s.add_option("--phase", o.phase, "phase of cos(Omega t + phase) [rad] (default 0)");
+  s.add_option("--omega-min", o.omega_min, "smallest omega = Omega/p (default 1)");
+  s.add_option("--omega-max", o.omega_max, "largest omega (default 20)");
+  s.add_option("--omega-points", o.omega_points, "omegas, uniform (default 10)");
+  s.add_option("--t-end", o.t_end, "duration of each run [s] (default 20): the transient window");
+  s.add_option("--periods", o.periods, "duration of each run in forcing periods (instead of --t-end)");
+  s.add_option("--threads", o.threads, "worker threads (0: all cores; default 0)");
+}
+
 ForcedModel build_forced_model(const CLI::App& s, const ForcedModelFlags& f) {
   ForcedModel fm;
   if (f.model == "housner" || f.model == "rigid") {
@@ -55,7 +67,7 @@ ForcedModel build_forced_model(const CLI::App& s, const ForcedModelFlags& f) {
       ro.t_end = t_end;
       ro.record_events = false;
       const RigidResult r = housner ? simulate_housner(rp.shape, rp.restitution, g, {}, ro) : simulate_rigid(rp, g, {}, ro);
-      ForcedOutcome out;
+      SurvivalOutcome out;
       out.moved = r.first_motion_time.has_value();
       out.max_abs_rotation = r.max_abs_rotation;
       out.invalid = r.status == SimStatus::Invalid || r.status == SimStatus::NumericalFailure;
@@ -96,7 +108,7 @@ ForcedModel build_forced_model(const CLI::App& s, const ForcedModelFlags& f) {
     ao.t_end = t_end;
     ao.record_events = false;
     const AssemblyResult r = simulate_assembly(a, g, ao);
-    ForcedOutcome out;
+    SurvivalOutcome out;
     out.moved = r.motion != "rest";
     out.collapse_mode = r.collapse_mode;
     out.t_failure = r.t_failure;

@@ -10,6 +10,7 @@
 #include <optional>
 #include <string>
 
+#include "blockdyn/analysis/forced/survival_map.hpp"
 #include "blockdyn/excitation/ground_motion.hpp"
 #include "blockdyn/model/assembly/assembly_params.hpp"
 
@@ -22,25 +23,21 @@ struct ForcedModelFlags {
   double phi_s = 90, phi_l = 90;
 };
 
-struct ForcedOutcome {
-  bool moved = false;                 // left rest at some time (a contact opened, closed or slipped)
-  std::optional<int> collapse_mode;   // 1 (rotation) or 2 (bearing); blocks: 1 when overturned
-  std::optional<double> t_failure;    // s
-  double max_abs_rotation = 0;        // rad (assemblies: the largest over the blocks)
-  double max_sliding = 0;             // m: assemblies, the largest slip between blocks (0 otherwise)
-  bool invalid = false;               // the run left the model's validity
-};
 
 struct ForcedModel {
   double alpha = 0, p = 0;  // of the (first) block: slenderness angle and frequency parameter
   double width = 0;         // of the (first) block (m): the scale of sliding
   nlohmann::ordered_json description;
   std::string overturn_rule;
-  // Thread-safe: one simulation from rest to t_end (s) under g.
-  std::function<ForcedOutcome(const GroundMotion& g, double t_end)> run;
+  // Thread-safe: one simulation from rest to t_end (s) under g, reduced to what the forced
+  // analyses classify (blocks: collapse mode 1 when overturned).
+  SurvivalRun run;
 };
 
 void add_forced_model_flags(CLI::App& s, ForcedModelFlags& f);
+// The excitation and frequency grid of survival and response-curve: --excitation, --phase,
+// --omega-min/max/points, --t-end, --periods, --threads.
+void add_excitation_grid_flags(CLI::App& s, SurvivalOptions& o);
 ForcedModel build_forced_model(const CLI::App& s, const ForcedModelFlags& f);
 
 }  // namespace blockdyn::cli

@@ -13,6 +13,25 @@
 using namespace blockdyn;
 using namespace blockdyn::test;
 
+namespace {
+
+// Whether Housner's block overturns under a pulse of the given shape, amplitude and duration,
+// followed by `t_after` seconds of free motion.
+OverturnTest housner_overturns(const BlockShape& shape, PulseShape pulse, double t_after) {
+  return [shape, pulse, t_after](double a, double d) {
+    GroundMotion g;
+    g.horizontal.pulse = pulse;
+    g.horizontal.amplitude = a;
+    g.horizontal.duration = d;
+    RigidRunOptions ro;
+    ro.t_end = d + t_after;
+    ro.record_events = false;
+    return simulate_housner(shape, std::nullopt, g, {}, ro).status == SimStatus::Overturned;
+  };
+}
+
+}  // namespace
+
 TEST(Spectrum, FindsTheLowestBandAndTheSafeIslandAbove) {
   // Overturns for a in [0.3 d, 0.5 d) and a >= 0.8 d: a safe island [0.5 d, 0.8 d).
   const OverturnTest t = [](double a, double d) { return (a >= 0.3 * d && a < 0.5 * d) || a >= 0.8 * d; };
@@ -39,18 +58,7 @@ TEST(Spectrum, FindsTheLowestBandAndTheSafeIslandAbove) {
 }
 
 TEST(Spectrum, ResultsDoNotDependOnTheThreadCount) {
-  RigidBlockParams p;
-  p.shape = {0.3, 1.5, 1.0, 9.81};
-  const OverturnTest t = [p](double a, double d) {
-    GroundMotion g;
-    g.horizontal.pulse = PulseShape::OneSine;
-    g.horizontal.amplitude = a;
-    g.horizontal.duration = d;
-    RigidRunOptions ro;
-    ro.t_end = d + 5;
-    ro.record_events = false;
-    return simulate_housner(p.shape, std::nullopt, g, {}, ro).status == SimStatus::Overturned;
-  };
+  const OverturnTest t = housner_overturns({0.3, 1.5, 1.0, 9.81}, PulseShape::OneSine, 5);
   SpectrumOptions o;
   o.durations = {0.25, 0.4, 0.7, 1.2};
   o.scan_points = 30;
@@ -71,16 +79,7 @@ TEST(Spectrum, HousnerRectangularPulseAgainstTheExactThresholdAndTheLinearLimit)
     RigidBlockParams p;
     p.shape = {b_over_h * 1.5, 1.5, 1.0, 9.81};
     const double alpha = p.shape.alpha(), pp = p.shape.p();
-    const OverturnTest t = [p](double a, double d) {
-      GroundMotion g;
-      g.horizontal.pulse = PulseShape::Rect;
-      g.horizontal.amplitude = a;
-      g.horizontal.duration = d;
-      RigidRunOptions ro;
-      ro.t_end = d + 10;
-      ro.record_events = false;
-      return simulate_housner(p.shape, std::nullopt, g, {}, ro).status == SimStatus::Overturned;
-    };
+    const OverturnTest t = housner_overturns(p.shape, PulseShape::Rect, 10);
     SpectrumOptions o;
     o.durations = {0.1, 0.3, 1.0};
     o.amplitude_min = 0.5 * std::tan(alpha);

@@ -108,19 +108,25 @@ class Simulation:
                 f"t_final={s.get('t_final')} rows={len(self.t)} events={len(self.events)}>")
 
 
-def simulate(scenario=None, **options):
-    """Runs `blockdyn simulate` (optionally from a TOML scenario) and returns a Simulation."""
+def _with_trajectory(command, positional, options):
+    """Runs COMMAND with a trajectory CSV and a JSON summary in a temporary directory; returns
+    ({column: array}, summary)."""
     for reserved in ("trajectory", "json", "json_out"):
         if reserved in options:
-            raise ValueError(f"{reserved}: set by blockdyn.simulate itself")
+            raise ValueError(f"{reserved}: set by blockdyn.{command} itself")
     with tempfile.TemporaryDirectory(prefix="blockdyn-py-") as tmp:
         traj = os.path.join(tmp, "trajectory.csv")
         summ = os.path.join(tmp, "summary.json")
         opts = dict(options, trajectory=traj, json_out=summ, quiet=True)
-        run(*_args("simulate", opts, [scenario] if scenario else []))
+        run(*_args(command, opts, [positional] if positional else []))
         with open(summ) as f:
             summary = json.load(f)
-        return Simulation(_read_csv(traj), summary)
+        return _read_csv(traj), summary
+
+
+def simulate(scenario=None, **options):
+    """Runs `blockdyn simulate` (optionally from a TOML scenario) and returns a Simulation."""
+    return Simulation(*_with_trajectory("simulate", scenario, options))
 
 
 class Assembly:
@@ -148,17 +154,7 @@ class Assembly:
 def assembly(file=None, **options):
     """Runs `blockdyn assembly` (a preset, e.g. preset="trilith", or an assembly TOML file) and
     returns an Assembly with NumPy arrays."""
-    for reserved in ("trajectory", "json", "json_out"):
-        if reserved in options:
-            raise ValueError(f"{reserved}: set by blockdyn.assembly itself")
-    with tempfile.TemporaryDirectory(prefix="blockdyn-py-") as tmp:
-        traj = os.path.join(tmp, "trajectory.csv")
-        summ = os.path.join(tmp, "summary.json")
-        opts = dict(options, trajectory=traj, json_out=summ, quiet=True)
-        run(*_args("assembly", opts, [file] if file else []))
-        with open(summ) as f:
-            summary = json.load(f)
-        return Assembly(_read_csv(traj), summary)
+    return Assembly(*_with_trajectory("assembly", file, options))
 
 
 def _json_command(command, options):
