@@ -33,6 +33,17 @@ void add_block_options(CLI::App& app, BlockParams& p) {
 void add_tolerance_options(CLI::App& app, IntegratorOptions& o) {
   app.add_option("--rtol", o.rtol, "relative tolerance of the integrator, in (0, 1)")->capture_default_str();
   app.add_option("--atol", o.atol, "absolute tolerance (scaled by 1/k for y), in (0, 1)")->capture_default_str();
+  add_method_option(app, o);
+}
+
+void add_method_option(CLI::App& app, IntegratorOptions& o) {
+  // A command whose own --method means something else (lyapunov) gets --integrator-method.
+  const char* flag = app.get_option_no_throw("--method") ? "--integrator-method" : "--method";
+  app.add_option_function<std::string>(
+         flag, [&o](const std::string& name) { o.method = method_from_string(name).value_or(Method::Auto); },
+         "Runge-Kutta pair: dopri5 (Dormand-Prince 5(4)), dop853 (8(5,3), 7th-order dense output) or auto "
+         "(dop853 when rtol < 1e-6; default)")
+      ->check(CLI::IsMember({"auto", "dopri5", "dop853"}));
 }
 
 std::string& current_command() {

@@ -25,6 +25,8 @@ inline bool given(const CLI::App& app, const std::string& name) { return app.cou
 void add_block_options(CLI::App& app, BlockParams& p);
 // --rtol --atol bound to o.
 void add_tolerance_options(CLI::App& app, IntegratorOptions& o);
+// --method dopri5|dop853|auto (part of add_tolerance_options; alone for commands with their own tolerances).
+void add_method_option(CLI::App& app, IntegratorOptions& o);
 
 // The subcommand being run (set by main before parsing): names the schema of its JSON outputs.
 std::string& current_command();

@@ -57,7 +57,7 @@ Assembly build(const CLI::App& s, const AssemblyFlags& f) {
   const bool rigid = f.contact == "rigid";
   require_range("restitution", f.restitution, rigid ? 0.0 : 1e-3, 1);
   if (rigid)
-    for (const char* n : {"--normal-stiffness", "--tangential-stiffness", "--rtol", "--atol"})
+    for (const char* n : {"--normal-stiffness", "--tangential-stiffness", "--rtol", "--atol", "--method"})
       if (given(s, n)) throw UsageError(std::string(n) + " belongs to --contact deformable (the rigid law has --step)");
   if (!rigid && given(s, "--step")) throw UsageError("--step belongs to --contact rigid");
   require_range("collapse-rotation", f.collapse_rotation, 0, 10, false);
@@ -210,6 +210,7 @@ void add(CLI::App& app) {
   s->add_option("--t-end", f->run.t_end, "duration [s] (default 10)");
   s->add_option("--rtol", f->run.integrator.rtol, "relative tolerance (default 1e-8)");
   s->add_option("--atol", f->run.integrator.atol, "absolute tolerance in m, rad, m/s, rad/s, J (default 1e-10)");
+  add_method_option(*s, f->run.integrator);
   s->add_option("--output-interval", f->run.output_interval, "trajectory interval [s] (0: every step; default 0.01)");
   s->add_option("--max-output-rows", f->max_output_rows, "refuse a trajectory of more rows than this (default 1e7)");
   s->add_option("--trajectory", f->trajectory, "write the trajectory CSV here");

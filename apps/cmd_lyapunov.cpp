@@ -89,11 +89,12 @@ void add(CLI::App& app) {
   auto f = std::make_shared<LyapunovFlags>();
   f->opt.t_end = 200;
   CLI::App* s = app.add_subcommand("lyapunov", "largest Lyapunov exponent along an orbit (two-trajectory renormalisation)");
-  add_orbit_options(*s, f->p, f->integ, f->ic);
-  s->add_option("--t-end", f->opt.t_end, "final time (> 0)")->capture_default_str();
+  // Lyapunov's --method (renormalisation) comes first: the integrator's is then --integrator-method.
   s->add_option("--method", f->method, "renormalise at fixed times (time) or on the w = 0 section (section)")
       ->check(CLI::IsMember({"time", "section"}))
       ->capture_default_str();
+  add_orbit_options(*s, f->p, f->integ, f->ic);
+  s->add_option("--t-end", f->opt.t_end, "final time (> 0)")->capture_default_str();
   s->add_option("--d0", f->opt.d0, "separation after each renormalisation, in [1e-14, 1e-2]")->capture_default_str();
   s->add_option("--interval", f->opt.interval, "time method: renormalisation interval (> 0)")->capture_default_str();
   s->add_option("--csv", f->csv, "write the convergence history (t, growth, estimate)");

@@ -122,6 +122,7 @@ Scenario build_scenario(const CLI::App& s, const SimulateFlags& f) {
   if (given(s, "--k")) sc.params.k = f.p.k;
   if (given(s, "--rtol")) sc.options.integrator.rtol = f.integ.rtol;
   if (given(s, "--atol")) sc.options.integrator.atol = f.integ.atol;
+  if (given(s, "--method")) sc.options.integrator.method = f.integ.method;
   if (given(s, "--t-end")) sc.options.t_end = f.t_end;
   if (given(s, "--output-interval")) sc.output_interval = f.output_interval;
   if (given(s, "--ic")) sc.initial.set = f.ic;

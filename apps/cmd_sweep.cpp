@@ -86,6 +86,7 @@ SweepSpec build_spec(const CLI::App& s, const SweepFlags& f) {
   if (given(s, "--t-end")) sp.options.t_end = f.t_end;
   if (given(s, "--rtol")) sp.options.integrator.rtol = f.integ.rtol;
   if (given(s, "--atol")) sp.options.integrator.atol = f.integ.atol;
+  if (given(s, "--method")) sp.options.integrator.method = f.integ.method;
   if (given(s, "--max-steps")) sp.options.integrator.max_steps = f.max_steps;
   if (given(s, "--stop-at-first-flight")) sp.options.stop_at_first_flight = f.stop_at_first_flight;
   if (given(s, "--stop-at-ihor")) sp.options.stop_at_ihor = f.stop_at_ihor;
@@ -206,6 +207,7 @@ RigidSweepSpec build_rigid_spec(const CLI::App& s, const SweepFlags& f, const st
   if (given(s, "--t-end")) sp.options.t_end = f.t_end;
   if (given(s, "--rtol")) sp.options.integrator.rtol = f.integ.rtol;
   if (given(s, "--atol")) sp.options.integrator.atol = f.integ.atol;
+  if (given(s, "--method")) sp.options.integrator.method = f.integ.method;
   if (given(s, "--max-steps")) sp.options.integrator.max_steps = f.max_steps;
   if (given(s, "--no-energy")) sp.options.track_energy = false;
   for (const auto& a : f.axes) {

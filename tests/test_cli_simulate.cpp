@@ -194,6 +194,7 @@ TEST_F(CliSimulate, BadInputIsRejectedCleanly) {
   write("not_a_number.toml", "[run]\nt_end = \"long\"\n");
   write("nan.toml", "[run]\nt_end = nan\n");
   write("neg_k.toml", "[block]\nk = -3.0\n");
+  write("bad_method.toml", "[run]\nmethod = \"euler\"\n");
   struct Case {
     std::vector<std::string> args;
     std::string field;
@@ -223,6 +224,8 @@ TEST_F(CliSimulate, BadInputIsRejectedCleanly) {
       {{"--ic", "custom", "--y0", "-0.6"}, "corners"},
       {{"--ic", "custom", "--w0", "nan"}, "w0"},
       {{"--ic", "ic9"}, "--ic"},
+      {{"--method", "rk4"}, "--method"},
+      {{"bad_method.toml"}, "run.method"},
       {{"unknown_key.toml"}, "muu"},
       {{"unknown_table.toml"}, "blok"},
       {{"not_a_number.toml"}, "run.t_end"},
@@ -247,4 +250,37 @@ TEST_F(CliSimulate, BadInputIsRejectedCleanly) {
     // Nothing written, no temporary left behind.
     EXPECT_EQ(files(), before) << desc;
   }
+}
+
+TEST_F(CliSimulate, BothRungeKuttaPairsGiveTheSameEventsAndRecordWhichRan) {
+  // ic2 on a soft foundation with slides, lift-offs and landings (318 events in 10 time units):
+  // both pairs at rtol 1e-11 give the event sequence of a dop853 reference at rtol 1e-13, at
+  // times whose deviation grows with t (measured: dopri5 up to 8e-8, dop853 up to 3e-8 by t = 10);
+  // the JSON says which pair ran (auto picks dop853 below rtol 1e-6); dop853 takes far fewer steps.
+  auto run = [&](const std::string& method, const std::string& rtol) {
+    const CliRun r = simulate({"--r", "0.5", "--k", "1e4", "--mu", "0.2", "--ic", "ic2", "--t-end", "10",
+                               "--rtol", rtol, "--method", method, "--json", "--quiet"});
+    EXPECT_EQ(r.code, 0) << r.err;
+    return json::parse(r.out);
+  };
+  const json a = run("dopri5", "1e-11"), b = run("dop853", "1e-11"), c = run("auto", "1e-11");
+  const json ref = run("dop853", "1e-13");
+  EXPECT_EQ(a["tolerances"]["method"], "dopri5");
+  EXPECT_EQ(b["tolerances"]["method"], "dop853");
+  EXPECT_EQ(c["tolerances"]["method"], "dop853");
+  EXPECT_EQ(b["events"], c["events"]);
+  ASSERT_GT(ref["events"].size(), 300u);
+  double dev_a = 0, dev_b = 0;
+  for (const json* x : {&a, &b}) {
+    ASSERT_EQ((*x)["events"].size(), ref["events"].size());
+    for (std::size_t i = 0; i < ref["events"].size(); ++i) {
+      EXPECT_EQ((*x)["events"][i]["kind"], ref["events"][i]["kind"]) << i;
+      const double d = std::fabs((*x)["events"][i]["t"].get<double>() - ref["events"][i]["t"].get<double>());
+      (x == &a ? dev_a : dev_b) = std::fmax(x == &a ? dev_a : dev_b, d);
+    }
+  }
+  EXPECT_LT(dev_a, 2e-7);
+  EXPECT_LT(dev_b, 1e-7);
+  EXPECT_LT(dev_b, dev_a);
+  EXPECT_LT(3 * b["steps"].get<long>(), a["steps"].get<long>());
 }

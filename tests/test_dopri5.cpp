@@ -151,7 +151,9 @@ struct Recorder {
   std::vector<double> times;
   std::vector<Vec<2>> states;
   template <class Seg, class M>
-  bool on_step(const Seg&, double, double, const M&) { return true; }
+  bool on_step(const Seg&, double, double, const M&) {
+    return true;
+  }
   template <class Info>
   bool on_event(const Info& e) {
     times.push_back(e.t);
@@ -184,8 +186,9 @@ struct Ball {
 // Runs `model` from z, reflecting the velocity (component 1) at every stopping event.
 template <class M>
 std::vector<double> bounce_times(const M& model, Vec<2> z, double t_end, double rtol, int max_events,
-                                 std::vector<Vec<2>>* states = nullptr) {
+                                 std::vector<Vec<2>>* states = nullptr, Method method = Method::Auto) {
   IntegratorOptions o;
+  o.method = method;
   o.rtol = rtol;
   o.atol = rtol * 1e-2;
   std::vector<double> times;
@@ -209,14 +212,22 @@ struct WallStop : WallOscillator {
 
 }  // namespace
 
+// The event tests run on both Runge-Kutta pairs.
+constexpr Method kMethods[] = {Method::Dopri5, Method::Dop853};
+
 TEST(HybridIntegrator, BouncingBallEventTimesAreExact) {
   const double H = 1.3;
   const double t1 = std::sqrt(2 * H);
-  const auto times = bounce_times(Ball{}, {H, 0.0}, 40.0, 1e-10, 100);
-  ASSERT_EQ(times.size(), std::size_t(std::floor((40.0 / t1 + 1) / 2)));
-  for (std::size_t n = 0; n < times.size(); ++n) {
-    const double expect = (2.0 * n + 1) * t1;
-    EXPECT_NEAR(times[n], expect, 1e-14 * expect) << "bounce " << n;
+  for (Method method : kMethods) {
+    SCOPED_TRACE(to_string(method));
+    const auto times = bounce_times(Ball{}, {H, 0.0}, 40.0, 1e-10, 100, nullptr, method);
+    ASSERT_EQ(times.size(), std::size_t(std::floor((40.0 / t1 + 1) / 2)));
+    for (std::size_t n = 0; n < times.size(); ++n) {
+      const double expect = (2.0 * n + 1) * t1;
+      // Exact arithmetic would give the bounce times exactly; rounding accumulates over the
+      // bounces, a little more in DOP853's longer stage sums (about 5 ulps per bounce).
+      EXPECT_NEAR(times[n], expect, (method == Method::Dop853 ? 2e-14 : 1e-14) * expect) << "bounce " << n;
+    }
   }
 }
 
@@ -225,15 +236,18 @@ TEST(HybridIntegrator, WallOscillatorEventTimesToRoundoff) {
   const double t1 = std::acos(a);
   WallStop m;
   m.wall = a;
-  std::vector<Vec<2>> states;
-  const auto times = bounce_times(m, {1.0, 0.0}, 30.0, 1e-13, 100, &states);
-  ASSERT_EQ(times.size(), std::size_t(std::floor((30.0 / t1 + 1) / 2)));
-  for (std::size_t n = 0; n < times.size(); ++n) {
-    const double expect = (2.0 * n + 1) * t1;
-    EXPECT_NEAR(times[n], expect, 1e-13 * expect) << "impact " << n;
-    EXPECT_NEAR(states[n][0], a, 1e-13);
-    // The speed drifts like the global error: a few 1e-14 per half arc.
-    EXPECT_NEAR(std::fabs(states[n][1]), std::sqrt(1 - a * a), 1e-13 * (n + 1));
+  for (Method method : kMethods) {
+    SCOPED_TRACE(to_string(method));
+    std::vector<Vec<2>> states;
+    const auto times = bounce_times(m, {1.0, 0.0}, 30.0, 1e-13, 100, &states, method);
+    ASSERT_EQ(times.size(), std::size_t(std::floor((30.0 / t1 + 1) / 2)));
+    for (std::size_t n = 0; n < times.size(); ++n) {
+      const double expect = (2.0 * n + 1) * t1;
+      EXPECT_NEAR(times[n], expect, 1e-13 * expect) << "impact " << n;
+      EXPECT_NEAR(states[n][0], a, 1e-13);
+      // The speed drifts like the global error: a few 1e-14 per half arc.
+      EXPECT_NEAR(std::fabs(states[n][1]), std::sqrt(1 - a * a), 1e-13 * (n + 1));
+    }
   }
 }
 
@@ -268,10 +282,11 @@ struct GrazingRun {
   int event_samples;          // event-function samples per step
 };
 
-GrazingRun run_grazing(double c, double t_end) {
+GrazingRun run_grazing(double c, double t_end, Method method) {
   Grazing m;
   m.c = c;
   IntegratorOptions o;
+  o.method = method;
   o.rtol = 1e-12;
   o.atol = 1e-14;
   HybridIntegrator<Grazing> integ(m, o);
@@ -288,32 +303,37 @@ TEST(HybridIntegrator, EventFunctionZeroAtRestartDoesNotRefire) {
   // Each transition turns the event function round (c - x, then x - c), so it restarts at zero
   // and grows: it must not fire again at the restart instant. x = sin t crosses c = 0.3 at
   // asin(c), pi - asin(c), 2 pi + asin(c), ...: exactly these, no extra zero-time events.
-  const GrazingRun run = run_grazing(0.3, 20.0);
-  EXPECT_EQ(run.status, RunStatus::ReachedEnd);
-  std::vector<double> expect;
-  for (int n = 0; n < 4; ++n) {
-    expect.push_back(2 * M_PI * n + std::asin(0.3));
-    expect.push_back(2 * M_PI * n + M_PI - std::asin(0.3));
+  for (Method method : kMethods) {
+    SCOPED_TRACE(to_string(method));
+    const GrazingRun run = run_grazing(0.3, 20.0, method);
+    EXPECT_EQ(run.status, RunStatus::ReachedEnd);
+    std::vector<double> expect;
+    for (int n = 0; n < 4; ++n) {
+      expect.push_back(2 * M_PI * n + std::asin(0.3));
+      expect.push_back(2 * M_PI * n + M_PI - std::asin(0.3));
+    }
+    while (expect.back() > 20.0) expect.pop_back();
+    ASSERT_EQ(run.times.size(), expect.size());
+    for (std::size_t i = 0; i < expect.size(); ++i) EXPECT_NEAR(run.times[i], expect[i], 1e-11 * expect[i]);
   }
-  while (expect.back() > 20.0) expect.pop_back();
-  ASSERT_EQ(run.times.size(), expect.size());
-  for (std::size_t i = 0; i < expect.size(); ++i) EXPECT_NEAR(run.times[i], expect[i], 1e-11 * expect[i]);
 }
 
 TEST(HybridIntegrator, BriefExcursionBetweenSamplesIsNotSkipped) {
-  for (double depth : {1e-4, 1e-6, 1e-8}) {
-    const double c = 1.0 - depth;
-    const GrazingRun run = run_grazing(c, 3.0);
-    const double half = std::acos(c);  // sin t > c for |t - pi/2| < acos(c)
-    ASSERT_EQ(run.times.size(), 2u) << "depth " << depth;
-    // Near the peak a state error dx moves the crossing by dx / |x'| = dx / sin(half).
-    const double tol = 1e-12 / std::sin(half);
-    EXPECT_NEAR(run.times[0], M_PI / 2 - half, tol) << depth;
-    EXPECT_NEAR(run.times[1], M_PI / 2 + half, tol) << depth;
-    // For the shallowest dip the excursion is shorter than the spacing of the event samples
-    // (else the test would prove nothing).
-    if (depth <= 1e-8) {
-      EXPECT_LT(2 * half, 3.0 / run.accepted / run.event_samples);
+  for (Method method : kMethods)
+    for (double depth : {1e-4, 1e-6, 1e-8}) {
+      SCOPED_TRACE(to_string(method));
+      const double c = 1.0 - depth;
+      const GrazingRun run = run_grazing(c, 3.0, method);
+      const double half = std::acos(c);  // sin t > c for |t - pi/2| < acos(c)
+      ASSERT_EQ(run.times.size(), 2u) << "depth " << depth;
+      // Near the peak a state error dx moves the crossing by dx / |x'| = dx / sin(half).
+      const double tol = 1e-12 / std::sin(half);
+      EXPECT_NEAR(run.times[0], M_PI / 2 - half, tol) << depth;
+      EXPECT_NEAR(run.times[1], M_PI / 2 + half, tol) << depth;
+      // For the shallowest dip the excursion is shorter than the spacing of the event samples
+      // (else the test would prove nothing).
+      if (depth <= 1e-8) {
+        EXPECT_LT(2 * half, 3.0 / run.accepted / run.event_samples);
+      }
     }
-  }
 }

@@ -26,14 +26,21 @@ struct OneCornerEnergy : SimulationSink {
   double e0 = 0, max_dev = 0;
   long samples = 0;
   bool two_seen = false, nonpot_moved = false;
-  void on_segment(const WinklerBlock& m, const DenseSegment<kStateDim>& seg, double, double t1,
+  // Four points of every step's dense output (the step's end and three inside it), up to the
+  // first step that ends with two corners submerged.
+  void on_segment(const WinklerBlock& m, const DenseSegment<kStateDim>& seg, double t0, double t1,
                   const BlockMode& mode) override {
-    const BlockStateVec z = completed_state(m, seg, mode, t1);
-    if (m.forces(t1, mode, z).corners_below > 1) two_seen = true;
-    if (two_seen) return;
-    ++samples;
-    max_dev = std::fmax(max_dev, std::fabs(energy(m.params(), z).total() - e0));
-    nonpot_moved |= z[kWorkNonPotential] != 0.0;
+    if (two_seen || m.forces(t1, mode, completed_state(m, seg, mode, t1)).corners_below > 1) {
+      two_seen = true;
+      return;
+    }
+    for (int j = 1; j <= 4; ++j) {
+      const double t = j == 4 ? t1 : t0 + 0.25 * j * (t1 - t0);
+      const BlockStateVec z = completed_state(m, seg, mode, t);
+      ++samples;
+      max_dev = std::fmax(max_dev, std::fabs(energy(m.params(), z).total() - e0));
+      nonpot_moved |= z[kWorkNonPotential] != 0.0;
+    }
   }
 };
 

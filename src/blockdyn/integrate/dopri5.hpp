@@ -3,37 +3,15 @@
 // Dormand-Prince 5(4) embedded Runge-Kutta pair with FSAL and the order-4 continuous
 // extension of Hairer, Norsett & Wanner (Solving ODEs I, sec. II.6). Fixed-size state,
 // no allocation: everything lives in std::array members.
+//
+// Step-size control constants (Hairer & Wanner, IV.2): error exponent 1/5 with the PI term.
 #include <array>
 #include <cmath>
 #include <cstddef>
 
+#include "blockdyn/integrate/dense_segment.hpp"
+
 namespace blockdyn {
-
-template <std::size_t N>
-using Vec = std::array<double, N>;
-
-// Dense output of one accepted step [t0, t0 + h]: y(t0 + theta h) for theta in [0, 1].
-template <std::size_t N>
-struct DenseSegment {
-  double t0 = 0.0;
-  double h = 0.0;
-  Vec<N> r1{}, r2{}, r3{}, r4{}, r5{};
-
-  double t1() const { return t0 + h; }
-
-  void eval(double t, Vec<N>& y) const {
-    const double th = (t - t0) / h;
-    const double th1 = 1.0 - th;
-    for (std::size_t i = 0; i < N; ++i)
-      y[i] = r1[i] + th * (r2[i] + th1 * (r3[i] + th * (r4[i] + th1 * r5[i])));
-  }
-};
-
-struct StepperStats {
-  long accepted = 0;
-  long rejected = 0;
-  long rhs_evals = 0;
-};
 
 // Tableau (Dormand & Prince 1980) and dense-output weights (Shampine / Hairer).
 namespace dp5 {
@@ -59,6 +37,10 @@ inline constexpr double d1 = -12715105075.0 / 11282082432, d3 = 87487479700.0 / 
 template <std::size_t N>
 class Dopri5 {
  public:
+  static constexpr double kAlpha = 0.17;  // PI control: err^-alpha * err_old^beta (0.2 - 0.75 beta)
+  static constexpr double kBeta = 0.04;
+  static constexpr double kOrderExponent = 0.2;         // 1 / (order of the error estimate + 1)
+  static constexpr double kFacMin = 0.2, kFacMax = 5.0;  // bounds of one step-size change
   Vec<N> atol{}, rtol{};
 
   template <class Rhs>
@@ -100,16 +82,23 @@ class Dopri5 {
     using namespace dp5;
     seg.t0 = t;
     seg.h = h;
+    seg.terms = 5;
     for (std::size_t i = 0; i < N; ++i) {
       const double ydiff = y_new[i] - y[i];
       const double bspl = h * k1[i] - ydiff;
-      seg.r1[i] = y[i];
-      seg.r2[i] = ydiff;
-      seg.r3[i] = bspl;
-      seg.r4[i] = ydiff - h * k7[i] - bspl;
-      seg.r5[i] = h * (d1 * k1[i] + d3 * k3_[i] + d4 * k4_[i] + d5 * k5_[i] + d6 * k6_[i] +
-                       d7 * k7[i]);
+      seg.r[0][i] = y[i];
+      seg.r[1][i] = ydiff;
+      seg.r[2][i] = bspl;
+      seg.r[3][i] = ydiff - h * k7[i] - bspl;
+      seg.r[4][i] = h * (d1 * k1[i] + d3 * k3_[i] + d4 * k4_[i] + d5 * k5_[i] + d6 * k6_[i] +
+                         d7 * k7[i]);
     }
+  }
+  // The same with the integrator's common signature (this extension needs no further stages).
+  template <class Rhs>
+  void dense(Rhs&&, double t, double h, const Vec<N>& y, const Vec<N>& y_new, const Vec<N>& k1,
+             const Vec<N>& k7, DenseSegment<N>& seg, StepperStats&) const {
+    dense(t, h, y, y_new, k1, k7, seg);
   }
 
  private:

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 #pragma once
-// Generic integrator for piecewise-smooth (hybrid) systems: adaptive Dormand-Prince 5(4),
-// event location on the dense output by bracketing + TOMS 748, restart at each event.
+// Generic integrator for piecewise-smooth (hybrid) systems: adaptive Dormand-Prince, 5(4) or
+// 8(5,3) chosen per run (IntegratorOptions::method), event location on the dense output by bracketing + TOMS 748,
+// restart at each event.
 //
 // A model supplies (see HybridModel below): the state size, a Mode type, right-hand sides per
 // mode, event functions that must stay >= 0 while a mode is valid, the transition map applied
@@ -17,10 +18,12 @@
 #include <cstddef>
 #include <limits>
 #include <optional>
+#include <string>
 #include <utility>
 
 #include <boost/math/tools/minima.hpp>
 
+#include "blockdyn/integrate/dop853.hpp"
 #include "blockdyn/integrate/dopri5.hpp"
 #include "blockdyn/integrate/root_bracket.hpp"
 
@@ -54,15 +57,45 @@ enum class RunStatus { ReachedEnd, ModelStop, ObserverStop, MaxSteps, StepUnderf
 
 inline const char* to_string(RunStatus s) {
   switch (s) {
-    case RunStatus::ReachedEnd: return "t_end";
-    case RunStatus::ModelStop: return "model_stop";
-    case RunStatus::ObserverStop: return "observer_stop";
-    case RunStatus::MaxSteps: return "max_steps";
-    case RunStatus::StepUnderflow: return "step_underflow";
-    case RunStatus::Chatter: return "chatter";
-    case RunStatus::NonFinite: return "non_finite";
+    case RunStatus::ReachedEnd:
+      return "t_end";
+    case RunStatus::ModelStop:
+      return "model_stop";
+    case RunStatus::ObserverStop:
+      return "observer_stop";
+    case RunStatus::MaxSteps:
+      return "max_steps";
+    case RunStatus::StepUnderflow:
+      return "step_underflow";
+    case RunStatus::Chatter:
+      return "chatter";
+    case RunStatus::NonFinite:
+      return "non_finite";
   }
   return "?";
+}
+
+// The Runge-Kutta pair. Auto: DOP853 at tolerances where its higher order pays (rtol below
+// kDop853BelowRtol), Dopri5 above.
+enum class Method { Auto, Dopri5, Dop853 };
+inline constexpr double kDop853BelowRtol = 1e-6;
+
+inline const char* to_string(Method m) {
+  switch (m) {
+    case Method::Auto:
+      return "auto";
+    case Method::Dopri5:
+      return "dopri5";
+    case Method::Dop853:
+      return "dop853";
+  }
+  return "?";
+}
+
+inline std::optional<Method> method_from_string(const std::string& s) {
+  for (Method m : {Method::Auto, Method::Dopri5, Method::Dop853})
+    if (s == to_string(m)) return m;
+  return std::nullopt;
 }
 
 struct IntegratorOptions {
@@ -70,18 +103,29 @@ struct IntegratorOptions {
   double atol = 1e-12;
   double h_max = std::numeric_limits<double>::infinity();
   long max_steps = 200'000'000;
-  int event_samples = 4;  // event functions are checked at this many points per step
+  int event_samples = 4;   // event functions are checked at this many points per step
   int chatter_limit = 16;  // consecutive zero-duration events before resolve_chatter()
+  Method method = Method::Auto;
 };
+
+// The pair a run with these options uses.
+inline Method resolved_method(const IntegratorOptions& o) {
+  if (o.method != Method::Auto) return o.method;
+  return o.rtol < kDop853BelowRtol ? Method::Dop853 : Method::Dopri5;
+}
 
 // The model's first input breakpoint after t that matters in mode `mode`:
 // `double next_breakpoint(double t, const Mode&) const` or `double next_breakpoint(double t) const`
 // (optional; without either the input is smooth and there is none).
 template <class M>
 double next_breakpoint_of(const M& m, double t, const typename M::Mode& mode) {
-  if constexpr (requires { { m.next_breakpoint(t, mode) } -> std::convertible_to<double>; })
+  if constexpr (requires {
+                  { m.next_breakpoint(t, mode) } -> std::convertible_to<double>;
+                })
     return m.next_breakpoint(t, mode);
-  else if constexpr (requires { { m.next_breakpoint(t) } -> std::convertible_to<double>; })
+  else if constexpr (requires {
+                       { m.next_breakpoint(t) } -> std::convertible_to<double>;
+                     })
     return m.next_breakpoint(t);
   return std::numeric_limits<double>::infinity();
 }
@@ -116,11 +160,12 @@ class HybridIntegrator {
   using State = Vec<N>;
   using Events = std::array<double, NE>;
 
-  HybridIntegrator(const Model& model, IntegratorOptions opt) : model_(model), opt_(opt) {
+  HybridIntegrator(const Model& model, IntegratorOptions opt)
+      : model_(model), opt_(opt), high_order_(resolved_method(opt) == Method::Dop853) {
     const State sc = model_.abs_tol_scale();
     for (std::size_t i = 0; i < N; ++i) {
-      stepper_.atol[i] = opt_.atol * sc[i];
-      stepper_.rtol[i] = opt_.rtol;
+      dopri5_.atol[i] = dop853_.atol[i] = opt_.atol * sc[i];
+      dopri5_.rtol[i] = dop853_.rtol[i] = opt_.rtol;
     }
   }
 
@@ -153,13 +198,14 @@ class HybridIntegrator {
       if (last) h = t_end - t;
       if (to_break) h = t_break - t;
       t_clamp = to_break ? std::nextafter(t_break, -INFINITY) : std::numeric_limits<double>::infinity();
-      const double err = stepper_.attempt(f, t, h, z, k1, y_new, k7, stats_);
+      const double err = attempt(f, t, h, z, k1, y_new, k7);
       if (!(err <= 1.0)) {
         if (const auto failure = shrink_rejected_step(err, t, h)) return *failure;
         continue;
       }
       ++stats_.accepted;
-      stepper_.dense(t, h, z, y_new, k1, k7, seg);
+      if (high_order_ && dop853_.stiffness() > 6.1) ++stats_.stiff_steps;
+      dense(f, t, h, z, y_new, k1, k7, seg);
       const double t_next = last ? t_end : (to_break ? t_break : t + h);
       const auto hit = scan_events(seg, t, t_next, y_new, mode, g_start);
       // A step shortened to land on t_end or a breakpoint says little about the step size the
@@ -189,7 +235,7 @@ class HybridIntegrator {
         continue;
       }
       // An event inside the step: keep the trajectory up to it, apply the transition, restart.
-      const double te = hit->t;
+      double te = hit->t;
       State ze = z;
       if (te > t) {
         // The accepted step straddles the event, where the right-hand side is usually not
@@ -197,9 +243,10 @@ class HybridIntegrator {
         // One fresh step from t to te stays on the smooth side and gives the event state the
         // accuracy of an ordinary step end.
         State k7e;
-        const double err_e = stepper_.attempt(f, t, te - t, z, k1, ze, k7e, stats_);
+        const double err_e = attempt(f, t, te - t, z, k1, ze, k7e);
         if (std::isfinite(err_e)) {
-          stepper_.dense(t, te - t, z, ze, k1, k7e, seg);
+          dense(f, t, te - t, z, ze, k1, k7e, seg);
+          polish_event(f, t, t_next, hit->index, mode, z, k1, te, ze, seg);
         } else {
           seg.eval(te, ze);
         }
@@ -237,8 +284,7 @@ class HybridIntegrator {
   // change the state; observers see it with the state before and after; the event functions
   // restart. Returns the run's end status when the model or an observer stops it.
   template <class Observer>
-  std::optional<RunStatus> apply_transition(double t, int index, Mode& mode, State& z, Events& g_start,
-                                            Observer& obs) {
+  std::optional<RunStatus> apply_transition(double t, int index, Mode& mode, State& z, Events& g_start, Observer& obs) {
     const State z_before = z;
     const Transition<Mode> tr = model_.transition(t, mode, z, index);
     EventInfo<Mode, N> info{t, z, z_before, mode, tr.next, index, tr.kind, tr.stop};
@@ -261,34 +307,91 @@ class HybridIntegrator {
     int index;
   };
 
+  template <class F>
+  double attempt(F& f, double t, double h, const State& y, const State& k1, State& y_new, State& k_end) {
+    return high_order_ ? dop853_.attempt(f, t, h, y, k1, y_new, k_end, stats_)
+                       : dopri5_.attempt(f, t, h, y, k1, y_new, k_end, stats_);
+  }
+
+  template <class F>
+  void dense(F& f, double t, double h, const State& y, const State& y_new, const State& k1, const State& k_end,
+             DenseSegment<N>& seg) {
+    if (high_order_)
+      dop853_.dense(f, t, h, y, y_new, k1, k_end, seg, stats_);
+    else
+      dopri5_.dense(t, h, y, y_new, k1, k_end, seg);
+  }
+
+  // The fresh step to the event time te ends where the step's own solution is, which differs
+  // from the straddling step's interpolant (where te was found) by up to the local error: the
+  // event function is then not quite zero there. One Newton correction on the fresh step's dense
+  // output, and a fresh step to the corrected time, put the event state on the event surface to
+  // rounding. Kept only if it reduces |g| and stays a small move inside the step.
+  template <class F>
+  void polish_event(F& f, double t, double t_next, int index, const Mode& mode, const State& z, const State& k1,
+                    double& te, State& ze, DenseSegment<N>& seg) {
+    auto g_at = [&](double tt, State y) {
+      Events ge;
+      model_.complete(mode, y);
+      model_.events(std::fmin(tt, *t_clamp_), mode, y, ge);
+      return ge[std::size_t(index)];
+    };
+    const double g_e = g_at(te, ze);
+    if (g_e == 0.0 || !std::isfinite(g_e)) return;
+    const double d = 1e-3 * (te - t);
+    State zd;
+    seg.eval(te - d, zd);
+    const double slope = (g_e - g_at(te - d, zd)) / d;
+    if (!(std::fabs(slope) > 0.0) || !std::isfinite(slope)) return;
+    const double tn = te - g_e / slope;
+    if (!(tn > t) || !(tn <= t_next) || tn == te || std::fabs(tn - te) > 1e-3 * (te - t)) return;
+    State zn, kn;
+    if (!std::isfinite(attempt(f, t, tn - t, z, k1, zn, kn))) return;
+    if (!(std::fabs(g_at(tn, zn)) < std::fabs(g_e))) return;
+    te = tn;
+    ze = zn;
+    dense(f, t, tn - t, z, zn, k1, kn, seg);
+  }
+
   // After a rejected step: shrink h, or report why integration cannot go on.
   std::optional<RunStatus> shrink_rejected_step(double err, double t, double& h) {
     ++stats_.rejected;
+    just_rejected_ = true;
     if (!std::isfinite(err) && h < 1e-300) return RunStatus::NonFinite;
-    h *= std::isfinite(err) ? std::fmax(0.2, 0.9 * std::pow(err, -0.2)) : 0.1;
+    const double expo = high_order_ ? Dop853<N>::kOrderExponent : Dopri5<N>::kOrderExponent;
+    const double fac_min = high_order_ ? Dop853<N>::kFacMin : Dopri5<N>::kFacMin;
+    h *= std::isfinite(err) ? std::fmax(fac_min, 0.9 * std::pow(err, -expo)) : 0.1;
     if (h <= 16.0 * std::numeric_limits<double>::epsilon() * std::fmax(1.0, std::fabs(t)))
       return RunStatus::StepUnderflow;
     return std::nullopt;
   }
 
-  // Proportional-integral step-size control after an accepted step (Hairer & Wanner, IV.2).
-  double next_step_size(double err, double h, double& err_old) const {
+  // Proportional-integral step-size control after an accepted step (Hairer & Wanner, IV.2);
+  // with DOP853, right after a rejection the step may not grow (Hairer's safeguard against
+  // oscillating between rejection and growth).
+  double next_step_size(double err, double h, double& err_old) {
     const double e = std::fmax(err, 1e-10);
-    const double fac = std::fmin(5.0, std::fmax(0.2, 0.9 * std::pow(e, -0.17) * std::pow(err_old, 0.04)));
+    double fac;
+    if (high_order_) {
+      fac = std::fmin(Dop853<N>::kFacMax, std::fmax(Dop853<N>::kFacMin, 0.9 * std::pow(e, -Dop853<N>::kAlpha)));
+    } else {
+      fac = std::fmin(Dopri5<N>::kFacMax, std::fmax(Dopri5<N>::kFacMin, 0.9 * std::pow(e, -Dopri5<N>::kAlpha) *
+                                                                            std::pow(err_old, Dopri5<N>::kBeta)));
+    }
+    if (just_rejected_ && high_order_) fac = std::fmin(fac, 1.0);
+    just_rejected_ = false;
     err_old = e;
     return std::fmin(h * fac, opt_.h_max);
   }
 
-  double initial_step(const Mode& mode) const {
-    return std::fmin(model_.step_hint(mode), std::fmin(opt_.h_max, 1e-2));
-  }
+  double initial_step(const Mode& mode) const { return std::fmin(model_.step_hint(mode), std::fmin(opt_.h_max, 1e-2)); }
 
   // Checks the event functions at `event_samples` points of the step; returns the earliest root.
   // Besides sign changes between samples it looks for excursions below zero that start and end
   // between two samples (a brief flight, a short slide): wherever the samples of a function
   // have a local minimum, the minimum is located on the dense output and checked.
-  std::optional<Hit> scan_events(const DenseSegment<N>& seg, double t0, double t1,
-                                 const State& y1, const Mode& mode, const Events& g0) {
+  std::optional<Hit> scan_events(const DenseSegment<N>& seg, double t0, double t1, const State& y1, const Mode& mode,
+                                 const Events& g0) {
     const int S = std::clamp(opt_.event_samples, 1, kMaxSamples);
     std::array<double, kMaxSamples + 1> ts;
     std::array<Events, kMaxSamples + 1> gs;
@@ -317,15 +420,13 @@ class HybridIntegrator {
     if (slope_unknown_) {
       Events g_after_start;
       g_all(t0 + 1e-3 * (ts[1] - t0), g_after_start);
-      for (std::size_t i = 0; i < NE; ++i)
-        falling_[i] = falling_[i] && g_after_start[i] < g0[i];
+      for (std::size_t i = 0; i < NE; ++i) falling_[i] = falling_[i] && g_after_start[i] < g0[i];
       slope_unknown_ = false;
     }
     // Falling into the step end: one more value just before t1 tells whether a minimum lies
     // inside the last interval (the next step could not see it).
     bool any_falling_end = false;
-    for (std::size_t i = 0; i < NE; ++i)
-      any_falling_end |= armed_[i] && gs[S][i] > 0.0 && gs[S][i] < gs[S - 1][i];
+    for (std::size_t i = 0; i < NE; ++i) any_falling_end |= armed_[i] && gs[S][i] > 0.0 && gs[S][i] < gs[S - 1][i];
     Events g_before_end{};
     if (any_falling_end) g_all(t1 - 1e-3 * (t1 - ts[S - 1]), g_before_end);
 
@@ -416,7 +517,10 @@ class HybridIntegrator {
   static constexpr double kDipReach = 100.0;
   const Model& model_;
   IntegratorOptions opt_;
-  Dopri5<N> stepper_;
+  bool high_order_;
+  bool just_rejected_ = false;
+  Dopri5<N> dopri5_;
+  Dop853<N> dop853_;
   StepperStats stats_;
   std::array<bool, NE> armed_{};
   std::array<bool, NE> falling_{};  // event function still decreasing at the last step end

@@ -33,7 +33,8 @@ json to_json(const GroundMotion& g) {
 }
 
 json to_json(const IntegratorOptions& o) {
-  return {{"method", "dopri5(4) dense output, TOMS748 event location"},
+  return {{"method", to_string(resolved_method(o))},
+          {"event_location", "TOMS748 on the dense output"},
           {"rtol", o.rtol},
           {"atol", o.atol},
           {"event_samples", o.event_samples},

@@ -117,7 +117,8 @@ Scenario parse_scenario(const std::string& text, const std::string& source, cons
     toml_read::read_state_overrides(*i, "initial", s.initial);
   }
   if (const auto* r = sub(root, source, "run")) {
-    check_keys(*r, "run", {"t_end", "t_start", "rtol", "atol", "output_interval", "max_steps", "event_samples"});
+    check_keys(*r, "run", {"t_end", "t_start", "rtol", "atol", "output_interval", "max_steps", "event_samples", "method"});
+    if (auto v = toml_read::opt_string(*r, "run", "method")) s.options.integrator.method = toml_read::method(*v, "run.method");
     read(*r, "run", "t_end", s.options.t_end);
     read(*r, "run", "t_start", s.options.t_start);
     read(*r, "run", "rtol", s.options.integrator.rtol);

@@ -100,6 +100,11 @@ std::optional<std::string> opt_string(const toml::table& t, const std::string& w
   return string(*n, where + "." + key);
 }
 
+Method method(const std::string& name, const std::string& field) {
+  if (const auto m = method_from_string(name)) return *m;
+  fail(field, "must be one of auto, dopri5, dop853 (got '" + name + "')");
+}
+
 const toml::table* sub_table(const toml::table& t, const char* key, const std::string& field,
                              const std::string& hint) {
   const toml::node* n = t.get(key);

@@ -8,6 +8,8 @@
 #include <set>
 #include <string>
 
+#include "blockdyn/integrate/hybrid_integrator.hpp"
+
 namespace blockdyn::toml_read {
 
 [[noreturn]] void fail(const std::string& field, const std::string& msg);
@@ -33,6 +35,9 @@ std::optional<long long> opt_integer(const toml::table& t, const std::string& wh
 // The sub-table t[key] or nullptr when absent; "field: must be a table<hint>" when not a table.
 const toml::table* sub_table(const toml::table& t, const char* key, const std::string& field,
                              const std::string& hint = "");
+
+// A Runge-Kutta method name (auto, dopri5, dop853); "field: must be ..." otherwise.
+Method method(const std::string& name, const std::string& field);
 
 // The state overrides x0, y0, vx0, vy0, vw0 of the table [where] into the same-named optionals of in.
 template <class Initial>

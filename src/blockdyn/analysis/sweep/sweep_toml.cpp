@@ -94,12 +94,13 @@ SweepSpec parse_sweep(const std::string& text, const std::string& source) {
     toml_read::read_state_overrides(*i, "initial", s.initial);
   }
   if (const auto* r = sub(root, "run")) {
-    check_keys(*r, "run", {"t_end", "rtol", "atol", "max_steps", "event_samples", "track_energy",
+    check_keys(*r, "run", {"t_end", "rtol", "atol", "max_steps", "event_samples", "method", "track_energy",
                            "stop_at_first_flight", "stop_at_ihor"});
     SimulationOptions& o = s.options;
     if (auto v = opt_number(*r, "run", "t_end")) o.t_end = *v;
     if (auto v = opt_number(*r, "run", "rtol")) o.integrator.rtol = *v;
     if (auto v = opt_number(*r, "run", "atol")) o.integrator.atol = *v;
+    if (auto v = toml_read::opt_string(*r, "run", "method")) o.integrator.method = toml_read::method(*v, "run.method");
     if (const auto* n = r->get("max_steps")) o.integrator.max_steps = integer(*n, "run.max_steps");
     if (const auto* n = r->get("event_samples")) o.integrator.event_samples = int(integer(*n, "run.event_samples"));
     if (const auto* n = r->get("track_energy")) o.track_energy = boolean(*n, "run.track_energy");

@@ -1,0 +1,44 @@
+// SPDX-License-Identifier: Apache-2.0
+#pragma once
+// Fixed-size state vectors and the dense output of one accepted Runge-Kutta step, shared by the
+// steppers (dopri5.hpp, dop853.hpp), the integrator and the observers.
+#include <array>
+#include <cstddef>
+
+namespace blockdyn {
+
+template <std::size_t N>
+using Vec = std::array<double, N>;
+
+// y(t0 + s h), s in [0, 1], as the nested product both Dormand-Prince continuous extensions use:
+//   r0 + s (r1 + s1 (r2 + s (r3 + s1 (r4 + s (r5 + s1 (r6 + s r7)))))),  s1 = 1 - s,
+// with `terms` = 5 (order 4, Dopri5) or 8 (order 7, DOP853) coefficient vectors.
+template <std::size_t N>
+struct DenseSegment {
+  static constexpr int kMaxTerms = 8;
+  double t0 = 0.0;
+  double h = 0.0;
+  int terms = 5;
+  std::array<Vec<N>, kMaxTerms> r{};
+
+  double t1() const { return t0 + h; }
+
+  void eval(double t, Vec<N>& y) const {
+    const double s = (t - t0) / h;
+    const double s1 = 1.0 - s;
+    for (std::size_t i = 0; i < N; ++i) {
+      double acc = r[terms - 1][i];
+      for (int j = terms - 1; j >= 1; --j) acc = r[j - 1][i] + ((j & 1) ? s : s1) * acc;
+      y[i] = acc;
+    }
+  }
+};
+
+struct StepperStats {
+  long accepted = 0;
+  long rejected = 0;
+  long rhs_evals = 0;
+  long stiff_steps = 0;  // DOP853: accepted steps whose stiffness estimate h|lambda| exceeded 6.1
+};
+
+}  // namespace blockdyn
