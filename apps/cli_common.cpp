@@ -63,6 +63,22 @@ void emit_json(const nlohmann::ordered_json& j, const std::string& path, const c
   }
 }
 
+void emit_json(const nlohmann::ordered_json& j, const std::string& path, const JsonEventSpool& events,
+               const char* kind) {
+  nlohmann::ordered_json out;
+  out["schema"] = schema_name(current_command(), kind);
+  for (auto it = j.begin(); it != j.end(); ++it) out[it.key()] = it.value();
+  if (path.empty() || path == "-") {
+    events.write_document(out, std::cout);
+    std::cout << "\n" << std::flush;
+  } else {
+    AtomicFile file(path);
+    events.write_document(out, file.stream());
+    file.stream() << "\n";
+    file.commit();
+  }
+}
+
 std::string python_dir() {
   if (const char* e = std::getenv("BLOCKDYN_PYTHON_DIR")) return e;
   auto has_scripts = [](const std::string& d) { return ::access((d + "/plotkit.py").c_str(), R_OK) == 0; };

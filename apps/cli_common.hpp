@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "blockdyn/io/json_event_spool.hpp"
 #include "blockdyn/integrate/hybrid_integrator.hpp"
 #include "blockdyn/model/winkler/winkler_params.hpp"
 
@@ -34,6 +35,9 @@ std::string& current_command();
 // "schema": "blockdyn.<command>.<kind>/<version>" (docs/output-formats.md); kind is "summary"
 // (the --json / --json-out document) or "sidecar" (the JSON beside a CSV table).
 void emit_json(const nlohmann::ordered_json& j, const std::string& path, const char* kind = "summary");
+// The same with the "events" member's value taken from a spool (written as the run went).
+void emit_json(const nlohmann::ordered_json& j, const std::string& path, const JsonEventSpool& events,
+               const char* kind = "summary");
 
 // Directory holding the matplotlib scripts (env BLOCKDYN_PYTHON_DIR overrides).
 std::string python_dir();

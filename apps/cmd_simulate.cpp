@@ -30,7 +30,7 @@ struct SimulateFlags {
   double t_end = 10, output_interval = 0.01;
   std::string trajectory, plot, json_out, units = "nondim", animate;
   int animate_frames = 120;
-  bool json = false, quiet = false;
+  bool json = false, quiet = false, timing = false;
   double max_output_rows = 1e7;
   GroundFlags ground;
   PhysicalBlock phys;  // --height --width ... (physical input)
@@ -163,6 +163,46 @@ Scenario build_scenario(const CLI::App& s, const SimulateFlags& f) {
   return sc;
 }
 
+// Streams the Winkler run's events to the JSON spool and forwards everything to the trajectory
+// sink (if any): the event list is never held in memory.
+class EventSpoolSink final : public SimulationSink {
+ public:
+  EventSpoolSink(SimulationSink* next, JsonEventSpool* spool) : next_(next), spool_(spool) {}
+  void on_start(const WinklerBlock& m, double t, const BlockMode& md, const BlockStateVec& z) override {
+    if (next_) next_->on_start(m, t, md, z);
+  }
+  void on_segment(const WinklerBlock& m, const DenseSegment<kStateDim>& s, double t0, double t1,
+                  const BlockMode& md) override {
+    if (next_) next_->on_segment(m, s, t0, t1, md);
+  }
+  void on_event(const WinklerBlock& m, const EventRecord& e) override {
+    if (spool_) spool_->add(to_json(e));
+    if (next_) next_->on_event(m, e);
+  }
+  bool keep_going() const override { return !next_ || next_->keep_going(); }
+  bool needs_dense() const override { return next_ && next_->needs_dense(); }
+
+ private:
+  SimulationSink* next_;
+  JsonEventSpool* spool_;
+};
+
+// The rigid family's events to the JSON spool.
+class RigidEventSpool final : public RigidEventSink {
+ public:
+  explicit RigidEventSpool(JsonEventSpool& spool) : spool_(spool) {}
+  void on_event(const RigidEventRecord& e) override { spool_.add(to_json(e)); }
+
+ private:
+  JsonEventSpool& spool_;
+};
+
+long total_events(const SimulationResult& r) {
+  long n = 0;
+  for (long c : r.event_counts) n += c;
+  return n;
+}
+
 // seconds: the time scale of a physical block (times printed in s), 0 for non-dimensional runs.
 void print_summary(const SimulationResult& r, double seconds) {
   const double ts = seconds > 0 ? seconds : 1.0;
@@ -171,7 +211,7 @@ void print_summary(const SimulationResult& r, double seconds) {
   std::printf("ihor: %ld, first flight: %s%s\n", r.ihor,
               r.first_flight_time ? std::to_string(*r.first_flight_time * ts).c_str() : "none",
               r.first_flight_time ? unit : "");
-  std::printf("events: %zu, steps: %ld, rhs evaluations: %ld\n", r.events.size(), r.stats.accepted,
+  std::printf("events: %ld, steps: %ld, rhs evaluations: %ld\n", total_events(r), r.stats.accepted,
               r.stats.rhs_evals);
   std::printf("energy: E0 = %.10g, max |E - E0| = %.3g, max |balance error| = %.3g, friction work = %.6g\n",
               r.initial_energy.total(), r.max_abs_energy_change, r.max_abs_energy_error, r.work_friction());
@@ -188,9 +228,18 @@ void print_summary(const RigidResult& r, double alpha) {
 }
 
 
-void emit(const nlohmann::ordered_json& j, const SimulateFlags& f) {
-  if (!f.json_out.empty()) emit_json(j, f.json_out);
-  if (f.json) emit_json(j, "-");
+bool wants_json(const SimulateFlags& f) { return f.json || !f.json_out.empty(); }
+
+// The JSON summary (only when asked for), its event list from the spool.
+void emit(nlohmann::ordered_json j, const SimulateFlags& f, const JsonEventSpool& events, const RunTiming& timing) {
+  if (f.timing) j["timing"] = to_json(timing);
+  if (!f.json_out.empty()) emit_json(j, f.json_out, events);
+  if (f.json) emit_json(j, "-", events);
+}
+
+void print_timing(const SimulateFlags& f, const RunTiming& t) {
+  if (f.timing && !f.json && !f.quiet)
+    std::printf("integration: %.6g s CPU, %.6g s wall\n", t.cpu_s, t.wall_s);
 }
 
 void run_winkler(const SimulateFlags& f, Scenario sc) {
@@ -208,7 +257,13 @@ void run_winkler(const SimulateFlags& f, Scenario sc) {
   TrajectoryTarget target(sc.trajectory, sc.plot.empty() ? f.animate : sc.plot);
   std::unique_ptr<TrajectoryCsvSink> sink;
   if (target.file) sink = std::make_unique<TrajectoryCsvSink>(target.file->stream(), sc.output_interval, scales);
-  const SimulationResult r = simulate(sc.params, sc.ground, z0, sc.options, sink.get());
+  // Events are counted in the result and, for the JSON summary, streamed to a spool: the run holds
+  // O(1) memory whatever its length.
+  std::unique_ptr<JsonEventSpool> spool;
+  if (wants_json(f)) spool = std::make_unique<JsonEventSpool>();
+  sc.options.record_events = false;
+  EventSpoolSink tee(sink.get(), spool.get());
+  const SimulationResult r = simulate(sc.params, sc.ground, z0, sc.options, (sink || spool) ? &tee : nullptr);
   char title[256];
   std::snprintf(title, sizeof title, "winkler block r = %.4g, mu = %.4g, k = %.4g: %s at t = %.6g", sc.params.r,
                 sc.params.mu, sc.params.k, to_string(r.status), r.t_final);
@@ -217,8 +272,9 @@ void run_winkler(const SimulateFlags& f, Scenario sc) {
        {"animate_block.py", f.animate,
         {"--model", "winkler", "--width", std::to_string(sc.params.r), "--height", "1", "--frames",
          std::to_string(f.animate_frames), "--title", title}}});
-  emit(result_json(sc.params, sc.ground, sc.options, r, sc.physical ? &*sc.physical : nullptr), f);
+  if (spool) emit(result_json(sc.params, sc.ground, sc.options, r, sc.physical ? &*sc.physical : nullptr), f, *spool, r.timing);
   if (!f.json && !f.quiet) print_summary(r, sc.physical ? scales_of(*sc.physical).time : 0.0);
+  print_timing(f, r.timing);
 }
 
 std::string block_title(const std::string& model, const RigidBlockParams& p) {
@@ -245,10 +301,17 @@ void run_rigid_family(const SimulateFlags& f, const Scenario& sc, Simulate&& sim
   o.t_start = sc.options.t_start;
   o.t_end = sc.options.t_end;
   o.integrator = sc.options.integrator;
+  o.record_events = false;  // counted; streamed to the spool for the JSON summary
   TrajectoryTarget target(sc.trajectory, sc.plot.empty() ? f.animate : sc.plot);
   std::unique_ptr<RigidTrajectoryCsv<Model>> csv;
   if (target.file) csv = std::make_unique<RigidTrajectoryCsv<Model>>(target.file->stream(), sc.output_interval);
-  const RigidResult r = sim(p, sc.ground, init, o, csv.get());
+  std::unique_ptr<JsonEventSpool> spool;
+  std::unique_ptr<RigidEventSpool> spool_sink;
+  if (wants_json(f)) {
+    spool = std::make_unique<JsonEventSpool>();
+    spool_sink = std::make_unique<RigidEventSpool>(*spool);
+  }
+  const RigidResult r = sim(p, sc.ground, init, o, csv.get(), spool_sink.get());
   target.figures_and_clean(
       {{"plot_rigid.py", sc.plot,
         {"--alpha", std::to_string(p.shape.alpha()), "--model", sc.model, "--status", to_string(r.status), "--title",
@@ -257,21 +320,24 @@ void run_rigid_family(const SimulateFlags& f, const Scenario& sc, Simulate&& sim
         {"--model", sc.model, "--width", std::to_string(p.shape.width), "--height", std::to_string(p.shape.height),
          "--frames", std::to_string(f.animate_frames), "--title",
          block_title(sc.model, p) + ": " + to_string(r.status)}}});
-  emit(rigid_result_json(p, sc.ground, o, r), f);
+  if (spool) emit(rigid_result_json(p, sc.ground, o, r), f, *spool, r.timing);
   if (!f.json && !f.quiet) print_summary(r, p.shape.alpha());
+  print_timing(f, r.timing);
 }
 
 void run(const CLI::App& s, const SimulateFlags& f) {
   const Scenario sc = build_scenario(s, f);
   if (sc.model == "housner") {
     run_rigid_family<HousnerBlock>(f, sc, [](const RigidBlockParams& p, const GroundMotion& g, const RigidInitial& in,
-                                             const RigidRunOptions& o, Observer<HousnerBlock>* obs) {
-      return simulate_housner(p.shape, p.restitution, g, in, o, obs);
+                                             const RigidRunOptions& o, Observer<HousnerBlock>* obs,
+                                             RigidEventSink* events) {
+      return simulate_housner(p.shape, p.restitution, g, in, o, obs, events);
     });
   } else if (sc.model == "rigid") {
     run_rigid_family<RigidBlock>(f, sc, [](const RigidBlockParams& p, const GroundMotion& g, const RigidInitial& in,
-                                           const RigidRunOptions& o, Observer<RigidBlock>* obs) {
-      return simulate_rigid(p, g, in, o, obs);
+                                           const RigidRunOptions& o, Observer<RigidBlock>* obs,
+                                           RigidEventSink* events) {
+      return simulate_rigid(p, g, in, o, obs, events);
     });
   } else {
     run_winkler(f, sc);
@@ -317,6 +383,9 @@ void add(CLI::App& app) {
   s->add_flag("--json", f->json, "print the JSON summary on stdout");
   s->add_option("--json-out", f->json_out, "also write the JSON summary to this file");
   s->add_flag("--quiet", f->quiet, "no text summary on stdout");
+  s->add_flag("--timing", f->timing,
+              "report the integration's wall and CPU time (JSON: timing.integration_wall_s, integration_cpu_s; "
+              "not reproducible, so off by default)");
   add_ground_flags(*s, f->ground);
   add_physical_flags(*s, *f);
   s->callback([s, f] { run(*s, *f); });

@@ -50,7 +50,8 @@ def summary(events, t0, e_end, wall, steps):
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("--blockdyn", default=os.environ.get("BLOCKDYN", "/work/main/build/blockdyn"))
+    ap.add_argument("--blockdyn", default=os.environ.get(
+        "BLOCKDYN", os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "build", "blockdyn")))
     ap.add_argument("--t-start", type=float, default=7.64)
     ap.add_argument("--t-end", type=float, default=12.0)
     ap.add_argument("--rtols", default="1e-8,1e-10,1e-12")

@@ -13,7 +13,8 @@ abs_tol_scale.
 
 Counted: "steps" = accepted DOP853 steps summed over the segments (the step that straddles an
 event counts, truncated at the event, as in blockdyn); "nfev" = SciPy's right-hand-side
-evaluations (event-state recomputations included); "wall_s" = the integration loop.
+evaluations (event-state recomputations included); "wall_s", "cpu_s" = wall and CPU time of the
+integration loop.
 
 Event location (--driver): "sampled" (default) steps scipy.integrate.DOP853 directly and checks
 every event function at 4 points per step plus dips (segment_sampled); "solve_ivp" uses
@@ -411,7 +412,7 @@ def simulate(model, z0, t0, t_end, rtol=1e-10, atol=1e-12, mode=None, keep_state
     t, h_next = t0, None
     start_mode = mode
     E0 = energy(model, z)
-    wall0 = time.perf_counter()
+    wall0, cpu0 = time.perf_counter(), time.process_time()
     status = "t_end"
 
     def record(kind, new_mode):
@@ -452,7 +453,7 @@ def simulate(model, z0, t0, t_end, rtol=1e-10, atol=1e-12, mode=None, keep_state
             record(kind, new_mode)
             mode, zero_run = new_mode, -1
             z = model.complete(mode, z)
-    wall = time.perf_counter() - wall0
+    wall, cpu = time.perf_counter() - wall0, time.process_time() - cpu0
     counts = Counter(e["kind"] for e in events)
     first_flight = next((e["t"] for e in events if e["kind"] == "takeoff"), None)
     E = energy(model, z)
@@ -461,7 +462,7 @@ def simulate(model, z0, t0, t_end, rtol=1e-10, atol=1e-12, mode=None, keep_state
             "t_start": t0, "t_final": t, "status": status, "initial_mode": start_mode[0],
             "final_mode": mode[0], "final_state": [z[0], z[1] + 0.5] + z[2:6], "final_energy": E,
             "work_friction": z[6], "work_nonpotential": z[7],
-            "steps": steps, "nfev": nfev, "wall_s": wall, "ihor": ihor,
+            "steps": steps, "nfev": nfev, "wall_s": wall, "cpu_s": cpu, "ihor": ihor,
             "first_flight_time": first_flight, "event_counts": dict(counts), "events": events}
 
 

@@ -2,7 +2,10 @@
 #pragma once
 // Generic integrator for piecewise-smooth (hybrid) systems: adaptive Dormand-Prince, 5(4) or
 // 8(5,3) chosen per run (IntegratorOptions::method), event location on the dense output by bracketing + TOMS 748,
-// restart at each event.
+// restart at each event. The event scan of a step (scan_events) bounds each event function from
+// below by an envelope built from its values and rates at the step ends and its values at a few
+// interior points (event_envelope.hpp); the dense output is searched only where the envelope
+// may reach zero.
 //
 // A model supplies (see HybridModel below): the state size, a Mode type, right-hand sides per
 // mode, event functions that must stay >= 0 while a mode is valid, the transition map applied
@@ -25,6 +28,7 @@
 
 #include "blockdyn/integrate/dop853.hpp"
 #include "blockdyn/integrate/dopri5.hpp"
+#include "blockdyn/integrate/event_envelope.hpp"
 #include "blockdyn/integrate/root_bracket.hpp"
 
 namespace blockdyn {
@@ -103,7 +107,7 @@ struct IntegratorOptions {
   double atol = 1e-12;
   double h_max = std::numeric_limits<double>::infinity();
   long max_steps = 200'000'000;
-  int event_samples = 4;   // event functions are checked at this many points per step
+  int event_samples = 1;   // interior points per step at which the event functions are sampled
   int chatter_limit = 16;  // consecutive zero-duration events before resolve_chatter()
   Method method = Method::Auto;
 };
@@ -136,6 +140,19 @@ template <class M>
 constexpr bool has_state_jumps() {
   if constexpr (requires { M::kStateJumps; }) return M::kStateJumps;
   return false;
+}
+
+// Whether a model computes its event functions' time derivatives itself:
+// `void event_rates(double t, const Mode&, const State& z, const State& dz, Events& g, Events& gdot) const`
+// fills the values g (as events() does) and their rates along dz = f(t, z); a rate it leaves NaN
+// is obtained by a difference quotient. Optional: without it every rate is a difference quotient
+// (one more events() call per step end).
+template <class M>
+constexpr bool has_event_rates() {
+  return requires(const M& m, double t, const typename M::Mode& mode, const Vec<M::kDim>& z,
+                  std::array<double, M::kNumEvents>& g) {
+    m.event_rates(t, mode, z, z, g, g);
+  };
 }
 
 template <class Mode, std::size_t N>
@@ -181,11 +198,9 @@ class HybridIntegrator {
     State k1, k7, y_new;
     f(t, z, k1);
     ++stats_.rhs_evals;
-    Events g_start;
-    model_.events(t, mode, z, g_start);
-    armed_.fill(true);
-    reset_falling(g_start, -1);
     double h = initial_step(mode);
+    start_rates(t, mode, z, k1, h);
+    armed_.fill(true);
     double err_old = 1e-4;
     int zero_time_events = 0;
     DenseSegment<N> seg;
@@ -205,9 +220,23 @@ class HybridIntegrator {
       }
       ++stats_.accepted;
       if (high_order_ && dop853_.stiffness() > 6.1) ++stats_.stiff_steps;
-      dense(f, t, h, z, y_new, k1, k7, seg);
+      // The dense output costs DOP853 three more stages: computed only when the scan or an
+      // observer evaluates inside the step (else seg holds the step's end points only).
+      bool dense_done = false;
+      auto ensure_dense = [&] {
+        if (!dense_done) dense(f, t, h, z, y_new, k1, k7, seg);
+        dense_done = true;
+      };
+      if (!high_order_)
+        ensure_dense();
+      else
+        linear_segment(t, h, z, y_new, seg);
       const double t_next = last ? t_end : (to_break ? t_break : t + h);
-      const auto hit = scan_events(seg, t, t_next, y_new, mode, g_start);
+      State y_end = y_new;
+      model_.complete(mode, y_end);
+      values_and_rates(std::fmin(t_next, t_clamp), mode, y_end, k7, -(t_next - t), g_end_, gd_end_, gd_err_end_);
+      const auto hit = scan_events(seg, t, t_next, mode, ensure_dense);
+      if (observers_need_dense(obs)) ensure_dense();
       // A step shortened to land on t_end or a breakpoint says little about the step size the
       // solution allows: keep the size asked for before the shortening.
       double h_new = next_step_size(err, h, err_old);
@@ -215,22 +244,27 @@ class HybridIntegrator {
       if (!hit) {
         if (!obs.on_step(seg, t, t_next, mode)) return RunStatus::ObserverStop;
         t = t_next;
-        z = y_new;
-        model_.complete(mode, z);
+        z = y_end;
         k1 = k7;
-        g_start = g_last_;
+        g_start_ = g_end_;
+        gd_start_ = gd_end_;
+        gd_err_start_ = gd_err_end_;
         h = h_new;
         zero_time_events = 0;
         for (std::size_t i = 0; i < NE; ++i)
-          if (!armed_[i] && g_start[i] > 0.0) armed_[i] = true;
+          if (!armed_[i] && g_start_[i] > 0.0) {
+            armed_[i] = true;
+            remainder_known_ = false;
+          }
         if (to_break) {
           // The input may jump or kink here: let the model re-select its mode, restart.
           t_clamp = std::numeric_limits<double>::infinity();
-          if (const auto end = apply_transition(t, kBreakpoint, mode, z, g_start, obs)) return *end;
+          if (const auto end = apply_transition(t, kBreakpoint, mode, z, obs)) return *end;
           f(t, z, k1);
           ++stats_.rhs_evals;
           t_break = next_breakpoint_of(model_, t, mode);
           h = std::fmin(h, model_.step_hint(mode));
+          start_rates(t, mode, z, k1, h);
         }
         continue;
       }
@@ -257,7 +291,7 @@ class HybridIntegrator {
       t_clamp = std::numeric_limits<double>::infinity();
       t = te;
       z = ze;
-      if (const auto end = apply_transition(t, hit->index, mode, z, g_start, obs)) return *end;
+      if (const auto end = apply_transition(t, hit->index, mode, z, obs)) return *end;
       if (zero_time_events >= opt_.chatter_limit) {
         const auto held = model_.resolve_chatter(t, mode, z);
         if (!held) return RunStatus::Chatter;
@@ -266,25 +300,27 @@ class HybridIntegrator {
         model_.complete(mode, z);
         hold.z = z;
         if (!obs.on_event(hold)) return RunStatus::ObserverStop;
-        model_.events(t, mode, z, g_start);
-        for (std::size_t i = 0; i < NE; ++i) armed_[i] = g_start[i] > 0.0;
-        reset_falling(g_start, -1);
+        Events g_hold;
+        model_.events(t, mode, z, g_hold);
+        for (std::size_t i = 0; i < NE; ++i) armed_[i] = g_hold[i] > 0.0;
         zero_time_events = 0;
       }
       f(t, z, k1);
       ++stats_.rhs_evals;
       t_break = next_breakpoint_of(model_, t, mode);
       h = std::fmin(h_new, model_.step_hint(mode));
+      start_rates(t, mode, z, k1, h);
     }
     return RunStatus::ReachedEnd;
   }
 
  private:
   // The transition of event `index` (or kBreakpoint) at t: the model picks the next mode and may
-  // change the state; observers see it with the state before and after; the event functions
-  // restart. Returns the run's end status when the model or an observer stops it.
+  // change the state; observers see it with the state before and after. Every event function is
+  // armed again (one at zero fires at once unless it rises first). Returns the run's end status
+  // when the model or an observer stops it.
   template <class Observer>
-  std::optional<RunStatus> apply_transition(double t, int index, Mode& mode, State& z, Events& g_start, Observer& obs) {
+  std::optional<RunStatus> apply_transition(double t, int index, Mode& mode, State& z, Observer& obs) {
     const State z_before = z;
     const Transition<Mode> tr = model_.transition(t, mode, z, index);
     EventInfo<Mode, N> info{t, z, z_before, mode, tr.next, index, tr.kind, tr.stop};
@@ -296,9 +332,7 @@ class HybridIntegrator {
     model_.complete(mode, z);
     info.z = z;
     if (!obs.on_event(info)) return RunStatus::ObserverStop;
-    model_.events(t, mode, z, g_start);
     armed_.fill(true);
-    reset_falling(g_start, index);
     return std::nullopt;
   }
 
@@ -306,6 +340,70 @@ class HybridIntegrator {
     double t;
     int index;
   };
+
+  // Values g and rates gd of the event functions at (t, z) (z completed, dz = f(t, z)), and a
+  // bound gd_err on the error of each rate. Rates the model does not provide are difference
+  // quotients over a small time step `delta` along dz: delta > 0 at a restart (forward, into the
+  // step to come), < 0 at a step end (backward, on the step's side of a breakpoint).
+  void values_and_rates(double t, const Mode& mode, const State& z, const State& dz, double delta, Events& g,
+                        Events& gd, Events& gd_err) {
+    bool need_difference = true;
+    if constexpr (has_event_rates<Model>()) {
+      model_.event_rates(t, mode, z, dz, g, gd);
+      need_difference = false;
+      for (std::size_t i = 0; i < NE; ++i) need_difference |= std::isnan(gd[i]);
+    } else {
+      model_.events(t, mode, z, g);
+      gd.fill(std::numeric_limits<double>::quiet_NaN());
+    }
+    gd_err.fill(0.0);
+    if (!need_difference) return;
+    const double d = kRateStep * delta;
+    State zd;
+    for (std::size_t i = 0; i < N; ++i) zd[i] = z[i] + d * dz[i];
+    model_.complete(mode, zd);
+    Events gdd;
+    const double td = t + d;
+    model_.events(std::fmin(td, *t_clamp_), mode, zd, gdd);
+    const double dt = td - t;  // the step actually taken in t
+    for (std::size_t i = 0; i < NE; ++i) {
+      if (!std::isnan(gd[i])) continue;
+      gd[i] = (gdd[i] - g[i]) / dt;
+      // Rounding of the two values over the small step; the truncation error (dt g''/2) is far
+      // below the envelope's relative floor.
+      gd_err[i] = 8.0 * std::numeric_limits<double>::epsilon() * (std::fabs(g[i]) + std::fabs(gdd[i])) / std::fabs(dt);
+    }
+  }
+
+  // At a restart (run start, after an event or a breakpoint): values and rates for the scan of
+  // the step to come, of size about h.
+  void start_rates(double t, const Mode& mode, const State& z, const State& k1, double h) {
+    values_and_rates(t, mode, z, k1, h, g_start_, gd_start_, gd_err_start_);
+    remainder_known_ = false;
+  }
+
+  // Observers say whether they evaluate the dense output inside a step (`needs_dense()`,
+  // optional: without it they do).
+  template <class Observer>
+  static bool observers_need_dense(const Observer& obs) {
+    if constexpr (requires {
+                    { obs.needs_dense() } -> std::convertible_to<bool>;
+                  })
+      return obs.needs_dense();
+    return true;
+  }
+
+  // A segment exact at both ends of the step (y0 + s (y1 - y0)), for steps whose dense output
+  // nobody evaluates inside.
+  static void linear_segment(double t, double h, const State& y, const State& y_new, DenseSegment<N>& seg) {
+    seg.t0 = t;
+    seg.h = h;
+    seg.terms = 2;
+    for (std::size_t i = 0; i < N; ++i) {
+      seg.r[0][i] = y[i];
+      seg.r[1][i] = y_new[i] - y[i];
+    }
+  }
 
   template <class F>
   double attempt(F& f, double t, double h, const State& y, const State& k1, State& y_new, State& k_end) {
@@ -386,108 +484,232 @@ class HybridIntegrator {
 
   double initial_step(const Mode& mode) const { return std::fmin(model_.step_hint(mode), std::fmin(opt_.h_max, 1e-2)); }
 
-  // Checks the event functions at `event_samples` points of the step; returns the earliest root.
-  // Besides sign changes between samples it looks for excursions below zero that start and end
-  // between two samples (a brief flight, a short slide): wherever the samples of a function
-  // have a local minimum, the minimum is located on the dense output and checked.
-  std::optional<Hit> scan_events(const DenseSegment<N>& seg, double t0, double t1, const State& y1, const Mode& mode,
-                                 const Events& g0) {
+  // The earliest event in the step [t0, t1], if any. Each armed event function is bounded from
+  // below by its envelope (values and rates at both ends, values at `event_samples` interior
+  // points); where the envelope may reach zero the function is sampled once more at the
+  // model's minimum there, and if that does not settle it, searched on the dense output (Brent's
+  // minimum, then TOMS 748 to a few ulps).
+  template <class EnsureDense>
+  std::optional<Hit> scan_events(const DenseSegment<N>& seg, double t0, double t1, const Mode& mode,
+                                 EnsureDense&& ensure_dense) {
     const int S = std::clamp(opt_.event_samples, 1, kMaxSamples);
-    std::array<double, kMaxSamples + 1> ts;
-    std::array<Events, kMaxSamples + 1> gs;
-    ts[0] = t0;
-    gs[0] = g0;
-    State y;
-    for (int j = 1; j <= S; ++j) {
-      ts[j] = (j == S) ? t1 : t0 + (t1 - t0) * double(j) / S;
-      if (j == S) {
-        y = y1;
-      } else {
-        seg.eval(ts[j], y);
-      }
-      model_.complete(mode, y);
-      model_.events(std::fmin(ts[j], *t_clamp_), mode, y, gs[j]);
-    }
+    const double h = t1 - t0;
+    if (no_event_by_last_remainder(h)) return std::nullopt;
+    ensure_dense();
+    int n = 0;
+    std::array<double, kMaxSamples + kMaxRefine> s_at;
+    std::array<Events, kMaxSamples + kMaxRefine> g_at;
     auto g_all = [&](double tt, Events& ge) {
       State yy;
       seg.eval(tt, yy);
       model_.complete(mode, yy);
       model_.events(std::fmin(tt, *t_clamp_), mode, yy, ge);
     };
-    // After a restart the slope of each event function is unknown: one value just after t0
-    // tells which ones start by falling (only those can dip below zero and come back inside the
-    // first interval).
-    if (slope_unknown_) {
-      Events g_after_start;
-      g_all(t0 + 1e-3 * (ts[1] - t0), g_after_start);
-      for (std::size_t i = 0; i < NE; ++i) falling_[i] = falling_[i] && g_after_start[i] < g0[i];
-      slope_unknown_ = false;
+    for (int j = 1; j <= S; ++j, ++n) {
+      s_at[n] = double(j) / (S + 1);
+      g_all(t0 + s_at[n] * h, g_at[n]);
     }
-    // Falling into the step end: one more value just before t1 tells whether a minimum lies
-    // inside the last interval (the next step could not see it).
-    bool any_falling_end = false;
-    for (std::size_t i = 0; i < NE; ++i) any_falling_end |= armed_[i] && gs[S][i] > 0.0 && gs[S][i] < gs[S - 1][i];
-    Events g_before_end{};
-    if (any_falling_end) g_all(t1 - 1e-3 * (t1 - ts[S - 1]), g_before_end);
-
     std::optional<Hit> best;
-    std::array<bool, NE> falling_next{};
     for (std::size_t i = 0; i < NE; ++i) {
       if (!armed_[i]) continue;
+      const double g0 = g_start_[i], g1 = g_end_[i];
       auto gi = [&](double tt) {
         Events ge;
         g_all(tt, ge);
         return ge[i];
       };
-      std::optional<double> root;
-      bool falling = falling_[i];
-      for (int j = 1; j <= S && !root; ++j) {
-        if (best && ts[j - 1] >= best->t) break;
-        const double ga = gs[j - 1][i], gb = gs[j][i];
-        if (gb < 0.0) {
-          double lo = ts[j - 1], glo = ga;
-          if (glo <= 0.0) {
-            // Zero at a restart point (the event that just fired, e.g. theta = 0 after an
-            // impact): it fires there unless it rises first. Where it rises it is positive on
-            // (t0, root); halving towards t0 finds a positive value however brief the rise (a
-            // swing of 1e-7 inside a step of 1e-3), and the root is bracketed from there.
-            for (int k = 1; k <= 60; ++k) {
-              const double tt = ts[j - 1] + std::ldexp(ts[j] - ts[j - 1], -k);
-              if (!(tt > ts[j - 1])) break;
-              const double gt = gi(tt);
-              if (gt > 0.0) {
-                lo = tt;
-                glo = gt;
-                break;
-              }
-            }
-          }
-          root = locate_root(gi, lo, ts[j], glo, gb);
-        } else if (falling && ga > 0.0 && gb > ga) {
-          const int a = (j >= 2) ? j - 2 : 0;
-          // A smooth minimum lies at most about the variation seen around it below the lowest
-          // sample: a dip can only reach zero if that sample is within a multiple of it. (At rest
-          // the samples wobble at rounding level far from zero: no search.)
-          const double variation = std::fmax(gb - ga, gs[a][i] - ga);
-          if (ga < kDipReach * variation) root = dip_root(gi, ts[a], ts[j], gs[a][i]);
-        }
-        falling = gb < ga;
+      // A function at or below zero at the step start (one that just fired, or any other at a
+      // restart) fires there unless it rises first.
+      const bool at_zero = !(g0 > 0.0);
+      std::array<double, kMaxSamples + kMaxRefine> ss, gs;
+      int m = 0;
+      for (int j = 0; j < n; ++j, ++m) {
+        ss[m] = s_at[j];
+        gs[m] = g_at[j][i];
       }
-      if (!root && any_falling_end && gs[S][i] > 0.0 && gs[S][i] < gs[S - 1][i]) {
-        if (g_before_end[i] < gs[S][i]) {  // rising again at the end: minimum inside
-          if (g_before_end[i] < kDipReach * (gs[S - 1][i] - g_before_end[i]))
-            root = dip_root(gi, ts[S - 1], t1, gs[S - 1][i]);
-        } else {
-          falling_next[i] = true;
+      // The remainder measured here bounds it on the steps that follow (no_event_by_last_remainder).
+      remainder_[i] = measured_remainder(g0, gd_start_[i], g1, gd_end_[i], h, ss.data(), gs.data(), m, at_zero);
+      if (at_zero && gs[0] < 0.0) {
+        const double tb = t0 + ss[0] * h;
+        const double root = restart_root(gi, t0, tb, gs[0]);
+        if (!best || root < best->t) best = Hit{root, int(i)};
+        continue;
+      }
+      const double rate_err = std::fmax(gd_err_start_[i], gd_err_end_[i]);
+      EventEnvelope env =
+          make_event_envelope(g0, gd_start_[i], g1, gd_end_[i], h, ss.data(), gs.data(), m, rate_err, at_zero);
+      if (g1 >= 0.0 && env.positive()) continue;
+      std::optional<double> root;
+      double from = 0.0, sa, sb;
+      while (!root && env.next_doubtful(kSubdivision, from, sa, sb)) {
+        sa = std::fmax(sa, from);
+        if (best && t0 + sa * h >= best->t) break;
+        if (sb >= 1.0 && g1 < 0.0) {
+          root = final_crossing(gi, env, t0, h, sa, g0, g1, at_zero);
+          break;
         }
+        // A doubtful stretch inside the step: sample at the model's minimum there; a negative
+        // value brackets a root, a positive one sharpens the envelope.
+        bool settled = false;
+        for (int r = 0; r < kMaxRefine && !settled; ++r) {
+          const double sm = model_minimum(env.model, sa, sb);
+          const double tm = t0 + sm * h;
+          if (!(tm > t0) || !(tm < t1)) break;
+          Events gm_all;
+          g_all(tm, gm_all);
+          const double gm = gm_all[i];
+          if (gm < 0.0) {
+            root = dip_crossing(gi, t0, h, sa, tm, g0, gm, at_zero);
+            settled = true;
+            break;
+          }
+          ss[m] = sm;
+          gs[m] = gm;
+          ++m;
+          env = make_event_envelope(g0, gd_start_[i], g1, gd_end_[i], h, ss.data(), gs.data(), m, rate_err, at_zero);
+          double sa2, sb2;
+          if (!env.next_doubtful(kSubdivision, from, sa2, sb2) || sa2 > sb) {
+            settled = true;
+          } else {
+            sa = std::fmax(sa2, from);
+            sb = sb2;
+          }
+        }
+        if (!root && !settled) {
+          // Still doubtful: the minimum of the function itself on the stretch.
+          const double ta = t0 + sa * h, tb = t0 + sb * h;
+          const auto mn = minimum(ta, tb, gi);
+          if (mn.second < 0.0) root = dip_crossing(gi, t0, h, sa, mn.first, g0, mn.second, at_zero);
+        }
+        from = sb;
+        if (from >= 1.0) break;
       }
       if (root && (!best || *root < best->t)) best = Hit{*root, int(i)};
     }
-    if (!best) {
-      g_last_ = gs[S];
-      falling_ = falling_next;
-    }
+    remainder_known_ = true;
+    remainder_h_ = h;
+    steps_since_samples_ = 0;
     return best;
+  }
+
+  // Largest |phi| of the Hermite remainder s^2 (1 - s)^2 phi(s) at the samples.
+  static double measured_remainder(double g0, double gd0, double g1, double gd1, double h, const double* s,
+                                   const double* gs, int n, bool at_zero) {
+    const double a0 = at_zero ? 0.0 : g0;
+    const double b1 = a0 + h * gd0 / 3.0, b2 = g1 - h * gd1 / 3.0;
+    double phi = 0.0;
+    for (int j = 0; j < n; ++j) {
+      const double u = s[j], v = 1.0 - u;
+      const double hermite = v * v * v * a0 + 3.0 * u * v * v * b1 + 3.0 * u * u * v * b2 + u * u * u * g1;
+      phi = std::fmax(phi, std::fabs((gs[j] - hermite) / (u * u * v * v)));
+    }
+    return std::isfinite(phi) ? phi : INFINITY;
+  }
+
+  // Between samplings the remainder of each function is bounded by kLagSafety times the one last
+  // measured, scaled as h^4 (phi = h^4 g^(4) / 24); a step on which every armed function's
+  // envelope with that bound stays positive needs no interior sample and no dense output. The
+  // measurement is renewed at least every kResample steps and after every restart.
+  bool no_event_by_last_remainder(double h) {
+    if (!remainder_known_ || steps_since_samples_ >= kResample) return false;
+    const double q = h / remainder_h_;
+    const double scale = kLagSafety * (q * q) * (q * q);
+    for (std::size_t i = 0; i < NE; ++i) {
+      if (!armed_[i]) continue;
+      const double g0 = g_start_[i], g1 = g_end_[i];
+      if (!(g0 > 0.0) || !(g1 > 0.0)) return false;
+      const double rate_err = std::fmax(gd_err_start_[i], gd_err_end_[i]);
+      const EventEnvelope env =
+          make_event_envelope_bounded(g0, gd_start_[i], g1, gd_end_[i], h, scale * remainder_[i], rate_err);
+      double sa, sb;
+      if (!env.positive() && env.next_doubtful(kSubdivision, 0.0, sa, sb)) return false;
+    }
+    ++steps_since_samples_;
+    return true;
+  }
+
+  // The root of a function at or below zero at t0 that is negative at tb: the root after the
+  // last positive value found by halving towards t0 (a rise of 1e-7 inside a step of 1e-3 is
+  // found), else t0 (it fires at once).
+  template <class G>
+  static double restart_root(G&& g, double t0, double tb, double gb) {
+    for (int k = 1; k <= 60; ++k) {
+      const double tt = t0 + std::ldexp(tb - t0, -k);
+      if (!(tt > t0)) break;
+      const double gt = g(tt);
+      if (gt > 0.0) return locate_root(g, tt, tb, gt, gb);
+    }
+    return t0;
+  }
+
+  // A positive point of g in (t0, t0 + s h] for the left end of a bracket: the stretch start
+  // itself, or (at a restart with g(t0) <= 0) the first positive value halving towards t0.
+  template <class G>
+  static std::optional<std::pair<double, double>> left_end(G&& g, double t0, double h, double sa, double tb, double g0,
+                                                           bool at_zero) {
+    if (sa <= 0.0) {
+      if (!at_zero) return std::make_pair(t0, g0);
+      for (int k = 1; k <= 60; ++k) {
+        const double tt = t0 + std::ldexp(tb - t0, -k);
+        if (!(tt > t0)) break;
+        const double gt = g(tt);
+        if (gt > 0.0) return std::make_pair(tt, gt);
+      }
+      return std::nullopt;
+    }
+    const double ta = t0 + sa * h;
+    const double ga = g(ta);
+    if (ga > 0.0) return std::make_pair(ta, ga);
+    // The envelope was positive before the stretch but the function is not: start at t0.
+    return left_end(g, t0, h, 0.0, ta, g0, at_zero);
+  }
+
+  // The root before a negative value gm at tm inside the step (a dip found in the stretch from sa).
+  template <class G>
+  static double dip_crossing(G&& g, double t0, double h, double sa, double tm, double g0, double gm, bool at_zero) {
+    const auto lo = left_end(g, t0, h, sa, tm, g0, at_zero);
+    if (!lo) return t0;
+    return locate_root(g, lo->first, tm, lo->second, gm);
+  }
+
+  // The first root in the last stretch [sa, 1] of a function that ends the step negative. If the
+  // model of the function dips inside the stretch before its end, a crossing there comes first.
+  template <class G>
+  double final_crossing(G&& g, const EventEnvelope& env, double t0, double h, double sa, double g0, double g1,
+                        bool at_zero) const {
+    const double t1 = t0 + h;
+    const auto lo = left_end(g, t0, h, sa, t1, g0, at_zero);
+    if (!lo) return t0;
+    const double s_lo = (lo->first - t0) / h;
+    // A local minimum of the model strictly inside: look at the function's own minimum first.
+    constexpr int kGrid = 16;
+    std::array<double, kGrid + 1> q;
+    for (int k = 0; k <= kGrid; ++k) q[k] = bernstein_value(env.model, s_lo + (1.0 - s_lo) * k / kGrid);
+    for (int k = 1; k < kGrid; ++k) {
+      if (!(q[k] <= q[k - 1] && q[k] < q[k + 1])) continue;
+      const double a = t0 + (s_lo + (1.0 - s_lo) * (k - 1) / kGrid) * h;
+      const double b = t0 + (s_lo + (1.0 - s_lo) * (k + 1) / kGrid) * h;
+      const auto mn = minimum(std::fmax(a, lo->first), std::fmin(b, t1), g);
+      if (mn.second < 0.0) return locate_root(g, lo->first, mn.first, lo->second, mn.second);
+      break;
+    }
+    return locate_root(g, lo->first, t1, lo->second, g1);
+  }
+
+  // Where a model of the function (Bernstein form on the step) is smallest on [sa, sb].
+  static double model_minimum(const Bernstein4& q, double sa, double sb) {
+    constexpr int kGrid = 16;
+    double best_s = 0.5 * (sa + sb), best_q = INFINITY;
+    for (int k = 0; k <= kGrid; ++k) {
+      const double s = sa + (sb - sa) * k / kGrid;
+      const double v = bernstein_value(q, s);
+      if (v < best_q) {
+        best_q = v;
+        best_s = s;
+      }
+    }
+    // Keep away from the ends of the step (known there).
+    return std::clamp(best_s, 1.0 / 64, 1.0 - 1.0 / 64);
   }
 
   // Minimum of g on [a, b] (Brent): (location, value).
@@ -497,24 +719,12 @@ class HybridIntegrator {
     return boost::math::tools::brent_find_minima(g, a, b, 26, iters);
   }
 
-  // Root of g before its minimum on [a, b] if that minimum is below zero (g(a) = ga > 0).
-  template <class G>
-  static std::optional<double> dip_root(G&& g, double a, double b, double ga) {
-    const auto mn = minimum(a, b, g);
-    if (!(mn.second < 0.0)) return std::nullopt;
-    return locate_root(g, a, mn.first, ga, mn.second);
-  }
-
-  // After a restart the slope of each event function is unknown: every one that is clearly
-  // positive may be falling, except the one that just fired (it starts at zero); the first scan
-  // probes them (slope_unknown_).
-  void reset_falling(const Events& g_start, int fired) {
-    for (std::size_t i = 0; i < NE; ++i) falling_[i] = int(i) != fired && g_start[i] > 0.0;
-    slope_unknown_ = true;
-  }
-
   static constexpr int kMaxSamples = 64;
-  static constexpr double kDipReach = 100.0;
+  static constexpr int kMaxRefine = 2;          // extra samples in a doubtful stretch before a search
+  static constexpr int kSubdivision = 5;        // doubtful stretches are located to 1/32 of a step
+  static constexpr double kRateStep = 0x1p-20;  // difference quotients over this fraction of a step
+  static constexpr int kResample = 4;           // interior samples at least every this many steps
+  static constexpr double kLagSafety = 8.0;     // margin on a remainder measured on an earlier step
   const Model& model_;
   IntegratorOptions opt_;
   bool high_order_;
@@ -523,9 +733,14 @@ class HybridIntegrator {
   Dop853<N> dop853_;
   StepperStats stats_;
   std::array<bool, NE> armed_{};
-  std::array<bool, NE> falling_{};  // event function still decreasing at the last step end
-  bool slope_unknown_ = false;      // first step after a restart: probe the slopes
-  Events g_last_{};
+  // Event values, rates and bounds on the rates' errors at the start and at the end of the step.
+  Events g_start_{}, gd_start_{}, gd_err_start_{};
+  Events g_end_{}, gd_end_{}, gd_err_end_{};
+  // The remainder coefficients last measured (scan_events), on a step of size remainder_h_.
+  Events remainder_{};
+  double remainder_h_ = 0.0;
+  bool remainder_known_ = false;
+  int steps_since_samples_ = 0;
   const double* t_clamp_ = nullptr;  // the run's input-side clamp (see run())
 };
 

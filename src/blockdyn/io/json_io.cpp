@@ -34,7 +34,7 @@ json to_json(const GroundMotion& g) {
 
 json to_json(const IntegratorOptions& o) {
   return {{"method", to_string(resolved_method(o))},
-          {"event_location", "TOMS748 on the dense output"},
+          {"event_location", "envelope scan (end values and rates, interior samples), TOMS748 on the dense output"},
           {"rtol", o.rtol},
           {"atol", o.atol},
           {"event_samples", o.event_samples},
@@ -106,6 +106,8 @@ json to_json(const RigidEventRecord& e) {
   j["state"] = pose_json(e.state);
   return j;
 }
+
+json to_json(const RunTiming& t) { return {{"integration_wall_s", t.wall_s}, {"integration_cpu_s", t.cpu_s}}; }
 
 std::string schema_name(const std::string& command, const std::string& kind) {
   return "blockdyn." + command + "." + kind + "/" + std::to_string(kJsonSchemaVersion);

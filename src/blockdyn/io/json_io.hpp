@@ -34,6 +34,9 @@ nlohmann::ordered_json to_json(const RigidEventRecord& e);
 nlohmann::ordered_json rigid_result_json(const RigidBlockParams& p, const GroundMotion& g, const RigidRunOptions& o,
                                          const RigidResult& r);
 
+// The integration's wall and CPU time: {"integration_wall_s", "integration_cpu_s"}.
+nlohmann::ordered_json to_json(const RunTiming& t);
+
 // Prints JSON with non-finite numbers as null (JSON has no inf/nan).
 std::string dump_json(const nlohmann::ordered_json& j, int indent = 2);
 

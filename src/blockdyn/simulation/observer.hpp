@@ -25,6 +25,10 @@ class Observer {
   virtual bool on_segment(const Model&, const Segment&, double /*t0*/, double /*t1*/, const Mode&) { return true; }
   virtual bool on_event(const Model&, const Event&) { return true; }
   virtual void on_finish(const Model&, double /*t*/, const Mode&, const State&) {}
+  // Whether on_segment evaluates the dense output inside the step; if no observer does, a step
+  // with no event nearby skips the dense output's extra stages (DOP853) and the segment is exact
+  // only at its two ends.
+  virtual bool needs_dense() const { return true; }
 };
 
 // Several observers as one; the run stops as soon as one of them asks to.
@@ -55,6 +59,11 @@ class FanOut final : public Observer<Model> {
   }
   void on_finish(const Model& m, double t, const Mode& md, const State& z) override {
     for (std::size_t i = 0; i < n_; ++i) list_[i]->on_finish(m, t, md, z);
+  }
+  bool needs_dense() const override {
+    for (std::size_t i = 0; i < n_; ++i)
+      if (list_[i]->needs_dense()) return true;
+    return false;
   }
 
  private:
@@ -95,6 +104,7 @@ class EnergyBalance final : public Observer<Model> {
     track(m, e.to, e.z);
     return true;
   }
+  bool needs_dense() const override { return false; }  // step ends only
 
  private:
   void track(const Model& m, const Mode& md, const State& z) {

@@ -19,7 +19,8 @@ class RigidRecorder final : public Observer<Model> {
   using typename Observer<Model>::Segment;
   static constexpr std::size_t kTh = Model::kThetaIndex, kOm = Model::kOmegaIndex;
 
-  RigidRecorder(bool record_events, RigidResult& r) : record_(record_events), res_(r) {
+  RigidRecorder(bool record_events, RigidResult& r, RigidEventSink* sink = nullptr)
+      : record_(record_events), res_(r), sink_(sink) {
     if (record_) res_.events.reserve(256);
   }
 
@@ -97,6 +98,7 @@ class RigidRecorder final : public Observer<Model> {
   void add(const RigidEventRecord& r) {
     ++res_.event_counts[int(r.kind)];
     if (record_) res_.events.push_back(r);
+    if (sink_) sink_->on_event(r);
   }
   void moved(double t, Mechanism from, Mechanism to) {
     if (to != Mechanism::Rest && !res_.first_motion_time) res_.first_motion_time = t;
@@ -112,6 +114,7 @@ class RigidRecorder final : public Observer<Model> {
 
   bool record_;
   RigidResult& res_;
+  RigidEventSink* sink_;
 };
 
 }  // namespace blockdyn

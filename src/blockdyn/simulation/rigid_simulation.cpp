@@ -90,7 +90,7 @@ void finish(const Model& m, const RunOutcome<Model>& out, const EnergyBalance<Mo
 
 template <class Model>
 RigidResult run_rigid_family(const Model& m, typename Model::Mode mode, typename Model::State z, const RigidRunOptions& opt,
-                             Observer<Model>* extra, const char* name) {
+                             Observer<Model>* extra, RigidEventSink* events, const char* name) {
   RigidResult res;
   res.model = name;
   res.t_start = opt.t_start;
@@ -98,13 +98,15 @@ RigidResult run_rigid_family(const Model& m, typename Model::Mode mode, typename
   res.initial_mode = m.mechanism(mode);
   res.initial_state = m.pose(mode, z);
   res.energy_initial = m.energy(mode, z);
-  RigidRecorder<Model> rec(opt.record_events, res);
+  RigidRecorder<Model> rec(opt.record_events, res, events);
   EnergyBalance<Model> bal;
   FanOut<Model> obs;
   obs.add(&rec);
   if (opt.track_energy) obs.add(&bal);
   obs.add(extra);
+  const RunClock clock;
   const RunOutcome<Model> out = run_model(m, mode, z, opt.t_start, opt.t_end, opt.integrator, obs);
+  res.timing = clock.elapsed();
   finish(m, out, bal, opt.track_energy, res);
   return res;
 }
@@ -112,7 +114,8 @@ RigidResult run_rigid_family(const Model& m, typename Model::Mode mode, typename
 }  // namespace
 
 RigidResult simulate_housner(const BlockShape& shape, std::optional<double> restitution, const GroundMotion& g,
-                             const RigidInitial& init, const RigidRunOptions& opt, Observer<HousnerBlock>* extra) {
+                             const RigidInitial& init, const RigidRunOptions& opt, Observer<HousnerBlock>* extra,
+                             RigidEventSink* events) {
   validate(shape);
   if (restitution)
     require(std::isfinite(*restitution) && *restitution >= 0.0 && *restitution <= 1.0, "restitution", "in [0, 1]",
@@ -121,11 +124,11 @@ RigidResult simulate_housner(const BlockShape& shape, std::optional<double> rest
   validate(opt);
   const HousnerBlock m(shape, restitution.value_or(shape.housner_restitution()), g);
   const HousnerBlock::State z = housner_initial_state(m, init);
-  return run_rigid_family(m, m.initial_mode(opt.t_start, z), z, opt, extra, "housner");
+  return run_rigid_family(m, m.initial_mode(opt.t_start, z), z, opt, extra, events, "housner");
 }
 
 RigidResult simulate_rigid(const RigidBlockParams& p, const GroundMotion& g, const RigidInitial& init,
-                           const RigidRunOptions& opt, Observer<RigidBlock>* extra) {
+                           const RigidRunOptions& opt, Observer<RigidBlock>* extra, RigidEventSink* events) {
   validate(p);
   validate(g);
   validate(opt);
@@ -136,7 +139,7 @@ RigidResult simulate_rigid(const RigidBlockParams& p, const GroundMotion& g, con
     throw std::invalid_argument(
         "initial state: no unique consistent mechanism (Painleve's paradox for mu-k = " +
         std::to_string(p.interface.mu_k) + " and this slenderness)");
-  return run_rigid_family(m, *mode, z, opt, extra, "rigid");
+  return run_rigid_family(m, *mode, z, opt, extra, events, "rigid");
 }
 
 }  // namespace blockdyn

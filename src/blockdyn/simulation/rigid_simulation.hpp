@@ -44,6 +44,14 @@ struct RigidEventRecord {
 
 inline constexpr int kNumRigidEventKinds = int(RigidEventKind::WZero) + 1;
 
+// Receives each event record as it is made (e.g. to stream a JSON event list), whether or not
+// the result keeps the list (RigidRunOptions::record_events).
+class RigidEventSink {
+ public:
+  virtual ~RigidEventSink() = default;
+  virtual void on_event(const RigidEventRecord&) = 0;
+};
+
 struct RigidResult {
   std::string model;  // housner | rigid
   SimStatus status = SimStatus::TEnd;
@@ -60,15 +68,17 @@ struct RigidResult {
   double work_friction = 0, work_ground = 0, work_impact = 0;
   double max_abs_energy_error = 0, max_abs_energy_change = 0;
   StepperStats stats;
+  RunTiming timing;  // of the integration alone
   std::string note;  // why the run stopped early (Painleve, outside the model)
 };
 
 // Throws std::invalid_argument for invalid parameters, options or initial states.
 RigidResult simulate_housner(const BlockShape& shape, std::optional<double> restitution, const GroundMotion& g,
                              const RigidInitial& init, const RigidRunOptions& opt,
-                             Observer<HousnerBlock>* extra = nullptr);
+                             Observer<HousnerBlock>* extra = nullptr, RigidEventSink* events = nullptr);
 RigidResult simulate_rigid(const RigidBlockParams& p, const GroundMotion& g, const RigidInitial& init,
-                           const RigidRunOptions& opt, Observer<RigidBlock>* extra = nullptr);
+                           const RigidRunOptions& opt, Observer<RigidBlock>* extra = nullptr,
+                           RigidEventSink* events = nullptr);
 
 // The initial state vectors (validated against the model; throw std::invalid_argument).
 HousnerBlock::State housner_initial_state(const HousnerBlock& m, const RigidInitial& init);

@@ -25,6 +25,7 @@ RunOutcome<Model> run_model(const Model& m, typename Model::Mode mode, Vec<Model
       return o.on_segment(m, s, a, b, md);
     }
     bool on_event(const EventInfo<typename Model::Mode, Model::kDim>& e) { return o.on_event(m, e); }
+    bool needs_dense() const { return o.needs_dense(); }
   } bridge{m, obs};
   m.complete(mode, z);
   obs.on_start(m, t0, mode, z);

@@ -73,6 +73,7 @@ class WinklerRecorder final : public Observer<WinklerBlock> {
   }
 
   bool early_stop() const { return early_; }
+  bool needs_dense() const override { return sink_ && sink_->needs_dense(); }
 
  private:
   bool stop() {
@@ -115,7 +116,9 @@ SimulationResult simulate(const BlockParams& p, const GroundMotion& g, const Blo
   FanOut<WinklerBlock> obs;
   obs.add(&rec);
   if (opt.track_energy) obs.add(&balance);
+  const RunClock clock;
   const RunOutcome<WinklerBlock> out = run_model(model, mode, z, t, opt.t_end, opt.integrator, obs);
+  res.timing = clock.elapsed();
   res.run_status = out.status;
   res.t_final = out.t;
   res.final_state = out.z;

@@ -10,6 +10,7 @@
 
 #include "blockdyn/integrate/hybrid_integrator.hpp"
 #include "blockdyn/simulation/run.hpp"
+#include "blockdyn/simulation/run_clock.hpp"
 #include "blockdyn/model/winkler/energy.hpp"
 #include "blockdyn/model/winkler/winkler_block.hpp"
 
@@ -55,6 +56,7 @@ struct SimulationResult {
   double max_abs_energy_error = 0;   // max |E - E0 - W_friction - W_nonpotential - W_ground|
   double max_abs_energy_change = 0;  // max |E - E0|
   StepperStats stats;
+  RunTiming timing;  // of the integration alone
   std::vector<EventRecord> events;
   std::array<long, kNumEventKinds> event_counts{};
 
@@ -72,6 +74,8 @@ class SimulationSink {
                           double /*t1*/, const BlockMode&) {}
   virtual void on_event(const WinklerBlock&, const EventRecord&) {}
   virtual bool keep_going() const { return true; }
+  // Whether on_segment evaluates the dense output inside a step (see Observer::needs_dense).
+  virtual bool needs_dense() const { return true; }
 };
 
 // Throws std::invalid_argument if the parameters, options or initial state are invalid.

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 
 #include "blockdyn/model/winkler/stick_reaction.hpp"
@@ -102,6 +103,44 @@ void WinklerBlock::events(double t, const Mode& m, const State& z,
     g[kEvFriction] = -m.friction_sign * (z[kVX] + corner_arms(p_.r, tilt, m.side).B * z[kVW]);
   } else {
     g[kEvFriction] = 1.0;
+  }
+}
+
+void WinklerBlock::event_rates(double t, const Mode& m, const State& z, const State& dz,
+                               std::array<double, kNumEvents>& g, std::array<double, kNumEvents>& gdot) const {
+  const Tilt tilt = make_tilt(z[kW]);
+  const CornerHeights ch = corner_heights(p_.r, z[kH], tilt);
+  const double vw = dz[kW];
+  // d|w|/dt; at w = 0 the lowest corner is the one |w| makes lowest as it grows.
+  const double abs_rate = tilt.sign != 0 ? tilt.sign * vw : std::fabs(vw);
+  const double rs_rate = p_.r * tilt.c * abs_rate;  // d(r sin|w|)/dt
+  const double omc_rate = tilt.s * abs_rate;        // d(1 - cos w)/dt
+  const double lowest_rate = dz[kH] - 0.5 * (rs_rate - omc_rate);
+  const double other_rate = dz[kH] + 0.5 * (rs_rate + omc_rate);
+  const double upper_rate = dz[kH] - 0.5 * (omc_rate + rs_rate);
+  g[kEvOverturn] = alpha_ - m.side * z[kW];
+  gdot[kEvOverturn] = -m.side * vw;
+  const bool other = ch.other_bottom >= ch.upper_pivot_side;
+  g[kEvInvalid] = other ? ch.other_bottom : ch.upper_pivot_side;
+  gdot[kEvInvalid] = other ? other_rate : upper_rate;
+  const double surface_sign = (m.regime == Regime::Flight) ? 1.0 : -1.0;
+  g[kEvSurface] = surface_sign * ch.lowest;
+  gdot[kEvSurface] = surface_sign * lowest_rate;
+  g[kEvWZero] = m.side * z[kW];
+  gdot[kEvWZero] = m.side * vw;
+  if (m.regime == Regime::Contact) {
+    g[kEvFriction] = forces(t, m, z, tilt).margin;
+    gdot[kEvFriction] = std::numeric_limits<double>::quiet_NaN();
+  } else if (m.regime == Regime::Slide && p_.mu > 0.0) {
+    // v_P = x' + B w', B = (cos w + side r sin w) / 2.
+    const double sw = tilt.sign * tilt.s;
+    const double B = 0.5 * (tilt.c + m.side * p_.r * sw);
+    const double B_rate = 0.5 * (m.side * p_.r * tilt.c - sw) * vw;
+    g[kEvFriction] = -m.friction_sign * (z[kVX] + B * z[kVW]);
+    gdot[kEvFriction] = -m.friction_sign * (dz[kVX] + B * dz[kVW] + B_rate * z[kVW]);
+  } else {
+    g[kEvFriction] = 1.0;
+    gdot[kEvFriction] = 0.0;
   }
 }
 

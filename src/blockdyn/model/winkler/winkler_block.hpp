@@ -50,6 +50,10 @@ class WinklerBlock {
 
   void rhs(double t, const Mode& m, const State& z, State& dz) const;
   void events(double t, const Mode& m, const State& z, std::array<double, kNumEvents>& g) const;
+  // The event functions and their time derivatives along dz = f(t, z), with one tilt evaluation
+  // (closed forms; in contact the friction margin's rate is left NaN for the integrator).
+  void event_rates(double t, const Mode& m, const State& z, const State& dz, std::array<double, kNumEvents>& g,
+                   std::array<double, kNumEvents>& gdot) const;
   void complete(const Mode& m, State& z) const;
   // event kBreakpoint: the ground motion kinks or jumps at t (contact re-checks friction).
   Transition<Mode> transition(double t, const Mode& m, State& z, int event) const;
