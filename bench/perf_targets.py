@@ -88,7 +88,8 @@ def section_steps(a, out):
 
 
 def section_grid(a, out):
-    ga = argparse.Namespace(mu=0.2, t_end=30.0, rtol=1e-10, tol=1e-6, method=None, repeat=3)
+    ga = argparse.Namespace(mu=0.2, t_end=30.0, rtol=1e-10, tol=1e-6, method=None, repeat=1)
+    compare_scipy.warm_up()
     rows = []
     for r in (0.1, 0.2, 0.5, 1.0):
         for k in (1e2, 1e4, 1e6):

@@ -284,3 +284,40 @@ TEST_F(CliSimulate, BothRungeKuttaPairsGiveTheSameEventsAndRecordWhichRan) {
   EXPECT_LT(dev_b, dev_a);
   EXPECT_LT(3 * b["steps"].get<long>(), a["steps"].get<long>());
 }
+
+TEST_F(CliSimulate, JsonOnlyWhenAskedReproducibleAndTimedOnRequest) {
+  // The JSON summary (events streamed through a temporary file) is the same text on every run
+  // and for --json and --json-out; --timing adds the integration's wall and CPU time, and
+  // nothing else changes; the text summary counts the events the JSON lists.
+  for (const char* model : {"winkler", "housner"}) {
+    SCOPED_TRACE(model);
+    std::vector<std::string> args = std::string(model) == "winkler"
+                                         ? std::vector<std::string>{"--r", "0.5", "--k", "1e4", "--t-end", "3"}
+                                         : std::vector<std::string>{"--model", "housner", "--width", "0.3",
+                                                                    "--height", "1.2", "--w0", "0.1", "--t-end", "3"};
+    auto with = [&](std::vector<std::string> extra) {
+      std::vector<std::string> a = args;
+      a.insert(a.end(), extra.begin(), extra.end());
+      const CliRun r = simulate(a);
+      EXPECT_EQ(r.code, 0) << r.err;
+      return r;
+    };
+    const CliRun a = with({"--json", "--json-out", (dir / "s.json").string()});
+    const CliRun b = with({"--json"});
+    EXPECT_EQ(a.out, b.out);
+    EXPECT_EQ(slurp(dir / "s.json"), a.out);
+    const json j = json::parse(a.out);
+    EXPECT_FALSE(j.contains("timing"));
+    ASSERT_FALSE(j["events"].empty());
+    json t = json::parse(with({"--json", "--timing"}).out);
+    ASSERT_TRUE(t.contains("timing"));
+    EXPECT_GE(t["timing"]["integration_cpu_s"].get<double>(), 0.0);
+    EXPECT_GT(t["timing"]["integration_wall_s"].get<double>(), 0.0);
+    t.erase("timing");
+    EXPECT_EQ(t, j);
+    if (std::string(model) == "winkler") {
+      const CliRun text = with({});
+      EXPECT_NE(text.out.find("events: " + std::to_string(j["events"].size()) + ","), std::string::npos) << text.out;
+    }
+  }
+}
