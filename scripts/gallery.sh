@@ -2,13 +2,15 @@
 # SPDX-License-Identifier: Apache-2.0
 # Regenerates the figures of every analysis family. Usage: scripts/gallery.sh [OUTDIR] [TARGET ...]
 # (default OUTDIR out/gallery; needs a built ./build). Targets (default: core thesis):
-#   core         one figure of every analysis family at modest resolution (about 2.5 minutes on 2 cores)
+#   core         one figure of every analysis family at modest resolution (about 2.5 minutes on 2 cores:
+#                107 s wall, the map 52 s of it, plus the assembly figures 42 s)
 #   thesis       the thesis's figures of chapters 3-4 that are cheap: code checks (Figs 3.2-3.11),
 #                typical responses (4.1-4.4), time to first flight (4.6-4.13), overturning (4.21-4.28),
-#                equilibrium landscapes and bifurcations (4.35-4.39) (about N_THESIS on 2 cores)
+#                equilibrium landscapes and bifurcations (4.35-4.39) (127 s CPU; 215 s wall measured on
+#                the shared 2-core machine under load; the code checks' 120k-row force traces 68 s of it)
 #   thesis-long  opt-in, expensive: long-term responses (4.41-4.56), the chaos layouts (5.1-5.7,
 #                5.13-5.14) and the response maps with sensitive dependence and k3 (6.1-6.2)
-#                (about N_LONG on 2 cores)
+#                (133 s CPU, 254 s wall on the shared 2-core machine; the long-term responses 47 s CPU of it)
 #   all          the three
 # The figures in docs/figures/ of the thesis targets are exactly these (copied from OUTDIR).
 set -euo pipefail
