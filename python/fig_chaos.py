@@ -22,7 +22,6 @@ thesis used). Prints a JSON summary (exponents, crossings, how far trajectories 
 energy surface: negative = inside).
 --tiny: short runs of one figure of each layout (for the test that the script runs).
 """
-import json
 import os
 import sys
 import tempfile
@@ -149,7 +148,7 @@ def main(argv):
                                  f"(thesis Fig 5.13, short run; same scale as 5.14)", args, short, min(t_le, short),
                                  limits=[pad(v) for v in lim])
         summary.append(dict(type="ic2 scaled, short", **res))
-    print(json.dumps(summary, indent=1))
+    print(cli.summary("fig-chaos", "figures", summary))
 
 
 if __name__ == "__main__":

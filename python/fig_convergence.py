@@ -17,7 +17,6 @@ Writes into OUTDIR (PNG + SVG each):
 and prints a JSON summary of the comparisons (the numbers quoted in docs/validation.md).
 --tiny: two k values and short windows (for the test that the script runs).
 """
-import json
 import math
 import os
 import sys
@@ -242,7 +241,7 @@ def main(argv):
         t_end = 0.05 if tiny else 0.2
         summary["vertical"] = [vertical_figure(cli, tmp, os.path.join(out, f"vertical_oscillation_mu{mu}.png"),
                                                mu, t_end) for mu in (0.2, 0)]
-    print(json.dumps(summary, indent=1))
+    print(cli.summary("fig-convergence", "checks", summary))
 
 
 if __name__ == "__main__":

@@ -16,7 +16,6 @@ Prints a JSON summary per scan: k_min, the lowest k that flies, the k above whic
 during the first impact (ic2: ihor = 1; ic1: see first_impact_boundary) and whether that set is upward closed on the grid (the thesis's statement for ic1).
 --tiny: two columns of 12 points (for the test that the script runs).
 """
-import json
 import os
 import sys
 import tempfile
@@ -117,7 +116,7 @@ def main(argv):
             legend_below(fig, handles, ncol=3, height=0.06)
             fig.suptitle(f"Time to first flight versus k (thesis Figs {label} family), t_end = {T_END}", fontsize=10)
             save(fig, os.path.join(out, name))
-    print(json.dumps(summary, indent=1))
+    print(cli.summary("fig-flight-time", "panels", summary))
 
 
 if __name__ == "__main__":

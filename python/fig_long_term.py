@@ -122,7 +122,7 @@ def main(argv):
     with tempfile.TemporaryDirectory(prefix="blockdyn-lt-") as tmp:
         for fig, mu, r, k, ic, thesis in rows:
             if fig == "4.52":  # the same block as 4.51, drawn with its trajectories
-                summary.append(fig_4_52(cli, tmp, out, t_end, 5))
+                summary.append(fig_4_52(cli, tmp, out, t_end, 1 if tiny else 5))
                 continue
             js = os.path.join(tmp, "r.json")
             cli("response", "--mu", mu, "--r", r, "--k", k, "--ic", ic, "--t-end", t_end, "--phase-dt", 0.1,
@@ -134,7 +134,7 @@ def main(argv):
                                 agrees=s["type"] == thesis.replace(" ", "_").replace("-", "_"),
                                 **{key: m.get(key) for key in ("late_flight_fraction", "dissipated_fraction")}))
         summary.append(fig_4_56(cli, tmp, out, t_end))
-    print(json.dumps(summary, indent=1))
+    print(cli.summary("fig-long-term", "figures", summary))
 
 
 if __name__ == "__main__":

@@ -100,7 +100,7 @@ def main(argv):
             fig.suptitle(f"Time and ihor at overturning versus k, ic2 (thesis Fig {label}), t_end = {T_END}",
                          fontsize=10)
             save(fig, os.path.join(out, f"overturn_fig{label.replace('.', '_')}.png"))
-    print(json.dumps(summary, indent=1))
+    print(cli.summary("fig-overturn", "panels", summary))
 
 
 if __name__ == "__main__":

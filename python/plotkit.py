@@ -95,6 +95,11 @@ class Cli:
     def json(self, *args):
         return json.loads(self(*args))
 
+    def summary(self, script, key, rows):
+        """The JSON summary a figure script prints: schema, the program's version, and `rows`."""
+        return json.dumps({"schema": f"blockdyn.{script}.summary/1", "program": self("--version").strip(),
+                           key: rows}, indent=1)
+
 
 # ----------------------------------------------------------------------------- output
 

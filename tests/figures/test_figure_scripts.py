@@ -32,7 +32,10 @@ def run_script(name, out, *extra):
 def test_script_writes_its_figures(name, tmp_path):
     r = run_script(name, tmp_path, "--tiny")
     assert r.returncode == 0, r.stderr
-    summary = json.loads(r.stdout)
+    doc = json.loads(r.stdout)
+    assert doc["schema"] == f"blockdyn.{name[:-3].replace('_', '-')}.summary/1" and doc["program"]
+    summary = doc[{"fig_convergence.py": "checks", "fig_flight_time.py": "panels", "fig_overturn.py": "panels"}
+                  .get(name, "figures")]
     assert summary
     for stem in SCRIPTS[name]:
         for ext in ("png", "svg"):
