@@ -60,9 +60,7 @@ void run(const CLI::App& s, const CyclesFlags& f) {
   const ForcedTrace& tr = *r.trace;
   const std::vector<Impact> imp = impacts_of(tr, h.block, h.fm.impact_rule);
   const long periods = long(tr.strobes()) - 1;
-  const CycleReport rep = periods - c.transient >= c.window
-                              ? cycles_of(tr, h.block, h.fm.impact_rule, c, r.outcome.t_failure)
-                              : CycleReport{c, 0, {}, {}, ""};
+  const CycleReport rep = cycles_of(tr, h.block, h.fm.impact_rule, c, r.outcome.t_failure);
 
   using json = nlohmann::ordered_json;
   json j;

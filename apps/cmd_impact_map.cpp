@@ -96,7 +96,8 @@ void run(const CLI::App& s, const ImpactMapFlags& f) {
     impacts.figures_and_clean({{"plot_impact_map.py",
                                 f.plot,
                                 {"--poincare", section.path, "--trace", trace.path, "--block", std::to_string(h.block),
-                                 "--section-phase", short_num(f.section_phase), "--title", run_title(h, f.r)}}});
+                                 "--section-phase", short_num(f.section_phase), "--period", short_num(h.period),
+                                 "--title", run_title(h, f.r)}}});
   } catch (...) {
     clean();
     throw;

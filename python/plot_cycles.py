@@ -60,6 +60,9 @@ def main():
     tth = column(trace, f"theta_{b}") if trace else np.array([])
     tom = column(trace, f"omega_{b}") if trace else np.array([])
 
+    if not shown and len(tt):
+        # No cycle: the trajectory of the last 10 periods instead.
+        shown = [["last 10 periods (no cycle)", max(tt[0], tt[-1] - 10 * a.period), tt[-1], 0, 0]]
     ncol = max(1, len(shown))
     fig = plt.figure(figsize=(max(8.0, 4.0 * ncol), 7.5))
     ax = fig.add_subplot(2, 1, 1)
@@ -80,7 +83,7 @@ def main():
         axp = fig.add_subplot(2, ncol, ncol + i + 1)
         lab, t0, t1 = s[0], s[1], s[2]
         m = re.match(r"\(([\d.]+),(\d+)\)", lab)
-        n = int(m.group(2)) if m else 1
+        n = int(m.group(2)) if m else 5
         sel = (tt >= t0) & (tt <= t1)
         axp.plot(tth[sel], tom[sel], color="0.75", lw=0.5)
         last = sel & (tt >= t1 - 2 * n * a.period)
@@ -89,7 +92,7 @@ def main():
         axp.plot(th[ss], om[ss], ".", color="C3", ms=4)
         axp.set_xlabel(f"theta_{b} [rad]")
         axp.set_ylabel(f"theta'_{b} [rad/s]")
-        axp.set_title(f"cycle {lab}, {t0:.4g} <= t <= {t1:.4g} s", fontsize=9)
+        axp.set_title(f"{'cycle ' if m else ''}{lab}, {t0:.4g} <= t <= {t1:.4g} s", fontsize=9)
         axp.grid(alpha=0.3)
     fig.tight_layout()
     fig.savefig(a.out, dpi=120)

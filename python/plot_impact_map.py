@@ -29,16 +29,22 @@ def main():
     ap.add_argument("--trace", required=True)
     ap.add_argument("--block", type=int, default=0)
     ap.add_argument("--section-phase", default="0")
+    ap.add_argument("--period", type=float, default=0.0, help="forcing period: (a) shows the last 30 periods")
     ap.add_argument("--title", default="")
     a = ap.parse_args()
     b = a.block
     imp, sec, tr = load(a.csv), load(a.poincare), load(a.trace)
     fig, ax = plt.subplots(1, 3, figsize=(14, 4.6))
+    span = "whole run"
     if tr:
-        ax[0].plot(tr[f"theta_{b}"], tr[f"omega_{b}"], lw=0.4, color="C0")
+        sel = np.ones(len(tr["t"]), dtype=bool)
+        if a.period > 0 and tr["t"][-1] - tr["t"][0] > 30 * a.period:
+            sel = tr["t"] >= tr["t"][-1] - 30 * a.period
+            span = "last 30 periods"
+        ax[0].plot(tr[f"theta_{b}"][sel], tr[f"omega_{b}"][sel], lw=0.5, color="C0")
     ax[0].set_xlabel(f"theta_{b} [rad]")
     ax[0].set_ylabel(f"theta'_{b} [rad/s]")
-    ax[0].set_title("(a) trajectory", fontsize=9)
+    ax[0].set_title(f"(a) trajectory, {span}", fontsize=9)
     if imp:
         ax[1].plot(imp["phase"], imp["omega_before"], ".", ms=2.5, color="C3")
     ax[1].set_xlim(0, 2 * np.pi)

@@ -292,6 +292,10 @@ TEST(ForcedModels, EveryFamilyFindsTheSameOneOneOrbit) {
   const GroundMotion g = survival_motion(so, 2.0, 8.0, shape.alpha(), shape.p());
   const double T = 1.0 / g.horizontal.frequency, t_end = 60 * T;
   auto cycle = [&](ForcedTrace& tr, ImpactRule rule) {
+    // Two impacts in each of the last 20 periods, whatever the family's impact rule.
+    long late = 0;
+    for (const Impact& i : impacts_of(tr, 0, rule)) late += i.t >= t_end - 20 * T;
+    EXPECT_EQ(late, 40);
     const CycleReport r = cycles_of(tr, 0, rule, CycleOptions{});
     EXPECT_FALSE(r.segments.empty());
     return r.segments.empty() ? std::string() : r.segments.back().label();
@@ -359,4 +363,29 @@ TEST(ForcedModels, AnAssemblyBelowUpliftHasPassagesButNoImpacts) {
   EXPECT_GT(passages, 20);
   EXPECT_TRUE(impacts_of(tr, 0, ImpactRule::Passage).empty());
   EXPECT_EQ(cycles_of(tr, 0, ImpactRule::Passage, CycleOptions{}).dominant, "no-impacts");
+}
+
+TEST(ForcedModels, WithRigidContactsEveryPassageIsAnImpact) {
+  // Rigid contacts do not deform: a block's rotation changes only once it has lifted, so every
+  // passage of a column through 0 ends a swing and is an impact (the law reports a step's
+  // contact changes at the step's end, after the crossing it interpolates inside the step).
+  PresetOptions po;
+  po.rigid_contacts = true;
+  po.ground_law.restitution = po.block_law.restitution = 0.0;
+  const Assembly a = make_preset("trilith", po);
+  SurvivalOptions so;
+  const double alpha = std::atan2(a.blocks[0].width, a.blocks[0].height);
+  const double p = std::sqrt(0.75 * a.g / (0.5 * std::hypot(a.blocks[0].width, a.blocks[0].height)));
+  const GroundMotion g = survival_motion(so, 4.0, 10.0, alpha, p);
+  AssemblyRunOptions ao;
+  ao.t_end = 10;
+  ao.record_events = false;
+  ForcedTrace tr(0.0, 1.0 / g.horizontal.frequency, 1);
+  simulate_assembly(a, g, ao, nullptr, &tr);
+  for (int b : {0, 1}) {
+    long passages = 0;
+    for (const ProbeEvent& e : tr.events()) passages += e.block == b && e.kind == ProbeEvent::Passage;
+    EXPECT_GT(passages, 40);
+    EXPECT_EQ(long(impacts_of(tr, b, ImpactRule::Passage).size()), passages) << b;
+  }
 }

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "blockdyn/analysis/forced/forced_trace.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <optional>
 
@@ -53,9 +54,12 @@ std::vector<Impact> impacts_of(const ForcedTrace& tr, int block, ImpactRule rule
   // Passages after a lift-off. theta' before (and, for the rigid law, after) from the closing of
   // the hitting corner nearest the passage: the last one since the previous impact, else the
   // first one after the passage (the rigid law closes it in the step after the crossing).
-  std::vector<std::size_t> mine;  // this block's events
+  // This block's events in time order (the rigid law reports a step's contact changes at its
+  // end, before the passage it interpolates inside the step).
+  std::vector<std::size_t> mine;
   for (std::size_t i = 0; i < ev.size(); ++i)
     if (ev[i].block == block) mine.push_back(i);
+  std::stable_sort(mine.begin(), mine.end(), [&](std::size_t a, std::size_t b) { return ev[a].t < ev[b].t; });
   bool lifted = false;
   std::size_t prev = 0;  // position in `mine` just after the previous impact
   for (std::size_t q = 0; q < mine.size(); ++q) {
