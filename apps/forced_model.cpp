@@ -54,6 +54,7 @@ SurvivalRun with_cycle(const std::function<SurvivalOutcome(const GroundMotion&, 
     if (!(h.frequency > 0 && h.amplitude != 0 && !h.has_pulse() && !h.record && g.vertical.is_zero()))
       return traced(g, t_end, nullptr);
     ForcedTrace tr(0.0, 1.0 / h.frequency, 1);
+    tr.keep_events_of(0);
     SurvivalOutcome out = traced(g, t_end, &tr);
     if (out.moved && !out.invalid) out.cycle = dominant_cycle(tr, 0, rule, CycleOptions{}, out.t_failure);
     return out;

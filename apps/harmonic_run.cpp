@@ -64,6 +64,7 @@ HarmonicRun run_harmonic(const HarmonicSetup& h, double t0, int per_period) {
                      std::to_string(h.t_end / h.period) + " periods exceed 1e7 samples");
   HarmonicRun r;
   r.trace = std::make_unique<ForcedTrace>(t0, h.period, per_period);
+  r.trace->keep_events_of(h.block);
   try {
     r.outcome = h.fm.traced(h.g, h.t_end, r.trace.get());
   } catch (const std::invalid_argument& e) {

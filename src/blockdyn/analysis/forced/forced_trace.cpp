@@ -41,7 +41,9 @@ double ForcedTrace::omega_amplitude(std::size_t k, int block) const {
   return i < amp_.size() ? amp_[i] : 0.0;
 }
 
-void ForcedTrace::event(const ProbeEvent& e) { ev_.push_back(e); }
+void ForcedTrace::event(const ProbeEvent& e) {
+  if (keep_ < 0 || e.block == keep_) ev_.push_back(e);
+}
 
 std::vector<Impact> impacts_of(const ForcedTrace& tr, int block, ImpactRule rule) {
   std::vector<Impact> out;

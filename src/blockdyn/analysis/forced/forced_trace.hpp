@@ -53,6 +53,9 @@ class ForcedTrace final : public RunProbe {
   const std::vector<ProbeEvent>& events() const { return ev_; }
   double t_final() const { return t_final_; }
 
+  // Keep the events of this block only (-1: all; the default). A long assembly run reports
+  // thousands of contact events per minute and block; the analyses look at one block.
+  void keep_events_of(int block) { keep_ = block; }
   void event(const ProbeEvent& e) override;
   void finish(double t) override { t_final_ = t; }
 
@@ -68,6 +71,7 @@ class ForcedTrace final : public RunProbe {
   std::vector<double> amp_;  // per period, per block: |theta|max, |theta'|max
   std::vector<ProbeEvent> ev_;
   double t_final_ = 0;
+  int keep_ = -1;
 };
 
 // The impacts of `block` under `rule` (see above), in time order.
