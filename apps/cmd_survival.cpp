@@ -51,7 +51,10 @@ void run(const CLI::App& s, const SurvivalFlags& f) {
   j["units"] = "a_H = beta alpha g cos(omega p t + phase); t in s";
   j["options"] = {{"excitation", o.excitation}, {"phase", o.phase}, {"t_end", o.periods > 0 ? json(nullptr) : json(o.t_end)},
                   {"periods", o.periods}, {"t_star_classes_s", o.t_star_classes}, {"failure", fm.overturn_rule},
-                  {"pulse_duration", o.excitation == "harmonic" ? "" : "pi / Omega (half a forcing period)"}};
+                  {"pulse_duration", o.excitation == "harmonic" ? "" : "pi / Omega (half a forcing period)"},
+                  {"cycle", "harmonic: the dominant (m, n) cycle of block 0 over the run (2m impacts per n forcing "
+                            "periods, seed 002; `blockdyn cycles` with its default window and tolerance, fitted to "
+                            "the run's length; before t* for a collapse), or non-periodic / no-impacts; null at rest"}};
   json arr = json::array();
   std::array<long, 4> counts{};
   for (const SurvivalPoint& p : pts) {
@@ -63,7 +66,7 @@ void run(const CLI::App& s, const SurvivalFlags& f) {
     x["t_failure"] = p.t_failure ? json(*p.t_failure) : json(nullptr);
     x["t_star_class"] = p.t_star_class.empty() ? json(nullptr) : json(p.t_star_class);
     x["max_abs_rotation"] = p.max_abs_rotation;
-    x["cycle"] = nullptr;  // the (m, n) cycle detection is not available yet
+    x["cycle"] = p.cycle.empty() ? json(nullptr) : json(p.cycle);
     arr.push_back(x);
     ++counts[p.motion == "rest" ? 0 : p.motion == "stable" ? 1 : p.motion == "collapse" ? 2 : 3];
   }
@@ -73,7 +76,7 @@ void run(const CLI::App& s, const SurvivalFlags& f) {
   TrajectoryTarget table(f.out, f.plot);
   if (table.file) {
     std::ostream& os = table.file->stream();
-    os << "beta,omega,motion,collapse_mode,t_failure,t_star_class,max_abs_rotation\n";
+    os << "beta,omega,motion,collapse_mode,t_failure,t_star_class,max_abs_rotation,cycle\n";
     char buf[256];
     for (const SurvivalPoint& p : pts) {
       std::snprintf(buf, sizeof buf, "%.17g,%.17g,%s,", p.beta, p.omega, p.motion.c_str());
@@ -84,8 +87,10 @@ void run(const CLI::App& s, const SurvivalFlags& f) {
         std::snprintf(buf, sizeof buf, "%.17g", *p.t_failure);
         os << buf;
       }
-      std::snprintf(buf, sizeof buf, ",%s,%.17g\n", p.t_star_class.c_str(), p.max_abs_rotation);
+      std::snprintf(buf, sizeof buf, ",%s,%.17g,", p.t_star_class.c_str(), p.max_abs_rotation);
       os << buf;
+      if (!p.cycle.empty()) os << '"' << p.cycle << '"';
+      os << '\n';
     }
   }
   const std::string title = f.m.model + (f.m.preset.empty() ? "" : " " + f.m.preset) + ", " + o.excitation;

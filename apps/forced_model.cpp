@@ -5,6 +5,7 @@
 
 #include "blockdyn/io/json_io.hpp"
 #include "blockdyn/simulation/assembly_simulation.hpp"
+#include "blockdyn/simulation/rigid_probe.hpp"
 #include "blockdyn/simulation/rigid_simulation.hpp"
 #include "cli_common.hpp"
 
@@ -42,6 +43,26 @@ void add_excitation_grid_flags(CLI::App& s, SurvivalOptions& o) {
   s.add_option("--threads", o.threads, "worker threads (0: all cores; default 0)");
 }
 
+namespace {
+
+// A run that, under harmonic motion, also records block 0's dominant cycle (stroboscopic
+// samples at t = k T; the detection window fitted to the run's length).
+SurvivalRun with_cycle(const std::function<SurvivalOutcome(const GroundMotion&, double, RunProbe*)>& traced,
+                       ImpactRule rule) {
+  return [traced, rule](const GroundMotion& g, double t_end) {
+    const GroundComponent& h = g.horizontal;
+    if (!(h.frequency > 0 && h.amplitude != 0 && !h.has_pulse() && !h.record && g.vertical.is_zero()))
+      return traced(g, t_end, nullptr);
+    ForcedTrace tr(0.0, 1.0 / h.frequency, 1);
+    tr.keep_events_of(0);
+    SurvivalOutcome out = traced(g, t_end, &tr);
+    if (out.moved && !out.invalid) out.cycle = dominant_cycle(tr, 0, rule, CycleOptions{}, out.t_failure);
+    return out;
+  };
+}
+
+}  // namespace
+
 ForcedModel build_forced_model(const CLI::App& s, const ForcedModelFlags& f) {
   ForcedModel fm;
   if (f.model == "housner" || f.model == "rigid") {
@@ -62,11 +83,20 @@ ForcedModel build_forced_model(const CLI::App& s, const ForcedModelFlags& f) {
     fm.description = to_json(rp, f.model);
     fm.overturn_rule = "|theta| reaches pi/2";
     const bool housner = f.model == "housner";
-    fm.run = [rp, housner](const GroundMotion& g, double t_end) {
+    fm.traced = [rp, housner](const GroundMotion& g, double t_end, RunProbe* probe) {
       RigidRunOptions ro;
       ro.t_end = t_end;
       ro.record_events = false;
-      const RigidResult r = housner ? simulate_housner(rp.shape, rp.restitution, g, {}, ro) : simulate_rigid(rp, g, {}, ro);
+      RigidResult r;
+      if (housner) {
+        std::optional<RigidProbeObserver<HousnerBlock>> obs;
+        if (probe) obs.emplace(*probe);
+        r = simulate_housner(rp.shape, rp.restitution, g, {}, ro, obs ? &*obs : nullptr);
+      } else {
+        std::optional<RigidProbeObserver<RigidBlock>> obs;
+        if (probe) obs.emplace(*probe);
+        r = simulate_rigid(rp, g, {}, ro, obs ? &*obs : nullptr);
+      }
       SurvivalOutcome out;
       out.moved = r.first_motion_time.has_value();
       out.max_abs_rotation = r.max_abs_rotation;
@@ -77,6 +107,11 @@ ForcedModel build_forced_model(const CLI::App& s, const ForcedModelFlags& f) {
       }
       return out;
     };
+    fm.impact_rule = ImpactRule::VelocityJump;
+    fm.block_names = {"block"};
+    fm.impact_definition = housner ? "a pivot change at theta = 0 (the velocity jump theta'+ = e theta'-)"
+                                   : "every velocity jump: a corner hitting the ground (pivot change or landing)";
+    fm.run = with_cycle(fm.traced, fm.impact_rule);
     return fm;
   }
   if (f.preset.empty()) throw UsageError("--model assembly needs --preset block|trilith|column");
@@ -103,11 +138,11 @@ ForcedModel build_forced_model(const CLI::App& s, const ForcedModelFlags& f) {
   fm.description = {{"model", "assembly"}, {"preset", f.preset}, {"contact", a.contact}, {"blocks", a.blocks.size()},
                     {"phi_s", f.phi_s}, {"phi_l", f.phi_l}, {"slenderness", po.slenderness}};
   fm.overturn_rule = "collapse mode 1 (rotation) or 2 (bearing)";
-  fm.run = [a](const GroundMotion& g, double t_end) {
+  fm.traced = [a](const GroundMotion& g, double t_end, RunProbe* probe) {
     AssemblyRunOptions ao;
     ao.t_end = t_end;
     ao.record_events = false;
-    const AssemblyResult r = simulate_assembly(a, g, ao);
+    const AssemblyResult r = simulate_assembly(a, g, ao, nullptr, probe);
     SurvivalOutcome out;
     out.moved = r.motion != "rest";
     out.collapse_mode = r.collapse_mode;
@@ -118,6 +153,12 @@ ForcedModel build_forced_model(const CLI::App& s, const ForcedModelFlags& f) {
       if (i.lower >= 0) out.max_sliding = std::fmax(out.max_sliding, i.max_abs_sliding);
     return out;
   };
+  fm.impact_rule = ImpactRule::Passage;
+  for (const auto& b : a.blocks) fm.block_names.push_back(b.name);
+  fm.impact_definition =
+      "a passage of the block's rotation through 0 after it lifted (a contact end under it opened since the "
+      "previous impact); theta' before: at the closing of the end that begins the impact";
+  fm.run = with_cycle(fm.traced, fm.impact_rule);
   return fm;
 }
 

@@ -10,6 +10,7 @@
 #include <optional>
 #include <string>
 
+#include "blockdyn/analysis/forced/forced_trace.hpp"
 #include "blockdyn/analysis/forced/survival_map.hpp"
 #include "blockdyn/excitation/ground_motion.hpp"
 #include "blockdyn/model/assembly/assembly_params.hpp"
@@ -30,8 +31,14 @@ struct ForcedModel {
   nlohmann::ordered_json description;
   std::string overturn_rule;
   // Thread-safe: one simulation from rest to t_end (s) under g, reduced to what the forced
-  // analyses classify (blocks: collapse mode 1 when overturned).
+  // analyses classify (blocks: collapse mode 1 when overturned). Under harmonic motion the
+  // outcome's cycle is the dominant (m, n) cycle of block 0 (cycle_detection.hpp).
   SurvivalRun run;
+  // The same run reporting to a probe (may be null): the cycle and impact-map analyses.
+  std::function<SurvivalOutcome(const GroundMotion& g, double t_end, RunProbe* probe)> traced;
+  ImpactRule impact_rule = ImpactRule::VelocityJump;  // what an impact is for this model (forced_trace.hpp)
+  std::vector<std::string> block_names;               // one per block (1 for housner/rigid)
+  std::string impact_definition;                       // the same in words, for the outputs
 };
 
 void add_forced_model_flags(CLI::App& s, ForcedModelFlags& f);

@@ -68,6 +68,10 @@ run $B spectrum --model housner --width 0.3 --height 1.5 --pulse one-sine --dura
 # Survival domain of the Housner block (40 x 40, 20 forcing periods)
 run $B survival --model housner --width 0.3 --height 1.5 --beta-min 0.5 --beta-max 6 --beta-points 40 \
   --omega-min 1 --omega-max 20 --omega-points 40 --periods 20 --plot "$O/survival_housner.png" --quiet
+# Cycles and the impact map of the Housner block under harmonic motion (a (1,3) orbit)
+run $B cycles --model housner --width 0.3 --height 1.5 --beta 3.3 --omega 10 --periods 200 --plot "$O/cycles.png" --quiet
+run $B impact-map --model housner --width 0.3 --height 1.5 --beta 3.3 --omega 10 --periods 200 --transient 50 \
+  --plot "$O/impact_map.png" --quiet
 # Block assemblies (seed 002 trilith): frame rocking, the harmonic case, a figure and an animation
 run /usr/bin/python3 python/fig_assembly.py "$B" "$O"
 }

@@ -26,8 +26,8 @@ import numpy as np
 from . import _core
 
 __version__ = _core.__version__
-__all__ = ["simulate", "assembly", "spectrum", "survival", "sweep", "map", "run", "Simulation", "Assembly",
-           "__version__"]
+__all__ = ["simulate", "assembly", "spectrum", "survival", "cycles", "impact_map", "sweep", "map", "run",
+           "Simulation", "Assembly", "__version__"]
 
 # Where the plot scripts are once installed (share/blockdyn/python beside lib/python3/...).
 _here = os.path.dirname(os.path.abspath(__file__))
@@ -187,6 +187,48 @@ def survival(**options):
     j["motion"] = np.array([p["motion"] for p in pts], dtype=object)
     j["t_failure"] = np.array([np.nan if p["t_failure"] is None else p["t_failure"] for p in pts], dtype=float)
     j["max_abs_rotation"] = np.array([p["max_abs_rotation"] for p in pts], dtype=float)
+    j["cycle"] = np.array([p["cycle"] for p in pts], dtype=object)
+    return j
+
+
+def _harmonic_command(command, tables, options):
+    """Runs COMMAND with its JSON summary and the CSV tables {key: flag} in a temporary directory;
+    returns the summary with each table as {column: NumPy array} under its key."""
+    for reserved in ("json", "json_out", *tables.values()):
+        if reserved in options:
+            raise ValueError(f"{reserved}: set by blockdyn.{command.replace('-', '_')} itself")
+    with tempfile.TemporaryDirectory(prefix="blockdyn-py-") as tmp:
+        summ = os.path.join(tmp, "summary.json")
+        paths = {key: os.path.join(tmp, key + ".csv") for key in tables}
+        opts = dict(options, json_out=summ, quiet=True, **{tables[k]: p for k, p in paths.items()})
+        run(*_args(command, opts))
+        with open(summ) as f:
+            j = json.load(f)
+        for key, path in paths.items():
+            j[key] = _read_csv(path)
+        return j
+
+
+def cycles(trace=False, **options):
+    """Runs `blockdyn cycles` (stroboscopic samples and (m, n) cycles, 2m impacts per n forcing
+    periods) and returns its JSON summary with the strobe samples under "strobe" ({column: array}:
+    k, t, x_b, y_b, theta_b, vx_b, vy_b, omega_b per block, cycle) and the analysed block's "t",
+    "theta", "omega" at t = k T; with trace=True also the trajectory under "trace"."""
+    tables = {"strobe": "out", **({"trace": "trace"} if trace else {})}
+    j = _harmonic_command("cycles", tables, options)
+    b = j["block"]
+    j["t"], j["theta"], j["omega"] = (j["strobe"][c] for c in ("t", f"theta_{b}", f"omega_{b}"))
+    return j
+
+
+def impact_map(trace=False, **options):
+    """Runs `blockdyn impact-map` and returns its JSON summary with the impacts as arrays "t",
+    "phase" ((Omega t + phase) mod 2 pi), "omega_before", "omega_after", the Poincare section under
+    "poincare" ({column: array}) and, with trace=True, the trajectory under "trace"."""
+    tables = {"impacts": "out", "poincare": "poincare", **({"trace": "trace"} if trace else {})}
+    j = _harmonic_command("impact-map", tables, options)
+    for c in ("t", "phase", "omega_before", "omega_after"):
+        j[c] = j["impacts"].get(c, np.array([], dtype=float))
     return j
 
 

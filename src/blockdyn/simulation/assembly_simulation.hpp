@@ -15,6 +15,7 @@
 #include "blockdyn/excitation/ground_motion.hpp"
 #include "blockdyn/integrate/hybrid_integrator.hpp"
 #include "blockdyn/model/assembly/assembly_params.hpp"
+#include "blockdyn/simulation/run_probe.hpp"
 
 namespace blockdyn {
 
@@ -78,8 +79,10 @@ struct AssemblyResult {
   long impacts = 0;              // rigid law: contact ends closing with an approach velocity
 };
 
-// One run. `trajectory` (optional) receives the CSV. Throws std::invalid_argument on bad input.
+// One run. `trajectory` (optional) receives the CSV; `probe` (optional) the samples, passages of
+// the rotations through 0 and contact closings/openings under each block (run_probe.hpp). Throws
+// std::invalid_argument on bad input.
 AssemblyResult simulate_assembly(const Assembly& a, const GroundMotion& g, const AssemblyRunOptions& o,
-                                 std::ostream* trajectory = nullptr);
+                                 std::ostream* trajectory = nullptr, RunProbe* probe = nullptr);
 
 }  // namespace blockdyn

@@ -71,6 +71,7 @@ std::vector<SurvivalPoint> survival_map(const SurvivalRun& run, const SurvivalOp
         pt.max_sliding = r.max_sliding;
         pt.collapse_mode = r.collapse_mode;
         pt.t_failure = r.t_failure;
+        pt.cycle = r.cycle;
         if (r.invalid) pt.motion = "invalid";
         else if (r.collapse_mode) pt.motion = "collapse";
         else if (r.moved) pt.motion = "stable";

@@ -36,6 +36,7 @@ struct SurvivalPoint {
   std::string t_star_class;  // "<=5 s", "short", "medium", "long", "very long" (collapse only)
   double max_abs_rotation = 0;
   double max_sliding = 0;    // m (assemblies: the largest slip between blocks)
+  std::string cycle;         // harmonic: the dominant (m, n) cycle label of the run, "" if none
 };
 
 struct SurvivalOutcome {
@@ -43,6 +44,7 @@ struct SurvivalOutcome {
   std::optional<int> collapse_mode;
   std::optional<double> t_failure;
   double max_abs_rotation = 0, max_sliding = 0;
+  std::string cycle;  // harmonic motion: the dominant cycle label (cycle_detection.hpp), "" if none
 };
 // Thread-safe: one run under g to t_end (s).
 using SurvivalRun = std::function<SurvivalOutcome(const GroundMotion& g, double t_end)>;
