@@ -10,9 +10,12 @@
 
 namespace blockdyn::cli {
 
-void add_forced_model_flags(CLI::App& s, ForcedModelFlags& f) {
-  s.add_option("--model", f.model, "housner, rigid (a block on rigid ground) or assembly (with --preset)")
-      ->check(CLI::IsMember({"housner", "rigid", "assembly"}));
+void add_forced_model_flags(CLI::App& s, ForcedModelFlags& f, const std::vector<std::string>& extra_models) {
+  std::vector<std::string> models = extra_models;
+  for (const char* m : {"housner", "rigid", "assembly"}) models.push_back(m);
+  std::string help = "housner, rigid (a block on rigid ground) or assembly (with --preset)";
+  for (const auto& m : extra_models) help += ", or " + m;
+  s.add_option("--model", f.model, help)->check(CLI::IsMember(models));
   s.add_option("--width", f.width, "housner/rigid: block width [m]");
   s.add_option("--height", f.height, "housner/rigid: block height [m]");
   s.add_option("--mass", f.mass, "housner/rigid: mass [kg] (default 1)");
@@ -77,6 +80,9 @@ ForcedModel build_forced_model(const CLI::App& s, const ForcedModelFlags& f) {
       }
       return out;
     };
+    fm.lyapunov = [rp, housner](const GroundMotion& g, const ForcedLyapunovOptions& o, const RigidInitial& init) {
+      return housner ? housner_lyapunov(rp.shape, rp.restitution, g, init, o) : rigid_lyapunov(rp, g, init, o);
+    };
     return fm;
   }
   if (f.preset.empty()) throw UsageError("--model assembly needs --preset block|trilith|column");
@@ -117,6 +123,9 @@ ForcedModel build_forced_model(const CLI::App& s, const ForcedModelFlags& f) {
     for (const auto& i : r.interfaces)
       if (i.lower >= 0) out.max_sliding = std::fmax(out.max_sliding, i.max_abs_sliding);
     return out;
+  };
+  fm.lyapunov = [a](const GroundMotion& g, const ForcedLyapunovOptions& o, const RigidInitial&) {
+    return assembly_lyapunov(a, g, o);
   };
   return fm;
 }

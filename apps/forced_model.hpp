@@ -9,7 +9,9 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <vector>
 
+#include "blockdyn/analysis/forced/forced_lyapunov.hpp"
 #include "blockdyn/analysis/forced/survival_map.hpp"
 #include "blockdyn/excitation/ground_motion.hpp"
 #include "blockdyn/model/assembly/assembly_params.hpp"
@@ -32,9 +34,14 @@ struct ForcedModel {
   // Thread-safe: one simulation from rest to t_end (s) under g, reduced to what the forced
   // analyses classify (blocks: collapse mode 1 when overturned).
   SurvivalRun run;
+  // Thread-safe: the largest Lyapunov exponent of one run under g (the initial state is used by
+  // the rigid-ground models; assemblies start as built).
+  std::function<ForcedLyapunovOutcome(const GroundMotion& g, const ForcedLyapunovOptions& o, const RigidInitial& init)>
+      lyapunov;
 };
 
-void add_forced_model_flags(CLI::App& s, ForcedModelFlags& f);
+// extra_models: further values --model accepts (handled by the command itself).
+void add_forced_model_flags(CLI::App& s, ForcedModelFlags& f, const std::vector<std::string>& extra_models = {});
 // The excitation and frequency grid of survival and response-curve: --excitation, --phase,
 // --omega-min/max/points, --t-end, --periods, --threads.
 void add_excitation_grid_flags(CLI::App& s, SurvivalOptions& o);

@@ -151,8 +151,8 @@ TangentLyapunovResult tangent_lyapunov(const M& m, typename M::Mode md, Vec<M::k
     }
   }
   // The start direction: every metric component one scale unit, projected by complete().
+  const auto metric = Traits::metric(m);
   {
-    const auto metric = Traits::metric(m);
     typename VM::Base v{};
     for (std::size_t i = 0; i < VM::N; ++i) v[i] = metric[i] ? vm.scale()[i] : 0.0;
     VM::set_tangent(Z, 0, v);
@@ -201,7 +201,9 @@ TangentLyapunovResult tangent_lyapunov(const M& m, typename M::Mode md, Vec<M::k
       stopped(st, ob);
       return res;
     }
-    for (auto& x : v) x /= d;
+    // Components outside the metric (accumulated works, a neutral translation) never feed back;
+    // left alone they would be amplified by every renormalisation of a contracting tangent.
+    for (std::size_t i = 0; i < VM::N; ++i) v[i] = metric[i] ? v[i] / d : 0.0;
     VM::set_tangent(Z, 0, v);
   }
   res.t_final = t;
