@@ -123,7 +123,8 @@ void run(const CLI::App& s, const ChaosMapFlags& f) {
     }
   }
   const std::string title = f.m.model + (f.m.preset.empty() ? "" : " " + f.m.preset) + ": largest Lyapunov exponent";
-  table.figures_and_clean({{"plot_chaos_map.py", f.plot, {"--title", title, "--threshold", std::to_string(o.threshold)}}});
+  table.figures_and_clean(
+      {{"plot_chaos_map.py", f.plot, {"--title", title, "--threshold", std::to_string(o.threshold)}}});
   if (!f.json_out.empty()) emit_json(j, f.json_out);
   if (f.json) emit_json(j, "-");
   if (!f.json && !f.quiet) {
@@ -137,8 +138,9 @@ void add(CLI::App& app) {
   auto f = std::make_shared<ChaosMapFlags>();
   f->o.grid.beta_points = 10;
   CLI::App* s = app.add_subcommand(
-      "chaos-map", "largest Lyapunov exponent over (beta, omega) for a_H = beta alpha g cos(Omega t + phase), "
-                   "omega = Omega/p (seed 002): rest, superstable, periodic, neutral, chaotic or collapse per point");
+      "chaos-map",
+      "largest Lyapunov exponent over (beta, omega) for a_H = beta alpha g cos(Omega t + phase), "
+      "omega = Omega/p (seed 002): rest, superstable, periodic, neutral, chaotic or collapse per point");
   add_forced_model_flags(*s, f->m);
   add_excitation_grid_flags(*s, f->o.grid);
   s->get_option("--periods")->description("forcing periods per run, transient included (default 150)");
@@ -155,7 +157,8 @@ void add(CLI::App& app) {
   s->add_option("--plot", f->plot, "plot the map of the exponent with the motion classes (PNG + SVG)");
   s->add_flag("--json", f->json, "print the JSON summary");
   s->add_option("--json-out", f->json_out, "write the JSON summary here");
-  s->add_option("--progress", f->progress, "auto, bar, plain or none")->check(CLI::IsMember({"auto", "bar", "plain", "none"}));
+  s->add_option("--progress", f->progress, "auto, bar, plain or none")
+      ->check(CLI::IsMember({"auto", "bar", "plain", "none"}));
   s->add_flag("--quiet", f->quiet, "no summary line, no progress");
   s->callback([s, f] { run(*s, *f); });
 }

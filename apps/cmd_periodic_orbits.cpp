@@ -104,23 +104,26 @@ void run(const CLI::App& s, const OrbitFlags& f) {
 
   json j;
   j["run"] = run_info();
-  j["model"] = {{"model", "housner"}, {"width", f.width}, {"height", f.height}, {"g", f.g}, {"restitution", rf.e()},
-                {"alpha", alpha}, {"p", rf.p()}};
-  j["forcing"] = "a_H = K_s g sin(Omega t + phi), Omega = omega p; phase = Omega t + phi mod 2 pi at an impact onto "
-                 "theta > 0, velocity = theta'/(alpha p) right after it";
-  j["convention"] = {{"cycle", {type.m, type.n}},
-                     {"seed_002", "(m, n): 2m impacts per n forcing periods"},
-                     {"seed_001", {{"n", type.n}, {"k", 2 * type.m}, {"meaning", "k impacts per period 2 pi n / omega"}}},
-                     {"symmetric", type.symmetric}};
+  j["model"] = {{"model", "housner"},    {"width", f.width}, {"height", f.height}, {"g", f.g},
+                {"restitution", rf.e()}, {"alpha", alpha},   {"p", rf.p()}};
+  j["forcing"] =
+      "a_H = K_s g sin(Omega t + phi), Omega = omega p; phase = Omega t + phi mod 2 pi at an impact onto "
+      "theta > 0, velocity = theta'/(alpha p) right after it";
+  j["convention"] = {
+      {"cycle", {type.m, type.n}},
+      {"seed_002", "(m, n): 2m impacts per n forcing periods"},
+      {"seed_001", {{"n", type.n}, {"k", 2 * type.m}, {"meaning", "k impacts per period 2 pi n / omega"}}},
+      {"symmetric", type.symmetric}};
   j["integrator"] = to_json(f.integ);
-  const std::string title_base = "housner b/h=" + std::to_string(f.width / f.height).substr(0, 5) + " e=" +
-                                 std::to_string(rf.e()).substr(0, 5) + " (" + std::to_string(type.m) + "," +
+  const std::string title_base = "housner b/h=" + std::to_string(f.width / f.height).substr(0, 5) +
+                                 " e=" + std::to_string(rf.e()).substr(0, 5) + " (" + std::to_string(type.m) + "," +
                                  std::to_string(type.n) + ")" + (type.symmetric ? " symmetric" : "");
 
   if (f.region) {
     OrbitRegionOptions ro = f.reg;
     if (given(s, "--beta-min") || given(s, "--beta-max")) {
-      if (given(s, "--ks-min") || given(s, "--ks-max")) throw UsageError("give --ks-min/max or --beta-min/max, not both");
+      if (given(s, "--ks-min") || given(s, "--ks-max"))
+        throw UsageError("give --ks-min/max or --beta-min/max, not both");
       ro.ks_min = f.beta_min * alpha;
       ro.ks_max = f.beta_max * alpha;
     }
@@ -141,8 +144,14 @@ void run(const CLI::App& s, const OrbitFlags& f) {
     json arr = json::array();
     long exist = 0, stable = 0;
     for (const auto& p : pts) {
-      arr.push_back({{"ks", p.ks}, {"beta", p.ks / alpha}, {"omega", p.omega}, {"orbits", p.orbits}, {"stable", p.stable},
-                     {"phase", num(p.phase)}, {"velocity", num(p.velocity)}, {"max_multiplier", num(p.max_multiplier)},
+      arr.push_back({{"ks", p.ks},
+                     {"beta", p.ks / alpha},
+                     {"omega", p.omega},
+                     {"orbits", p.orbits},
+                     {"stable", p.stable},
+                     {"phase", num(p.phase)},
+                     {"velocity", num(p.velocity)},
+                     {"max_multiplier", num(p.max_multiplier)},
                      {"linear_orbits", p.linear_orbits < 0 ? json(nullptr) : json(p.linear_orbits)},
                      {"linear_stable", p.linear_stable < 0 ? json(nullptr) : json(p.linear_stable)}});
       exist += p.orbits > 0;
@@ -172,7 +181,8 @@ void run(const CLI::App& s, const OrbitFlags& f) {
     }
     std::ostringstream extra;
     extra << alpha << ',' << rf.e() << ',' << type.n << ',' << (type.symmetric && type.m == 1 ? 1 : 0);
-    table.figures_and_clean({{"plot_periodic_orbits.py", f.plot, {"--kind", "region", "--title", title_base, "--linear", extra.str()}}});
+    table.figures_and_clean(
+        {{"plot_periodic_orbits.py", f.plot, {"--kind", "region", "--title", title_base, "--linear", extra.str()}}});
     if (!f.json_out.empty()) emit_json(j, f.json_out);
     if (f.json_flag) emit_json(j, "-");
     if (!f.json_flag && !f.quiet)
@@ -197,7 +207,9 @@ void run(const CLI::App& s, const OrbitFlags& f) {
   if (type.symmetric && type.m == 1) {
     json lj = json::array();
     for (const auto& l : linear_symmetric_orbits(rf.ks / alpha, rf.omega, rf.e(), type.n))
-      lj.push_back({{"phase", l.phase}, {"velocity", l.velocity}, {"valid", l.valid},
+      lj.push_back({{"phase", l.phase},
+                    {"velocity", l.velocity},
+                    {"valid", l.valid},
                     {"multipliers", {cx(l.multipliers[0]), cx(l.multipliers[1])}}});
     j["linear_theory"] = lj;
     j["linear_fold_ks"] = alpha * linear_symmetric_fold_beta(rf.omega, rf.e(), type.n);
@@ -208,14 +220,15 @@ void run(const CLI::App& s, const OrbitFlags& f) {
     TrajectoryTarget table(f.out, "");
     if (table.file) {
       std::ostream& os = table.file->stream();
-      os << "orbit,phase,velocity,velocity_si,period,max_abs_rotation,mu1_re,mu1_im,mu2_re,mu2_im,stable,lyapunov_exponent\n";
+      os << "orbit,phase,velocity,velocity_si,period,max_abs_rotation,mu1_re,mu1_im,mu2_re,mu2_im,stable,lyapunov_"
+            "exponent\n";
       char buf[512];
       for (std::size_t k = 0; k < orbits.size(); ++k) {
         const auto& o = orbits[k];
-        std::snprintf(buf, sizeof buf, "%zu,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%d,%.17g\n", k, o.phase,
-                      o.velocity, o.velocity * alpha * rf.p(), o.period, o.max_abs_rotation, o.multipliers[0].real(),
-                      o.multipliers[0].imag(), o.multipliers[1].real(), o.multipliers[1].imag(), int(o.stable),
-                      o.lyapunov_exponent);
+        std::snprintf(buf, sizeof buf, "%zu,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%d,%.17g\n", k,
+                      o.phase, o.velocity, o.velocity * alpha * rf.p(), o.period, o.max_abs_rotation,
+                      o.multipliers[0].real(), o.multipliers[0].imag(), o.multipliers[1].real(),
+                      o.multipliers[1].imag(), int(o.stable), o.lyapunov_exponent);
         os << buf;
       }
       table.figures_and_clean({});
@@ -252,8 +265,8 @@ void run(const CLI::App& s, const OrbitFlags& f) {
     if (!f.json_out.empty()) emit_json(j, f.json_out);
     if (f.json_flag) emit_json(j, "-");
     if (!f.json_flag && !f.quiet) {
-      std::printf("%zu orbit(s) of type (%d,%d)%s at K_s = %g g (beta = %g), omega = %g:\n", orbits.size(), type.m, type.n,
-                  type.symmetric ? " symmetric" : "", rf.ks, rf.ks / alpha, rf.omega);
+      std::printf("%zu orbit(s) of type (%d,%d)%s at K_s = %g g (beta = %g), omega = %g:\n", orbits.size(), type.m,
+                  type.n, type.symmetric ? " symmetric" : "", rf.ks, rf.ks / alpha, rf.omega);
       for (const auto& o : orbits)
         std::printf("  phase %.6f  velocity %.6f  |mu| %.4g %.4g  %s  max|theta|/alpha %.4g\n", o.phase, o.velocity,
                     std::abs(o.multipliers[0]), std::abs(o.multipliers[1]), o.stable ? "stable" : "unstable",
@@ -279,10 +292,15 @@ void run(const CLI::App& s, const OrbitFlags& f) {
   } catch (const std::invalid_argument& e) {
     throw UsageError(e.what());
   }
-  if (orbits.empty()) throw std::runtime_error("no orbit found at the start point to continue (give --guess-phase/--guess-velocity)");
+  if (orbits.empty())
+    throw std::runtime_error("no orbit found at the start point to continue (give --guess-phase/--guess-velocity)");
   j["mode"] = "continue";
-  j["continuation"] = {{"parameter", co.parameter}, {"min", co.min}, {"max", co.max}, {"ds", co.ds},
-                       {"max_points", co.max_points}, {"multipliers", "eigenvalues of the shooting Jacobian"}};
+  j["continuation"] = {{"parameter", co.parameter},
+                       {"min", co.min},
+                       {"max", co.max},
+                       {"ds", co.ds},
+                       {"max_points", co.max_points},
+                       {"multipliers", "eigenvalues of the shooting Jacobian"}};
   json bj = json::array();
   struct Row {
     int branch;
@@ -296,12 +314,18 @@ void run(const CLI::App& s, const OrbitFlags& f) {
       const Branch b = continue_orbit(rf, type, o.phase, o.velocity, co);
       json pts = json::array();
       for (const auto& p : b.points) {
-        pts.push_back({{"ks", p.ks}, {"beta", p.ks / alpha}, {"omega", p.omega}, {"phase", p.phase},
-                       {"velocity", p.velocity}, {"multipliers", {cx(p.multipliers[0]), cx(p.multipliers[1])}},
-                       {"stable", p.stable}, {"event", p.event}});
+        pts.push_back({{"ks", p.ks},
+                       {"beta", p.ks / alpha},
+                       {"omega", p.omega},
+                       {"phase", p.phase},
+                       {"velocity", p.velocity},
+                       {"multipliers", {cx(p.multipliers[0]), cx(p.multipliers[1])}},
+                       {"stable", p.stable},
+                       {"event", p.event}});
         rows.push_back({bi, p});
       }
-      bj.push_back({{"branch", bi}, {"from_orbit", &o - orbits.data()}, {"direction", dir}, {"end", b.end}, {"points", pts}});
+      bj.push_back(
+          {{"branch", bi}, {"from_orbit", &o - orbits.data()}, {"direction", dir}, {"end", b.end}, {"points", pts}});
       ++bi;
     }
   }
@@ -315,23 +339,25 @@ void run(const CLI::App& s, const OrbitFlags& f) {
       const BranchPoint& p = r.p;
       std::snprintf(buf, sizeof buf, "%d,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%d,%s\n",
                     r.branch, p.ks, p.ks / alpha, p.omega, p.phase, p.velocity, std::abs(p.multipliers[0]),
-                    std::abs(p.multipliers[1]), p.multipliers[0].real(), p.multipliers[0].imag(), p.multipliers[1].real(),
-                    p.multipliers[1].imag(), int(p.stable), p.event.c_str());
+                    std::abs(p.multipliers[1]), p.multipliers[0].real(), p.multipliers[0].imag(),
+                    p.multipliers[1].real(), p.multipliers[1].imag(), int(p.stable), p.event.c_str());
       os << buf;
     }
   }
   std::ostringstream extra;
-  extra << alpha << ',' << rf.e() << ',' << type.n << ',' << (type.symmetric && type.m == 1 ? 1 : 0) << ',' << rf.ks << ','
-        << rf.omega;
-  table.figures_and_clean({{"plot_periodic_orbits.py", f.plot,
-                            {"--kind", "branches", "--parameter", co.parameter, "--title", title_base, "--linear", extra.str()}}});
+  extra << alpha << ',' << rf.e() << ',' << type.n << ',' << (type.symmetric && type.m == 1 ? 1 : 0) << ',' << rf.ks
+        << ',' << rf.omega;
+  table.figures_and_clean(
+      {{"plot_periodic_orbits.py",
+        f.plot,
+        {"--kind", "branches", "--parameter", co.parameter, "--title", title_base, "--linear", extra.str()}}});
   if (!f.json_out.empty()) emit_json(j, f.json_out);
   if (f.json_flag) emit_json(j, "-");
   if (!f.json_flag && !f.quiet) {
     std::printf("%d branch(es) from %zu orbit(s):\n", bi, orbits.size());
     for (const auto& b : bj) {
-      std::printf("  branch %d (direction %+d): %zu points, end: %s\n", b["branch"].get<int>(), b["direction"].get<int>(),
-                  b["points"].size(), b["end"].get<std::string>().c_str());
+      std::printf("  branch %d (direction %+d): %zu points, end: %s\n", b["branch"].get<int>(),
+                  b["direction"].get<int>(), b["points"].size(), b["end"].get<std::string>().c_str());
       for (const auto& p : b["points"])
         if (!p["event"].get<std::string>().empty())
           std::printf("    %s at K_s = %.6g g (beta %.6g), omega = %.6g, velocity %.6g\n",
@@ -355,7 +381,9 @@ void add(CLI::App& app) {
   s->add_option("--ks", f->ks, "forcing amplitude K_s (g)");
   s->add_option("--beta", f->beta, "forcing amplitude as K_s / alpha (instead of --ks)");
   s->add_option("--omega", f->omega, "forcing frequency omega = Omega / p (default 2)");
-  s->add_option("--cycle", f->cycle, "m,n: 2m impacts per n forcing periods (seed 002; default 1,1)")->delimiter(',')->expected(2);
+  s->add_option("--cycle", f->cycle, "m,n: 2m impacts per n forcing periods (seed 002; default 1,1)")
+      ->delimiter(',')
+      ->expected(2);
   s->add_flag("--asymmetric", f->asymmetric,
               "shoot on the full 2m-impact map (default for m or n even; else the symmetric half map is used)");
   s->add_option("--guess-phase", f->guess_phase, "start Newton here: forcing phase at an impact onto theta > 0 (rad)");
@@ -382,7 +410,8 @@ void add(CLI::App& app) {
   s->add_option("--plot", f->plot, "figure (PNG + SVG): the orbits, the branches or the region map");
   s->add_flag("--json", f->json_flag, "print the JSON summary");
   s->add_option("--json-out", f->json_out, "write the JSON summary here");
-  s->add_option("--progress", f->progress, "auto, bar, plain or none")->check(CLI::IsMember({"auto", "bar", "plain", "none"}));
+  s->add_option("--progress", f->progress, "auto, bar, plain or none")
+      ->check(CLI::IsMember({"auto", "bar", "plain", "none"}));
   s->add_flag("--quiet", f->quiet, "no summary lines, no progress");
   s->callback([s, f] { run(*s, *f); });
 }

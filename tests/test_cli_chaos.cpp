@@ -17,9 +17,9 @@ using sweep_test::TmpDir;
 
 TEST(CliChaos, ForcedLyapunovJsonHistoryTwinAndPlot) {
   TmpDir d("lyap_forced");
-  const auto r = run_cli({"lyapunov", "--model", "housner", "--width", "0.3", "--height", "1.5", "--beta", "1.5",
-                          "--omega", "3", "--t-end", "40", "--t-transient", "10", "--json", "--csv", "h.csv",
-                          "--twin-csv", "t.csv", "--plot", "l.png"},
+  const auto r = run_cli({"lyapunov", "--model", "housner",    "--width", "0.3",    "--height",      "1.5", "--beta",
+                          "1.5",      "--omega", "3",          "--t-end", "40",     "--t-transient", "10",  "--json",
+                          "--csv",    "h.csv",   "--twin-csv", "t.csv",   "--plot", "l.png"},
                          d.path);
   ASSERT_EQ(r.code, 0) << r.err;
   const json j = json::parse(r.out);
@@ -41,9 +41,10 @@ TEST(CliChaos, RigidBlockAgreesWithHousnerWithoutSliding) {
   TmpDir d("lyap_rigid");
   std::vector<double> ex;
   for (const char* model : {"housner", "rigid"}) {
-    const auto r = run_cli({"lyapunov", "--model", model, "--width", "0.3", "--height", "1.5", "--mu-s", "2", "--beta",
-                            "1.5", "--omega", "3", "--t-end", "60", "--t-transient", "20", "--twin-d0", "0", "--json"},
-                           d.path);
+    const auto r =
+        run_cli({"lyapunov", "--model", model, "--width", "0.3", "--height",      "1.5", "--mu-s",    "2", "--beta",
+                 "1.5",      "--omega", "3",   "--t-end", "60",  "--t-transient", "20",  "--twin-d0", "0", "--json"},
+                d.path);
     ASSERT_EQ(r.code, 0) << r.err;
     ex.push_back(json::parse(r.out)["exponent"].get<double>());
   }
@@ -52,12 +53,21 @@ TEST(CliChaos, RigidBlockAgreesWithHousnerWithoutSliding) {
 
 TEST(CliChaos, ChaosMapCsvJsonPlotAndThreads) {
   TmpDir d("chaos_map");
-  std::vector<std::string> base{"chaos-map", "--model", "housner", "--width", "0.3", "--height", "1.5",
-                                "--beta-min", "0.8", "--beta-max", "2", "--beta-points", "2", "--omega-min", "3",
-                                "--omega-max", "6", "--omega-points", "2", "--periods", "30", "--transient-periods",
-                                "10", "--quiet"};
+  std::vector<std::string> base{"chaos-map", "--model",
+                                "housner",   "--width",
+                                "0.3",       "--height",
+                                "1.5",       "--beta-min",
+                                "0.8",       "--beta-max",
+                                "2",         "--beta-points",
+                                "2",         "--omega-min",
+                                "3",         "--omega-max",
+                                "6",         "--omega-points",
+                                "2",         "--periods",
+                                "30",        "--transient-periods",
+                                "10",        "--quiet"};
   auto a1 = base, a2 = base;
-  for (const char* x : {"--threads", "1", "--out", "m1.csv", "--json-out", "m1.json", "--plot", "m.png"}) a1.push_back(x);
+  for (const char* x : {"--threads", "1", "--out", "m1.csv", "--json-out", "m1.json", "--plot", "m.png"})
+    a1.push_back(x);
   for (const char* x : {"--threads", "2", "--out", "m2.csv"}) a2.push_back(x);
   const auto r1 = run_cli(a1, d.path), r2 = run_cli(a2, d.path);
   ASSERT_EQ(r1.code, 0) << r1.err;
@@ -72,8 +82,8 @@ TEST(CliChaos, ChaosMapCsvJsonPlotAndThreads) {
   EXPECT_EQ(j["points"][0]["motion"], "rest");  // beta 0.8: below uplift
   EXPECT_TRUE(j["points"][0]["exponent"].is_null());
   EXPECT_EQ(j["points"][3]["motion"], "periodic");
-  for (const char* k : {"beta", "omega", "motion", "exponent", "exponent_nondim", "status", "impacts", "collapse_mode",
-                        "t_failure"})
+  for (const char* k :
+       {"beta", "omega", "motion", "exponent", "exponent_nondim", "status", "impacts", "collapse_mode", "t_failure"})
     EXPECT_TRUE(j["points"][3].contains(k)) << k;
   EXPECT_TRUE(exists(d.path + "/m.png"));
 }
@@ -81,8 +91,8 @@ TEST(CliChaos, ChaosMapCsvJsonPlotAndThreads) {
 TEST(CliChaos, PeriodicOrbitsAgainstTheClosedForm) {
   TmpDir d("orbits");
   // alpha = atan(0.05): the nonlinear orbit is within alpha^2 of the linearised closed form.
-  const auto r = run_cli({"periodic-orbits", "--width", "0.05", "--height", "1", "--restitution", "0.9", "--beta", "1.2",
-                          "--omega", "2", "--json", "--quiet", "--out", "o.csv", "--plot", "o.png"},
+  const auto r = run_cli({"periodic-orbits", "--width", "0.05", "--height", "1", "--restitution", "0.9", "--beta",
+                          "1.2", "--omega", "2", "--json", "--quiet", "--out", "o.csv", "--plot", "o.png"},
                          d.path);
   ASSERT_EQ(r.code, 0) << r.err;
   const json j = json::parse(r.out);
@@ -108,9 +118,29 @@ TEST(CliChaos, PeriodicOrbitsAgainstTheClosedForm) {
 
 TEST(CliChaos, PeriodicOrbitsContinuationAndRegion) {
   TmpDir d("orbits_cont");
-  const auto c = run_cli({"periodic-orbits", "--width", "0.151", "--height", "1", "--restitution", "0.9", "--beta", "1.2",
-                          "--omega", "2", "--continue", "ks", "--continue-min", "0.01", "--continue-max", "0.4",
-                          "--json", "--quiet", "--out", "b.csv", "--plot", "b.png"},
+  const auto c = run_cli({"periodic-orbits",
+                          "--width",
+                          "0.151",
+                          "--height",
+                          "1",
+                          "--restitution",
+                          "0.9",
+                          "--beta",
+                          "1.2",
+                          "--omega",
+                          "2",
+                          "--continue",
+                          "ks",
+                          "--continue-min",
+                          "0.01",
+                          "--continue-max",
+                          "0.4",
+                          "--json",
+                          "--quiet",
+                          "--out",
+                          "b.csv",
+                          "--plot",
+                          "b.png"},
                          d.path);
   ASSERT_EQ(c.code, 0) << c.err;
   const json j = json::parse(c.out);
@@ -125,11 +155,30 @@ TEST(CliChaos, PeriodicOrbitsContinuationAndRegion) {
   EXPECT_TRUE(fold);
   EXPECT_TRUE(breaking);
   EXPECT_TRUE(exists(d.path + "/b.png"));
-  std::vector<std::string> reg{"periodic-orbits", "--width", "0.151", "--height", "1", "--restitution", "0.9", "--region",
-                               "--ks-min", "0.05", "--ks-max", "0.4", "--ks-points", "3", "--omega-min", "1",
-                               "--omega-max", "5", "--omega-points", "3", "--quiet"};
+  std::vector<std::string> reg{"periodic-orbits",
+                               "--width",
+                               "0.151",
+                               "--height",
+                               "1",
+                               "--restitution",
+                               "0.9",
+                               "--region",
+                               "--ks-min",
+                               "0.05",
+                               "--ks-max",
+                               "0.4",
+                               "--ks-points",
+                               "3",
+                               "--omega-min",
+                               "1",
+                               "--omega-max",
+                               "5",
+                               "--omega-points",
+                               "3",
+                               "--quiet"};
   auto r1 = reg, r2 = reg;
-  for (const char* x : {"--threads", "1", "--out", "r1.csv", "--plot", "r.png", "--json-out", "r.json"}) r1.push_back(x);
+  for (const char* x : {"--threads", "1", "--out", "r1.csv", "--plot", "r.png", "--json-out", "r.json"})
+    r1.push_back(x);
   for (const char* x : {"--threads", "2", "--out", "r2.csv"}) r2.push_back(x);
   ASSERT_EQ(run_cli(r1, d.path).code, 0);
   ASSERT_EQ(run_cli(r2, d.path).code, 0);
@@ -152,15 +201,18 @@ TEST(CliChaos, BadInputIsAUsageError) {
       {{"lyapunov", "--model", "housner", "--width", "0.3", "--height", "1.5", "--t-transient", "300"}, "t-transient"},
       {{"lyapunov", "--model", "assembly", "--preset", "block", "--contact", "rigid"}, "rigid"},
       {{"lyapunov", "--r", "0.2", "--beta", "1", "--omega", "2"}, "--beta"},
-      {{"chaos-map", "--model", "housner", "--width", "0.3", "--height", "1.5", "--excitation", "half-sine"}, "harmonic"},
+      {{"chaos-map", "--model", "housner", "--width", "0.3", "--height", "1.5", "--excitation", "half-sine"},
+       "harmonic"},
       {{"chaos-map", "--model", "housner", "--width", "0.3", "--height", "1.5", "--periods", "10",
-        "--transient-periods", "20"}, "periods"},
+        "--transient-periods", "20"},
+       "periods"},
       {{"chaos-map", "--model", "housner", "--width", "0.3", "--height", "1.5", "--beta-min", "-1"}, "beta"},
       {{"periodic-orbits", "--width", "0.3", "--height", "1.5", "--omega", "2"}, "--ks"},
       {{"periodic-orbits", "--width", "0.3", "--height", "1.5", "--ks", "0.3", "--cycle", "0,1"}, "cycle m"},
       {{"periodic-orbits", "--width", "0.3", "--height", "1.5", "--ks", "0.3", "--restitution", "2"}, "restitution"},
       {{"periodic-orbits", "--width", "0.3", "--height", "1.5", "--ks", "0.3", "--continue", "ks"}, "--continue-min"},
-      {{"periodic-orbits", "--width", "0.3", "--height", "1.5", "--region", "--ks-min", "0.5", "--ks-max", "0.1"}, "ks-min"},
+      {{"periodic-orbits", "--width", "0.3", "--height", "1.5", "--region", "--ks-min", "0.5", "--ks-max", "0.1"},
+       "ks-min"},
   };
   for (const auto& [args, word] : cases) {
     const auto r = run_cli(args, d.path);

@@ -17,12 +17,12 @@
 #include <cstring>
 
 #include "blockdyn/analysis/dynamics/tangent_lyapunov.hpp"
+#include "blockdyn/analysis/forced/block_tangent_traits.hpp"
 #include "blockdyn/analysis/forced/chaos_map.hpp"
 #include "blockdyn/analysis/forced/forced_lyapunov.hpp"
-#include "blockdyn/analysis/forced/orbit_continuation.hpp"
-#include "blockdyn/analysis/forced/block_tangent_traits.hpp"
 #include "blockdyn/analysis/forced/housner_periodic_orbits.hpp"
 #include "blockdyn/analysis/forced/linear_rocking_orbits.hpp"
+#include "blockdyn/analysis/forced/orbit_continuation.hpp"
 #include "blockdyn/model/assembly/assembly_model.hpp"
 #include "blockdyn/model/rigid/housner_block.hpp"
 #include "blockdyn/model/rigid/rigid_block.hpp"
@@ -104,7 +104,8 @@ TEST(TangentMap, HousnerSaltationMatchesFiniteDifferencesOverImpacts) {
     for (std::size_t i = 0; i < 2; ++i) {
       const double fd = (za[i] - zb[i]) / (2 * h);
       const double sc = i == 0 ? 1.0 : p;
-      EXPECT_NEAR(tm.v[j][i] / sc, fd / sc, 2e-6 * std::fmax(1.0, std::fabs(fd / sc))) << "column " << j << " row " << i;
+      EXPECT_NEAR(tm.v[j][i] / sc, fd / sc, 2e-6 * std::fmax(1.0, std::fabs(fd / sc)))
+          << "column " << j << " row " << i;
     }
   }
 }
@@ -293,7 +294,8 @@ TEST(TangentMap, RigidBlockMatchesFiniteDifferencesOverImpacts) {
     const auto ya = rigid_flow(m, t0, t1, za), yb = rigid_flow(m, t0, t1, zb);
     for (std::size_t i : {RigidBlock::kY, RigidBlock::kTheta, RigidBlock::kVX, RigidBlock::kVY, RigidBlock::kOmega}) {
       const double fd = (ya[i] - yb[i]) / (2 * h) / sc[i];
-      EXPECT_NEAR(tm.v[0][i] / sc[i], fd, 1e-4 * std::fmax(1.0, std::fabs(fd))) << "direction " << j << " component " << i;
+      EXPECT_NEAR(tm.v[0][i] / sc[i], fd, 1e-4 * std::fmax(1.0, std::fabs(fd)))
+          << "direction " << j << " component " << i;
     }
   }
 }
@@ -355,7 +357,8 @@ TEST(TangentMap, AssemblyMatchesFiniteDifferencesOverContactSwitches) {
     for (std::size_t i = 0; i < M::kDim; ++i) {
       if (!metric[i]) continue;
       const double fd = (ya[i] - yb[i]) / (2 * h) / sc[i];
-      EXPECT_NEAR(tm.v[0][i] / sc[i], fd, 2e-3 * std::fmax(1.0, std::fabs(fd))) << "direction " << j << " component " << i;
+      EXPECT_NEAR(tm.v[0][i] / sc[i], fd, 2e-3 * std::fmax(1.0, std::fabs(fd)))
+          << "direction " << j << " component " << i;
     }
   }
 }
@@ -412,7 +415,8 @@ TEST(TangentLyapunov, TwinOrbitsSeparateAsTheExponentPredicts) {
   EXPECT_NEAR(rate, tangent_rate, 0.15 * tangent_rate);
   EXPECT_GT(rate, 0.3 * lam);
   o.interval = 2 * M_PI / (3 * shape.p());
-  const auto stable = housner_lyapunov(shape, std::nullopt, survival_motion(so, 1.5, 3.0, shape.alpha(), shape.p()), {}, o);
+  const auto stable =
+      housner_lyapunov(shape, std::nullopt, survival_motion(so, 1.5, 3.0, shape.alpha(), shape.p()), {}, o);
   ASSERT_EQ(stable.tangent.status, TangentStatus::Completed);
   EXPECT_LT(stable.tangent.exponent, 0.0);
   EXPECT_LT(stable.twin.back().separation, 1e-2 * o.twin_d0);

@@ -31,7 +31,7 @@ struct TangentLyapunovOptions {
   double t_start = 0.0;
   double t_measure = 0.0;  // the tangent starts here (or at the first motion after it)
   double t_end = 100.0;
-  double interval = 1.0;   // renormalisation interval
+  double interval = 1.0;  // renormalisation interval
   IntegratorOptions integrator;
 };
 
@@ -39,25 +39,30 @@ enum class TangentStatus { Completed, Superstable, Stopped, NeverMoved, Failed }
 
 inline const char* to_string(TangentStatus s) {
   switch (s) {
-    case TangentStatus::Completed: return "completed";
-    case TangentStatus::Superstable: return "superstable";
-    case TangentStatus::Stopped: return "stopped";
-    case TangentStatus::NeverMoved: return "never_moved";
-    case TangentStatus::Failed: return "failed";
+    case TangentStatus::Completed:
+      return "completed";
+    case TangentStatus::Superstable:
+      return "superstable";
+    case TangentStatus::Stopped:
+      return "stopped";
+    case TangentStatus::NeverMoved:
+      return "never_moved";
+    case TangentStatus::Failed:
+      return "failed";
   }
   return "?";
 }
 
 struct TangentLyapunovResult {
   TangentStatus status = TangentStatus::Completed;
-  double exponent = NAN;  // -infinity when superstable
+  double exponent = NAN;   // -infinity when superstable
   double t_tangent = NAN;  // when the tangent started
   double t_final = 0;
   double sum_log = 0;
   long renormalisations = 0;
-  long events = 0;      // events of the orbit after the tangent started
+  long events = 0;  // events of the orbit after the tangent started
   RunStatus run_status = RunStatus::ReachedEnd;
-  int stop_kind = 0;    // model-defined kind of the stopping event (stopped)
+  int stop_kind = 0;  // model-defined kind of the stopping event (stopped)
   std::string note;
   VariationalStats stats;
   std::vector<LyapunovSample> history;
@@ -79,14 +84,15 @@ struct NoWatch {
 // Watch: receives every EventInfo of the orbit (of the variational model: e.z holds the tangents
 // after the base state) from t_start on.
 template <HybridModel M, class Traits = TangentTraits<M>, class Watch = NoWatch>
-TangentLyapunovResult tangent_lyapunov(const M& m, typename M::Mode md, Vec<M::kDim> z,
-                                       const TangentLyapunovOptions& o, Watch& watch) {
+TangentLyapunovResult tangent_lyapunov(const M& m, typename M::Mode md, Vec<M::kDim> z, const TangentLyapunovOptions& o,
+                                       Watch& watch) {
   using VM = VariationalModel<M, 1, Traits>;
   using Mode = typename M::Mode;
   if (!(o.t_end > o.t_start) || !(o.t_measure >= o.t_start) || !(o.interval > 0) ||
       (o.t_end - o.t_start) / o.interval > 1e7)
-    throw std::invalid_argument("tangent lyapunov: need t_start <= t_measure, t_start < t_end, 0 < interval, "
-                                "at most 1e7 intervals");
+    throw std::invalid_argument(
+        "tangent lyapunov: need t_start <= t_measure, t_start < t_end, 0 < interval, "
+        "at most 1e7 intervals");
   const VM vm(m);
   TangentLyapunovResult res;
   typename VM::State Z{};

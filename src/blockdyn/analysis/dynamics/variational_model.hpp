@@ -32,11 +32,11 @@
 namespace blockdyn {
 
 struct VariationalStats {
-  long saltations = 0;   // tangents mapped across an event
-  long one_sided = 0;    // ... of which by a one-sided difference (a branch boundary nearby)
-  long unmatched = 0;    // ... where no perturbed transition stayed on the branch (identity used)
-  long grazing = 0;      // events crossed tangentially (dg/dt = 0): the saltation is unbounded
-  double max_gain = 0;   // largest |v+| / |v-| over the saltations (metric norm)
+  long saltations = 0;  // tangents mapped across an event
+  long one_sided = 0;   // ... of which by a one-sided difference (a branch boundary nearby)
+  long unmatched = 0;   // ... where no perturbed transition stayed on the branch (identity used)
+  long grazing = 0;     // events crossed tangentially (dg/dt = 0): the saltation is unbounded
+  double max_gain = 0;  // largest |v+| / |v-| over the saltations (metric norm)
 };
 
 template <HybridModel M, int K = 1, class Traits = TangentTraits<M>>

@@ -43,8 +43,8 @@ struct TangentTraits<HousnerBlock> {
     const double wscale = m.abs_tol_scale()[M::kWorkGround];
     jv[M::kTheta] = v[M::kOmega];
     jv[M::kOmega] = p2 * ((1.0 + a[1]) * cp + a[0] * sp) * v[M::kTheta];
-    jv[M::kWorkGround] = wscale * (v[M::kOmega] * (a[0] * cp - a[1] * sp) +
-                                   z[M::kOmega] * (a[0] * sp + a[1] * cp) * v[M::kTheta]);
+    jv[M::kWorkGround] =
+        wscale * (v[M::kOmega] * (a[0] * cp - a[1] * sp) + z[M::kOmega] * (a[0] * sp + a[1] * cp) * v[M::kTheta]);
     jv[M::kWorkImpact] = 0.0;
     return true;
   }

@@ -16,8 +16,10 @@ void validate(const ChaosMapOptions& o) {
     throw std::invalid_argument("transient-periods must be in [0, 1e5]");
   if (!o.use_t_end && !(o.total_periods > o.transient_periods && o.total_periods <= 1e6))
     throw std::invalid_argument("periods must be > transient-periods and <= 1e6");
-  if (!(o.interval_periods > 0 && o.interval_periods <= 1e3)) throw std::invalid_argument("interval-periods must be in (0, 1000]");
-  if (!(o.threshold >= 0 && std::isfinite(o.threshold))) throw std::invalid_argument("threshold must be finite and >= 0");
+  if (!(o.interval_periods > 0 && o.interval_periods <= 1e3))
+    throw std::invalid_argument("interval-periods must be in (0, 1000]");
+  if (!(o.threshold >= 0 && std::isfinite(o.threshold)))
+    throw std::invalid_argument("threshold must be finite and >= 0");
 }
 
 ChaosPoint chaos_point(const ForcedLyapunovRun& run, const ChaosMapOptions& o, double beta, double omega, double alpha,
@@ -39,7 +41,9 @@ ChaosPoint chaos_point(const ForcedLyapunovRun& run, const ChaosMapOptions& o, d
   pt.t_failure = r.t_failure;
   pt.t_tangent = r.tangent.t_tangent;
   switch (r.tangent.status) {
-    case TangentStatus::NeverMoved: pt.motion = "rest"; break;
+    case TangentStatus::NeverMoved:
+      pt.motion = "rest";
+      break;
     case TangentStatus::Superstable:
       pt.motion = "superstable";
       pt.exponent = pt.exponent_nondim = pt.exponent_second_half = -INFINITY;
@@ -54,7 +58,9 @@ ChaosPoint chaos_point(const ForcedLyapunovRun& run, const ChaosMapOptions& o, d
       pt.exponent = r.tangent.exponent;
       pt.exponent_nondim = r.tangent.exponent / p;
       pt.exponent_second_half = r.exponent_second_half;
-      pt.motion = pt.exponent_nondim > o.threshold ? "chaotic" : pt.exponent_nondim < -o.threshold ? "periodic" : "neutral";
+      pt.motion = pt.exponent_nondim > o.threshold    ? "chaotic"
+                  : pt.exponent_nondim < -o.threshold ? "periodic"
+                                                      : "neutral";
       break;
     }
   }

@@ -24,12 +24,12 @@
 namespace blockdyn {
 
 struct ChaosMapOptions {
-  SurvivalOptions grid;            // beta and omega axes, phase, threads; excitation must be harmonic
-  double total_periods = 150;      // forcing periods per run (grid.t_end instead when use_t_end)
+  SurvivalOptions grid;        // beta and omega axes, phase, threads; excitation must be harmonic
+  double total_periods = 150;  // forcing periods per run (grid.t_end instead when use_t_end)
   bool use_t_end = false;
-  double transient_periods = 50;   // forcing periods before the tangent starts
-  double interval_periods = 1;     // renormalisation interval in forcing periods
-  double threshold = 0.01;         // on exponent / p
+  double transient_periods = 50;  // forcing periods before the tangent starts
+  double interval_periods = 1;    // renormalisation interval in forcing periods
+  double threshold = 0.01;        // on exponent / p
   IntegratorOptions integrator{1e-10, 1e-12};
 };
 void validate(const ChaosMapOptions& o);
@@ -37,11 +37,11 @@ void validate(const ChaosMapOptions& o);
 struct ChaosPoint {
   double beta = 0, omega = 0;
   std::string motion = "rest";
-  std::string status;               // of the tangent run (tangent_lyapunov.hpp)
-  double exponent = NAN;            // 1/s (-inf: superstable; NaN: none)
-  double exponent_nondim = NAN;     // exponent / p
+  std::string status;            // of the tangent run (tangent_lyapunov.hpp)
+  double exponent = NAN;         // 1/s (-inf: superstable; NaN: none)
+  double exponent_nondim = NAN;  // exponent / p
   double exponent_second_half = NAN;
-  double t_tangent = NAN;           // when the measurement started (s)
+  double t_tangent = NAN;  // when the measurement started (s)
   long impacts = 0;
   std::optional<int> collapse_mode;
   std::optional<double> t_failure;

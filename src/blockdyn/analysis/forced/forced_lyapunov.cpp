@@ -13,7 +13,8 @@ namespace blockdyn {
 
 void validate(const ForcedLyapunovOptions& o) {
   if (!(o.t_end > 0 && o.t_end <= 1e7)) throw std::invalid_argument("t-end must be in (0, 1e7] s");
-  if (!(o.t_transient >= 0 && o.t_transient < o.t_end)) throw std::invalid_argument("t-transient must be in [0, t-end) s");
+  if (!(o.t_transient >= 0 && o.t_transient < o.t_end))
+    throw std::invalid_argument("t-transient must be in [0, t-end) s");
   if (!(o.interval > 0) || !std::isfinite(o.interval) || (o.t_end - o.t_transient) / o.interval > 1e7)
     throw std::invalid_argument("interval must be > 0 s and at least (t-end - t-transient) / 1e7");
   if (!(o.twin_d0 == 0 || (o.twin_d0 >= 1e-14 && o.twin_d0 <= 1e-2)))
@@ -195,7 +196,8 @@ ForcedLyapunovOutcome rigid_lyapunov(const RigidBlockParams& p, const GroundMoti
   EventReading<RigidBlock> read{
       [](int, int kind) { return kind == int(RigidEventKind::Impact); },
       [](int kind) { return kind == int(RigidEventKind::Overturn) ? std::optional<int>(1) : std::nullopt; }};
-  return run_forced(m, *md, z, o, read, RigidBlock::kOmega, "(y/L, theta, x'/sqrt(gL), y'/sqrt(gL), theta'/p), L = height");
+  return run_forced(m, *md, z, o, read, RigidBlock::kOmega,
+                    "(y/L, theta, x'/sqrt(gL), y'/sqrt(gL), theta'/p), L = height");
 }
 
 namespace {

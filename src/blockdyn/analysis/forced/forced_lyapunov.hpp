@@ -23,11 +23,11 @@
 namespace blockdyn {
 
 struct ForcedLyapunovOptions {
-  double t_end = 100;       // s
-  double t_transient = 0;   // s: the tangent starts here, or at the first motion after it
-  double interval = 1;      // s: renormalisation (and twin sampling) interval
+  double t_end = 100;      // s
+  double t_transient = 0;  // s: the tangent starts here, or at the first motion after it
+  double interval = 1;     // s: renormalisation (and twin sampling) interval
   IntegratorOptions integrator{1e-10, 1e-12};
-  double twin_d0 = 0;       // > 0: also the two nearby orbits, this far apart (metric units)
+  double twin_d0 = 0;  // > 0: also the two nearby orbits, this far apart (metric units)
   bool keep_history = true;
 };
 void validate(const ForcedLyapunovOptions& o);
@@ -37,15 +37,15 @@ struct TwinSample {
 };
 
 struct ForcedLyapunovOutcome {
-  TangentLyapunovResult tangent;     // exponent (1/s), status, history, saltation statistics
-  double exponent_second_half = NAN; // growth after the middle of the measured window only
-  long impacts = 0;                  // rigid family: impacts from t = 0 (assembly: contact closings)
-  bool moved = false;                // the orbit left rest at some time
-  std::optional<int> collapse_mode;  // 1: overturn / rotation limit, 2: loss of bearing
+  TangentLyapunovResult tangent;      // exponent (1/s), status, history, saltation statistics
+  double exponent_second_half = NAN;  // growth after the middle of the measured window only
+  long impacts = 0;                   // rigid family: impacts from t = 0 (assembly: contact closings)
+  bool moved = false;                 // the orbit left rest at some time
+  std::optional<int> collapse_mode;   // 1: overturn / rotation limit, 2: loss of bearing
   std::optional<double> t_failure;
-  std::string metric;                // what the separation is measured on
-  std::vector<TwinSample> twin;      // (t, separation), from the tangent's start
-  std::string twin_note;             // why the twin run stopped early, if it did
+  std::string metric;            // what the separation is measured on
+  std::vector<TwinSample> twin;  // (t, separation), from the tangent's start
+  std::string twin_note;         // why the twin run stopped early, if it did
 };
 
 ForcedLyapunovOutcome housner_lyapunov(const BlockShape& shape, std::optional<double> restitution,

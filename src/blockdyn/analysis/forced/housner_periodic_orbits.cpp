@@ -23,7 +23,8 @@ void validate(const RockingForcing& f) {
 }
 
 void validate(const OrbitType& t) {
-  if (t.m < 1 || t.m > 50 || t.n < 1 || t.n > 50) throw std::invalid_argument("cycle (m, n): m and n must be in [1, 50]");
+  if (t.m < 1 || t.m > 50 || t.n < 1 || t.n > 50)
+    throw std::invalid_argument("cycle (m, n): m and n must be in [1, 50]");
   if (t.symmetric && (t.m % 2 == 0 || t.n % 2 == 0))
     throw std::invalid_argument("cycle (m, n): a symmetric orbit needs m and n odd");
 }
@@ -75,9 +76,13 @@ struct PassObserver {
   }
 };
 
-std::array<std::complex<double>, 2> eig_of(const std::array<double, 4>& a) { return eigenvalues2(a[0], a[1], a[2], a[3]); }
+std::array<std::complex<double>, 2> eig_of(const std::array<double, 4>& a) {
+  return eigenvalues2(a[0], a[1], a[2], a[3]);
+}
 
-double max_modulus(const std::array<std::complex<double>, 2>& mu) { return std::fmax(std::abs(mu[0]), std::abs(mu[1])); }
+double max_modulus(const std::array<std::complex<double>, 2>& mu) {
+  return std::fmax(std::abs(mu[0]), std::abs(mu[1]));
+}
 
 }  // namespace
 
@@ -101,7 +106,7 @@ ImpactMapPass impact_map_pass(const RockingForcing& f, const OrbitType& type, do
   const RunStatus st = hi.run(t, t_limit, md, z, obs);
   out.max_abs_rotation = obs.max_abs;
   if (int(out.impacts.size()) < wanted) {
-    out.failure = !obs.failure.empty() ? obs.failure
+    out.failure = !obs.failure.empty()          ? obs.failure
                   : st == RunStatus::ReachedEnd ? "fewer impacts than the cycle needs within n + 2 periods"
                                                 : std::string("integration stopped: ") + to_string(st);
     return out;
@@ -138,7 +143,8 @@ bool shooting_jacobian(const RockingForcing& f, const OrbitType& type, double ps
 
 }  // namespace
 
-void orbit_monodromy(const RockingForcing& f, const OrbitType& type, PeriodicOrbit& orbit, const IntegratorOptions& integ) {
+void orbit_monodromy(const RockingForcing& f, const OrbitType& type, PeriodicOrbit& orbit,
+                     const IntegratorOptions& integ) {
   const HousnerBlock model = make_block(f);
   const double Om = f.Omega(), p = f.p();
   const double t0 = orbit.phase / Om;
@@ -193,8 +199,8 @@ PeriodicOrbit find_periodic_orbit(const RockingForcing& f, const OrbitType& type
     bool accepted = false;
     for (double lam = 1.0; lam > 1e-3; lam *= 0.5) {
       // Keep the step modest and u positive.
-      const double s = std::fmin(lam, std::fmin(1.0 / std::fmax(1e-300, std::fabs(dpsi)),
-                                                 0.5 * u / std::fmax(1e-300, std::fabs(du))));
+      const double s = std::fmin(
+          lam, std::fmin(1.0 / std::fmax(1e-300, std::fabs(dpsi)), 0.5 * u / std::fmax(1e-300, std::fabs(du))));
       const ImpactMapPass trial = impact_map_pass(f, type, psi + s * dpsi, u + s * du, o.integrator);
       if (trial.ok && norm(trial.residual) < rn) {
         psi += s * dpsi;
@@ -254,7 +260,8 @@ PeriodicOrbit find_periodic_orbit(const RockingForcing& f, const OrbitType& type
   return orb;
 }
 
-std::vector<std::array<double, 2>> orbit_guesses(const RockingForcing& f, const OrbitType& type, double settle_periods) {
+std::vector<std::array<double, 2>> orbit_guesses(const RockingForcing& f, const OrbitType& type,
+                                                 double settle_periods) {
   validate(f);
   validate(type);
   std::vector<std::array<double, 2>> g;
@@ -319,7 +326,8 @@ std::vector<PeriodicOrbit> find_periodic_orbits(const RockingForcing& f, const O
     for (const auto& x : out) dup = dup || same(orb, x) || same(x, orb);
     if (!dup) out.push_back(orb);
   }
-  std::sort(out.begin(), out.end(), [](const PeriodicOrbit& a, const PeriodicOrbit& b) { return a.velocity < b.velocity; });
+  std::sort(out.begin(), out.end(),
+            [](const PeriodicOrbit& a, const PeriodicOrbit& b) { return a.velocity < b.velocity; });
   return out;
 }
 

@@ -48,14 +48,14 @@ void validate(const OrbitType& t);
 
 struct ShootingOptions {
   IntegratorOptions integrator{1e-12, 1e-14};
-  double tol = 1e-10;         // |residual| (phase rad, u)
+  double tol = 1e-10;  // |residual| (phase rad, u)
   int max_iterations = 40;
-  double fd_step = 1e-7;      // central-difference step of the shooting Jacobian (phase rad, u)
+  double fd_step = 1e-7;  // central-difference step of the shooting Jacobian (phase rad, u)
 };
 
 struct OrbitImpact {
-  double t = 0;           // s, from the reference impact
-  double phase = 0;       // Omega t mod 2 pi
+  double t = 0;                            // s, from the reference impact
+  double phase = 0;                        // Omega t mod 2 pi
   double rate_before = 0, rate_after = 0;  // theta' (rad/s)
 };
 
@@ -66,8 +66,8 @@ struct ImpactMapPass {
   std::string failure;
   std::vector<OrbitImpact> impacts;
   double max_abs_rotation = 0;
-  std::array<double, 2> image{};      // (psi, u) after the map (general: P; symmetric: H)
-  std::array<double, 2> residual{};   // image - (psi + 2 pi n or 0, u)
+  std::array<double, 2> image{};     // (psi, u) after the map (general: P; symmetric: H)
+  std::array<double, 2> residual{};  // image - (psi + 2 pi n or 0, u)
 };
 ImpactMapPass impact_map_pass(const RockingForcing& f, const OrbitType& type, double psi, double u,
                               const IntegratorOptions& integ);
@@ -81,9 +81,9 @@ struct PeriodicOrbit {
   double period = 0;               // n 2 pi / Omega (s)
   double max_abs_rotation = 0;     // rad
   std::vector<OrbitImpact> impacts;
-  std::array<std::complex<double>, 2> multipliers{};      // from the monodromy (variational)
-  std::array<std::complex<double>, 2> multipliers_fd{};   // from the shooting Jacobian
-  std::array<std::complex<double>, 2> half_multipliers{}; // symmetric: of H (shooting Jacobian)
+  std::array<std::complex<double>, 2> multipliers{};       // from the monodromy (variational)
+  std::array<std::complex<double>, 2> multipliers_fd{};    // from the shooting Jacobian
+  std::array<std::complex<double>, 2> half_multipliers{};  // symmetric: of H (shooting Jacobian)
   std::array<double, 4> monodromy{};                       // stroboscopic map, (theta, theta'/p), row-major
   std::array<double, 4> jacobian{};                        // of P or H in (psi, u), row-major
   bool stable = false;                                     // every |multiplier| < 1
@@ -94,7 +94,8 @@ PeriodicOrbit find_periodic_orbit(const RockingForcing& f, const OrbitType& type
                                   const ShootingOptions& o = {});
 // The monodromy (stroboscopic map over n periods, from half-way to the first impact) by the
 // variational equation with saltation matrices; fills multipliers, monodromy.
-void orbit_monodromy(const RockingForcing& f, const OrbitType& type, PeriodicOrbit& orbit, const IntegratorOptions& integ);
+void orbit_monodromy(const RockingForcing& f, const OrbitType& type, PeriodicOrbit& orbit,
+                     const IntegratorOptions& integ);
 
 // Starting guesses: symmetric (1, n): the two orbits of the linearised model (closed form);
 // otherwise the impact reached after `settle_periods` forcing periods of a run from rest (or

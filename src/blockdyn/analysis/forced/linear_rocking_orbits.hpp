@@ -33,7 +33,7 @@ struct LinearRockingOrbit {
   bool valid = false;   // u > 0 and x > 0 between the impacts (no other impact)
   std::array<std::complex<double>, 2> half_multipliers{};  // of H
   std::array<std::complex<double>, 2> multipliers{};       // of the full orbit (squares)
-  double max_x = 0;     // largest theta / alpha on the orbit
+  double max_x = 0;                                        // largest theta / alpha on the orbit
 };
 
 // Both symmetric (1, n) orbits (n odd) where they exist (empty otherwise).

@@ -10,8 +10,10 @@
 namespace blockdyn {
 
 void validate(const ContinuationOptions& o) {
-  if (o.parameter != "ks" && o.parameter != "omega") throw std::invalid_argument("continue: the parameter must be ks or omega");
-  if (!(o.min > 0 && o.max > o.min && std::isfinite(o.max))) throw std::invalid_argument("continue range: need 0 < min < max");
+  if (o.parameter != "ks" && o.parameter != "omega")
+    throw std::invalid_argument("continue: the parameter must be ks or omega");
+  if (!(o.min > 0 && o.max > o.min && std::isfinite(o.max)))
+    throw std::invalid_argument("continue range: need 0 < min < max");
   if (!(o.ds > 0 && o.ds_min > 0 && o.ds_max >= o.ds && o.ds >= o.ds_min && o.ds_max <= 10))
     throw std::invalid_argument("continuation step: need 0 < ds-min <= ds <= ds-max <= 10");
   if (o.max_points < 1 || o.max_points > 100000) throw std::invalid_argument("max-points must be in [1, 100000]");
@@ -105,7 +107,8 @@ Stability stability_of(const std::array<double, 6>& J, bool symmetric) {
 
 }  // namespace
 
-Branch continue_orbit(const RockingForcing& f, const OrbitType& type, double psi, double u, const ContinuationOptions& o) {
+Branch continue_orbit(const RockingForcing& f, const OrbitType& type, double psi, double u,
+                      const ContinuationOptions& o) {
   validate(f);
   validate(type);
   validate(o);
@@ -162,12 +165,15 @@ Branch continue_orbit(const RockingForcing& f, const OrbitType& type, double psi
         for (int k = 0; k < 3; ++k) yn[k] += dx[k];
       }
       if (ok && it > 4) ds = std::fmax(o.ds_min, 0.7 * ds);
-      if (!ok) ds *= 0.5;
-      else if (it <= 2) ds = std::fmin(o.ds_max, 1.5 * ds);
+      if (!ok)
+        ds *= 0.5;
+      else if (it <= 2)
+        ds = std::fmin(o.ds_max, 1.5 * ds);
     }
     if (!ok) {
-      br.end = "the corrector failed at the smallest step: the orbit ends as this impact sequence (grazing, an "
-               "extra impact, overturn or rest)";
+      br.end =
+          "the corrector failed at the smallest step: the orbit ends as this impact sequence (grazing, an "
+          "extra impact, overturn or rest)";
       if (!why.empty()) br.end += "; last failed pass: " + why;
       break;
     }
@@ -186,8 +192,10 @@ Branch continue_orbit(const RockingForcing& f, const OrbitType& type, double psi
     // unbounded there): only crossings between moderate multipliers are bifurcations.
     auto moderate = [](const Stability& x) { return std::abs(x.mu[0]) < 1e4 && std::abs(x.mu[1]) < 1e4; };
     const bool regular = moderate(st) && moderate(prev);
-    if (tn[2] * t[2] < 0) add("fold");
-    else if (regular && st.det_minus * prev.det_minus < 0) add("multiplier_+1");
+    if (tn[2] * t[2] < 0)
+      add("fold");
+    else if (regular && st.det_minus * prev.det_minus < 0)
+      add("multiplier_+1");
     if (regular && st.det_plus * prev.det_plus < 0) add(type.symmetric ? "symmetry_breaking" : "flip");
     p.event = ev;
     br.points.push_back(p);

@@ -27,7 +27,7 @@ struct ContinuationOptions {
   double min = 0, max = 1;       // range of the parameter (ks in g)
   double ds = 0.02, ds_min = 1e-6, ds_max = 0.25;
   int max_points = 400;
-  int direction = 1;             // initial direction of the parameter (+1 up, -1 down)
+  int direction = 1;  // initial direction of the parameter (+1 up, -1 down)
   ShootingOptions shooting;
 };
 void validate(const ContinuationOptions& o);
@@ -47,6 +47,7 @@ struct Branch {
   std::string end;  // why the branch ended
 };
 
-Branch continue_orbit(const RockingForcing& f, const OrbitType& type, double psi, double u, const ContinuationOptions& o);
+Branch continue_orbit(const RockingForcing& f, const OrbitType& type, double psi, double u,
+                      const ContinuationOptions& o);
 
 }  // namespace blockdyn

@@ -24,9 +24,9 @@ void validate(const OrbitRegionOptions& o);
 
 struct OrbitRegionPoint {
   double ks = 0, omega = 0;
-  int orbits = 0, stable = 0;            // found by Newton
-  double phase = NAN, velocity = NAN;    // the most stable orbit found
-  double max_multiplier = NAN;           // its largest |multiplier|
+  int orbits = 0, stable = 0;                  // found by Newton
+  double phase = NAN, velocity = NAN;          // the most stable orbit found
+  double max_multiplier = NAN;                 // its largest |multiplier|
   int linear_orbits = -1, linear_stable = -1;  // closed form (symmetric (1, n) only; -1: not available)
 };
 
