@@ -11,9 +11,12 @@
 
 namespace blockdyn::cli {
 
-void add_forced_model_flags(CLI::App& s, ForcedModelFlags& f) {
-  s.add_option("--model", f.model, "housner, rigid (a block on rigid ground) or assembly (with --preset)")
-      ->check(CLI::IsMember({"housner", "rigid", "assembly"}));
+void add_forced_model_flags(CLI::App& s, ForcedModelFlags& f, const std::vector<std::string>& extra_models) {
+  std::vector<std::string> models = extra_models;
+  for (const char* m : {"housner", "rigid", "assembly"}) models.push_back(m);
+  std::string help = "housner, rigid (a block on rigid ground) or assembly (with --preset)";
+  for (const auto& m : extra_models) help += ", or " + m;
+  s.add_option("--model", f.model, help)->check(CLI::IsMember(models));
   s.add_option("--width", f.width, "housner/rigid: block width [m]");
   s.add_option("--height", f.height, "housner/rigid: block height [m]");
   s.add_option("--mass", f.mass, "housner/rigid: mass [kg] (default 1)");
@@ -112,6 +115,9 @@ ForcedModel build_forced_model(const CLI::App& s, const ForcedModelFlags& f) {
     fm.impact_definition = housner ? "a pivot change at theta = 0 (the velocity jump theta'+ = e theta'-)"
                                    : "every velocity jump: a corner hitting the ground (pivot change or landing)";
     fm.run = with_cycle(fm.traced, fm.impact_rule);
+    fm.lyapunov = [rp, housner](const GroundMotion& g, const ForcedLyapunovOptions& o, const RigidInitial& init) {
+      return housner ? housner_lyapunov(rp.shape, rp.restitution, g, init, o) : rigid_lyapunov(rp, g, init, o);
+    };
     return fm;
   }
   if (f.preset.empty()) throw UsageError("--model assembly needs --preset block|trilith|column");
@@ -159,6 +165,9 @@ ForcedModel build_forced_model(const CLI::App& s, const ForcedModelFlags& f) {
       "a passage of the block's rotation through 0 after it lifted (a contact end under it opened since the "
       "previous impact); theta' before: at the closing of the end that begins the impact";
   fm.run = with_cycle(fm.traced, fm.impact_rule);
+  fm.lyapunov = [a](const GroundMotion& g, const ForcedLyapunovOptions& o, const RigidInitial&) {
+    return assembly_lyapunov(a, g, o);
+  };
   return fm;
 }
 

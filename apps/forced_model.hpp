@@ -9,8 +9,10 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "blockdyn/analysis/forced/forced_trace.hpp"
+#include "blockdyn/analysis/forced/forced_lyapunov.hpp"
 #include "blockdyn/analysis/forced/survival_map.hpp"
 #include "blockdyn/excitation/ground_motion.hpp"
 #include "blockdyn/model/assembly/assembly_params.hpp"
@@ -39,9 +41,14 @@ struct ForcedModel {
   ImpactRule impact_rule = ImpactRule::VelocityJump;  // what an impact is for this model (forced_trace.hpp)
   std::vector<std::string> block_names;               // one per block (1 for housner/rigid)
   std::string impact_definition;                       // the same in words, for the outputs
+  // Thread-safe: the largest Lyapunov exponent of one run under g (the initial state is used by
+  // the rigid-ground models; assemblies start as built).
+  std::function<ForcedLyapunovOutcome(const GroundMotion& g, const ForcedLyapunovOptions& o, const RigidInitial& init)>
+      lyapunov;
 };
 
-void add_forced_model_flags(CLI::App& s, ForcedModelFlags& f);
+// extra_models: further values --model accepts (handled by the command itself).
+void add_forced_model_flags(CLI::App& s, ForcedModelFlags& f, const std::vector<std::string>& extra_models = {});
 // The excitation and frequency grid of survival and response-curve: --excitation, --phase,
 // --omega-min/max/points, --t-end, --periods, --threads.
 void add_excitation_grid_flags(CLI::App& s, SurvivalOptions& o);

@@ -27,7 +27,7 @@ from . import _core
 
 __version__ = _core.__version__
 __all__ = ["simulate", "assembly", "spectrum", "survival", "cycles", "impact_map", "sweep", "map", "run",
-           "Simulation", "Assembly", "__version__"]
+           "Simulation", "Assembly", "lyapunov", "chaos_map", "periodic_orbits", "__version__"]
 
 # Where the plot scripts are once installed (share/blockdyn/python beside lib/python3/...).
 _here = os.path.dirname(os.path.abspath(__file__))
@@ -257,3 +257,64 @@ def map(**options):  # noqa: A001 (the command's name)
     """Runs `blockdyn map` (response types over (k, 1/r) with boundaries) and returns its table as
     {column: NumPy array}, "_sidecar", and the boundaries table under "_boundaries"."""
     return _table_command("map", None, options)
+
+
+def lyapunov(**options):
+    """Runs `blockdyn lyapunov` (the free Winkler block, or model="housner"|"rigid"|"assembly" under
+    a ground motion) and returns its JSON summary with the convergence history as arrays "t",
+    "growth", "estimate", and for forced models the two nearby orbits' separation as "twin_t",
+    "twin_separation", "twin_predicted"."""
+    for reserved in ("csv", "twin_csv", "json", "json_out"):
+        if reserved in options:
+            raise ValueError(f"{reserved}: set by blockdyn.lyapunov itself")
+    forced = options.get("model", "winkler") != "winkler"
+    with tempfile.TemporaryDirectory(prefix="blockdyn-py-") as tmp:
+        summ, hist, twin = (os.path.join(tmp, n) for n in ("summary.json", "history.csv", "twin.csv"))
+        opts = dict(options, json_out=summ, csv=hist)
+        if forced:
+            opts["twin_csv"] = twin
+        run(*_args("lyapunov", opts))
+        with open(summ) as f:
+            j = json.load(f)
+        h = _read_csv(hist)
+        for k in ("t", "growth", "estimate"):
+            j[k] = h.get(k, np.array([], dtype=float))
+        if forced:
+            tw = _read_csv(twin)
+            for k in ("t", "separation", "predicted"):
+                j["twin_" + k] = tw.get(k, np.array([], dtype=float))
+        return j
+
+
+def _table_and_json(command, options):
+    """Runs COMMAND with --out (CSV) and --json-out; returns (columns, summary)."""
+    for reserved in ("out", "json", "json_out"):
+        if reserved in options:
+            raise ValueError(f"{reserved}: set by blockdyn.{command.replace('-', '_')} itself")
+    with tempfile.TemporaryDirectory(prefix="blockdyn-py-") as tmp:
+        out, summ = os.path.join(tmp, "table.csv"), os.path.join(tmp, "summary.json")
+        run(*_args(command, dict(options, out=out, json_out=summ, quiet=True)))
+        with open(summ) as f:
+            j = json.load(f)
+        cols = _read_csv(out) if os.path.exists(out) else {}
+        return cols, j
+
+
+def chaos_map(**options):
+    """Runs `blockdyn chaos-map` and returns its JSON summary with one NumPy array per CSV column:
+    "beta", "omega", "motion", "exponent" (1/s; -inf superstable, NaN none), "exponent_nondim",
+    "exponent_second_half", "status", "impacts", "collapse_mode", "t_failure"."""
+    cols, j = _table_and_json("chaos-map", options)
+    j.update(cols)
+    return j
+
+
+def periodic_orbits(**options):
+    """Runs `blockdyn periodic-orbits` and returns its JSON summary with the table's columns as NumPy
+    arrays: the orbits (phase, velocity, mu1_re, ..., stable), the branch points of `continue_`
+    ("continue" is a Python keyword: pass it as continue_="ks") or the region grid (region=True)."""
+    if "continue_" in options:
+        options["continue"] = options.pop("continue_")
+    cols, j = _table_and_json("periodic-orbits", options)
+    j.update(cols)
+    return j
