@@ -61,6 +61,7 @@ ForcedModel build_forced_model(const CLI::App& s, const ForcedModelFlags& f) {
     fm.width = rp.shape.width;
     fm.description = to_json(rp, f.model);
     fm.overturn_rule = "|theta| reaches pi/2";
+    fm.tolerances = to_json(RigidRunOptions{}.integrator);
     const bool housner = f.model == "housner";
     fm.run = [rp, housner](const GroundMotion& g, double t_end) {
       RigidRunOptions ro;
@@ -103,6 +104,8 @@ ForcedModel build_forced_model(const CLI::App& s, const ForcedModelFlags& f) {
   fm.description = {{"model", "assembly"}, {"preset", f.preset}, {"contact", a.contact}, {"blocks", a.blocks.size()},
                     {"phi_s", f.phi_s}, {"phi_l", f.phi_l}, {"slenderness", po.slenderness}};
   fm.overturn_rule = "collapse mode 1 (rotation) or 2 (bearing)";
+  fm.tolerances = to_json(AssemblyRunOptions{}.integrator);
+  if (po.rigid_contacts) fm.tolerances["moreau_jean_step_s"] = AssemblyRunOptions{}.step;
   fm.run = [a](const GroundMotion& g, double t_end) {
     AssemblyRunOptions ao;
     ao.t_end = t_end;

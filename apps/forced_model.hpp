@@ -28,6 +28,7 @@ struct ForcedModel {
   double alpha = 0, p = 0;  // of the (first) block: slenderness angle and frequency parameter
   double width = 0;         // of the (first) block (m): the scale of sliding
   nlohmann::ordered_json description;
+  nlohmann::ordered_json tolerances;  // of every run (recorded in the table's sidecar)
   std::string overturn_rule;
   // Thread-safe: one simulation from rest to t_end (s) under g, reduced to what the forced
   // analyses classify (blocks: collapse mode 1 when overturned).
