@@ -153,8 +153,13 @@ void run(const CLI::App& s, const CurveFlags& f) {
   }
   j["points"] = arr;
   if (!f.plot.empty()) {
-    const std::string title = f.m.model + (f.m.preset.empty() ? "" : " " + f.m.preset) + ", " + o.excitation +
-                              (versus_phi ? ", omega = " + format_double(o.omega_min) : "");
+    std::string title = f.m.model + (f.m.preset.empty() ? "" : " " + f.m.preset) + ", " + o.excitation +
+                        (versus_phi ? ", omega = " + short_number(o.omega_min) : "");
+    if (assembly) {
+      title += ", " + f.m.contact + " law" + (f.m.columns_rock_only ? " (columns only rock)" : "");
+      if (phi_s.size() == 1) title += ", phi_s = " + short_number(phi_s[0]);
+      if (phi_l.size() == 1) title += ", phi_l = " + short_number(phi_l[0]);
+    }
     run_python("plot_response_curve.py", {out.csv(), f.plot, "--title", title, "--x", versus_phi ? "phi_l" : "omega"});
   }
   if (!f.json_out.empty()) emit_json(j, f.json_out);

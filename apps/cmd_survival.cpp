@@ -109,7 +109,9 @@ void run(const CLI::App& s, const SurvivalFlags& f) {
   j["counts"] = {{"rest", counts[0]}, {"stable", counts[1]}, {"collapse", counts[2]}, {"invalid", counts[3]}};
   j["points"] = arr;
   if (!f.plot.empty()) {
-    const std::string title = f.m.model + (f.m.preset.empty() ? "" : " " + f.m.preset) + ", " + o.excitation;
+    std::string title = f.m.model + (f.m.preset.empty() ? "" : " " + f.m.preset) + ", " + o.excitation;
+    if (f.m.model == "assembly")
+      title += ", " + f.m.contact + " law, phi_s = " + short_number(f.m.phi_s) + ", phi_l = " + short_number(f.m.phi_l);
     std::vector<std::string> args{out.csv(), f.plot, "--title", title};
     if (f.refine > 0) {
       args.insert(args.end(), {"--refined", format_double(o.omega_points > 1 ? (o.omega_max - o.omega_min) / (o.omega_points - 1) : 1.0),

@@ -28,6 +28,9 @@ void add_forced_model_flags(CLI::App& s, ForcedModelFlags& f) {
   s.add_option("--drums", f.preset_opt.drums, "assembly column: drums (default 4)");
   s.add_option("--phi-s", f.phi_s, "assembly: friction angle on the ground [deg] (default 90)");
   s.add_option("--phi-l", f.phi_l, "assembly: friction angle between blocks [deg] (default 90)");
+  s.add_flag("--columns-rock-only", f.columns_rock_only,
+             "assembly, rigid law: the blocks on the ground only rock (no sliding, plastic impacts): seed 001's 5-DOF "
+             "trilith");
 }
 
 void add_excitation_grid_flags(CLI::App& s, SurvivalOptions& o) {
@@ -94,6 +97,16 @@ ForcedModel build_forced_model(const CLI::App& s, const ForcedModelFlags& f) {
   Assembly a;
   try {
     a = make_preset(f.preset, po);
+    if (f.columns_rock_only) {
+      if (!po.rigid_contacts) throw UsageError("--columns-rock-only (seed 001's 5-DOF restriction) needs --contact rigid");
+      // As `blockdyn assembly --columns-rock-only`: no sliding and plastic impacts on the ground.
+      a.rock_only_on_ground = true;
+      for (AssemblyInterface& i : a.interfaces)
+        if (i.lower < 0) {
+          i.law.mu_s = i.law.mu_k = kNoSlipFriction;
+          i.law.restitution = 0.0;
+        }
+    }
     validate(a);
   } catch (const std::invalid_argument& e) {
     throw UsageError(e.what());
@@ -102,7 +115,8 @@ ForcedModel build_forced_model(const CLI::App& s, const ForcedModelFlags& f) {
   fm.width = a.blocks[0].width;
   fm.p = std::sqrt(0.75 * a.g / (0.5 * std::hypot(a.blocks[0].width, a.blocks[0].height)));
   fm.description = {{"model", "assembly"}, {"preset", f.preset}, {"contact", a.contact}, {"blocks", a.blocks.size()},
-                    {"phi_s", f.phi_s}, {"phi_l", f.phi_l}, {"slenderness", po.slenderness}};
+                    {"phi_s", f.phi_s}, {"phi_l", f.phi_l}, {"slenderness", po.slenderness},
+                    {"columns_rock_only", f.columns_rock_only}};
   fm.overturn_rule = "collapse mode 1 (rotation) or 2 (bearing)";
   fm.tolerances = to_json(AssemblyRunOptions{}.integrator);
   if (po.rigid_contacts) fm.tolerances["moreau_jean_step_s"] = AssemblyRunOptions{}.step;

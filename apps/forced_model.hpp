@@ -21,6 +21,7 @@ struct ForcedModelFlags {
   double width = 0, height = 0, mass = 1, g = 9.81, mu_s = 0.7, mu_k = -1, restitution = -1;
   PresetOptions preset_opt;
   double phi_s = 90, phi_l = 90;
+  bool columns_rock_only = false;  // seed 001's 5-DOF trilith (rigid law)
 };
 
 

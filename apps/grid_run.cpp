@@ -67,6 +67,12 @@ GridRunResult run_grid(const PointTable& t, const GridRunFlags& f, int threads, 
   return r;
 }
 
+std::string short_number(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.4g", v);
+  return buf;
+}
+
 std::string grid_run_note(const GridRunResult& r) {
   const SweepOutcome& o = r.outcome;
   if (o.was_complete) return "(already complete: nothing recomputed)";

@@ -52,6 +52,9 @@ struct GridRunResult {
 GridRunResult run_grid(const PointTable& t, const GridRunFlags& f, int threads, const std::string& progress,
                        bool quiet, PointPlan* plan = nullptr);
 
+// A number for a figure's title (%.4g).
+std::string short_number(double v);
+
 // "(N computed, M resumed, 12.3 s, 45.6 points/s, 2 rank(s))" for the command's summary line.
 std::string grid_run_note(const GridRunResult& r);
 
