@@ -93,7 +93,7 @@ def tiles(rows, a):
     ax.set_ylim(min(bs) - a.refined[1] / 2, max(bs) + a.refined[1] / 2)
     ax.set_xlabel("omega = Omega / p")
     ax.set_ylabel("beta")
-    ax.set_title(a.title + f" ({len(rows)} points, refined near class changes)", fontsize=9)
+    ax.set_title(a.title + f"\n{len(rows)} points, refined near class changes", fontsize=8)
     ax.legend(handles=[Patch(color=c, label=l) for l, c in seen.items()], fontsize=7, loc="upper left",
               bbox_to_anchor=(1.01, 1.0))
     fig.tight_layout()

@@ -7,7 +7,9 @@
 # boundary. Every run keeps its table, journal and sidecar in OUTDIR, so an interrupted
 # reproduction continues where it stopped: RESUME=1 scripts/reproduce_forced.sh OUTDIR.
 # About 30 minutes of CPU (most of it Figs. 6-9, 60 s trilith runs), i.e. 15 minutes on 2 idle
-# cores; MPI: MPIRUN="mpirun -np 4" scripts/reproduce_forced.sh.
+# cores; MPI: MPIRUN="mpirun -np 4" scripts/reproduce_forced.sh. PARTS selects parts (default all:
+# "spectra pulse harmonic transient seed001"); parts write disjoint tables, so two invocations with
+# different PARTS may run at the same time.
 # Usage: scripts/reproduce_forced.sh [OUTDIR] (default out/forced; needs a built ./build)
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -17,11 +19,14 @@ mkdir -p "$O"
 POLICY=--overwrite
 [ "${RESUME:-0}" = 1 ] && POLICY=--resume
 MPIRUN=${MPIRUN:-}
+PARTS=" ${PARTS:-spectra pulse harmonic transient seed001} "
+part() { [[ "$PARTS" == *" $1 "* ]]; }
 run() { echo "+ $*"; $MPIRUN "$@" $POLICY --progress plain --progress-interval 30; }
 T="--model assembly --preset trilith"  # seed 002's blocks: b = 0.12 m, lambda = 4 (deformable law)
 
-# Housner block (0.3 x 1.5 m, alpha = 0.197): overturning spectra and the one-sine picture.
 HB="--model housner --width 0.3 --height 1.5"
+if part spectra; then
+# Housner block (0.3 x 1.5 m, alpha = 0.197): overturning spectra and the one-sine picture.
 for pulse in rect half-sine one-sine; do
   run $B spectrum $HB --pulse $pulse --duration-min 0.03 --duration-max 10 --duration-points 36 \
     --amplitude-min 0.01 --amplitude-max 20 --scan-points 100 --csv "$O/spectrum_$pulse.csv" \
@@ -36,7 +41,9 @@ run $B spectrum $HB --pulse one-sine --duration-min 0.1 --duration-max 3 --durat
 # Fine mesh: Housner survival map (harmonic, 20 periods), 24 x 24 refined 4 times near class changes.
 run $B survival $HB --beta-min 0.5 --beta-max 6 --beta-points 24 --omega-min 1 --omega-max 20 --omega-points 24 \
   --periods 20 --refine 4 --out "$O/survival_housner_refined.csv" --plot "$O/survival_housner_refined.png"
+fi
 
+if part pulse; then
 # Seed 002 Fig. 2: survival domain, half-cosine pulse (eq. 1 for 0 <= Omega t <= pi), phi_l = 90 and 15.
 for pl in 90 15; do
   run $B survival $T --phi-s 90 --phi-l $pl --excitation half-cosine --beta-min 0.25 --beta-max 10 --beta-points 14 \
@@ -61,7 +68,9 @@ run $B response-curve $T --excitation half-cosine --omega 10 --betas 2,4,6,8 --p
   --t-end 8 --out "$O/seed002_fig4.csv" --plot "$O/seed002_fig4.png"
 run $B response-curve $T --excitation half-cosine --omega 10 --betas 4 --phi-s-values 10,15,20,30,90 \
   --phi-l-values 2,4,6,8,10,12,15,20,25,30,45,60,90 --t-end 8 --out "$O/seed002_fig5.csv" --plot "$O/seed002_fig5.png"
+fi
 
+if part harmonic; then
 # Figs. 6-9: harmonic survival domains, 60 s per run, (phi_s, phi_l) = (90, 90), (15, 15), (90, 15), (90, 5).
 for pair in 90,90 15,15 90,15 90,5; do
   ps=${pair%,*}; pl=${pair#*,}
@@ -69,6 +78,9 @@ for pair in 90,90 15,15 90,15 90,5; do
     --omega-max 20 --omega-points 10 --t-end 60 --out "$O/seed002_harmonic_${ps}_${pl}.csv" \
     --plot "$O/seed002_harmonic_${ps}_${pl}.png"
 done
+fi
+
+if part transient; then
 # Fig. 10: maximum transient rotation (20 s) versus omega, beta = 4, the friction pairs (15 | 90) x (15 | 90).
 run $B response-curve $T --betas 4 --phi-s-values 15,90 --phi-l-values 15 --omega-min 2 --omega-max 20 --omega-points 12 \
   --t-end 20 --out "$O/seed002_fig10_phil15.csv" --plot "$O/seed002_fig10_phil15.png"
@@ -77,7 +89,9 @@ run $B response-curve $T --betas 4 --phi-s-values 15,90 --phi-l-values 90 --omeg
 # Fig. 11: the same for phi_s = phi_l = 90 and several beta.
 run $B response-curve $T --betas 2,3,4,5 --omega-min 2 --omega-max 20 --omega-points 12 --t-end 20 \
   --out "$O/seed002_fig11.csv" --plot "$O/seed002_fig11.png"
+fi
 
+if part seed001; then
 # Seed 001 Figs. 4-7: rigid 5-DOF trilith (columns only rock), K_s g sin(Omega t + pi/2) = beta alpha g cos(Omega t)
 # with beta = K_s / alpha (alpha = 0.24498): K_s = 0.3, 0.4, 0.5, 0.7; over 5 s (Figs. 4-5) and 100 s (Figs. 6-7).
 R="$T --contact rigid --columns-rock-only --phi-l 20"
@@ -86,4 +100,5 @@ run $B response-curve $R --betas $BETAS --omega-min 2 --omega-max 20 --omega-poi
   --out "$O/seed001_fig4_5.csv" --plot "$O/seed001_fig4_5.png"
 run $B response-curve $R --betas $BETAS --omega-min 2 --omega-max 20 --omega-points 10 --t-end 100 \
   --out "$O/seed001_fig6_7.csv" --plot "$O/seed001_fig6_7.png"
+fi
 echo "figures in $O"
