@@ -6,7 +6,7 @@
 # law); seed 001 Figs. 4-7 trends on the rigid 5-DOF trilith; a refined (fine-mesh) survival
 # boundary. Every run keeps its table, journal and sidecar in OUTDIR, so an interrupted
 # reproduction continues where it stopped: RESUME=1 scripts/reproduce_forced.sh OUTDIR.
-# About 30 minutes of CPU (most of it Figs. 6-9, 60 s trilith runs), i.e. 15 minutes on 2 idle
+# About 20 minutes of CPU (most of it Figs. 6-9, 60 s trilith runs), 10-12 minutes on 2 idle
 # cores; MPI: MPIRUN="mpirun -np 4" scripts/reproduce_forced.sh. PARTS selects parts (default all:
 # "spectra pulse harmonic transient seed001"); parts write disjoint tables, so two invocations with
 # different PARTS may run at the same time.
