@@ -32,6 +32,9 @@ void add_forced_model_flags(CLI::App& s, ForcedModelFlags& f, const std::vector<
   s.add_option("--drums", f.preset_opt.drums, "assembly column: drums (default 4)");
   s.add_option("--phi-s", f.phi_s, "assembly: friction angle on the ground [deg] (default 90)");
   s.add_option("--phi-l", f.phi_l, "assembly: friction angle between blocks [deg] (default 90)");
+  s.add_flag("--columns-rock-only", f.columns_rock_only,
+             "assembly, rigid law: the blocks on the ground only rock (no sliding, plastic impacts): seed 001's 5-DOF "
+             "trilith");
 }
 
 void add_excitation_grid_flags(CLI::App& s, SurvivalOptions& o) {
@@ -85,6 +88,7 @@ ForcedModel build_forced_model(const CLI::App& s, const ForcedModelFlags& f) {
     fm.width = rp.shape.width;
     fm.description = to_json(rp, f.model);
     fm.overturn_rule = "|theta| reaches pi/2";
+    fm.tolerances = to_json(RigidRunOptions{}.integrator);
     const bool housner = f.model == "housner";
     fm.traced = [rp, housner](const GroundMotion& g, double t_end, RunProbe* probe) {
       RigidRunOptions ro;
@@ -134,6 +138,16 @@ ForcedModel build_forced_model(const CLI::App& s, const ForcedModelFlags& f) {
   Assembly a;
   try {
     a = make_preset(f.preset, po);
+    if (f.columns_rock_only) {
+      if (!po.rigid_contacts) throw UsageError("--columns-rock-only (seed 001's 5-DOF restriction) needs --contact rigid");
+      // As `blockdyn assembly --columns-rock-only`: no sliding and plastic impacts on the ground.
+      a.rock_only_on_ground = true;
+      for (AssemblyInterface& i : a.interfaces)
+        if (i.lower < 0) {
+          i.law.mu_s = i.law.mu_k = kNoSlipFriction;
+          i.law.restitution = 0.0;
+        }
+    }
     validate(a);
   } catch (const std::invalid_argument& e) {
     throw UsageError(e.what());
@@ -142,8 +156,11 @@ ForcedModel build_forced_model(const CLI::App& s, const ForcedModelFlags& f) {
   fm.width = a.blocks[0].width;
   fm.p = std::sqrt(0.75 * a.g / (0.5 * std::hypot(a.blocks[0].width, a.blocks[0].height)));
   fm.description = {{"model", "assembly"}, {"preset", f.preset}, {"contact", a.contact}, {"blocks", a.blocks.size()},
-                    {"phi_s", f.phi_s}, {"phi_l", f.phi_l}, {"slenderness", po.slenderness}};
+                    {"phi_s", f.phi_s}, {"phi_l", f.phi_l}, {"slenderness", po.slenderness},
+                    {"columns_rock_only", f.columns_rock_only}};
   fm.overturn_rule = "collapse mode 1 (rotation) or 2 (bearing)";
+  fm.tolerances = to_json(AssemblyRunOptions{}.integrator);
+  if (po.rigid_contacts) fm.tolerances["moreau_jean_step_s"] = AssemblyRunOptions{}.step;
   fm.traced = [a](const GroundMotion& g, double t_end, RunProbe* probe) {
     AssemblyRunOptions ao;
     ao.t_end = t_end;

@@ -24,6 +24,7 @@ struct ForcedModelFlags {
   double width = 0, height = 0, mass = 1, g = 9.81, mu_s = 0.7, mu_k = -1, restitution = -1;
   PresetOptions preset_opt;
   double phi_s = 90, phi_l = 90;
+  bool columns_rock_only = false;  // seed 001's 5-DOF trilith (rigid law)
 };
 
 
@@ -31,6 +32,7 @@ struct ForcedModel {
   double alpha = 0, p = 0;  // of the (first) block: slenderness angle and frequency parameter
   double width = 0;         // of the (first) block (m): the scale of sliding
   nlohmann::ordered_json description;
+  nlohmann::ordered_json tolerances;  // of every run (recorded in the table's sidecar)
   std::string overturn_rule;
   // Thread-safe: one simulation from rest to t_end (s) under g, reduced to what the forced
   // analyses classify (blocks: collapse mode 1 when overturned). Under harmonic motion the

@@ -53,6 +53,13 @@ using SurvivalRun = std::function<SurvivalOutcome(const GroundMotion& g, double 
 GroundMotion survival_motion(const SurvivalOptions& o, double beta, double omega, double alpha, double p);
 std::string t_star_class(const SurvivalOptions& o, double t_star);
 
+// One point: a pure function of its arguments (the runner's rule: any thread, rank or rerun
+// computes the same point). t_end from o.t_end or o.periods.
+SurvivalPoint survival_point(const SurvivalRun& run, const SurvivalOptions& o, double alpha, double p, double beta,
+                             double omega);
+// The value of point i of n uniform from lo to hi (lo when n == 1), as every grid here spaces them.
+double grid_value(double lo, double hi, int n, int i);
+
 // Points in row-major order: beta outer, omega inner.
 std::vector<SurvivalPoint> survival_map(const SurvivalRun& run, const SurvivalOptions& o, double alpha, double p,
                                         const std::function<void(std::size_t)>& progress = {});
