@@ -26,7 +26,7 @@ import numpy as np
 from . import _core
 
 __version__ = _core.__version__
-__all__ = ["simulate", "assembly", "spectrum", "survival", "cycles", "impact_map", "sweep", "map", "run",
+__all__ = ["simulate", "assembly", "spectrum", "survival", "response_curve", "cycles", "impact_map", "sweep", "map", "run",
            "Simulation", "Assembly", "lyapunov", "chaos_map", "periodic_orbits", "__version__"]
 
 # Where the plot scripts are once installed (share/blockdyn/python beside lib/python3/...).
@@ -188,6 +188,20 @@ def survival(**options):
     j["t_failure"] = np.array([np.nan if p["t_failure"] is None else p["t_failure"] for p in pts], dtype=float)
     j["max_abs_rotation"] = np.array([p["max_abs_rotation"] for p in pts], dtype=float)
     j["cycle"] = np.array([p["cycle"] for p in pts], dtype=object)
+    return j
+
+
+def response_curve(**options):
+    """Runs `blockdyn response-curve` and returns its JSON summary, with arrays "beta", "omega",
+    "theta_max_over_alpha", "max_sliding_over_b", "motion", "t_failure" (NaN without failure) and,
+    against the friction angle, "phi_s" and "phi_l" over the points."""
+    j = _json_command("response-curve", options)
+    pts = j["points"]
+    for key in ("beta", "omega", "theta_max_over_alpha", "max_sliding_over_b", "phi_s", "phi_l"):
+        if pts and key in pts[0]:
+            j[key] = np.array([p[key] for p in pts], dtype=float)
+    j["motion"] = np.array([p["motion"] for p in pts], dtype=object)
+    j["t_failure"] = np.array([np.nan if p["t_failure"] is None else p["t_failure"] for p in pts], dtype=float)
     return j
 
 

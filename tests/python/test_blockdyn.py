@@ -150,6 +150,16 @@ def test_assembly_spectrum_and_survival_from_python():
         blockdyn.assembly(preset="arch")
 
 
+def test_response_curve_equals_the_command_line():
+    r = blockdyn.response_curve(model="housner", width=0.3, height=1.5, betas=[2, 3], omega_points=3, periods=10)
+    j = json.loads(cli("response-curve", "--model", "housner", "--width", "0.3", "--height", "1.5", "--betas", "2,3",
+                       "--omega-points", "3", "--periods", "10", "--json"))
+    assert r["points"] == j["points"] and len(r["beta"]) == 6
+    assert r["beta"].tolist() == [p["beta"] for p in j["points"]]
+    assert r["theta_max_over_alpha"].tolist() == [p["theta_max_over_alpha"] for p in j["points"]]
+    assert set(r["motion"]) <= {"rest", "stable", "collapse", "invalid"}
+
+
 def test_cycles_and_impact_map_equal_the_command_line():
     opts = dict(model="housner", width=0.3, height=1.5, beta=2, omega=5, periods=80)
     c = blockdyn.cycles(**opts)
