@@ -18,49 +18,42 @@ constexpr int kMaxActiveSetIterations = 12;
 // After a degenerate problem, steps with the same active ends go to Gauss-Seidel directly for
 // this many steps before the direct solve is tried again.
 constexpr int kSkipAfterDegenerate = 32;
+// An end slips when its tangential velocity after the step exceeds this fraction of the
+// problem's velocity scale (the solve's own accuracy is 1e-12 of it).
+constexpr double kSlipVelocity = 1e-9;
 
 // The 2 x 2 frictional contact problem of one end: u = [a c; c d] [pn; pt] + [bn; bt],
-// 0 <= pn _|_ u_N >= 0; stick (u_T = 0) with |pt| <= mu_cone pn, else slip with
-// pt = -mu_slip pn sign(u_T). Exact: separation, stick, or slip in the direction consistent with
-// the resulting u_T (mu_cone >= mu_slip: the stick impulse then lies outside the slip cone too,
-// so a consistent slip exists).
-template <class Class>
-Class solve_local(double a, double c, double d, double bn, double bt, double mu_cone, double mu_slip, double& pn,
-                  double& pt) {
+// 0 <= pn _|_ u_N >= 0, |pt| <= mu pn, pt = -mu pn sign(u_T) when u_T != 0. Exact: separation,
+// stick, or slip in the direction consistent with the resulting u_T.
+void solve_local(double a, double c, double d, double bn, double bt, double mu, double& pn, double& pt) {
   if (bn >= 0.0) {
     pn = pt = 0.0;
-    return Class(0);
+    return;
   }
   const double det = a * d - c * c;
   if (det > 0.0) {
     pn = (-bn * d + bt * c) / det;
     pt = (-bt * a + bn * c) / det;
-    if (pn >= 0.0 && std::fabs(pt) <= mu_cone * pn) return Class(1);
+    if (pn >= 0.0 && std::fabs(pt) <= mu * pn) return;
   }
   double best_pn = -1.0;
-  Class best = Class(0);
   for (int s : {1, -1}) {
-    const double denom = a - s * mu_slip * c;
+    const double denom = a - s * mu * c;
     if (!(denom > 0.0)) continue;
-    const double n = -bn / denom, t = -s * mu_slip * n;
+    const double n = -bn / denom, t = -s * mu * n;
     const double ut = c * n + d * t + bt;
     if (s * ut >= 0.0) {
       pn = n;
       pt = t;
-      return Class(s > 0 ? 2 : 3);
+      return;
     }
     if (n > best_pn) {
       best_pn = n;
       pn = n;
       pt = t;
-      best = Class(s > 0 ? 2 : 3);
     }
   }
-  if (best_pn < 0.0) {
-    pn = pt = 0.0;
-    return Class(0);
-  }
-  return best;
+  if (best_pn < 0.0) pn = pt = 0.0;
 }
 
 // Solves A x = b in place (x into b) by Gaussian elimination with partial pivoting; A is m x m
@@ -156,7 +149,7 @@ MoreauJean::MoreauJean(const Assembly& a, const GroundMotion& g, const MoreauJea
   W_.resize(std::size_t(m_cap_) * std::size_t(m_cap_));
   A_.resize(std::size_t(m_cap_) * std::size_t(m_cap_));
   rhs_.resize(m_cap_);
-  for (auto* x : {&bn_, &bt_, &mu_cone_, &mu_slip_, &pn_, &pt_, &un_shift_}) x->resize(np);
+  for (auto* x : {&bn_, &bt_, &mu_, &mu_k_, &pn_, &pt_, &un_shift_}) x->resize(np);
   for (auto* x : {&ub_, &lb_, &active_, &col_n_, &col_t_}) x->resize(np);
   for (auto* x : {&ju_, &jl_, &mju_, &mjl_}) x->resize(np);
   cls_.resize(np);
@@ -323,8 +316,10 @@ bool MoreauJean::step(double t, std::vector<double>& q, std::vector<double>& v) 
     un_shift_[i] = law.restitution * std::min(e.un_before, 0.0) + 2.0 * std::max(e.c.gap, 0.0) / h;
     bn_[i] = row_dot(0, vfree_) + un_shift_[i];
     bt_[i] = row_dot(1, vfree_);
-    mu_slip_[i] = std::fmin(law.mu_k, o_.max_friction);
-    mu_cone_[i] = was_slip != 0 ? mu_slip_[i] : std::fmax(mu_slip_[i], std::fmin(law.mu_s, o_.max_friction));
+    // Static friction for an end that was not slipping, kinetic for one that was (the static
+    // coefficient drops to the kinetic one in solve() if the end slips all the same).
+    mu_k_[i] = std::min(law.mu_k, o_.max_friction);
+    mu_[i] = was_slip != 0 ? mu_k_[i] : std::max(mu_k_[i], std::min(law.mu_s, o_.max_friction));
     // Warm start from the end's impulses and pattern of the previous step.
     pn_[i] = e.pn_prev;
     pt_[i] = e.pt_prev;
@@ -363,6 +358,7 @@ bool MoreauJean::step(double t, std::vector<double>& q, std::vector<double>& v) 
   if (nc > 0) {
     double v_scale = asm_.g * h;
     for (int i = 0; i < nc; ++i) v_scale = std::max({v_scale, std::fabs(bn_[i]), std::fabs(bt_[i])});
+    slip_velocity_ = kSlipVelocity * v_scale;
     if (!solve(nc, v_scale, same_ends)) return false;
   } else {
     ++stats_.empty;
@@ -385,8 +381,9 @@ bool MoreauJean::step(double t, std::vector<double>& q, std::vector<double>& v) 
     e.ut_after = row_dot(1, vnew_);
     const double ut_before = row_dot(1, v);
     e.pushing = e.pn > 0.0;
-    e.slipping = e.pushing && (cls_[i] == kSlipPos || cls_[i] == kSlipNeg);
-    e.slip = !e.slipping ? 0 : cls_[i] == kSlipPos ? 1 : -1;
+    // Slipping is a velocity (unique where the redundant ends' impulses are not).
+    e.slipping = e.pushing && std::fabs(e.ut_after) > slip_velocity_;
+    e.slip = !e.slipping ? 0 : e.ut_after > 0 ? 1 : -1;
     work_normal += e.pn * 0.5 * (e.un_after + e.un_before);
     work_tangential += e.pt * 0.5 * (e.ut_after + ut_before);
   }
@@ -409,6 +406,31 @@ bool MoreauJean::solve(int nc, double v_scale, bool same_ends) {
   // A degenerate problem (a resting face's redundant ends) usually stays so while the same ends
   // are active: Gauss-Seidel directly for a while.
   if (!same_ends) skip_direct_ = 0;
+  else if (skip_direct_ > 0) --skip_direct_;
+  // Each pass solves a Coulomb problem with one coefficient per end; an end that slips with its
+  // static coefficient gets the kinetic one and the problem is solved again (at most once per
+  // end: the coefficients only drop).
+  for (int pass = 0; pass <= nc; ++pass) {
+    if (!solve_coulomb(nc, v_scale)) return false;
+    bool dropped = false;
+    velocity_change(nc, dv_);
+    for (int k = 0; k < 3 * nb_; ++k) vnew_[k] = vfree_[k] + dv_[k];
+    for (int i = 0; i < nc; ++i) {
+      if (!(mu_[i] > mu_k_[i]) || !(pn_[i] > 0.0)) continue;
+      double ut = dot3(&ju_[i][3], &vnew_[3 * ub_[i]]);
+      if (lb_[i] >= 0) ut += dot3(&jl_[i][3], &vnew_[3 * lb_[i]]);
+      if (std::fabs(ut) > slip_velocity_) {
+        mu_[i] = mu_k_[i];
+        dropped = true;
+      }
+    }
+    if (!dropped) return true;
+    ++stats_.static_drops;
+  }
+  return true;
+}
+
+bool MoreauJean::solve_coulomb(int nc, double v_scale) {
   if (o_.direct && skip_direct_ == 0) {
     const DirectOutcome d = solve_direct(nc, v_scale);
     if (d == kSolved) {
@@ -416,8 +438,6 @@ bool MoreauJean::solve(int nc, double v_scale, bool same_ends) {
       return true;
     }
     if (d == kDegenerate) skip_direct_ = kSkipAfterDegenerate;
-  } else if (skip_direct_ > 0) {
-    --skip_direct_;
   }
   ++stats_.gauss_seidel;
   return solve_gauss_seidel(nc, v_scale);
@@ -443,7 +463,7 @@ MoreauJean::DirectOutcome MoreauJean::solve_direct(int nc, double v_scale) {
         if (col_n_[j] < 0) continue;
         double c = W(wrow, 2 * j);
         if (cls_[j] == kSlipPos || cls_[j] == kSlipNeg)
-          c -= (cls_[j] == kSlipPos ? 1.0 : -1.0) * mu_slip_[j] * W(wrow, 2 * j + 1);
+          c -= (cls_[j] == kSlipPos ? 1.0 : -1.0) * mu_[j] * W(wrow, 2 * j + 1);
         out[col_n_[j]] = c;
         if (col_t_[j] >= 0) out[col_t_[j]] = W(wrow, 2 * j + 1);
       }
@@ -468,8 +488,8 @@ MoreauJean::DirectOutcome MoreauJean::solve_direct(int nc, double v_scale) {
     for (int i = 0; i < nc; ++i) {
       pn_[i] = col_n_[i] >= 0 ? rhs_[col_n_[i]] : 0.0;
       pt_[i] = col_t_[i] >= 0                                  ? rhs_[col_t_[i]]
-               : cls_[i] == kSlipPos ? -mu_slip_[i] * pn_[i]
-               : cls_[i] == kSlipNeg ? mu_slip_[i] * pn_[i]
+               : cls_[i] == kSlipPos ? -mu_[i] * pn_[i]
+               : cls_[i] == kSlipNeg ? mu_[i] * pn_[i]
                                      : 0.0;
     }
     // Check every condition; the violated ones change their end's guess. The relative
@@ -492,11 +512,9 @@ MoreauJean::DirectOutcome MoreauJean::solve_direct(int nc, double v_scale) {
           accurate = accurate && std::fabs(un) <= tol && std::fabs(ut) <= tol;
           if (pn_[i] < 0.0) {
             cls_[i] = kSeparate, ok = false;
-          } else if (std::fabs(pt_[i]) > mu_cone_[i] * pn_[i]) {
-            // Outside the cone: slip against the impulse's tendency, with the kinetic coefficient
-            // from now on in this step.
+          } else if (std::fabs(pt_[i]) > mu_[i] * pn_[i]) {
+            // Outside the cone: slip against the impulse's tendency.
             cls_[i] = pt_[i] > 0 ? kSlipNeg : kSlipPos;
-            mu_cone_[i] = mu_slip_[i];
             ok = false;
           }
           break;
@@ -540,9 +558,7 @@ bool MoreauJean::solve_gauss_seidel(int nc, double v_scale) {
         bn += W(2 * i, 2 * j) * pn_[j] + W(2 * i, 2 * j + 1) * pt_[j];
         bt += W(2 * i + 1, 2 * j) * pn_[j] + W(2 * i + 1, 2 * j + 1) * pt_[j];
       }
-      cls_[i] = solve_local<Class>(W(2 * i, 2 * i), W(2 * i, 2 * i + 1), W(2 * i + 1, 2 * i + 1), bn, bt, mu_cone_[i],
-                                   mu_slip_[i], pn_[i], pt_[i]);
-      if (cls_[i] == kSlipPos || cls_[i] == kSlipNeg) mu_cone_[i] = mu_slip_[i];
+      solve_local(W(2 * i, 2 * i), W(2 * i, 2 * i + 1), W(2 * i + 1, 2 * i + 1), bn, bt, mu_[i], pn_[i], pt_[i]);
     }
     // The blocks' velocity change due to the impulses: unique even where the impulses are not.
     velocity_change(nc, dv_new);

@@ -8,16 +8,18 @@
 //   deformable law);
 //   v+ = v + h M^-1 f(t + h/2) + M^-1 H^T P, with, per active end, the impulses (P_N, P_T) solving
 //     u_N+ + e u_N- >= 0  _|_  P_N >= 0                  (Newton, u_N- < 0 only)
-//     Coulomb at the impulse level: stick (u_T+ = 0) with |P_T| <= mu_s P_N, or slip with
-//     P_T = -mu_k P_N sign(u_T+);
+//     Coulomb at the impulse level: stick (u_T+ = 0) with |P_T| <= mu P_N, or slip with
+//     P_T = -mu P_N sign(u_T+), mu the end's static or kinetic coefficient (below);
 //   q+ = q_m + h/2 v+.
 // Static and kinetic friction: an end that was not slipping at the end of the previous step
-// (sticking, or just coming into contact) sticks whenever its stick impulse lies in the static
-// cone (mu_s); otherwise it slips with mu_k, and once a step's solve has found it slipping it
-// stays at mu_k for the rest of that step (the drop is monotone, so the solve cannot cycle
-// between the two cones). An end slipping at the end of the previous step has mu_k for both:
-// it sticks again once the kinetic impulse can stop it, as the deformable law's slip ends where
-// the slip rate vanishes.
+// (sticking, or just coming into contact) has the static coefficient mu_s, an end that was
+// slipping the kinetic one mu_k. The step's problem is solved with these; an end that slips all
+// the same (static friction exceeded) gets mu_k and the problem is solved again (the
+// coefficients only drop, so this ends after at most one pass per end). An end slips when its
+// tangential velocity after the step is not zero (beyond 1e-9 of the problem's velocity scale):
+// a velocity, unique even where the impulses of a face's two ends are not, so a face slides or
+// sticks as a whole. A sliding end sticks again once the kinetic impulse can stop it, as the
+// deformable law's slip ends where the slip rate vanishes; then mu_s holds it.
 // The contact problem of a step is solved exactly: the previous step's stick / slip / separation
 // pattern is the first guess of an active-set iteration (each guess one small dense linear solve,
 // checked against every complementarity and cone condition; a violated condition changes that
@@ -59,7 +61,7 @@ class MoreauJean {
   };
   // How the contact problems were solved (counts over the run).
   struct SolveStats {
-    long steps = 0, empty = 0, direct = 0, gauss_seidel = 0, sweeps = 0, active_set_iterations = 0;
+    long steps = 0, empty = 0, direct = 0, gauss_seidel = 0, sweeps = 0, active_set_iterations = 0, static_drops = 0;
   };
 
   MoreauJean(const Assembly& a, const GroundMotion& g, const MoreauJeanOptions& o);
@@ -98,6 +100,7 @@ class MoreauJean {
   // The contact problem of the nc active ends (W_, bn_, bt_, mu_*): impulses into pn_, pt_ and
   // the classes into cls_. False when Gauss-Seidel does not converge.
   bool solve(int nc, double v_scale, bool same_ends);
+  bool solve_coulomb(int nc, double v_scale);
   enum DirectOutcome { kSolved, kDegenerate, kFailed };
   DirectOutcome solve_direct(int nc, double v_scale);
   bool solve_gauss_seidel(int nc, double v_scale);
@@ -117,13 +120,13 @@ class MoreauJean {
   // theta, then tangent) on each, and the same rows scaled by the inverse masses.
   std::vector<int> ub_, lb_, active_;
   std::vector<std::array<double, 6>> ju_, jl_, mju_, mjl_;
-  std::vector<double> qm_, vfree_, vnew_, dv_, W_, bn_, bt_, mu_cone_, mu_slip_, pn_, pt_, un_shift_;
+  std::vector<double> qm_, vfree_, vnew_, dv_, W_, bn_, bt_, mu_, mu_k_, pn_, pt_, un_shift_;
   std::vector<double> A_, rhs_;  // the active-set iteration's linear system
   std::vector<int> col_n_, col_t_;
   std::vector<Class> cls_;
   std::vector<End> ends_;
   int sweeps_ = 0, skip_direct_ = 0;
-  double touch_ = 0;
+  double touch_ = 0, slip_velocity_ = 0;
   SolveStats stats_;
 };
 
