@@ -255,6 +255,74 @@ void AssemblyModel<Cap>::events(double t, const Mode& m, const State& z, std::ar
 }
 
 template <int Cap>
+double AssemblyModel<Cap>::along_lower_rate(const Geometry& geo, int i, int side) const {
+  // d/dt [(Q - c_L) . t_L] with Q the upper corner (a material point of the upper block), c_L the
+  // lower face's centre (one of the lower block's) and t_L turning at omega_L: t_L' = omega_L n_L.
+  const Face& lf = geo.lower[i];
+  const BodyPose& up = geo.of(upper_[i]);
+  const BodyPose& lp = geo.of(lower_[i]);
+  const Vec2 Q = face_corner(geo.upper[i], side);
+  const Vec2 vq = material_velocity(up, Q);
+  const Vec2 vc = lower_[i] < 0 ? Vec2{} : material_velocity(lp, lf.c);
+  return dot(vq - vc, lf.t) + lp.omega * dot(Q - lf.c, perp(lf.t));
+}
+
+template <int Cap>
+void AssemblyModel<Cap>::event_rates(double, const Mode& m, const State& z, const State& dz,
+                                     std::array<double, kNumEvents>& g, std::array<double, kNumEvents>& g_rate) const {
+  Geometry geo;
+  geometry(z, geo);
+  Dynamics d;
+  for (int b = 0; b < nb_; ++b)
+    for (int k = 0; k < 3; ++k) d.acc[3 * b + k] = dz[iv(b) + k];
+  g_rate.fill(0.0);
+  for (int p = 0; p < 2 * ni_; ++p) {
+    const int i = p / 2;
+    PointForce& pf = d.pf[p];
+    point_force(m, z, geo, p, pf);
+    const PointLaw& l = law_[i];
+    const double d_acc = -gap_acceleration(z, d.acc, pf, i);
+    const double fn_rate = l.kn * pf.d_rate + l.cn * d_acc;
+    if (slip_sign(m.point[p]) != 0) d.fn_rate[p] = fn_rate;
+    const PointState s = m.point[p];
+    if (!is_closed(s)) {
+      // max(-k d, -F): the derivative of the larger branch (of the larger derivative on a tie).
+      const double a = -l.kn * pf.d, b = -(l.kn * pf.d + l.cn * pf.d_rate);
+      const double ra = -l.kn * pf.d_rate, rb = -fn_rate;
+      g_rate[ev_normal(p)] = a > b ? ra : b > a ? rb : std::max(ra, rb);
+    } else {
+      g_rate[ev_normal(p)] = fn_rate;
+      if (s == PointState::Stick) {
+        const double u = z[iu(p)];
+        g_rate[ev_tangent(p)] = l.no_slip ? 0.0 : l.mu_s * fn_rate - l.kt * (u > 0 ? 1.0 : u < 0 ? -1.0 : 0.0) * dz[iu(p)];
+      } else {
+        g_rate[ev_tangent(p)] = l.frictionless() ? 0.0 : NAN;
+      }
+    }
+    if (std::isfinite(geo.lower[i].half)) {
+      const int end = p % 2;
+      const double r = end == 0 ? along_lower_rate(geo, i, -1) : -along_lower_rate(geo, i, +1);
+      g_rate[ev_owner(p)] = m.owner[p] == 0 ? r : -r;
+    }
+    g_rate[ev_valid(p)] = -pf.d_rate;
+  }
+  event_values(m, z, geo, d, g);
+  for (int b = 0; b < nb_; ++b) {
+    const double th = z[ix(b) + 2], w = z[iv(b) + 2];
+    g_rate[ev_wzero(b)] = m.side[b] * w;
+    // The right derivative of limit - |theta| (at theta = 0: -|omega|).
+    g_rate[ev_collapse(b)] = th > 0 ? -w : th < 0 ? w : -std::fabs(w);
+  }
+  for (int i = 0; i < ni_; ++i) {
+    if (lower_[i] < 0) continue;
+    const double half = geo.lower[i].half;
+    const double right = along_lower(geo.lower[i], geo.upper[i], +1), left = along_lower(geo.lower[i], geo.upper[i], -1);
+    g_rate[ev_bearing(i)] =
+        (right < half ? along_lower_rate(geo, i, +1) : 0.0) - (left > -half ? along_lower_rate(geo, i, -1) : 0.0);
+  }
+}
+
+template <int Cap>
 void AssemblyModel<Cap>::event_values(const Mode& m, const State& z, const Geometry& geo, const Dynamics& d,
                                       std::array<double, kNumEvents>& g) const {
   g.fill(1.0);

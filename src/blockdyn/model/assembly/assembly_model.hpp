@@ -81,6 +81,15 @@ class AssemblyModel {
 
   void rhs(double t, const Mode& m, const State& z, State& dz) const;
   void events(double t, const Mode& m, const State& z, std::array<double, kNumEvents>& g) const;
+  // The event functions and their time derivatives at (t, z), given dz = rhs(t, m, z) (an
+  // integrator has it for free at a step's end: the last stage, FSAL). One geometry evaluation
+  // and no dynamics: cheaper than events() alone when a point slips, about as cheap otherwise,
+  // so an event scan can bracket each function with values and rates at both ends of a step
+  // (cubic Hermite) instead of sampling the step. Exact in closed form, except the switch back
+  // to stick of a slipping point (its rate needs F_N'', the third derivative of the gap): NaN,
+  // meaning "not known, sample this one".
+  void event_rates(double t, const Mode& m, const State& z, const State& dz, std::array<double, kNumEvents>& g,
+                   std::array<double, kNumEvents>& g_rate) const;
   void complete(const Mode& m, State& z) const;
   Transition<Mode> transition(double t, const Mode& m, State& z, int event) const;
   std::optional<Transition<Mode>> resolve_chatter(double, const Mode&, const State&) const { return std::nullopt; }
@@ -156,6 +165,9 @@ class AssemblyModel {
   // A point's gap acceleration for block accelerations acc, and its normal force's rate.
   double gap_acceleration(const State& z, const std::array<double, 3 * Cap>& acc, const PointForce& pf, int i) const;
   double normal_force_rate(const State& z, const std::array<double, 3 * Cap>& acc, const PointForce& pf, int p) const;
+  // Rate of along_lower(lower, upper, side) (the upper base corner's coordinate along the lower
+  // face) of interface i.
+  double along_lower_rate(const Geometry& geo, int i, int side) const;
 
   Assembly asm_;
   GroundMotion ground_;
