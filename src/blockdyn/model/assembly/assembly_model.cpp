@@ -505,9 +505,8 @@ typename AssemblyModel<Cap>::Energy AssemblyModel<Cap>::energy_terms(const Mode&
   Geometry geo;
   geometry(z, geo);
   for (int p = 0; p < 2 * ni_; ++p) {
-    const PointForce pf = point_force(m, z, geo, p);
     const PointLaw& l = law_[p / 2];
-    const double d = std::fmax(pf.d, 0.0);
+    const double d = std::fmax(-contact_gap(geo.lower[p / 2], geo.upper[p / 2], p % 2, m.owner[p]), 0.0);
     e.normal_spring += 0.5 * l.kn * d * d;
     if (is_closed(m.point[p])) e.tangential_spring += 0.5 * l.kt * z[iu(p)] * z[iu(p)];
   }
