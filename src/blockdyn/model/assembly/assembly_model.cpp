@@ -144,17 +144,9 @@ void AssemblyModel<Cap>::dynamics(double t, const Mode& m, const State& z, const
     PointForce& pf = d.pf[p];
     const int i = p / 2;
     if (!is_closed(m.point[p])) {
-      // An open point exerts no force; the right-hand side needs it only while it is still
-      // inside its face (the released spring's energy), the event functions always.
-      if (!all_points) {
-        const double gap = contact_gap(geo.lower[i], geo.upper[i], p % 2, m.owner[p]);
-        if (gap >= 0.0) {
-          pf.fn = pf.ft = pf.d_rate = 0.0;
-          pf.d = -gap;
-          continue;
-        }
-      }
-      point_force(m, z, geo, p, pf);
+      // An open point exerts no force and stores no energy: the right-hand side does not need
+      // it, the event functions do.
+      if (all_points) point_force(m, z, geo, p, pf);
       continue;
     }
     point_force(m, z, geo, p, pf);
@@ -223,11 +215,12 @@ void AssemblyModel<Cap>::rhs(double t, const Mode& m, const State& z, State& dz)
   double w_normal = 0.0, w_friction = 0.0;
   for (int p = 0; p < kPoints; ++p) dz[iu(p)] = 0.0;
   for (int p = 0; p < 2 * ni_; ++p) {
+    const PointState s = m.point[p];
+    if (!is_closed(s)) continue;
     const PointForce& pf = d.pf[p];
     const PointLaw& l = law_[p / 2];
     // Power of the normal pair plus the rate of the spring energy k_N max(d, 0)^2 / 2.
     w_normal += -pf.fn * pf.d_rate + l.kn * std::max(pf.d, 0.0) * pf.d_rate;
-    const PointState s = m.point[p];
     if (s == PointState::Stick) {
       dz[iu(p)] = pf.c.slip_rate;
     } else if (slip_sign(s) != 0) {
@@ -386,7 +379,7 @@ Transition<typename AssemblyModel<Cap>::Mode> AssemblyModel<Cap>::transition(dou
     tr.kind = kAsmBreakpoint;
     return tr;
   }
-  const double e_before = energy(m, z);
+  const Energy e_before = energy_terms(m, z);
   std::size_t work_slot = kWFriction;
   if (event < ev_tangent(0)) {
     const int p = event;
@@ -441,7 +434,16 @@ Transition<typename AssemblyModel<Cap>::Mode> AssemblyModel<Cap>::transition(dou
   // friction force, an end passing to the other corner) is booked as work, so the balance stays
   // closed and the losses are reported where they occur.
   complete(tr.next, z);
-  z[work_slot] += energy(tr.next, z) - e_before;
+  const Energy after = energy_terms(tr.next, z);
+  if (work_slot == kWSwitch) {
+    z[kWSwitch] += after.total() - e_before.total();
+  } else {
+    // An opening point's spring is released (its energy k_N d^2 / 2 left with the dashpot force
+    // at zero, d >= 0) and booked with the normal contacts' work; the tangential spring's energy
+    // released or dropped (opening, slip onset) with friction's.
+    z[kWNormal] += after.normal_spring - e_before.normal_spring;
+    z[work_slot] += after.total() - after.normal_spring - (e_before.total() - e_before.normal_spring);
+  }
   return tr;
 }
 
@@ -505,6 +507,7 @@ typename AssemblyModel<Cap>::Energy AssemblyModel<Cap>::energy_terms(const Mode&
   Geometry geo;
   geometry(z, geo);
   for (int p = 0; p < 2 * ni_; ++p) {
+    if (!is_closed(m.point[p])) continue;  // an open point's spring is released
     const PointLaw& l = law_[p / 2];
     const double d = std::fmax(-contact_gap(geo.lower[p / 2], geo.upper[p / 2], p % 2, m.owner[p]), 0.0);
     e.normal_spring += 0.5 * l.kn * d * d;
