@@ -462,6 +462,9 @@ AssemblyResult run_rigid(const Assembly& a, const GroundMotion& g, const Assembl
   }
   r.t_final = t;
   r.steps = long(std::lround(t / o.step));
+  r.direct_solves = mj.solve_stats().direct;
+  r.gauss_seidel_solves = mj.solve_stats().gauss_seidel;
+  r.gauss_seidel_sweeps = mj.solve_stats().sweeps;
   r.rhs_evals = r.steps;
   for (int b = 0; b < nb; ++b) {
     for (int k = 0; k < 3; ++k) {

@@ -99,10 +99,23 @@ bool AssemblyModel<Cap>::any_slip(const Mode& m) const {
 
 template <int Cap>
 void AssemblyModel<Cap>::geometry(const State& z, Geometry& g) const {
-  for (int b = 0; b < nb_; ++b) g.pose[b] = pose(z, b);
+  for (int b = 0; b < nb_; ++b) {
+    BodyPose& p = g.pose[b];
+    p.x = z[ix(b)];
+    p.y = z[ix(b) + 1];
+    p.theta = z[ix(b) + 2];
+    p.vx = z[iv(b)];
+    p.vy = z[iv(b) + 1];
+    p.omega = z[iv(b) + 2];
+    p.q = BodyRotation::of(p.theta);
+  }
   for (int i = 0; i < ni_; ++i) {
-    g.lower[i] = lower_[i] < 0 ? ground_face() : top_face(g.pose[lower_[i]], b_[lower_[i]], h_[lower_[i]]);
-    g.upper[i] = base_face(g.pose[upper_[i]], b_[upper_[i]], h_[upper_[i]]);
+    const int l = lower_[i], u = upper_[i];
+    if (l < 0)
+      g.lower[i] = ground_face();
+    else
+      g.lower[i] = top_face(g.pose[l], b_[l], h_[l]);
+    g.upper[i] = base_face(g.pose[u], b_[u], h_[u]);
   }
 }
 

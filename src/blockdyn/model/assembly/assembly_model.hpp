@@ -120,8 +120,8 @@ class AssemblyModel {
   };
   // The poses and faces of a state, computed once per evaluation (one sincos per block).
   struct Geometry {
-    std::array<BodyPose, Cap + 1> pose{};  // blocks; the last slot is the ground (at rest)
-    std::array<Face, kIfaces> lower{}, upper{};
+    std::array<BodyPose, Cap + 1> pose;  // blocks; the last slot is the ground (at rest)
+    std::array<Face, kIfaces> lower, upper;
     const BodyPose& of(int b) const { return b < 0 ? pose[Cap] : pose[b]; }
   };
   void geometry(const State& z, Geometry& g) const;
