@@ -210,7 +210,8 @@ void add(CLI::App& app) {
   s->add_option("--phi-s-kinetic", f->phi_s_kinetic,
                 "kinetic friction angle column-ground [deg], 0 to phi-s (default: phi-s; static friction holds a "
                 "contact at rest up to phi-s, a sliding one feels this)");
-  s->add_option("--phi-l-kinetic", f->phi_l_kinetic, "kinetic friction angle between blocks [deg], 0 to phi-l (default: phi-l)");
+  s->add_option("--phi-l-kinetic", f->phi_l_kinetic,
+                "kinetic friction angle between blocks [deg], 0 to phi-l (default: phi-l)");
   s->add_option("--tilt", f->tilt, "initial rotation [rad] of the assembly's rocking mode, at rest (default 0)");
   s->add_option("--normal-stiffness", f->k_normal, "normal stiffness per contact point [N/m] (default 1e7)");
   s->add_option("--tangential-stiffness", f->k_tangential, "tangential stiffness per point [N/m] (default normal / 3)");

@@ -132,13 +132,13 @@ TEST(CliAssembly, KineticFrictionAngle) {
   // JSON records both coefficients.
   TmpDir d("asm_kinetic");
   for (const char* law : {"rigid", "deformable"}) {
-    const std::vector<std::string> base{"assembly", "--preset", "block", "--slenderness", "0.5", "--contact", law,
-                                        "--t-end", "0.5", "--json"};
+    const std::vector<std::string> base{"assembly",  "--preset", "block",   "--slenderness", "0.5",
+                                        "--contact", law,        "--t-end", "0.5",           "--json"};
     // The deformable law's tangential springs overshoot a sudden load: apply it slowly there.
-    const std::vector<std::string> load = std::string(law) == "rigid"
-                                              ? std::vector<std::string>{"--ground-h", "0.3"}
-                                              : std::vector<std::string>{"--ground-h-amplitude", "0.3",
-                                                                         "--ground-h-frequency", "0.5"};
+    const std::vector<std::string> load =
+        std::string(law) == "rigid"
+            ? std::vector<std::string>{"--ground-h", "0.3"}
+            : std::vector<std::string>{"--ground-h-amplitude", "0.3", "--ground-h-frequency", "0.5"};
     auto r = run_cli(base + load + std::vector<std::string>{"--phi-s", "20", "--phi-s-kinetic", "15"}, d.path);
     ASSERT_EQ(r.code, 0) << r.err;
     json j = json::parse(r.out);

@@ -445,8 +445,7 @@ AssemblyResult run_rigid(const Assembly& a, const GroundMotion& g, const Assembl
       }
     }
     for (int i = 0; i < ni; ++i)
-      r.interfaces[i].max_abs_sliding =
-          std::fmax(r.interfaces[i].max_abs_sliding, std::fabs(base[i] - s0[i]));
+      r.interfaces[i].max_abs_sliding = std::fmax(r.interfaces[i].max_abs_sliding, std::fabs(base[i] - s0[i]));
     t = t1;
     if (csv) {
       while (o.output_interval > 0 && next_out * o.output_interval <= t + 1e-12 * o.step) {

@@ -200,7 +200,8 @@ double AssemblyModel<Cap>::gap_acceleration(const State& z, const std::array<dou
                                             const PointForce& pf, int i) const {
   auto material_acc = [&](int b, const Vec2& P) {
     if (b < 0) return Vec2{};
-    return point_acceleration(acc[3 * b], acc[3 * b + 1], acc[3 * b + 2], z[iv(b) + 2], P - Vec2{z[ix(b)], z[ix(b) + 1]});
+    return point_acceleration(acc[3 * b], acc[3 * b + 1], acc[3 * b + 2], z[iv(b) + 2],
+                              P - Vec2{z[ix(b)], z[ix(b) + 1]});
   };
   const int A = pf.c.corner_of_upper ? upper_[i] : lower_[i];
   const int B = pf.c.corner_of_upper ? lower_[i] : upper_[i];
@@ -300,7 +301,8 @@ void AssemblyModel<Cap>::event_rates(double, const Mode& m, const State& z, cons
       g_rate[ev_normal(p)] = fn_rate;
       if (s == PointState::Stick) {
         const double u = z[iu(p)];
-        g_rate[ev_tangent(p)] = l.no_slip ? 0.0 : l.mu_s * fn_rate - l.kt * (u > 0 ? 1.0 : u < 0 ? -1.0 : 0.0) * dz[iu(p)];
+        const double sign_u = u > 0 ? 1.0 : u < 0 ? -1.0 : 0.0;
+        g_rate[ev_tangent(p)] = l.no_slip ? 0.0 : l.mu_s * fn_rate - l.kt * sign_u * dz[iu(p)];
       } else {
         g_rate[ev_tangent(p)] = l.frictionless() ? 0.0 : NAN;
       }
@@ -322,7 +324,8 @@ void AssemblyModel<Cap>::event_rates(double, const Mode& m, const State& z, cons
   for (int i = 0; i < ni_; ++i) {
     if (lower_[i] < 0) continue;
     const double half = geo.lower[i].half;
-    const double right = along_lower(geo.lower[i], geo.upper[i], +1), left = along_lower(geo.lower[i], geo.upper[i], -1);
+    const double right = along_lower(geo.lower[i], geo.upper[i], +1),
+                 left = along_lower(geo.lower[i], geo.upper[i], -1);
     g_rate[ev_bearing(i)] =
         (right < half ? along_lower_rate(geo, i, +1) : 0.0) - (left > -half ? along_lower_rate(geo, i, -1) : 0.0);
   }

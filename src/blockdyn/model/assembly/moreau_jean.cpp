@@ -124,8 +124,14 @@ inline double dot3(const double* a, const double* b) { return a[0] * b[0] + a[1]
 }  // namespace
 
 MoreauJean::MoreauJean(const Assembly& a, const GroundMotion& g, const MoreauJeanOptions& o)
-    : asm_(a), ground_(g), forced_(!g.is_zero()), o_(o), nb_(int(a.blocks.size())), ni_(int(a.interfaces.size())),
-      m_cap_(4 * int(a.interfaces.size())), sweeps_(0) {
+    : asm_(a),
+      ground_(g),
+      forced_(!g.is_zero()),
+      o_(o),
+      nb_(int(a.blocks.size())),
+      ni_(int(a.interfaces.size())),
+      m_cap_(4 * int(a.interfaces.size())),
+      sweeps_(0) {
   double min_size = INFINITY;
   for (const AssemblyBlock& k : a.blocks) min_size = std::fmin(min_size, std::fmin(k.width, k.height));
   // Ends this close to a face are active: blocks placed on each other touch only up to
@@ -225,8 +231,8 @@ void MoreauJean::measure_interfaces(const std::vector<double>& q, std::vector<do
   for (int i = 0; i < ni_; ++i) {
     const AssemblyInterface& f = asm_.interfaces[i];
     const Face uf = base_face(pose_of(f.upper), asm_.blocks[f.upper].width, asm_.blocks[f.upper].height);
-    const Face lf =
-        f.lower < 0 ? ground_face() : top_face(pose_of(f.lower), asm_.blocks[f.lower].width, asm_.blocks[f.lower].height);
+    const Face lf = f.lower < 0 ? ground_face()
+                                : top_face(pose_of(f.lower), asm_.blocks[f.lower].width, asm_.blocks[f.lower].height);
     ov[i] = overlap(lf, uf);
     base[i] = base_position(lf, uf);
   }
@@ -265,8 +271,8 @@ bool MoreauJean::step(double t, std::vector<double>& q, std::vector<double>& v) 
   for (int i = 0; i < ni_; ++i) {
     const AssemblyInterface& f = asm_.interfaces[i];
     upper_face_[i] = base_face(poses_[f.upper], asm_.blocks[f.upper].width, asm_.blocks[f.upper].height);
-    lower_face_[i] =
-        f.lower < 0 ? ground_face() : top_face(poses_[f.lower], asm_.blocks[f.lower].width, asm_.blocks[f.lower].height);
+    lower_face_[i] = f.lower < 0 ? ground_face()
+                                 : top_face(poses_[f.lower], asm_.blocks[f.lower].width, asm_.blocks[f.lower].height);
   }
   // Active contact ends and their Jacobian rows (normal, tangent) of the relative velocity of the
   // upper block's side against the lower's, per block.
@@ -405,8 +411,10 @@ bool MoreauJean::step(double t, std::vector<double>& q, std::vector<double>& v) 
 bool MoreauJean::solve(int nc, double v_scale, bool same_ends) {
   // A degenerate problem (a resting face's redundant ends) usually stays so while the same ends
   // are active: Gauss-Seidel directly for a while.
-  if (!same_ends) skip_direct_ = 0;
-  else if (skip_direct_ > 0) --skip_direct_;
+  if (!same_ends)
+    skip_direct_ = 0;
+  else if (skip_direct_ > 0)
+    --skip_direct_;
   // Each pass solves a Coulomb problem with one coefficient per end; an end that slips with its
   // static coefficient gets the kinetic one and the problem is solved again (at most once per
   // end: the coefficients only drop).
@@ -487,7 +495,7 @@ MoreauJean::DirectOutcome MoreauJean::solve_direct(int nc, double v_scale) {
       return iter == 0 ? kDegenerate : kFailed;
     for (int i = 0; i < nc; ++i) {
       pn_[i] = col_n_[i] >= 0 ? rhs_[col_n_[i]] : 0.0;
-      pt_[i] = col_t_[i] >= 0                                  ? rhs_[col_t_[i]]
+      pt_[i] = col_t_[i] >= 0        ? rhs_[col_t_[i]]
                : cls_[i] == kSlipPos ? -mu_[i] * pn_[i]
                : cls_[i] == kSlipNeg ? mu_[i] * pn_[i]
                                      : 0.0;

@@ -52,7 +52,7 @@ class MoreauJean {
  public:
   struct End {
     bool active = false, pushing = false, slipping = false;
-    int slip = 0;   // slip direction (+1 / -1) when slipping: sign of the tangential velocity after the step
+    int slip = 0;  // slip direction (+1 / -1) when slipping: sign of the tangential velocity after the step
     int owner = 0;
     FaceContact c;
     double pn = 0, pt = 0;        // impulses of the last step on the upper block (N s)
