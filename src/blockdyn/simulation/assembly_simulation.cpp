@@ -339,7 +339,7 @@ AssemblyResult run_rigid(const Assembly& a, const GroundMotion& g, const Assembl
   r.damping.assign(ni, 0.0);
   r.blocks.resize(nb);
   r.interfaces.resize(ni);
-  std::vector<double> q(3 * nb), v(3 * nb), theta_prev(nb), s0(ni);
+  std::vector<double> q(3 * nb), v(3 * nb), theta_prev(nb), s0(ni), overlaps(ni), base(ni);
   std::vector<int> side(nb, 1);
   // A passage through theta = 0 counts once theta is this far on the other side (rounding).
   constexpr double kBand = 1e-12;
@@ -352,10 +352,10 @@ AssemblyResult run_rigid(const Assembly& a, const GroundMotion& g, const Assembl
     r.blocks[b].max_abs_rotation = std::fabs(k.theta);
     side[b] = k.theta < 0 ? -1 : 1;
   }
+  mj.measure_interfaces(q, overlaps, s0);
   for (int i = 0; i < ni; ++i) {
     r.interfaces[i].lower = a.interfaces[i].lower;
     r.interfaces[i].upper = a.interfaces[i].upper;
-    s0[i] = mj.base_position_of(q, i);
   }
   // Contact end states: 'O' open, 'K' stick, 'P'/'N' slip.
   std::vector<char> state(np, 'O'), next(np, 'O');
@@ -463,7 +463,7 @@ AssemblyResult run_rigid(const Assembly& a, const GroundMotion& g, const Assembl
     for (int p = 0; p < np; ++p) {
       const auto& e = mj.ends()[p];
       // An end is closed while it touches (active), whether or not this step needed an impulse.
-      next[p] = !e.active ? 'O' : !e.slipping ? 'K' : (e.ut_after > 0 ? 'P' : 'N');
+      next[p] = !e.active ? 'O' : !e.slipping ? 'K' : (e.slip > 0 ? 'P' : 'N');
       const int blk = a.interfaces[p / 2].upper;
       if (k == 0) {
         // The contacts the assembly starts on are not events; a slip from the start is.
@@ -527,9 +527,10 @@ AssemblyResult run_rigid(const Assembly& a, const GroundMotion& g, const Assembl
         stop = true;
       }
     }
+    mj.measure_interfaces(q, overlaps, base);
     for (int i = 0; i < ni && !stop; ++i) {
       if (a.interfaces[i].lower < 0) continue;
-      if (mj.overlap_of(q, i) <= a.min_bearing) {
+      if (overlaps[i] <= a.min_bearing) {
         add_event(t1, kAsmCollapse2, "failure", a.interfaces[i].upper, i, -1, 2);
         r.collapse_mode = 2;
         r.t_failure = t1;
@@ -539,8 +540,7 @@ AssemblyResult run_rigid(const Assembly& a, const GroundMotion& g, const Assembl
       }
     }
     for (int i = 0; i < ni; ++i)
-      r.interfaces[i].max_abs_sliding =
-          std::fmax(r.interfaces[i].max_abs_sliding, std::fabs(mj.base_position_of(q, i) - s0[i]));
+      r.interfaces[i].max_abs_sliding = std::fmax(r.interfaces[i].max_abs_sliding, std::fabs(base[i] - s0[i]));
     if (probe) probe->advance(t1, nb, [&](double tau, RunProbe::BlockState* s) { probe_states(tau, t, s); });
     t = t1;
     if (csv) {
@@ -558,6 +558,9 @@ AssemblyResult run_rigid(const Assembly& a, const GroundMotion& g, const Assembl
   r.t_final = t;
   if (probe) probe->finish(t);
   r.steps = long(std::lround(t / o.step));
+  r.direct_solves = mj.solve_stats().direct;
+  r.gauss_seidel_solves = mj.solve_stats().gauss_seidel;
+  r.gauss_seidel_sweeps = mj.solve_stats().sweeps;
   r.rhs_evals = r.steps;
   for (int b = 0; b < nb; ++b) {
     for (int k = 0; k < 3; ++k) {
