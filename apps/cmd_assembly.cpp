@@ -21,6 +21,7 @@ struct AssemblyFlags {
   std::string file, preset, contact = "deformable";
   PresetOptions preset_opt;
   double phi_s = 90, phi_l = 90, tilt = 0;
+  double phi_s_kinetic = -1, phi_l_kinetic = -1;  // < 0: the static angle
   double k_normal = 1e7, k_tangential = -1, restitution = 0.5;
   double collapse_rotation = 1.0, min_bearing = 0.0, g = 9.81;
   AssemblyRunOptions run;
@@ -30,6 +31,12 @@ struct AssemblyFlags {
   bool json = false, quiet = false, rock_only = false;
   double max_output_rows = 1e7;
 };
+
+// The kinetic friction of an interface from its flag (absent: equal to the static one).
+void set_kinetic(ContactLaw& l, double phi_kinetic, const char* field) {
+  if (phi_kinetic < 0) return;
+  l.mu_k = friction_of_angle(phi_kinetic, field);
+}
 
 ContactLaw law_from_flags(const CLI::App& s, const AssemblyFlags& f, double phi, const char* field) {
   ContactLaw l;
@@ -51,6 +58,11 @@ Assembly build(const CLI::App& s, const AssemblyFlags& f) {
                                     : "give either --preset or an assembly file, not both");
   require_range("phi-s", f.phi_s, 0, 90);
   require_range("phi-l", f.phi_l, 0, 90);
+  // The kinetic angles lie between 0 and the static ones (the file's, or the flags').
+  if (given(s, "--phi-s-kinetic"))
+    require_range("phi-s-kinetic", f.phi_s_kinetic, 0, f.file.empty() || given(s, "--phi-s") ? f.phi_s : 90);
+  if (given(s, "--phi-l-kinetic"))
+    require_range("phi-l-kinetic", f.phi_l_kinetic, 0, f.file.empty() || given(s, "--phi-l") ? f.phi_l : 90);
   require_range("tilt", f.tilt, -1.5, 1.5, false, false);
   require_range("normal-stiffness", f.k_normal, 1, 1e13);
   if (given(s, "--tangential-stiffness")) require_range("tangential-stiffness", f.k_tangential, 1, 1e13);
@@ -79,6 +91,7 @@ Assembly build(const CLI::App& s, const AssemblyFlags& f) {
         const bool ground = i.lower < 0;
         if (ground && given(s, "--phi-s")) l.mu_s = l.mu_k = friction_of_angle(f.phi_s, "phi-s");
         if (!ground && given(s, "--phi-l")) l.mu_s = l.mu_k = friction_of_angle(f.phi_l, "phi-l");
+        set_kinetic(l, ground ? f.phi_s_kinetic : f.phi_l_kinetic, ground ? "phi-s-kinetic" : "phi-l-kinetic");
       }
       if (given(s, "--g")) a.g = f.g;
       a.contact = f.contact;
@@ -87,6 +100,8 @@ Assembly build(const CLI::App& s, const AssemblyFlags& f) {
       o.tilt = f.tilt;
       o.ground_law = law_from_flags(s, f, f.phi_s, "phi-s");
       o.block_law = law_from_flags(s, f, f.phi_l, "phi-l");
+      set_kinetic(o.ground_law, f.phi_s_kinetic, "phi-s-kinetic");
+      set_kinetic(o.block_law, f.phi_l_kinetic, "phi-l-kinetic");
       o.rigid_contacts = rigid;
       if (given(s, "--drums") && f.preset != "column") throw UsageError("--drums belongs to --preset column");
       for (const char* n : {"--lintel-length", "--overhang"})
@@ -192,6 +207,11 @@ void add(CLI::App& app) {
                 "trilith: lintel beyond each column's outer face [m] (default 0: flush, seed 002)");
   s->add_option("--phi-s", f->phi_s, "friction angle column-ground [deg], 0 to 90 (90: no sliding; default 90)");
   s->add_option("--phi-l", f->phi_l, "friction angle between blocks [deg], 0 to 90 (default 90)");
+  s->add_option("--phi-s-kinetic", f->phi_s_kinetic,
+                "kinetic friction angle column-ground [deg], 0 to phi-s (default: phi-s; static friction holds a "
+                "contact at rest up to phi-s, a sliding one feels this)");
+  s->add_option("--phi-l-kinetic", f->phi_l_kinetic,
+                "kinetic friction angle between blocks [deg], 0 to phi-l (default: phi-l)");
   s->add_option("--tilt", f->tilt, "initial rotation [rad] of the assembly's rocking mode, at rest (default 0)");
   s->add_option("--normal-stiffness", f->k_normal, "normal stiffness per contact point [N/m] (default 1e7)");
   s->add_option("--tangential-stiffness", f->k_tangential, "tangential stiffness per point [N/m] (default normal / 3)");

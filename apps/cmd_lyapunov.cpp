@@ -1,15 +1,22 @@
 // SPDX-License-Identifier: Apache-2.0
-// `blockdyn lyapunov`: largest Lyapunov exponent along one orbit (thesis sec. 5.2.2), with its
-// convergence history (running estimate against time).
+// `blockdyn lyapunov`: largest Lyapunov exponent along one orbit, with its convergence history
+// (running estimate against time): the free Winkler block (thesis sec. 5.2.2, two-trajectory
+// renormalisation) or, with --model housner|rigid|assembly, a forced block or assembly whose state
+// jumps at impacts (variational equation with saltation matrices, analysis/forced/forced_lyapunov.hpp),
+// with a sensitive-dependence check (two nearby orbits).
 #include <cstdio>
 #include <iomanip>
 #include <memory>
 
+#include "blockdyn/analysis/forced/forced_lyapunov.hpp"
+#include "blockdyn/analysis/forced/survival_map.hpp"
 #include "blockdyn/analysis/winkler/lyapunov_block.hpp"
 #include "blockdyn/io/atomic_file.hpp"
 #include "blockdyn/io/json_io.hpp"
 #include "chaos_cli.hpp"
 #include "cli_registry.hpp"
+#include "forced_model.hpp"
+#include "ground_flags.hpp"
 
 namespace blockdyn::cli {
 namespace {
@@ -21,6 +28,11 @@ struct LyapunovFlags {
   LyapunovOptions opt;
   std::string method = "time", csv, plot, json_out;
   bool json = false;
+  // Forced models (--model housner|rigid|assembly).
+  ForcedModelFlags fm;
+  GroundFlags ground;
+  double beta = 0, omega = 0, phase = 0, t_transient = 0, twin_d0 = 1e-9;
+  std::string twin_csv;
 };
 
 void write_history(const std::string& path, const LyapunovResult& r) {
@@ -31,7 +43,157 @@ void write_history(const std::string& path, const LyapunovResult& r) {
   f.commit();
 }
 
+
+// Flags that only one family reads: an error names the first one given for the other.
+void refuse(const CLI::App& s, const std::vector<std::string>& flags, const std::string& why) {
+  for (const auto& fl : flags)
+    if (given(s, fl)) throw UsageError(fl + " " + why);
+}
+
+void run_forced(const CLI::App& s, LyapunovFlags& f) {
+  refuse(s, {"--r", "--mu", "--k", "--ic", "--energy", "--energy-of", "--vy-sign", "--w0-alpha", "--d0"},
+         "applies to --model winkler only (forced models: --w0 --vw0, --twin-d0)");
+  if (f.method != "time") throw UsageError("--method " + f.method + ": forced models renormalise at fixed times only");
+  require_writable("plot", f.plot);
+  require_writable("json-out", f.json_out);
+  require_writable("csv", f.csv);
+  require_writable("twin-csv", f.twin_csv);
+  const ForcedModel fm = build_forced_model(s, f.fm);
+  if (fm.description.contains("contact") && fm.description["contact"] == "rigid")
+    throw UsageError("--contact rigid: no Lyapunov exponent (Moreau-Jean time-stepping has no event-located orbit "
+                     "to linearise); use --contact deformable");
+  GroundMotion g;
+  double T = 2 * M_PI / fm.p;  // renormalisation interval by default: a forcing period, else 2 pi / p
+  const bool seed_form = given(s, "--beta") || given(s, "--omega");
+  if (seed_form) {
+    if (!given(s, "--beta") || !given(s, "--omega")) throw UsageError("--beta and --omega go together");
+    require_range("beta", f.beta, 0, 1e3, false);
+    require_range("omega", f.omega, 0, 1e4, false);
+    require_range("phase", f.phase, -1e3, 1e3);
+    SurvivalOptions so;
+    so.phase = f.phase;
+    g = survival_motion(so, f.beta, f.omega, fm.alpha, fm.p);
+    T = 2 * M_PI / (f.omega * fm.p);
+  } else {
+    apply_ground_flags(s, f.ground, g);
+    if (g.horizontal.frequency > 0 && !g.horizontal.has_pulse()) T = 1.0 / g.horizontal.frequency;
+  }
+  ForcedLyapunovOptions o;
+  o.t_end = f.opt.t_end;
+  o.t_transient = f.t_transient;
+  o.interval = given(s, "--interval") ? f.opt.interval : T;
+  o.integrator = f.integ;
+  if (f.fm.model == "assembly" && !given(s, "--rtol")) o.integrator.rtol = 1e-8;
+  if (f.fm.model == "assembly" && !given(s, "--atol")) o.integrator.atol = 1e-10;
+  o.twin_d0 = f.twin_d0;
+  validate(o);
+  orbit_run_options(o.t_end, o.integrator);  // validates the tolerances
+  RigidInitial init;
+  init.w0 = f.ic.w0;
+  init.vw0 = f.ic.vw0;
+  if (given(s, "--x0")) init.x0 = f.ic.x0;
+  if (given(s, "--y0")) init.y0 = f.ic.y0;
+  if (given(s, "--vx0")) init.vx0 = f.ic.vx0;
+  if (given(s, "--vy0")) init.vy0 = f.ic.vy0;
+  if (f.fm.model == "assembly")
+    refuse(s, {"--w0", "--vw0", "--x0", "--y0", "--vx0", "--vy0"}, "does not apply to assemblies (they start as built)");
+  const ForcedLyapunovOutcome r = fm.lyapunov(g, o, init);
+  const TangentLyapunovResult& tl = r.tangent;
+
+  std::string csv = f.csv;
+  const bool temp = csv.empty() && !f.plot.empty();
+  if (temp) csv = temp_path("lyapunov", ".csv");
+  if (!csv.empty()) {
+    LyapunovResult lr;
+    lr.history = tl.history;
+    write_history(csv, lr);
+  }
+  if (!f.plot.empty()) {
+    char title[256];
+    std::snprintf(title, sizeof title, "%s, tangent + saltation: LE = %.4g 1/s (%.4g p)", f.fm.model.c_str(), tl.exponent,
+                  tl.exponent / fm.p);
+    run_python("plot_lyapunov.py", {csv, f.plot, title});
+    if (temp) std::remove(csv.c_str());
+  }
+  if (!f.twin_csv.empty()) {
+    AtomicFile tf(f.twin_csv);
+    auto& os = tf.stream();
+    os << "t,separation,predicted\n" << std::setprecision(17);
+    for (const auto& x : r.twin) {
+      const double pred = std::isfinite(tl.exponent) && !r.twin.empty()
+                              ? r.twin.front().separation * std::exp(tl.exponent * (x.t - r.twin.front().t))
+                              : NAN;
+      os << x.t << ',' << x.separation << ',' << pred << '\n';
+    }
+    tf.commit();
+  }
+  using json = nlohmann::ordered_json;
+  auto num = [](double v) { return std::isfinite(v) ? json(v) : json(nullptr); };
+  json j;
+  j["run_info"] = run_info();
+  j["model"] = fm.description;
+  j["alpha"] = fm.alpha;
+  j["p"] = fm.p;
+  j["ground"] = to_json(g);
+  if (seed_form) j["excitation"] = {{"form", "a_H = beta alpha g cos(omega p t + phase)"}, {"beta", f.beta}, {"omega", f.omega}, {"phase", f.phase}};
+  j["integrator"] = to_json(o.integrator);
+  j["options"] = {{"method", "tangent"}, {"t_end", o.t_end}, {"t_transient", o.t_transient}, {"interval", o.interval},
+                  {"twin_d0", o.twin_d0}, {"metric", r.metric}};
+  j["exponent"] = num(tl.exponent);
+  j["exponent_nondim"] = num(tl.exponent / fm.p);
+  j["exponent_second_half"] = num(r.exponent_second_half);
+  j["status"] = to_string(tl.status);
+  j["superstable"] = tl.status == TangentStatus::Superstable;
+  j["note"] = tl.note;
+  j["t_tangent"] = num(tl.t_tangent);
+  j["t_final"] = tl.t_final;
+  j["renormalisations"] = tl.renormalisations;
+  j["impacts"] = r.impacts;
+  j["collapse_mode"] = r.collapse_mode ? json(*r.collapse_mode) : json(nullptr);
+  j["t_failure"] = r.t_failure ? json(*r.t_failure) : json(nullptr);
+  j["saltation"] = {{"events", tl.stats.saltations}, {"one_sided", tl.stats.one_sided}, {"unmatched", tl.stats.unmatched},
+                    {"grazing", tl.stats.grazing}, {"max_gain", tl.stats.max_gain}};
+  json h = json::array();
+  const std::size_t n = tl.history.size(), stride = std::max<std::size_t>(1, n / 20);
+  for (std::size_t i = stride - 1; i < n; i += stride) h.push_back({{"t", tl.history[i].t}, {"estimate", tl.history[i].estimate}});
+  j["history_coarse"] = h;
+  if (!r.twin.empty()) {
+    // Sensitive dependence: when the two orbits' separation first exceeds 1e-3 (metric units),
+    // against the time the exponent predicts for that growth.
+    json tw;
+    tw["d0"] = o.twin_d0;
+    tw["t_start"] = r.twin.front().t;
+    tw["separation_final"] = r.twin.back().separation;
+    tw["max_separation"] = 0.0;
+    double mx = 0;
+    json t_sep = nullptr;
+    for (const auto& x : r.twin) {
+      mx = std::fmax(mx, x.separation);
+      if (t_sep.is_null() && x.separation > 1e-3) t_sep = x.t - r.twin.front().t;
+    }
+    tw["max_separation"] = mx;
+    tw["time_to_1e-3"] = t_sep;
+    tw["predicted_time_to_1e-3"] =
+        tl.exponent > 0 ? json(std::log(1e-3 / o.twin_d0) / tl.exponent) : json(nullptr);
+    tw["note"] = r.twin_note;
+    j["sensitivity"] = tw;
+  }
+  if (!emit_summary(j, f.json, f.json_out)) {
+    std::printf("largest Lyapunov exponent: %.6g 1/s = %.6g p (%s, tangent + saltation, t = %.6g, %ld renormalisations, %ld impacts)\n",
+                tl.exponent, tl.exponent / fm.p, to_string(tl.status), tl.t_final, tl.renormalisations, r.impacts);
+    std::printf("over the second half: %.6g 1/s\n", r.exponent_second_half);
+    if (!r.twin.empty())
+      std::printf("two orbits %.3g apart: separation %.3g at t = %.6g\n", o.twin_d0, r.twin.back().separation, r.twin.back().t);
+    if (!tl.note.empty()) std::printf("note: %s\n", tl.note.c_str());
+  }
+}
+
 void run(const CLI::App& s, LyapunovFlags& f) {
+  if (f.fm.model != "winkler") return run_forced(s, f);
+  refuse(s, {"--beta", "--omega", "--phase", "--t-transient", "--twin-d0", "--twin-csv", "--width", "--height",
+             "--preset", "--restitution", "--ground-h", "--ground-h-amplitude", "--ground-h-pulse", "--ground-h-record",
+             "--ground-v", "--ground-v-amplitude", "--ground-v-pulse", "--ground-v-record"},
+         "applies to --model housner|rigid|assembly only (the Winkler block runs free here)");
   validate(f.p);
   require_writable("plot", f.plot);
   require_writable("json-out", f.json_out);
@@ -88,7 +250,11 @@ void run(const CLI::App& s, LyapunovFlags& f) {
 void add(CLI::App& app) {
   auto f = std::make_shared<LyapunovFlags>();
   f->opt.t_end = 200;
-  CLI::App* s = app.add_subcommand("lyapunov", "largest Lyapunov exponent along an orbit (two-trajectory renormalisation)");
+  f->fm.model = "winkler";
+  CLI::App* s = app.add_subcommand(
+      "lyapunov",
+      "largest Lyapunov exponent along an orbit: the free Winkler block (two-trajectory renormalisation) or a forced "
+      "housner/rigid block or assembly (variational equation with saltation matrices at impacts)");
   // Lyapunov's --method (renormalisation) comes first: the integrator's is then --integrator-method.
   s->add_option("--method", f->method, "renormalise at fixed times (time) or on the w = 0 section (section)")
       ->check(CLI::IsMember({"time", "section"}))
@@ -99,6 +265,17 @@ void add(CLI::App& app) {
   s->add_option("--interval", f->opt.interval, "time method: renormalisation interval (> 0)")->capture_default_str();
   s->add_option("--csv", f->csv, "write the convergence history (t, growth, estimate)");
   add_summary_options(*s, f->plot, "plot the running estimate against time (PNG + SVG)", f->json, f->json_out);
+  add_forced_model_flags(*s, f->fm, {"winkler"});
+  s->get_option("--model")->description("winkler (default: the free Winkler block, --r --mu --k), housner, rigid (a "
+                                         "block on rigid ground, --width --height) or assembly (--preset)");
+  add_ground_flags(*s, f->ground);
+  s->add_option("--beta", f->beta, "forced: seed 002 excitation a_H = beta alpha g cos(Omega t + phase) (with --omega)");
+  s->add_option("--omega", f->omega, "forced: Omega / p of the seed 002 excitation");
+  s->add_option("--phase", f->phase, "forced: phase of the seed 002 excitation (rad, default 0)");
+  s->add_option("--t-transient", f->t_transient, "forced: the tangent starts here (s), or at the first motion after it");
+  s->add_option("--twin-d0", f->twin_d0,
+                "forced: two nearby orbits this far apart in the rotation rate (units of p; 0: none; default 1e-9)");
+  s->add_option("--twin-csv", f->twin_csv, "forced: write the two orbits' separation (t, separation, predicted)");
   s->callback([s, f] { run(*s, *f); });
 }
 

@@ -2,18 +2,19 @@
 // `blockdyn response-curve`: the largest rotation theta_MAX / alpha (and, for assemblies, the
 // largest slip between blocks over the block width) versus omega = Omega / p for several
 // amplitudes beta, under a_H = beta alpha g cos(Omega t + phase) (seed 001 Figs. 4-7, seed 002
-// Figs. 3, 10-11), over a transient window (--t-end) or a number of forcing periods.
+// Figs. 3, 10-11), over a transient window (--t-end) or a number of forcing periods; or, for
+// assemblies, versus the friction angle between blocks phi_l (seed 002 Figs. 4-5). The points
+// run on the sweep runner (threads, MPI, journal, resume, progress).
 #include <cstdio>
 #include <memory>
 
-#include "blockdyn/analysis/forced/survival_map.hpp"
-#include "blockdyn/io/atomic_file.hpp"
+#include "blockdyn/analysis/forced/survival_table.hpp"
+#include "blockdyn/analysis/sweep/sweep_axis.hpp"
 #include "blockdyn/io/json_io.hpp"
-#include "blockdyn/io/progress.hpp"
 #include "cli_common.hpp"
 #include "cli_registry.hpp"
 #include "forced_model.hpp"
-#include "trajectory_target.hpp"
+#include "grid_run.hpp"
 
 namespace blockdyn::cli {
 namespace {
@@ -21,14 +22,39 @@ namespace {
 struct CurveFlags {
   ForcedModelFlags m;
   SurvivalOptions o;
+  GridRunFlags g;
+  double omega = 0;
+  std::string phi_s_values, phi_l_values;
   std::string out, plot, json_out, progress = "auto";
   bool json = false, quiet = false;
 };
+
+// A friction-angle axis (deg, in (0, 90]) from --phi-X-values, or the single --phi-X value.
+std::vector<double> phi_axis(const CLI::App& s, const std::string& name, const std::string& spec, double single) {
+  const std::string flag = "--" + name + "-values";
+  if (!given(s, flag)) return {single};
+  if (given(s, "--" + name)) throw UsageError(flag + " and --" + name + ": give only one");
+  try {
+    SweepAxis a = parse_axis(name + "-values", spec, AxisSpacing::Linear);
+    for (double v : a.values)
+      if (!(v > 0 && v <= 90)) throw std::invalid_argument(name + "-values: each angle must be in (0, 90] deg");
+    return a.values;
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(e.what());
+  }
+}
 
 void run(const CLI::App& s, const CurveFlags& f) {
   SurvivalOptions o = f.o;
   if (o.betas.empty()) throw UsageError("--betas B1,B2,... is needed (the amplitudes, in units of alpha g)");
   o.beta_points = int(o.betas.size());
+  if (given(s, "--omega")) {
+    for (const char* n : {"--omega-min", "--omega-max", "--omega-points"})
+      if (given(s, n)) throw UsageError(std::string("--omega and ") + n + ": give one frequency or a range");
+    require_range("omega", f.omega, 0, 1e4, false);
+    o.omega_min = o.omega_max = f.omega;
+    o.omega_points = 1;
+  }
   require_range("threads", o.threads, 0, 1024);
   if (given(s, "--t-end") && given(s, "--periods")) throw UsageError("give --t-end or --periods, not both");
   try {
@@ -36,71 +62,133 @@ void run(const CLI::App& s, const CurveFlags& f) {
   } catch (const std::invalid_argument& e) {
     throw UsageError(e.what());
   }
-  require_writable("out", f.out);
+  const bool friction_axes = given(s, "--phi-s-values") || given(s, "--phi-l-values");
+  if (friction_axes && f.m.model != "assembly")
+    throw UsageError("phi-s-values, phi-l-values: friction angles belong to --model assembly");
+  const std::vector<double> phi_s = phi_axis(s, "phi-s", f.phi_s_values, f.m.phi_s);
+  const std::vector<double> phi_l = phi_axis(s, "phi-l", f.phi_l_values, f.m.phi_l);
+  const bool versus_phi = phi_l.size() > 1;
+  if (versus_phi && o.omega_points > 1)
+    throw UsageError("omega: give one frequency (--omega W) for a curve versus phi-l");
+  const GridOutput out("--out", f.out, "response-curve", f.g, f.json_out);
   require_writable("plot", f.plot);
   require_writable("json-out", f.json_out);
-  const ForcedModel fm = build_forced_model(s, f.m);
-  Progress bar("response-curve", std::size_t(o.beta_points) * o.omega_points, 0,
-               f.quiet ? ProgressMode::None : parse_progress_mode(f.progress));
-  const auto pts = survival_map(fm.run, o, fm.alpha, fm.p, [&](std::size_t) { bar.advance(); });
-  bar.finish();
+  // One model per friction pair (phi_s outer), built before any point runs.
+  std::vector<ForcedModel> models;
+  for (double ps : phi_s)
+    for (double pl : phi_l) {
+      ForcedModelFlags mf = f.m;
+      mf.phi_s = ps;
+      mf.phi_l = pl;
+      models.push_back(build_forced_model(s, mf));
+    }
+  const ForcedModel& fm = models.front();
+  const bool assembly = f.m.model == "assembly";
+  const std::size_t nw = std::size_t(o.omega_points), nl = phi_l.size(), ns = phi_s.size(), nb = o.betas.size();
 
   using json = nlohmann::ordered_json;
+  const json options = {{"excitation", o.excitation}, {"phase", o.phase},
+                        {"t_end", o.periods > 0 ? json(nullptr) : json(o.t_end)}, {"periods", o.periods},
+                        {"versus", versus_phi ? "phi_l" : "omega"}};
+  json model = fm.description;
+  if (assembly) {
+    model["phi_s"] = phi_s;
+    model["phi_l"] = phi_l;
+  }
+  const json definition = {{"model", model}, {"alpha", fm.alpha}, {"p", fm.p}, {"width", fm.width},
+                           {"betas", o.betas},
+                           {"omega", {{"min", o.omega_min}, {"max", o.omega_max}, {"points", o.omega_points}}},
+                           {"options", options},
+                           {"index", "i_omega + n_omega * (i_phi_l + n_phi_l * (i_phi_s + n_phi_s * i_beta))"}};
+  std::vector<std::string> cols = survival_columns();
+  for (const char* c : {"phi_s", "phi_l", "theta_max_over_alpha", "max_sliding_over_b"}) cols.push_back(c);
+  const GridTable table(
+      "response-curve", cols, nw * nl * ns * nb,
+      [&](std::size_t i, RowBuilder& row) {
+        const std::size_t iw = i % nw, il = (i / nw) % nl, is = (i / (nw * nl)) % ns, ib = i / (nw * nl * ns);
+        const ForcedModel& m = models[is * nl + il];
+        const double omega = grid_value(o.omega_min, o.omega_max, o.omega_points, int(iw));
+        const SurvivalPoint p = survival_point(m.run, o, m.alpha, m.p, o.betas[ib], omega);
+        add_survival_cells(p, row);
+        if (assembly) {
+          row.add(phi_s[is]);
+          row.add(phi_l[il]);
+        } else {
+          row.empty();
+          row.empty();
+        }
+        row.add(p.max_abs_rotation / m.alpha);
+        row.add(p.max_sliding / m.width);
+      },
+      definition, fm.tolerances, out.csv());
+  const GridRunResult res = run_grid(table, f.g, o.threads, f.progress, f.quiet);
+  if (!res.root) return;
+
+  const Table t = read_table(out.csv(), table.header());
   json j;
   j["run"] = run_info();
-  j["model"] = fm.description;
+  j["model"] = model;
   j["alpha"] = fm.alpha;
   j["p"] = fm.p;
   j["width"] = fm.width;
-  j["units"] = "a_H = beta alpha g cos(omega p t + phase); rotations over alpha, slips over the block width";
-  j["options"] = {{"excitation", o.excitation}, {"phase", o.phase}, {"t_end", o.periods > 0 ? json(nullptr) : json(o.t_end)},
-                  {"periods", o.periods}};
+  j["units"] = "a_H = beta alpha g cos(omega p t + phase); rotations over alpha, slips over the block width; "
+               "friction angles in deg";
+  j["options"] = options;
+  j["tolerances"] = fm.tolerances;
   json arr = json::array();
-  for (const SurvivalPoint& p : pts)
-    arr.push_back({{"beta", p.beta},
-                   {"omega", p.omega},
-                   {"theta_max_over_alpha", p.max_abs_rotation / fm.alpha},
-                   {"max_sliding_over_b", p.max_sliding / fm.width},
-                   {"motion", p.motion},
-                   {"t_failure", p.t_failure ? json(*p.t_failure) : json(nullptr)}});
-  j["points"] = arr;
-  // The table, or a temporary one when only the figure is asked for.
-  TrajectoryTarget table(f.out, f.plot);
-  if (table.file) {
-    std::ostream& os = table.file->stream();
-    os << "beta,omega,theta_max_over_alpha,max_sliding_over_b,motion,t_failure\n";
-    char buf[256];
-    for (const SurvivalPoint& p : pts) {
-      std::snprintf(buf, sizeof buf, "%.17g,%.17g,%.17g,%.17g,%s,", p.beta, p.omega, p.max_abs_rotation / fm.alpha,
-                    p.max_sliding / fm.width, p.motion.c_str());
-      os << buf;
-      if (p.t_failure) {
-        std::snprintf(buf, sizeof buf, "%.17g", *p.t_failure);
-        os << buf;
-      }
-      os << '\n';
+  const std::size_t c_ps = t.column("phi_s"), c_pl = t.column("phi_l");
+  for (const TableRow& r : t.rows) {
+    const SurvivalPoint p = survival_point_from(t, r);
+    json x = {{"beta", p.beta},
+              {"omega", p.omega},
+              {"theta_max_over_alpha", cell_double(r.cells[t.column("theta_max_over_alpha")])},
+              {"max_sliding_over_b", cell_double(r.cells[t.column("max_sliding_over_b")])},
+              {"motion", p.motion},
+              {"t_failure", p.t_failure ? json(*p.t_failure) : json(nullptr)}};
+    if (assembly) {
+      x["phi_s"] = cell_double(r.cells[c_ps]);
+      x["phi_l"] = cell_double(r.cells[c_pl]);
     }
+    arr.push_back(x);
   }
-  const std::string title = f.m.model + (f.m.preset.empty() ? "" : " " + f.m.preset) + ", " + o.excitation;
-  table.figures_and_clean({{"plot_response_curve.py", f.plot, {"--title", title}}});
+  j["points"] = arr;
+  if (!f.plot.empty()) {
+    std::string title = f.m.model + (f.m.preset.empty() ? "" : " " + f.m.preset) + ", " + o.excitation +
+                        (versus_phi ? ", omega = " + short_number(o.omega_min) : "");
+    if (assembly) {
+      title += ", " + f.m.contact + " law" + (f.m.columns_rock_only ? " (columns only rock)" : "");
+      if (phi_s.size() == 1) title += ", phi_s = " + short_number(phi_s[0]);
+      if (phi_l.size() == 1) title += ", phi_l = " + short_number(phi_l[0]);
+    }
+    run_python("plot_response_curve.py", {out.csv(), f.plot, "--title", title, "--x", versus_phi ? "phi_l" : "omega"});
+  }
   if (!f.json_out.empty()) emit_json(j, f.json_out);
   if (f.json) emit_json(j, "-");
-  if (!f.json && !f.quiet) std::printf("%zu points\n", pts.size());
+  if (!f.json && !f.quiet) std::printf("%zu points %s\n", t.rows.size(), grid_run_note(res).c_str());
 }
 
 void add(CLI::App& app) {
   auto f = std::make_shared<CurveFlags>();
   CLI::App* s = app.add_subcommand("response-curve",
                                    "largest rotation theta_MAX / alpha (and slip between blocks / b) versus omega = "
-                                   "Omega/p for several beta, under a_H = beta alpha g cos(Omega t + phase)");
+                                   "Omega/p for several beta, or versus the friction angle phi_l, under a_H = beta "
+                                   "alpha g cos(Omega t + phase) (threads, MPI, resumable)");
   add_forced_model_flags(*s, f->m);
   s->add_option("--betas", f->o.betas, "amplitudes beta, comma separated (a_H = beta alpha g ...)")->delimiter(',');
   add_excitation_grid_flags(*s, f->o);
-  s->add_option("--out", f->out, "write the points as CSV");
-  s->add_option("--plot", f->plot, "plot theta_MAX / alpha versus omega, one curve per beta (PNG + SVG)");
+  s->add_option("--omega", f->omega, "one frequency omega = Omega/p (instead of --omega-min/max/points)");
+  s->add_option("--phi-l-values", f->phi_l_values,
+                "assembly: friction angles between blocks [deg], \"v1,v2,...\" or \"min:max:points\"; more than one "
+                "makes phi_l the curve's abscissa (seed 002 Figs. 4-5; needs one --omega)");
+  s->add_option("--phi-s-values", f->phi_s_values,
+                "assembly: friction angles on the ground [deg], \"v1,v2,...\" or \"min:max:points\" (one curve each)");
+  s->add_option("--out", f->out, "the points as CSV (the runner's table: journal and sidecar .json beside it)");
+  s->add_option("--plot", f->plot, "plot theta_MAX / alpha (and the slip) versus omega or phi_l, one curve per beta "
+                                   "and phi_s (PNG + SVG)");
   s->add_flag("--json", f->json, "print the JSON summary");
   s->add_option("--json-out", f->json_out, "write the JSON summary here");
   s->add_option("--progress", f->progress, "auto, bar, plain or none")->check(CLI::IsMember({"auto", "bar", "plain", "none"}));
+  add_grid_run_flags(*s, f->g);
   s->add_flag("--quiet", f->quiet, "no summary line, no progress");
   s->callback([s, f] { run(*s, *f); });
 }

@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: Apache-2.0
 // `blockdyn spectrum`: overturning spectra of a rigid-ground block (housner, rigid) or of an
 // assembly preset under a horizontal pulse: the smallest overturning amplitude per duration,
-// with the safe islands above it (analysis/forced/overturning_spectrum.hpp).
+// with the safe islands above it (analysis/forced/overturning_spectrum.hpp) and the whole
+// overturn / survive picture of the scan. Durations run on the sweep runner (threads, MPI,
+// journal, resume, progress).
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -9,14 +11,12 @@
 #include <memory>
 #include <sstream>
 
-#include "blockdyn/analysis/forced/overturning_spectrum.hpp"
-#include "blockdyn/io/atomic_file.hpp"
+#include "blockdyn/analysis/forced/spectrum_table.hpp"
 #include "blockdyn/io/json_io.hpp"
-#include "blockdyn/io/progress.hpp"
 #include "cli_common.hpp"
 #include "cli_registry.hpp"
 #include "forced_model.hpp"
-#include "trajectory_target.hpp"
+#include "grid_run.hpp"
 
 namespace blockdyn::cli {
 namespace {
@@ -29,8 +29,9 @@ struct SpectrumFlags {
   int duration_points = 0;
   SpectrumOptions spec;
   double t_after = 10.0;
-  std::string csv, plot, json_out, progress = "auto";
+  std::string csv, plot, plot_map, json_out, progress = "auto";
   bool json = false, quiet = false;
+  GridRunFlags g;
 };
 
 std::vector<double> durations_of(const CLI::App& s, const SpectrumFlags& f) {
@@ -70,73 +71,75 @@ void run(const CLI::App& s, const SpectrumFlags& f) {
   } catch (const std::invalid_argument& e) {
     throw UsageError(e.what());
   }
-  require_writable("csv", f.csv);
+  const GridOutput out("--csv", f.csv, "spectrum", f.g, f.json_out);
   require_writable("plot", f.plot);
+  require_writable("plot-map", f.plot_map);
   require_writable("json-out", f.json_out);
   const ForcedModel fm = build_forced_model(s, f.m);
   const double alpha = fm.alpha, p = fm.p;
-  const nlohmann::ordered_json& model = fm.description;
   const double t_after = f.t_after;
   const PulseShape pulse = *shape;
   const OverturnTest test = [&fm, pulse, t_after](double amplitude, double duration) {
     return fm.run(pulse_motion(pulse, amplitude, duration), pulse_support(pulse) * duration + t_after).collapse_mode.has_value();
   };
-  Progress bar("spectrum", o.durations.size(), 0, f.quiet ? ProgressMode::None : parse_progress_mode(f.progress));
-  const auto rows = overturning_spectrum(test, o, [&](std::size_t) { bar.advance(); });
-  bar.finish();
+  using json = nlohmann::ordered_json;
+  const json options = {{"amplitude_min", o.amplitude_min}, {"amplitude_max", o.amplitude_max},
+                        {"scan_points", o.scan_points}, {"rel_tol", o.rel_tol}, {"t_after", f.t_after},
+                        {"overturn", fm.overturn_rule}};
+  const json definition = {{"model", fm.description}, {"pulse", to_string(pulse)}, {"alpha", alpha}, {"p", p},
+                           {"durations", o.durations}, {"options", options}, {"index", "the duration's position"}};
+  const GridTable table(
+      "spectrum", spectrum_columns(), o.durations.size(),
+      [&](std::size_t i, RowBuilder& row) {
+        const double d = o.durations[i];
+        add_spectrum_cells(spectrum_row(test, o, d),
+                           pulse == PulseShape::Rect ? std::optional<double>(rect_pulse_overturning_linear(alpha, p, d))
+                                                     : std::nullopt,
+                           row);
+      },
+      definition, fm.tolerances, out.csv());
+  const GridRunResult res = run_grid(table, f.g, o.threads, f.progress, f.quiet);
+  if (!res.root) return;
 
-  nlohmann::ordered_json j;
+  const Table t = read_table(out.csv(), table.header());
+  json j;
   j["run"] = run_info();
-  j["model"] = model;
-  j["pulse"] = to_string(*shape);
+  j["model"] = fm.description;
+  j["pulse"] = to_string(pulse);
   j["alpha"] = alpha;
   j["p"] = p;
   j["units"] = "durations in s, amplitudes in g";
-  j["options"] = {{"amplitude_min", o.amplitude_min}, {"amplitude_max", o.amplitude_max},
-                  {"scan_points", o.scan_points}, {"rel_tol", o.rel_tol}, {"t_after", f.t_after},
-                  {"overturn", fm.overturn_rule}};
-  nlohmann::ordered_json arr = nlohmann::ordered_json::array();
+  j["options"] = options;
+  j["tolerances"] = fm.tolerances;
+  j["scan_amplitudes"] = scan_amplitudes(o);
+  json arr = json::array();
   long runs = 0;
-  for (const SpectrumRow& r : rows) {
-    nlohmann::ordered_json x;
+  std::vector<SpectrumRow> rows;
+  for (const TableRow& tr : t.rows) {
+    const SpectrumRow r = spectrum_row_from(t, tr);
+    json x;
     x["duration"] = r.duration;
-    x["min_overturning_amplitude"] = r.min_overturning_amplitude ? nlohmann::ordered_json(*r.min_overturning_amplitude)
-                                                                  : nlohmann::ordered_json(nullptr);
+    x["min_overturning_amplitude"] = r.min_overturning_amplitude ? json(*r.min_overturning_amplitude) : json(nullptr);
     x["at_scan_floor"] = r.at_scan_floor;
-    if (*shape == PulseShape::Rect) x["linearised_rect"] = rect_pulse_overturning_linear(alpha, p, r.duration);
-    nlohmann::ordered_json isl = nlohmann::ordered_json::array();
+    if (pulse == PulseShape::Rect) x["linearised_rect"] = rect_pulse_overturning_linear(alpha, p, r.duration);
+    json isl = json::array();
     for (const SpectrumIsland& i : r.safe_islands) isl.push_back({i.from, i.to});
     x["safe_islands"] = isl;
     x["runs"] = r.runs;
+    json scan = json::array();
+    for (char c : r.scan) scan.push_back(c != 0);
+    x["scan_overturned"] = scan;
     runs += r.runs;
     arr.push_back(x);
+    rows.push_back(r);
   }
   j["rows"] = arr;
   j["runs"] = runs;
-  // The table, or a temporary one when only the figure is asked for.
-  TrajectoryTarget table(f.csv, f.plot);
-  if (table.file) {
-    std::ostream& os = table.file->stream();
-    os << "duration,min_overturning_amplitude,linearised_rect,safe_islands\n";
-    char buf[160];
-    for (const auto& x : arr) {
-      std::snprintf(buf, sizeof buf, "%.17g,", x["duration"].get<double>());
-      os << buf;
-      if (!x["min_overturning_amplitude"].is_null()) {
-        std::snprintf(buf, sizeof buf, "%.17g", x["min_overturning_amplitude"].get<double>());
-        os << buf;
-      }
-      os << ',';
-      if (x.contains("linearised_rect")) {
-        std::snprintf(buf, sizeof buf, "%.17g", x["linearised_rect"].get<double>());
-        os << buf;
-      }
-      os << ',' << x["safe_islands"].size() << '\n';
-    }
-  }
-  table.figures_and_clean({{"plot_spectrum.py", f.plot, {"--title",
-                                        f.m.model + " " + (f.m.preset.empty() ? "" : f.m.preset + " ") +
-                                            to_string(*shape) + " pulse"}}});
+  const std::string title = f.m.model + " " + (f.m.preset.empty() ? "" : f.m.preset + " ") + to_string(pulse) + " pulse";
+  if (!f.plot.empty()) run_python("plot_spectrum.py", {out.csv(), f.plot, "--title", title});
+  if (!f.plot_map.empty())
+    run_python("plot_spectrum.py", {out.csv(), f.plot_map, "--title", title, "--map", format_double(o.amplitude_min),
+                                    format_double(o.amplitude_max)});
   if (!f.json_out.empty()) emit_json(j, f.json_out);
   if (f.json) emit_json(j, "-");
   if (!f.json && !f.quiet) {
@@ -145,7 +148,7 @@ void run(const CLI::App& s, const SpectrumFlags& f) {
       std::printf("%12.6g  %29s  %zu\n", r.duration,
                   r.min_overturning_amplitude ? std::to_string(*r.min_overturning_amplitude).c_str() : "none in scan",
                   r.safe_islands.size());
-    std::printf("%ld simulations\n", runs);
+    std::printf("%ld simulations %s\n", runs, grid_run_note(res).c_str());
   }
 }
 
@@ -153,7 +156,7 @@ void add(CLI::App& app) {
   auto f = std::make_shared<SpectrumFlags>();
   CLI::App* s = app.add_subcommand("spectrum",
                                    "overturning spectrum: the smallest pulse amplitude that overturns a block (or "
-                                   "collapses an assembly), per pulse duration (s, g)");
+                                   "collapses an assembly), per pulse duration (s, g) (threads, MPI, resumable)");
   add_forced_model_flags(*s, f->m);
   s->add_option("--pulse", f->pulse, std::string("pulse shape: ") + pulse_names() + " (default rect)");
   s->add_option("--durations", f->durations, "pulse durations t_p [s], comma separated")->delimiter(',');
@@ -166,11 +169,14 @@ void add(CLI::App& app) {
   s->add_option("--rel-tol", f->spec.rel_tol, "relative tolerance of the minimum (default 1e-6)");
   s->add_option("--t-after", f->t_after, "simulated time after the pulse [s] (default 10)");
   s->add_option("--threads", f->spec.threads, "worker threads (0: all cores; default 0)");
-  s->add_option("--csv", f->csv, "write the spectrum as CSV");
+  s->add_option("--csv", f->csv, "the spectrum as CSV (the runner's table: journal and sidecar .json beside it)");
   s->add_option("--plot", f->plot, "plot the spectrum (PNG + SVG), with the linearised closed form for rect");
+  s->add_option("--plot-map", f->plot_map,
+                "plot the overturn / survive picture over (duration, amplitude) from the scan (PNG + SVG)");
   s->add_flag("--json", f->json, "print the JSON summary");
   s->add_option("--json-out", f->json_out, "write the JSON summary here");
   s->add_option("--progress", f->progress, "auto, bar, plain or none")->check(CLI::IsMember({"auto", "bar", "plain", "none"}));
+  add_grid_run_flags(*s, f->g);
   s->add_flag("--quiet", f->quiet, "no table, no progress");
   s->callback([s, f] { run(*s, *f); });
 }

@@ -1,18 +1,19 @@
 // SPDX-License-Identifier: Apache-2.0
 // `blockdyn survival`: survival domains over (beta, omega) for seed 002's excitation
 // a_H = beta alpha g cos(Omega t + phase), omega = Omega / p, harmonic or as a pulse
-// (analysis/forced/survival_map.hpp), for a block on rigid ground or an assembly preset.
+// (analysis/forced/survival_map.hpp), for a block on rigid ground or an assembly preset. The
+// points run on the sweep runner (threads, MPI, journal, resume, progress); --refine adds points
+// near class changes (analysis/sweep/refinement_plan.hpp).
 #include <cstdio>
 #include <memory>
 
-#include "blockdyn/analysis/forced/survival_map.hpp"
-#include "blockdyn/io/atomic_file.hpp"
+#include "blockdyn/analysis/forced/survival_table.hpp"
+#include "blockdyn/analysis/sweep/refinement_plan.hpp"
 #include "blockdyn/io/json_io.hpp"
-#include "blockdyn/io/progress.hpp"
 #include "cli_common.hpp"
 #include "cli_registry.hpp"
 #include "forced_model.hpp"
-#include "trajectory_target.hpp"
+#include "grid_run.hpp"
 
 namespace blockdyn::cli {
 namespace {
@@ -20,9 +21,14 @@ namespace {
 struct SurvivalFlags {
   ForcedModelFlags m;
   SurvivalOptions o;
+  GridRunFlags g;
+  int refine = 0;
   std::string out, plot, json_out, progress = "auto";
   bool json = false, quiet = false;
 };
+
+// Refinement and plots class points by motion and collapse mode.
+std::string point_class(const std::string& motion, const std::string& mode) { return motion + " " + mode; }
 
 void run(const CLI::App& s, const SurvivalFlags& f) {
   SurvivalOptions o = f.o;
@@ -33,28 +39,63 @@ void run(const CLI::App& s, const SurvivalFlags& f) {
     throw UsageError(e.what());
   }
   if (given(s, "--t-end") && given(s, "--periods")) throw UsageError("give --t-end or --periods, not both");
-  require_writable("out", f.out);
+  require_range("refine", f.refine, 0, 8);
+  const std::size_t nxf = RefinementPlan::fine_count(std::size_t(o.omega_points), f.refine);
+  const std::size_t nyf = RefinementPlan::fine_count(std::size_t(o.beta_points), f.refine);
+  if (double(nxf) * double(nyf) > 4e6)
+    throw UsageError("refine: the fine lattice would have " + std::to_string(nxf * nyf) +
+                     " points (at most 4e6): lower --refine or the point counts");
+  const GridOutput out("--out", f.out, "survival", f.g, f.json_out);
   require_writable("plot", f.plot);
   require_writable("json-out", f.json_out);
   const ForcedModel fm = build_forced_model(s, f.m);
-  const std::size_t n = std::size_t(o.beta_points) * o.omega_points;
-  Progress bar("survival", n, 0, f.quiet ? ProgressMode::None : parse_progress_mode(f.progress));
-  const auto pts = survival_map(fm.run, o, fm.alpha, fm.p, [&](std::size_t) { bar.advance(); });
-  bar.finish();
 
   using json = nlohmann::ordered_json;
+  json options = {{"excitation", o.excitation}, {"phase", o.phase}, {"t_end", o.periods > 0 ? json(nullptr) : json(o.t_end)},
+                  {"periods", o.periods}, {"t_star_classes_s", o.t_star_classes}, {"failure", fm.overturn_rule},
+                  {"pulse_duration", o.excitation == "harmonic" ? "" : "pi / Omega (half a forcing period)"},
+                  {"refine", f.refine},
+                  {"cycle", "harmonic: the dominant (m, n) cycle of block 0 over the run (2m impacts per n forcing "
+                            "periods, seed 002; `blockdyn cycles` with its default window and tolerance, fitted to "
+                            "the run's length; before t* for a collapse), or non-periodic / no-impacts; null at rest"}};
+  const json definition = {{"model", fm.description}, {"alpha", fm.alpha}, {"p", fm.p},
+                           {"beta", {{"min", o.beta_min}, {"max", o.beta_max}, {"points", o.beta_points}}},
+                           {"omega", {{"min", o.omega_min}, {"max", o.omega_max}, {"points", o.omega_points}}},
+                           {"options", options},
+                           {"index", "omega fastest: index = i_omega + n_omega * i_beta on the (refined) lattice"}};
+  std::vector<std::string> cols = survival_columns();
+  cols.push_back("level");
+  const std::size_t motion_col = 3, mode_col = 4;  // after index, beta, omega
+  RefinementPlan stages(std::size_t(o.omega_points), std::size_t(o.beta_points), f.refine, [&](const std::string& r) {
+    const auto c = split_csv_line(r.substr(0, r.size() - 1));
+    return point_class(c[motion_col], c[mode_col]);
+  });
+  const GridTable table(
+      "survival", cols, stages.size(),
+      [&](std::size_t i, RowBuilder& row) {
+        const double omega = grid_value(o.omega_min, o.omega_max, int(nxf), int(i % nxf));
+        const double beta = grid_value(o.beta_min, o.beta_max, int(nyf), int(i / nxf));
+        add_survival_cells(survival_point(fm.run, o, fm.alpha, fm.p, beta, omega), row);
+        row.add(static_cast<long long>(stages.level_of(i)));
+      },
+      definition, fm.tolerances, out.csv());
+  const GridRunResult res = run_grid(table, f.g, o.threads, f.progress, f.quiet, &stages);
+  if (!res.root) return;
+
+  const Table t = read_table(out.csv(), table.header());
   json j;
   j["run"] = run_info();
   j["model"] = fm.description;
   j["alpha"] = fm.alpha;
   j["p"] = fm.p;
   j["units"] = "a_H = beta alpha g cos(omega p t + phase); t in s";
-  j["options"] = {{"excitation", o.excitation}, {"phase", o.phase}, {"t_end", o.periods > 0 ? json(nullptr) : json(o.t_end)},
-                  {"periods", o.periods}, {"t_star_classes_s", o.t_star_classes}, {"failure", fm.overturn_rule},
-                  {"pulse_duration", o.excitation == "harmonic" ? "" : "pi / Omega (half a forcing period)"}};
+  j["options"] = options;
+  j["tolerances"] = fm.tolerances;
   json arr = json::array();
   std::array<long, 4> counts{};
-  for (const SurvivalPoint& p : pts) {
+  const std::size_t level_col = t.column("level");
+  for (const TableRow& r : t.rows) {
+    const SurvivalPoint p = survival_point_from(t, r);
     json x;
     x["beta"] = p.beta;
     x["omega"] = p.omega;
@@ -63,45 +104,37 @@ void run(const CLI::App& s, const SurvivalFlags& f) {
     x["t_failure"] = p.t_failure ? json(*p.t_failure) : json(nullptr);
     x["t_star_class"] = p.t_star_class.empty() ? json(nullptr) : json(p.t_star_class);
     x["max_abs_rotation"] = p.max_abs_rotation;
-    x["cycle"] = nullptr;  // the (m, n) cycle detection is not available yet
+    x["cycle"] = p.cycle.empty() ? json(nullptr) : json(p.cycle);
+    if (f.refine > 0) x["level"] = cell_integer(r.cells[level_col]);
     arr.push_back(x);
     ++counts[p.motion == "rest" ? 0 : p.motion == "stable" ? 1 : p.motion == "collapse" ? 2 : 3];
   }
   j["counts"] = {{"rest", counts[0]}, {"stable", counts[1]}, {"collapse", counts[2]}, {"invalid", counts[3]}};
   j["points"] = arr;
-  // The table, or a temporary one when only the figure is asked for.
-  TrajectoryTarget table(f.out, f.plot);
-  if (table.file) {
-    std::ostream& os = table.file->stream();
-    os << "beta,omega,motion,collapse_mode,t_failure,t_star_class,max_abs_rotation\n";
-    char buf[256];
-    for (const SurvivalPoint& p : pts) {
-      std::snprintf(buf, sizeof buf, "%.17g,%.17g,%s,", p.beta, p.omega, p.motion.c_str());
-      os << buf;
-      if (p.collapse_mode) os << *p.collapse_mode;
-      os << ',';
-      if (p.t_failure) {
-        std::snprintf(buf, sizeof buf, "%.17g", *p.t_failure);
-        os << buf;
-      }
-      std::snprintf(buf, sizeof buf, ",%s,%.17g\n", p.t_star_class.c_str(), p.max_abs_rotation);
-      os << buf;
+  if (!f.plot.empty()) {
+    std::string title = f.m.model + (f.m.preset.empty() ? "" : " " + f.m.preset) + ", " + o.excitation;
+    if (f.m.model == "assembly")
+      title += ", " + f.m.contact + " law, phi_s = " + short_number(f.m.phi_s) + ", phi_l = " + short_number(f.m.phi_l);
+    std::vector<std::string> args{out.csv(), f.plot, "--title", title};
+    if (f.refine > 0) {
+      args.insert(args.end(), {"--refined", format_double(o.omega_points > 1 ? (o.omega_max - o.omega_min) / (o.omega_points - 1) : 1.0),
+                               format_double(o.beta_points > 1 ? (o.beta_max - o.beta_min) / (o.beta_points - 1) : 1.0)});
     }
+    run_python("plot_survival.py", args);
   }
-  const std::string title = f.m.model + (f.m.preset.empty() ? "" : " " + f.m.preset) + ", " + o.excitation;
-  table.figures_and_clean({{"plot_survival.py", f.plot, {"--title", title}}});
   if (!f.json_out.empty()) emit_json(j, f.json_out);
   if (f.json) emit_json(j, "-");
   if (!f.json && !f.quiet)
-    std::printf("%zu points: %ld rest, %ld stable, %ld collapse, %ld invalid\n", pts.size(), counts[0], counts[1],
-                counts[2], counts[3]);
+    std::printf("%zu points: %ld rest, %ld stable, %ld collapse, %ld invalid %s\n", t.rows.size(), counts[0], counts[1],
+                counts[2], counts[3], grid_run_note(res).c_str());
 }
 
 void add(CLI::App& app) {
   auto f = std::make_shared<SurvivalFlags>();
   CLI::App* s = app.add_subcommand(
       "survival", "survival domain over (beta, omega): rest, stable or collapse per point for a_H = beta alpha g "
-                  "cos(Omega t + phase), omega = Omega/p (seed 002), harmonic or as a half-period pulse");
+                  "cos(Omega t + phase), omega = Omega/p (seed 002), harmonic or as a half-period pulse "
+                  "(threads, MPI, resumable)");
   add_forced_model_flags(*s, f->m);
   add_excitation_grid_flags(*s, f->o);
   s->add_option("--beta-min", f->o.beta_min, "smallest beta (default 0.5)");
@@ -111,11 +144,15 @@ void add(CLI::App& app) {
                 "upper bounds [s] of the t* classes <=5 s, short, medium, long (default 5,30,100,300)")
       ->delimiter(',')
       ->expected(4);
-  s->add_option("--out", f->out, "write the points as CSV");
+  s->add_option("--refine", f->refine,
+                "refinement levels near class changes (0-8, default 0): cells whose corners differ in motion or "
+                "collapse mode are split in four, level after level");
+  s->add_option("--out", f->out, "the points as CSV (the runner's table: journal and sidecar .json beside it)");
   s->add_option("--plot", f->plot, "plot the survival domain (PNG + SVG) in the style of seed 002");
   s->add_flag("--json", f->json, "print the JSON summary");
   s->add_option("--json-out", f->json_out, "write the JSON summary here");
   s->add_option("--progress", f->progress, "auto, bar, plain or none")->check(CLI::IsMember({"auto", "bar", "plain", "none"}));
+  add_grid_run_flags(*s, f->g);
   s->add_flag("--quiet", f->quiet, "no summary line, no progress");
   s->callback([s, f] { run(*s, *f); });
 }

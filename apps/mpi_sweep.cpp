@@ -42,7 +42,7 @@ int launcher_world_size() {
 
 bool mpi_built() { return false; }
 
-MpiSweepResult run_sweep_mpi(const PointTable&, SweepRunOptions) {
+MpiSweepResult run_sweep_mpi(const PointTable&, SweepRunOptions, PointPlan*) {
   throw UsageError("this blockdyn was built without MPI: run it without mpirun, or rebuild with Open MPI");
 }
 
@@ -79,66 +79,14 @@ SweepRow decode(const std::string& s) {
   std::abort();
 }
 
-}  // namespace
-
-MpiSweepResult run_sweep_mpi(const PointTable& ev, SweepRunOptions o) {
-  int provided = 0;
-  MPI_Init_thread(nullptr, nullptr, MPI_THREAD_FUNNELED, &provided);
-  int rank = 0, size = 1;
-  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
-  MPI_Comm_size(MPI_COMM_WORLD, &size);
-  o.ranks = size;
-  if (o.threads <= 0) {
-    // Share the node's cores among the ranks placed on it.
-    MPI_Comm node;
-    MPI_Comm_split_type(MPI_COMM_WORLD, MPI_COMM_TYPE_SHARED, rank, MPI_INFO_NULL, &node);
-    int local = 1;
-    MPI_Comm_size(node, &local);
-    MPI_Comm_free(&node);
-    o.threads = std::max(1, resolve_threads(0) / std::max(1, local));
-  }
-  if (rank != 0) o.progress = ProgressMode::None;
-
-  // Rank 0 opens the outputs; a usage error there must stop every rank cleanly.
-  std::unique_ptr<SweepSession> session;
-  int status = 0;
-  std::string message;
-  if (rank == 0) {
-    try {
-      session = std::make_unique<SweepSession>(ev, o);
-    } catch (const std::invalid_argument& e) {
-      status = 2;
-      message = e.what();
-    } catch (const std::exception& e) {
-      status = 1;
-      message = e.what();
-    }
-  }
-  MPI_Bcast(&status, 1, MPI_INT, 0, MPI_COMM_WORLD);
-  if (status != 0) {
-    MPI_Finalize();
-    if (rank == 0) {
-      if (status == 2) throw UsageError(message);
-      throw std::runtime_error(message);
-    }
-    std::exit(status);
-  }
-
-  // Everyone learns the pending points (what the journal does not hold yet).
-  std::vector<std::uint64_t> pending;
-  if (rank == 0)
-    for (std::size_t i : session->pending()) pending.push_back(i);
-  std::uint64_t npending = pending.size();
-  MPI_Bcast(&npending, 1, MPI_UINT64_T, 0, MPI_COMM_WORLD);
-  pending.resize(npending);
-  if (npending) MPI_Bcast(pending.data(), int(npending), MPI_UINT64_T, 0, MPI_COMM_WORLD);
-  std::vector<std::size_t> mine;
-  for (std::size_t j = std::size_t(rank); j < pending.size(); j += std::size_t(size)) mine.push_back(pending[j]);
-
+// One stage: this rank's points on its threads; rows go to rank 0 (which records them and also
+// those of the other ranks) until every rank has reported the end of its share.
+void run_stage(const PointTable& ev, const std::vector<std::size_t>& mine, int threads, int rank, int size,
+               SweepSession* session) {
   RowQueue q;
   std::thread worker([&] {
     try {
-      compute_rows(ev, mine, o.threads, [&](std::size_t i, const SweepRow& r) {
+      compute_rows(ev, mine, threads, [&](std::size_t i, const SweepRow& r) {
         std::lock_guard<std::mutex> lock(q.mu);
         q.rows.emplace_back(i, r);
         q.cv.notify_one();
@@ -212,13 +160,82 @@ MpiSweepResult run_sweep_mpi(const PointTable& ev, SweepRunOptions o) {
     if (local_done && remote_done == size - 1) break;
   }
   worker.join();
+}
+
+}  // namespace
+
+MpiSweepResult run_sweep_mpi(const PointTable& ev, SweepRunOptions o, PointPlan* plan) {
+  int provided = 0;
+  MPI_Init_thread(nullptr, nullptr, MPI_THREAD_FUNNELED, &provided);
+  int rank = 0, size = 1;
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  MPI_Comm_size(MPI_COMM_WORLD, &size);
+  o.ranks = size;
+  if (o.threads <= 0) {
+    // Share the node's cores among the ranks placed on it.
+    MPI_Comm node;
+    MPI_Comm_split_type(MPI_COMM_WORLD, MPI_COMM_TYPE_SHARED, rank, MPI_INFO_NULL, &node);
+    int local = 1;
+    MPI_Comm_size(node, &local);
+    MPI_Comm_free(&node);
+    o.threads = std::max(1, resolve_threads(0) / std::max(1, local));
+  }
+  if (rank != 0) o.progress = ProgressMode::None;
+
+  // Rank 0 opens the outputs; a usage error there must stop every rank cleanly.
+  std::unique_ptr<SweepSession> session;
+  int status = 0;
+  std::string message;
+  if (rank == 0) {
+    try {
+      session = std::make_unique<SweepSession>(ev, o);
+    } catch (const std::invalid_argument& e) {
+      status = 2;
+      message = e.what();
+    } catch (const std::exception& e) {
+      status = 1;
+      message = e.what();
+    }
+  }
+  MPI_Bcast(&status, 1, MPI_INT, 0, MPI_COMM_WORLD);
+  if (status != 0) {
+    MPI_Finalize();
+    if (rank == 0) {
+      if (status == 2) throw UsageError(message);
+      throw std::runtime_error(message);
+    }
+    std::exit(status);
+  }
+
+  AllPoints all(ev.size());
+  PointPlan& stages = plan ? *plan : all;
+  // Stage by stage (one for a plain grid): rank 0 picks the stage's unfinished points from the
+  // plan and its journal, everyone learns them, each rank computes its share.
+  for (;;) {
+    std::vector<std::uint64_t> pending;
+    if (rank == 0) {
+      try {
+        for (std::size_t i : session->next_stage(stages)) pending.push_back(i);
+      } catch (const std::exception& e) {
+        abort_all(std::string("rank 0: ") + e.what());
+      }
+    }
+    std::uint64_t npending = pending.size();
+    MPI_Bcast(&npending, 1, MPI_UINT64_T, 0, MPI_COMM_WORLD);
+    if (npending == 0) break;  // the plan is complete
+    pending.resize(npending);
+    MPI_Bcast(pending.data(), int(npending), MPI_UINT64_T, 0, MPI_COMM_WORLD);
+    std::vector<std::size_t> mine;
+    for (std::size_t j = std::size_t(rank); j < pending.size(); j += std::size_t(size)) mine.push_back(pending[j]);
+    run_stage(ev, mine, o.threads, rank, size, session.get());
+  }
 
   MpiSweepResult res;
   res.root = rank == 0;
   res.ranks = size;
   if (rank == 0) {
     try {
-      res.outcome = session->finish(o.threads);
+      res.outcome = session->finish(o.threads, stages.sparse());
     } catch (const std::exception& e) {
       abort_all(e.what());
     }

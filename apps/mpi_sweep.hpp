@@ -5,6 +5,7 @@
 // rank and computes them on its own threads; rows travel to rank 0 as they finish. The rows are
 // the same bytes as in a single-process run, and the final CSV is sorted, so the output is
 // byte-identical to a single-process run; resume works the same because rank 0 reads the journal.
+// An adaptive plan runs stage after stage: rank 0 chooses each stage and broadcasts it.
 #include "blockdyn/analysis/sweep/sweep_runner.hpp"
 
 namespace blockdyn::cli {
@@ -23,8 +24,9 @@ struct MpiSweepResult {
   int ranks = 1;
 };
 
-// Initialises MPI, runs the sweep across ranks and finalises MPI. Usage errors (e.g. existing
-// output) are thrown on rank 0; the other ranks then exit quietly with the same status.
-MpiSweepResult run_sweep_mpi(const PointTable& ev, SweepRunOptions o);
+// Initialises MPI, runs the sweep (the plan's stages; nullptr: every point) across ranks and
+// finalises MPI. Usage errors (e.g. existing output) are thrown on rank 0; the other ranks then
+// exit quietly with the same status. The plan is consulted on rank 0 only.
+MpiSweepResult run_sweep_mpi(const PointTable& ev, SweepRunOptions o, PointPlan* plan = nullptr);
 
 }  // namespace blockdyn::cli

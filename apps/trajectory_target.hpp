@@ -19,10 +19,12 @@ struct TrajectoryTarget {
   bool temporary = false;
   std::unique_ptr<AtomicFile> file;
   std::unique_ptr<RemoveOnSignal> cleanup;  // the temporary CSV while the plot is made
-  TrajectoryTarget(const std::string& trajectory, const std::string& plot) : path(trajectory) {
+  // tag: names the temporary file (several targets in one command need distinct tags).
+  TrajectoryTarget(const std::string& trajectory, const std::string& plot, const std::string& tag = "trajectory")
+      : path(trajectory) {
     if (path.empty() && !plot.empty()) {  // plot: any figure made from the trajectory
       temporary = true;
-      path = "/tmp/blockdyn-trajectory-" + std::to_string(::getpid()) + ".csv";
+      path = "/tmp/blockdyn-" + tag + "-" + std::to_string(::getpid()) + ".csv";
       cleanup = std::make_unique<RemoveOnSignal>(path);
     }
     if (!path.empty()) file = std::make_unique<AtomicFile>(path);

@@ -17,7 +17,7 @@ import subprocess
 import sys
 import tempfile
 
-from plotkit import np, plt, save
+from plotkit import legend_outside, np, plt, save
 
 B, OUT = sys.argv[1], sys.argv[2]
 RECORD = sys.argv[3] if len(sys.argv) > 3 else None
@@ -80,14 +80,14 @@ def fig_free_rocking():
         t += 2.0 * quarter_swing(alpha, p, a)
     sim = [ev["t"] for ev in hj["events"] if ev["kind"] == "impact"]
     err = max(abs(s - r) for s, r in zip(sim, ref))
-    fig, ax = plt.subplots(2, 1, figsize=(9, 6), sharex=True, constrained_layout=True)
+    fig, ax = plt.subplots(2, 1, figsize=(10.5, 6), sharex=True, constrained_layout=True)
     ax[0].plot(hs["t"], hs["w"] / alpha, lw=1.2, label="Housner (1 DOF)")
     ax[0].plot(rg["t"], rg["w"] / alpha, "--", lw=1.0, label="rigid 3 DOF, mu = 5")
     for r in ref:
         ax[0].axvline(r, color="0.8", lw=0.6, zorder=0)
     ax[0].set_ylabel("theta / alpha")
-    ax[0].legend(loc="upper right", fontsize=8)
-    ax[0].set_title(f"free rocking, b = {b} m, h = {h} m, theta0 = alpha/2: impacts (grey) from quadrature; "
+    legend_outside(ax[0])
+    ax[0].set_title(f"Free rocking (rotation and rate): Housner vs 3-DOF, b = {b} m, h = {h} m, theta0 = alpha/2:\nimpacts (grey) from quadrature; "
                     f"max |t_sim - t_ref| = {err:.1e} s over {min(len(sim), len(ref))} impacts", fontsize=9)
     ax[1].plot(hs["t"], hs["vw"], lw=1.0)
     ax[1].set_ylabel("theta' [rad/s]")
@@ -118,7 +118,7 @@ def threshold(b, h, tp, pulse="rect", rel=1e-4):
 
 def fig_rect_pulse():
     ptp = np.geomspace(0.15, 6, 14)
-    fig, ax = plt.subplots(figsize=(8, 5), constrained_layout=True)
+    fig, ax = plt.subplots(figsize=(10.5, 5), constrained_layout=True)
     x = np.geomspace(0.1, 8, 200)
     ax.plot(x, 1 / (1 - np.exp(-x)), "k-", lw=1.2, label="closed form (linearised): 1 / (1 - exp(-p t_p))")
     worst = {}
@@ -133,9 +133,9 @@ def fig_rect_pulse():
     ax.set_yscale("log")
     ax.set_xlabel("p t_p")
     ax.set_ylabel("minimum overturning amplitude a_p / (g alpha)")
-    ax.set_title("rectangular pulse, Housner block: overturning limit (relative deviation from the closed form: "
+    ax.set_title("Smallest overturning amplitude of a rectangular pulse, Housner block\n(relative deviation from the closed form: "
                  + ", ".join(f"b/h {k}: {v:.2%}" for k, v in worst.items()) + ")", fontsize=8)
-    ax.legend(fontsize=8)
+    legend_outside(ax)
     ax.grid(True, which="both", alpha=0.3)
     save(fig, os.path.join(OUT, "rigid_rect_pulse.png"))
     return worst
@@ -155,7 +155,7 @@ def fig_onset():
     grid = np.zeros((len(A), len(mu)))
     for r in rows:
         grid[A.index(float(r["ground_h_constant"])), mu.index(float(r["mu"]))] = names.index(r["final_mode"])
-    fig, ax = plt.subplots(figsize=(8, 6), constrained_layout=True)
+    fig, ax = plt.subplots(figsize=(10, 6), constrained_layout=True)
     from matplotlib.colors import ListedColormap
     cmap = ListedColormap(["0.9", "#9ecae1", "#fdd49e", "#fc8d59"])
     ax.pcolormesh(mu, A, grid, cmap=cmap, vmin=-0.5, vmax=3.5, shading="nearest")
@@ -169,11 +169,11 @@ def fig_onset():
     ax.plot(fs, astar, "k:", lw=2, label="A* (rock -> slide-rock)")
     from matplotlib.patches import Patch
     handles = [Patch(color=c, label=n) for c, n in zip(cmap.colors, names)]
-    ax.legend(handles=handles + ax.get_legend_handles_labels()[0], fontsize=8, loc="center right", framealpha=0.9)
+    legend_outside(ax, handles=handles + ax.get_legend_handles_labels()[0])
     ax.set_ylim(0, 2)
     ax.set_xlabel("static friction f_s (= f_k)")
     ax.set_ylabel("constant ground acceleration A [g]")
-    ax.set_title(f"onset mechanism from rest, 3-DOF block b/h = {s}: cells from blockdyn, lines closed form", fontsize=9)
+    ax.set_title(f"Mechanism at the onset of motion from rest under a constant ground acceleration,\n3-DOF block b/h = {s}: cells from blockdyn, lines closed form", fontsize=9)
     save(fig, os.path.join(OUT, "rigid_onset_map.png"))
 
 
@@ -184,7 +184,7 @@ def fig_record():
     common = ["--width", 0.3, "--height", 1.2, "--t-end", 30, "--ground-h-record", RECORD, "--ground-h-scale", 1.6]
     runs = [("housner", ["--model", "housner"]), ("rigid, mu = 0.7", ["--model", "rigid", "--mu-s", 0.7]),
             ("rigid, mu_s = 0.2 < b/h (slides)", ["--model", "rigid", "--mu-s", 0.2, "--mu-k", 0.15])]
-    fig, ax = plt.subplots(3, 1, figsize=(10, 8), sharex=True, constrained_layout=True)
+    fig, ax = plt.subplots(3, 1, figsize=(11.5, 8), sharex=True, constrained_layout=True)
     for (name, args), ls in zip(runs, ("-", "--", "-")):
         tr = trajectory(*args, *common, interval=0.005)
         ax[0].plot(tr["t"], tr["w"], ls, lw=0.9, label=name)
@@ -195,11 +195,12 @@ def fig_record():
     ax[1].plot([float(r["t"]) for r in rows], [float(r["x"]) for r in rows], lw=0.8, color="C2")
     ax[2].plot([float(r["t"]) for r in rows], [float(r["a_h"]) for r in rows], lw=0.6, color="0.3")
     ax[0].set_ylabel("theta [rad]")
-    ax[0].legend(fontsize=8)
+    legend_outside(ax[0])
     ax[1].set_ylabel("x relative to ground [m]\n(mu_s = 0.2)")
     ax[2].set_ylabel("a_H [g]")
     ax[2].set_xlabel("t [s]")
-    ax[0].set_title("block 0.3 m x 1.2 m under the synthetic record (tests/fixtures/synthetic_60s.AT2) x 1.6",
+    ax[0].set_title("Rotation, sliding and ground acceleration: block 0.3 m x 1.2 m under the synthetic record\n"
+                    "(tests/fixtures/synthetic_60s.AT2) x 1.6",
                     fontsize=9)
     save(fig, os.path.join(OUT, "rigid_record.png"))
 

@@ -8,7 +8,7 @@ An SVG with the same stem is written beside the PNG.
 """
 import sys
 
-from plotkit import col, finish_k_scan, k_scan_figure, log_axes, np, plt, run_modes, save
+from plotkit import col, finish_k_scan, k_scan_figure, legend_outside, log_axes, np, plt, run_modes, save, t_end
 
 
 def plot_time(rows, meta, out):
@@ -24,12 +24,12 @@ def plot_time(rows, meta, out):
             a.plot(k[sel], t[sel], style, ms=4, color="k" if style == "." else "0.55", label=label)
             b.plot(k[sel], ihor[sel], style, ms=4, color="k" if style == "." else "0.55")
     finish_k_scan(fig, (a, b), meta, out, "time to first flight",
-                  "ihor at first flight\n(at the end if none)")
+                  "ihor at first flight\n(at the end if none)", "Time and ihor at the first flight")
 
 
 def plot_boundary(rows, meta, out):
     r = col(rows, "r")
-    fig, ax = plt.subplots(figsize=(7, 5), constrained_layout=True)
+    fig, ax = plt.subplots(figsize=(9, 5), constrained_layout=True)
     styles = ["-", "--", "-.", ":"]
     names = [c for c in rows[0].keys() if c.startswith("k_") and not c.endswith("_status")]
     for i, name in enumerate(names):
@@ -39,21 +39,24 @@ def plot_boundary(rows, meta, out):
             continue
         ax.plot(r[ok], v[ok], styles[i % len(styles)], marker="o", ms=3, label=name)
     log_axes(ax, "r", "k")
-    ax.legend(fontsize=8)
-    ax.set_title(f"flight boundaries, {meta.get('ic', '')}, mu = {meta.get('mu', '?')}")
+    legend_outside(ax)
+    ax.set_title(f"Flight boundaries versus r (no flight below k_critical_n, early flight above k_high;\n"
+                 f"k_min: energy bound), {meta.get('ic', '')}, mu = {meta.get('mu', '?')}, t_end = {t_end(meta)}",
+                 fontsize=10)
     save(fig, out)
 
 
 def plot_kmin(rows, meta, out):
     r = col(rows, "r")
-    fig, ax = plt.subplots(figsize=(6.5, 4.5), constrained_layout=True)
+    fig, ax = plt.subplots(figsize=(8, 4.5), constrained_layout=True)
     for name in [c for c in rows[0].keys() if c.startswith("k_min_")]:
         v = col(rows, name)
         ok = np.isfinite(v)
         ax.plot(r[ok], v[ok], label=name[len("k_min_"):])
     log_axes(ax, "r", "k_min (E0 = 0)")
-    ax.legend(fontsize=8)
-    ax.set_title(f"energy lower bound of the flight region, mu = {meta.get('mu', '?')}")
+    legend_outside(ax, title="initial conditions")
+    ax.set_title(f"k_min(r): the energy lower bound of the flight region\n(no flight possible below), "
+                 f"mu = {meta.get('mu', '?')}", fontsize=10)
     save(fig, out)
 
 
@@ -78,7 +81,8 @@ def plot_map(rows, meta, out):
     ax.set_xlabel("k")
     ax.set_ylabel("r")
     fig.colorbar(m, ax=ax, label="time to first flight (t_end: no flight)")
-    ax.set_title(f"time to first flight, {meta.get('ic', '')}, mu = {meta.get('mu', '?')} (darker: later)")
+    ax.set_title(f"Time to first flight over (k, r), {meta.get('ic', '')}, mu = {meta.get('mu', '?')}, "
+                 f"t_end = {t_end(meta)} (darker: later)", fontsize=10)
     save(fig, out)
 
 

@@ -10,7 +10,7 @@ balance. An SVG is written beside the PNG.
 """
 import argparse
 
-from plotkit import np, plt, read_rows, save
+from plotkit import legend_outside, np, plt, read_rows, save
 
 MECH_COLOURS = {"rest": "0.92", "slide": "#cfe8ff", "rock": "#fff2c2", "slide_rock": "#ffd8b0",
                 "flight": "#e4d4ff"}
@@ -55,8 +55,8 @@ def main():
     ax[0].plot(t[imp], w[imp], "k|", ms=6, label="impacts")
     ax[0].set_ylabel("rotation w [rad]")
     handles = [plt.Rectangle((0, 0), 1, 1, color=c) for c in MECH_COLOURS.values()]
-    ax[0].legend(handles + [ax[0].lines[-1]], list(MECH_COLOURS) + ["impact"], fontsize=7, ncol=6,
-                 loc="upper center", bbox_to_anchor=(0.5, 1.25), frameon=False)
+    legend_outside(ax[0], handles=handles + [ax[0].lines[-1]], labels=list(MECH_COLOURS) + ["impact"],
+                   title="mechanism", fontsize=7)
 
     ax[1].plot(t, vw, lw=0.8, color="C1")
     ax[1].plot(t[imp], vw[imp], "k.", ms=3)
@@ -65,14 +65,14 @@ def main():
     ax[2].plot(t, num("a_h"), lw=0.8, label="horizontal a_H")
     ax[2].plot(t, num("a_v"), lw=0.8, label="vertical a_V")
     ax[2].set_ylabel("ground [g]")
-    ax[2].legend(fontsize=7, loc="upper right")
+    legend_outside(ax[2], fontsize=7)
 
     for k, c in (("N_A", "C0"), ("N_B", "C1")):
         ax[3].plot(t, num(k), lw=0.8, color=c, label=k)
     for k, c in (("T_A", "C0"), ("T_B", "C1")):
         ax[3].plot(t, num(k), lw=0.8, color=c, ls=":", label=k)
     ax[3].set_ylabel("contact forces [N]")
-    ax[3].legend(fontsize=7, ncol=4, loc="upper right")
+    legend_outside(ax[3], fontsize=7)
 
     for k, c in (("E_kin", "C0"), ("E_pot", "C1"), ("W_friction", "C2"), ("W_ground", "C4"),
                  ("W_impact", "C3")):
@@ -83,12 +83,14 @@ def main():
     ax4b = ax[4].twinx()
     ax4b.plot(t, bal, lw=0.6, color="k", alpha=0.6)
     ax4b.set_ylabel("balance error [J]", fontsize=8)
-    ax[4].legend(fontsize=7, ncol=5, loc="upper left")
+    # The balance error's own axis sits on the right: this legend goes below the panel.
+    ax[4].legend(fontsize=7, ncol=5, loc="upper left", bbox_to_anchor=(0.0, -0.28), frameon=False)
 
     status = f"status {a.status}" if a.status else ""
     maxw = np.max(np.abs(w))
     rel = f" = {maxw / a.alpha:.3g} alpha" if a.alpha else ""
-    fig.suptitle(f"{a.title}\n{status}, max |w| {maxw:.4g} rad{rel}, {len(imp)} impacts", fontsize=10)
+    fig.suptitle(f"Rotation, rate, ground motion, contact forces and energies - {a.title}\n"
+                 f"{status}, max |w| {maxw:.4g} rad{rel}, {len(imp)} impacts", fontsize=10)
     save(fig, a.out)
 
 

@@ -1,7 +1,9 @@
 # SPDX-License-Identifier: Apache-2.0
 """Overturning spectrum: the smallest overturning amplitude against the pulse duration, with the
-linearised closed form for a rectangular pulse when present.
-Usage: plot_spectrum.py SPECTRUM.csv OUT.png [--title T]"""
+linearised closed form for a rectangular pulse when present; with --map AMIN AMAX, the whole
+overturn / survive picture of the scan over (duration, amplitude) instead (the scan's amplitudes
+are geometric from AMIN to AMAX, one per character of the `scan` column).
+Usage: plot_spectrum.py SPECTRUM.csv OUT.png [--title T] [--map AMIN AMAX]"""
 import argparse
 import csv
 import os
@@ -17,11 +19,14 @@ def main():
     ap.add_argument("csv")
     ap.add_argument("out")
     ap.add_argument("--title", default="")
+    ap.add_argument("--map", nargs=2, type=float, metavar=("AMIN", "AMAX"))
     a = ap.parse_args()
     with open(a.csv, newline="") as f:
         rows = list(csv.DictReader(f))
     d = [float(r["duration"]) for r in rows]
     amin = [float(r["min_overturning_amplitude"]) if r["min_overturning_amplitude"] else float("nan") for r in rows]
+    if a.map:
+        return picture(rows, d, amin, a)
     fig, ax = plt.subplots(figsize=(7, 4.5))
     ax.plot(d, amin, "o-", ms=3, label="blockdyn: smallest overturning amplitude")
     if any(r["linearised_rect"] for r in rows):
@@ -38,6 +43,47 @@ def main():
     ax.set_title(a.title, fontsize=9)
     ax.grid(alpha=0.3, which="both")
     ax.legend(fontsize=8, loc="upper right")
+    fig.tight_layout()
+    fig.savefig(a.out, dpi=120)
+    fig.savefig(os.path.splitext(a.out)[0] + ".svg")
+
+
+def edges(v, log):
+    """Cell edges around sorted centres v (geometric midpoints on a log axis)."""
+    import math
+    v = list(v)
+    if len(v) == 1:
+        return [v[0] / 1.1, v[0] * 1.1] if log else [v[0] - 0.5, v[0] + 0.5]
+    mid = [math.sqrt(x * y) if log else 0.5 * (x + y) for x, y in zip(v[:-1], v[1:])]
+    first = v[0] ** 2 / mid[0] if log else 2 * v[0] - mid[0]
+    last = v[-1] ** 2 / mid[-1] if log else 2 * v[-1] - mid[-1]
+    return [first] + mid + [last]
+
+
+def picture(rows, d, amin, a):
+    import numpy as np
+    from matplotlib.colors import ListedColormap
+    n = len(rows[0]["scan"])
+    amps = [a.map[0] * (a.map[1] / a.map[0]) ** (j / (n - 1)) for j in range(n)]
+    order = sorted(range(len(d)), key=lambda i: d[i])
+    z = np.array([[int(ch) for ch in rows[i]["scan"]] for i in order], dtype=float).T
+    ds = [d[i] for i in order]
+    fig, ax = plt.subplots(figsize=(7, 4.8))
+    ax.pcolormesh(edges(ds, True), edges(amps, True), z, cmap=ListedColormap(["#cfe3f3", "#d9534f"]),
+                  vmin=0, vmax=1, shading="flat")
+    ax.plot(ds, [amin[i] for i in order], "k-", lw=1.2, label="smallest overturning amplitude (bisection)")
+    if any(r["linearised_rect"] for r in rows):
+        ax.plot(ds, [float(rows[i]["linearised_rect"]) if rows[i]["linearised_rect"] else float("nan")
+                     for i in order], "k--", lw=1, label="linearised closed form (rect pulse)")
+    from matplotlib.patches import Patch
+    h, _ = ax.get_legend_handles_labels()
+    h += [Patch(color="#d9534f", label="overturns"), Patch(color="#cfe3f3", label="survives")]
+    ax.set_xscale("log")
+    ax.set_yscale("log")
+    ax.set_xlabel("pulse duration t_p [s]")
+    ax.set_ylabel("amplitude [g]")
+    ax.set_title(a.title, fontsize=9)
+    ax.legend(handles=h, fontsize=8, loc="upper right")
     fig.tight_layout()
     fig.savefig(a.out, dpi=120)
     fig.savefig(os.path.splitext(a.out)[0] + ".svg")

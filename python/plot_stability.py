@@ -8,7 +8,7 @@ An SVG with the same stem is written beside the PNG.
 """
 import sys
 
-from plotkit import col, finish_k_scan, k_scan_figure, np, plt, run_modes, save, t_end
+from plotkit import col, finish_k_scan, k_scan_figure, legend_outside, np, plt, run_modes, save, t_end
 
 
 def plot_overturn(rows, meta, out):
@@ -29,12 +29,13 @@ def plot_overturn(rows, meta, out):
         for ax in (a, b):
             ax.axvspan(*win["k_range"], color="C1", alpha=0.12, lw=0,
                        label=f"k2-k3 window ({meta.get('window_points')} extra points)" if ax is a else None)
-    finish_k_scan(fig, (a, b), meta, out, "time at overturning", "ihor at overturning\n(at t_end if none)")
+    finish_k_scan(fig, (a, b), meta, out, "time at overturning", "ihor at overturning\n(at t_end if none)",
+                  "Time and ihor at overturning")
 
 
 def plot_curve(rows, meta, out):
     r = col(rows, "r")
-    fig, ax = plt.subplots(figsize=(6.5, 4.5), constrained_layout=True)
+    fig, ax = plt.subplots(figsize=(8.5, 4.5), constrained_layout=True)
     styles = {"k1_stability": "-", "k2_stability": "-", "k3_stability": "--"}
     for name in [c for c in rows[0].keys() if c.endswith("_stability")]:
         v = col(rows, name)
@@ -48,15 +49,15 @@ def plot_curve(rows, meta, out):
     ax.set_xlabel("1/r")
     ax.set_ylabel("critical k")
     ax.grid(True, which="both", lw=0.3)
-    ax.legend(fontsize=8)
-    ax.set_title(f"critical stability curves, {meta.get('ic', '')}, mu = {meta.get('mu', '?')}, "
-                 f"t_end = {t_end(meta)}")
+    legend_outside(ax)
+    ax.set_title(f"Critical stability curves versus 1/r (overturning below), {meta.get('ic', '')},\n"
+                 f"mu = {meta.get('mu', '?')}, t_end = {t_end(meta)}", fontsize=10)
     save(fig, out)
 
 
 def plot_blowup(rows, meta, out):
     mu = col(rows, "mu")
-    fig, ax = plt.subplots(figsize=(6, 4.2), constrained_layout=True)
+    fig, ax = plt.subplots(figsize=(7, 4.2), constrained_layout=True)
     for name, style in (("r2_s", "o-"), ("r3_s", "s--")):
         if name in rows[0]:
             v = col(rows, name)
@@ -66,9 +67,10 @@ def plot_blowup(rows, meta, out):
     ax.set_ylabel("r")
     ax.set_ylim(bottom=0)
     ax.grid(True, lw=0.3)
-    ax.legend(fontsize=8)
+    legend_outside(ax)
     cap = meta.get("k_search", {}).get("k_range", [None, None])[1]
-    ax.set_title(f"r2_s(mu), r3_s(mu), ic2 (k cap {cap:g})" if cap else "r2_s(mu), r3_s(mu), ic2")
+    ax.set_title("Aspect ratios below which ic2 overturns for every k: r2_s (while ihor = 1),\n"
+                 "r3_s (while ihor <= 2) versus mu" + (f" (k up to {cap:g})" if cap else ""), fontsize=10)
     save(fig, out)
 
 

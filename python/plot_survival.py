@@ -2,7 +2,9 @@
 """Survival domain over (omega, beta) in the style of seed 002 Figs. 6-9: collapse points marked
 by their t* class (stars <= 5 s, triangles short, diamonds medium, squares long, circles very
 long), filled for mode 2 and hollow for mode 1; stable points as small grey dots, rest as
-crosses. Usage: plot_survival.py POINTS.csv OUT.png [--title T]"""
+crosses. With --refined DW DB (a map refined near class changes; DW, DB the coarse steps in omega
+and beta) every point is drawn as a tile of its level's cell size, coarse tiles first, so the
+fine boundary shows. Usage: plot_survival.py POINTS.csv OUT.png [--title T] [--refined DW DB]"""
 import argparse
 import csv
 import os
@@ -20,9 +22,12 @@ def main():
     ap.add_argument("csv")
     ap.add_argument("out")
     ap.add_argument("--title", default="")
+    ap.add_argument("--refined", nargs=2, type=float, metavar=("DW", "DB"))
     a = ap.parse_args()
     with open(a.csv, newline="") as f:
         rows = list(csv.DictReader(f))
+    if a.refined:
+        return tiles(rows, a)
     fig, ax = plt.subplots(figsize=(7.5, 5))
     groups = {}  # label -> (xs, ys, style): one scatter call per group
 
@@ -54,6 +59,45 @@ def main():
     ax.legend(fontsize=7, loc="upper left", bbox_to_anchor=(1.01, 1.0))
     fig.tight_layout()
     fig.savefig(a.out, dpi=120)
+    fig.savefig(os.path.splitext(a.out)[0] + ".svg")
+
+
+TILE_COLOURS = {"rest": "0.85", "stable": "#9ecae1", "invalid": "#ff00ff"}
+COLLAPSE_COLOURS = ["#67000d", "#cb181d", "#fb6a4a", "#fcae91", "#fee5d9"]  # t* classes, earliest darkest
+
+
+def tiles(rows, a):
+    from matplotlib.collections import PatchCollection
+    from matplotlib.patches import Patch, Rectangle
+    classes = ["<=", "short", "medium", "long", "very long"]
+    rects, colours, seen = [], [], {}
+    for r in sorted(rows, key=lambda r: int(r["level"])):
+        lv = int(r["level"])
+        w, b = float(r["omega"]), float(r["beta"])
+        dw, db = a.refined[0] / 2 ** lv, a.refined[1] / 2 ** lv
+        if r["motion"] == "collapse":
+            k = next(i for i, c in enumerate(classes) if r["t_star_class"].startswith(c))
+            c = COLLAPSE_COLOURS[k]
+            label = f"collapse, t* {r['t_star_class']}" + (" (mode 2 hatched)" if r["collapse_mode"] == "2" else "")
+        else:
+            c = TILE_COLOURS.get(r["motion"], "k")
+            label = r["motion"]
+        rects.append(Rectangle((w - dw / 2, b - db / 2), dw, db, hatch="//" if r["collapse_mode"] == "2" else None))
+        colours.append(c)
+        seen.setdefault(label, c)
+    fig, ax = plt.subplots(figsize=(7.5, 5))
+    ax.add_collection(PatchCollection(rects, facecolors=colours, edgecolors="none"))
+    ws = [float(r["omega"]) for r in rows]
+    bs = [float(r["beta"]) for r in rows]
+    ax.set_xlim(min(ws) - a.refined[0] / 2, max(ws) + a.refined[0] / 2)
+    ax.set_ylim(min(bs) - a.refined[1] / 2, max(bs) + a.refined[1] / 2)
+    ax.set_xlabel("omega = Omega / p")
+    ax.set_ylabel("beta")
+    ax.set_title(a.title + f"\n{len(rows)} points, refined near class changes", fontsize=8)
+    ax.legend(handles=[Patch(color=c, label=l) for l, c in seen.items()], fontsize=7, loc="upper left",
+              bbox_to_anchor=(1.01, 1.0))
+    fig.tight_layout()
+    fig.savefig(a.out, dpi=150)
     fig.savefig(os.path.splitext(a.out)[0] + ".svg")
 
 

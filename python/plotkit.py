@@ -17,7 +17,8 @@ import numpy as np  # noqa: E402
 
 __all__ = ["plt", "np", "read_rows", "load_meta", "load_table", "load_columns", "load_named", "col",
            "save", "stem", "split_args", "run_in_out", "run_modes", "t_end", "run_title", "k_scan_figure",
-           "finish_k_scan", "log_axes"]
+           "finish_k_scan", "log_axes", "read_table", "Cli", "legend_outside",
+           "legend_below"]
 
 
 # ----------------------------------------------------------------------------- loading
@@ -59,6 +60,45 @@ def load_named(path):
 def col(rows, name):
     """Column `name` of dict rows as a float array."""
     return np.array([float(r[name]) for r in rows])
+
+
+def read_table(path):
+    """{column: array} of a CSV: float arrays where every cell parses (empty cells -> nan),
+    object (text) arrays otherwise (e.g. `mode`, `event`)."""
+    with open(path, newline="") as f:
+        reader = csv.reader(f)
+        header = next(reader, [])
+        columns = list(zip(*reader)) or [()] * len(header)
+    out = {}
+    for name, cells in zip(header, columns):
+        try:
+            out[name] = np.array([float(c) if c != "" else np.nan for c in cells])
+        except ValueError:
+            out[name] = np.array(cells, dtype=object)
+    return out
+
+
+class Cli:
+    """Runs the blockdyn program for the figure scripts (python/fig_*.py): `cli(*args)` returns
+    stdout, exits with the command and its stderr if it fails; `cli.json(*args)` parses stdout."""
+
+    def __init__(self, program):
+        self.program = program
+
+    def __call__(self, *args):
+        import subprocess
+        r = subprocess.run([self.program, *map(str, args)], capture_output=True, text=True)
+        if r.returncode != 0:
+            raise SystemExit(f"blockdyn {' '.join(map(str, args))}: {r.stderr.strip()}")
+        return r.stdout
+
+    def json(self, *args):
+        return json.loads(self(*args))
+
+    def summary(self, script, key, rows):
+        """The JSON summary a figure script prints: schema, the program's version, and `rows`."""
+        return json.dumps({"schema": f"blockdyn.{script}.summary/1", "program": self("--version").strip(),
+                           key: rows}, indent=1)
 
 
 # ----------------------------------------------------------------------------- output
@@ -122,19 +162,33 @@ def run_title(meta):
 
 def k_scan_figure():
     """Two stacked panels sharing a k axis: (fig, (top, bottom)) for the k-scan plots."""
-    return plt.subplots(2, 1, sharex=True, figsize=(7, 5.5), constrained_layout=True)
+    return plt.subplots(2, 1, sharex=True, figsize=(9, 5.5), constrained_layout=True)
 
 
-def finish_k_scan(fig, axes, meta, out, top_label, bottom_label):
-    """Label a `k_scan_figure` (log k, legend and run title on top), then `save` it."""
+def finish_k_scan(fig, axes, meta, out, top_label, bottom_label, what):
+    """Label a `k_scan_figure` (log k, the legend outside the data, a title saying `what` is shown
+    for which run), then `save` it."""
     top, bottom = axes
     top.set_xscale("log")
     top.set_ylabel(top_label)
-    top.legend(fontsize=8, loc="best")
-    top.set_title(run_title(meta))
+    legend_outside(top)
+    fig.suptitle(f"{what} versus k - {run_title(meta)}", fontsize=10)
     bottom.set_ylabel(bottom_label)
     bottom.set_xlabel("k")
     save(fig, out)
+
+
+def legend_outside(ax, **kw):
+    """A legend to the right of the axes, outside the data (the figure needs constrained layout)."""
+    kw.setdefault("fontsize", 8)
+    return ax.legend(loc="upper left", bbox_to_anchor=(1.01, 1.0), borderaxespad=0.0, **kw)
+
+
+def legend_below(fig, handles, ncol=2, height=0.07):
+    """A figure legend in a band of `height` (figure fraction) below the axes, which constrained
+    layout keeps clear."""
+    fig.get_layout_engine().set(rect=(0.0, height, 1.0, 1.0 - height))
+    return fig.legend(handles=handles, loc="lower center", ncol=ncol, fontsize=8, frameon=False)
 
 
 def log_axes(ax, xlabel, ylabel):

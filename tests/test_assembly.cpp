@@ -279,6 +279,66 @@ TEST(AssemblyEnergy, ClosedBalanceAndConservationWithoutLosses) {
   EXPECT_LT(std::fabs(r.work_normal) + std::fabs(r.work_friction), 1e-8);
 }
 
+TEST(AssemblyEvents, RatesAreTheTimeDerivativesOfTheEventFunctions) {
+  // event_rates() against central differences of events() along the flow (t + s, z + s dz): the
+  // total derivative, ground motion included. States: a tilted trilith moving in every degree of
+  // freedom (open and closed points, owner-0 ends), the same with the lintel slid so that one of
+  // its ends lies on a column's top corner (owner 1) and both bearings are finite, and with a
+  // point slipping (its switch-back rate is reported unknown: NaN).
+  using M = AssemblyModel<3>;
+  PresetOptions o = seed_preset();
+  o.tilt = 0.02;
+  o.ground_law.mu_s = o.ground_law.mu_k = o.block_law.mu_s = o.block_law.mu_k = std::tan(20 * M_PI / 180);
+  Assembly a = make_preset("trilith", o);
+  const GroundMotion g = harmonic(0.3, 2.0, 0.4);
+  int checked = 0, owner1 = 0, unknown = 0;
+  for (int variant = 0; variant < 3; ++variant) {
+    Assembly v = a;
+    if (variant >= 1) v.blocks[2].x += 0.03;  // the lintel overhangs the right column
+    const M m(v, g);
+    M::State z = m.initial_state();
+    const double rates[9] = {0.01, -0.02, 0.3, -0.015, 0.01, -0.2, 0.02, 0.005, 0.1};
+    for (int k = 0; k < 9; ++k) z[M::iv(k / 3) + k % 3] = rates[k];
+    z[M::ix(2) + 2] = 1e-3;  // the lintel turned a little (|theta| has a kink at 0)
+    M::Mode md = m.initial_mode(z);
+    for (int p = 0; p < 8; ++p) owner1 += md.owner[p];
+    if (variant == 2)
+      for (int p = 0; p < 8; ++p)
+        if (md.point[p] == PointState::Stick) {
+          md.point[p] = PointState::SlipPos;
+          break;
+        }
+    const double t = 0.37;
+    M::State dz;
+    m.rhs(t, md, z, dz);
+    std::array<double, M::kNumEvents> g0, rate, gp, gm;
+    m.event_rates(t, md, z, dz, g0, rate);
+    std::array<double, M::kNumEvents> ev;
+    m.events(t, md, z, ev);
+    const double s = 1e-7;
+    M::State zp = z, zm = z;
+    for (std::size_t k = 0; k < M::kDim; ++k) {
+      zp[k] += s * dz[k];
+      zm[k] -= s * dz[k];
+    }
+    m.events(t + s, md, zp, gp);
+    m.events(t - s, md, zm, gm);
+    for (std::size_t e = 0; e < M::kNumEvents; ++e) {
+      EXPECT_EQ(g0[e], ev[e]) << variant << ' ' << e;  // the same values as events()
+      if (std::isnan(rate[e])) {
+        ++unknown;
+        continue;
+      }
+      const double fd = (gp[e] - gm[e]) / (2 * s);
+      EXPECT_NEAR(rate[e], fd, 1e-6 * (std::fabs(rate[e]) + std::fabs(g0[e]) / s * 1e-9) + 1e-9) << variant << ' ' << e;
+      if (rate[e] != 0.0) ++checked;
+    }
+  }
+  EXPECT_GT(checked, 60);
+  EXPECT_GT(owner1, 0);
+  EXPECT_GT(unknown, 0);
+}
+
 TEST(AssemblySymmetry, AMirroredGroundMotionMirrorsTheResponse) {
   PresetOptions o = seed_preset();
   o.ground_law.mu_s = o.ground_law.mu_k = o.block_law.mu_s = o.block_law.mu_k = std::tan(20 * M_PI / 180);
@@ -486,4 +546,106 @@ TEST(AssemblyRigidLaw, ColumnsRockOnlyRestriction) {
   EXPECT_LT(j.t_final, 0.01);
   jump.contact = "deformable";
   EXPECT_THROW(validate(jump), std::invalid_argument);
+}
+
+// ---- Static and kinetic friction (mu_k < slope < mu_s), both laws.
+
+namespace {
+
+// A flat block (height / width 0.5: uplift needs 2 g, and its lighter end reaches the static cone
+// only above the slope used here) with mu_s = tan 20 deg and mu_k = tan 15 deg.
+Assembly friction_block(bool rigid, double vx) {
+  PresetOptions o = rigid ? rigid_preset() : seed_preset();
+  o.slenderness = 0.5;
+  o.ground_law.mu_s = std::tan(20 * M_PI / 180);
+  o.ground_law.mu_k = std::tan(15 * M_PI / 180);
+  Assembly a = make_preset("block", o);
+  a.blocks[0].vx = vx;
+  return a;
+}
+
+GroundMotion slope(double a) {
+  GroundMotion g;
+  g.horizontal.constant = a;
+  return g;
+}
+
+}  // namespace
+
+TEST(AssemblyRigidLaw, StaticFrictionHoldsAtRestAndKineticFrictionActsOnceSliding) {
+  const double a = 0.3, g = 9.81, h = 1e-4;
+  const Assembly rest = friction_block(true, 0.0);
+  const double mu_s = rest.interfaces[0].law.mu_s, mu_k = rest.interfaces[0].law.mu_k;
+  ASSERT_TRUE(mu_k < a && a < mu_s);
+  // At rest, the slope applied at once: the static cone holds it (nothing moves, no event) ...
+  AssemblyResult r = simulate_assembly(rest, slope(a), rigid_run(1.0, h));
+  EXPECT_EQ(r.events_total, 0);
+  EXPECT_EQ(r.motion, "rest");
+  EXPECT_NEAR(r.blocks[0].final_state[0], rest.blocks[0].x, 1e-12);
+  // ... which the kinetic coefficient alone would not: x'' = -(a - mu_k) g.
+  Assembly kinetic = rest;
+  kinetic.interfaces[0].law.mu_s = mu_k;
+  r = simulate_assembly(kinetic, slope(a), rigid_run(1.0, h));
+  EXPECT_NEAR(r.blocks[0].final_state[3] / (-(a - mu_k) * g), 1.0, 1e-9);
+  // Sliding down the slope: it keeps sliding, accelerated by (a - mu_k) g.
+  r = simulate_assembly(friction_block(true, -0.2), slope(a), rigid_run(1.0, h));
+  EXPECT_NEAR(r.blocks[0].final_state[3], -0.2 - (a - mu_k) * g, 1e-12);
+  EXPECT_EQ(r.event_counts[kAsmStick], 0);
+  // Sliding up: decelerated by (a + mu_k) g, it stops within a step of the closed form and then
+  // stays (the static cone holds it again).
+  const double v0 = 0.3, t_stop = v0 / ((a + mu_k) * g);
+  r = simulate_assembly(friction_block(true, v0), slope(a), rigid_run(1.0, h));
+  const double t_stick = first_event(r, "stick");
+  EXPECT_GE(t_stick, t_stop);
+  EXPECT_LE(t_stick, t_stop + h);
+  EXPECT_EQ(r.event_counts[kAsmSlip], r.event_counts[kAsmStick]);  // the two ends, once each
+  EXPECT_NEAR(r.blocks[0].final_state[3], 0.0, 1e-12);
+  EXPECT_NEAR(r.blocks[0].final_state[0] - rest.blocks[0].x, v0 * v0 / (2 * (a + mu_k) * g), 1e-6);
+  // A slowly rising slope: sliding starts where it reaches mu_s (not mu_k).
+  const double A = 0.5, f = 0.05;
+  GroundMotion ramp;
+  ramp.horizontal.amplitude = A;
+  ramp.horizontal.frequency = f;
+  r = simulate_assembly(rest, ramp, rigid_run(3.0, h));
+  const double t_slip = first_event(r, "slip");
+  EXPECT_NEAR(t_slip, std::asin(mu_s / A) / (2 * M_PI * f), 2 * h);
+}
+
+TEST(AssemblyFriction, StaticAndKineticFrictionTendToTheRigidLaw) {
+  // The deformable law's points stick elastically up to mu_s F_N and slip at mu_k F_N: on the
+  // same slope it holds the block (when the slope is applied slowly: a sudden one overshoots the
+  // tangential springs), slides it with the rigid law's acceleration, and stops it at the same
+  // time.
+  const double a = 0.3, g = 9.81;
+  const Assembly rest = friction_block(false, 0.0);
+  const double mu_s = rest.interfaces[0].law.mu_s, mu_k = rest.interfaces[0].law.mu_k;
+  GroundMotion slow;  // rises to a over a quarter period of 5 s
+  slow.horizontal.amplitude = a;
+  slow.horizontal.frequency = 0.05;
+  AssemblyResult r = simulate_assembly(rest, slow, run_to(5));
+  EXPECT_EQ(r.event_counts[kAsmSlip], 0);
+  const double deflection = a * rest.blocks[0].mass * g / (2 * 1e7 / 3);
+  EXPECT_NEAR(r.blocks[0].max_abs_sliding / deflection, 1.0, 2e-2);
+  // Sliding down: the velocity gain over 0.5 s equals the rigid law's (a - mu_k) g.
+  const Assembly down = friction_block(false, -0.2);
+  const AssemblyResult r1 = simulate_assembly(down, slope(a), run_to(0.5));
+  const AssemblyResult r2 = simulate_assembly(down, slope(a), run_to(1.0));
+  EXPECT_EQ(r2.event_counts[kAsmStick], 0);
+  EXPECT_NEAR((r2.blocks[0].final_state[3] - r1.blocks[0].final_state[3]) / (-(a - mu_k) * g * 0.5), 1.0, 1e-9);
+  // Sliding up: it stops when the rigid law does (within the springs' loading time).
+  const double v0 = 0.3, t_stop = v0 / ((a + mu_k) * g);
+  r = simulate_assembly(friction_block(false, v0), slope(a), run_to(0.2));
+  EXPECT_NEAR(first_event(r, "stick") / t_stop, 1.0, 1e-4);
+  // Under a slowly rising slope the points slip one at a time: the lighter (rear) end carries
+  // m g (1 - a h / b) / 2 and the same tangential load a m g / 2, so it reaches mu_s first, at
+  // a = mu_s / (1 + mu_s h / b); the other end, then overloaded, follows at once. The rigid law's
+  // face slides as a whole at a = mu_s (previous test).
+  const double A = 0.5, f = 0.05, hb = 0.5;
+  GroundMotion ramp;
+  ramp.horizontal.amplitude = A;
+  ramp.horizontal.frequency = f;
+  r = simulate_assembly(rest, ramp, run_to(2.5));
+  const double a_slip = A * std::sin(2 * M_PI * f * first_event(r, "slip"));
+  EXPECT_NEAR(a_slip / (mu_s / (1 + mu_s * hb)), 1.0, 2e-3);
+  EXPECT_GT(r.blocks[0].max_abs_sliding, 0.01);
 }

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <cmath>
 #include <cstdio>
@@ -433,7 +434,8 @@ namespace {
 
 // Exit status of `blockdyn <args>` and its stderr.
 int cli_status(const std::string& args, std::string* err = nullptr) {
-  const std::string errfile = testing::TempDir() + "bounds_cli_err.txt";
+  // One file per process: ctest runs the tests of this file in parallel processes.
+  const std::string errfile = testing::TempDir() + "bounds_cli_err_" + std::to_string(::getpid()) + ".txt";
   const int rc = std::system((std::string(BLOCKDYN_CLI) + " " + args + " >/dev/null 2>" + errfile).c_str());
   if (err) {
     std::FILE* f = std::fopen(errfile.c_str(), "r");

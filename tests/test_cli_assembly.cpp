@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <cmath>
 #include <fstream>
 
 #include "test_sweep_util.hpp"
@@ -125,6 +126,32 @@ TEST(CliAssembly, TrajectoryAndFigures) {
   EXPECT_NE(csv.find(",close,"), std::string::npos);
 }
 
+TEST(CliAssembly, KineticFrictionAngle) {
+  // A block on a slope of 0.3 (a constant ground acceleration) between tan 15 and tan 20 deg: the
+  // static angle holds it at rest; with the kinetic angle alone it slides. Both laws, and the
+  // JSON records both coefficients.
+  TmpDir d("asm_kinetic");
+  for (const char* law : {"rigid", "deformable"}) {
+    const std::vector<std::string> base{"assembly",  "--preset", "block",   "--slenderness", "0.5",
+                                        "--contact", law,        "--t-end", "0.5",           "--json"};
+    // The deformable law's tangential springs overshoot a sudden load: apply it slowly there.
+    const std::vector<std::string> load =
+        std::string(law) == "rigid"
+            ? std::vector<std::string>{"--ground-h", "0.3"}
+            : std::vector<std::string>{"--ground-h-amplitude", "0.3", "--ground-h-frequency", "0.5"};
+    auto r = run_cli(base + load + std::vector<std::string>{"--phi-s", "20", "--phi-s-kinetic", "15"}, d.path);
+    ASSERT_EQ(r.code, 0) << r.err;
+    json j = json::parse(r.out);
+    EXPECT_EQ(j["motion"], "rest") << law;
+    EXPECT_NEAR(j["assembly"]["interfaces"][0]["contact"]["mu_k"].get<double>(), std::tan(15 * M_PI / 180), 1e-15);
+    EXPECT_NEAR(j["assembly"]["interfaces"][0]["contact"]["mu_s"].get<double>(), std::tan(20 * M_PI / 180), 1e-15);
+    r = run_cli(base + load + std::vector<std::string>{"--phi-s", "15"}, d.path);
+    ASSERT_EQ(r.code, 0) << r.err;
+    j = json::parse(r.out);
+    EXPECT_EQ(j["motion"], "stable") << law;
+  }
+}
+
 TEST(CliAssembly, BadInputIsAUsageError) {
   TmpDir d("asm_bad");
   std::ofstream(d.path + "/float.toml") << "[[block]]\nwidth = 0.1\nheight = 0.4\nmass = 5\ny = 0.25\n"
@@ -150,6 +177,8 @@ TEST(CliAssembly, BadInputIsAUsageError) {
       {{"assembly", "--preset", "trilith", "--contact", "rigid", "--step", "1"}, "step"},
       {{"assembly", "--preset", "trilith", "--phi-s", "95"}, "phi-s"},
       {{"assembly", "--preset", "trilith", "--phi-l", "-1"}, "phi-l"},
+      {{"assembly", "--preset", "trilith", "--phi-s", "20", "--phi-s-kinetic", "25"}, "phi-s-kinetic"},
+      {{"assembly", "--preset", "trilith", "--phi-l", "20", "--phi-l-kinetic", "-2"}, "phi-l-kinetic"},
       {{"assembly", "--preset", "trilith", "--slenderness", "-4"}, "slenderness"},
       {{"assembly", "--preset", "column", "--drums", "0"}, "drums"},
       {{"assembly", "--preset", "block", "--drums", "3"}, "drums"},

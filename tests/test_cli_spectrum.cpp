@@ -24,7 +24,7 @@ TEST(CliSpectrum, JsonRowsCsvAndPlot) {
   EXPECT_EQ(j["rows"][0]["duration"], 0.1);
   EXPECT_GT(j["rows"][0]["min_overturning_amplitude"].get<double>(), j["rows"][1]["min_overturning_amplitude"].get<double>());
   EXPECT_TRUE(exists(d.path + "/s.png"));
-  EXPECT_EQ(slurp(d.path + "/s.csv").substr(0, 35), "duration,min_overturning_amplitude,");
+  EXPECT_EQ(slurp(d.path + "/s.csv").substr(0, 41), "index,duration,min_overturning_amplitude,");
 }
 
 TEST(CliSpectrum, AssemblyPreset) {
@@ -78,7 +78,7 @@ TEST(CliSurvival, JsonPointsAndPlot) {
   }
   EXPECT_EQ(j["points"][0]["motion"], "rest");  // beta 0.5: below uplift
   EXPECT_TRUE(exists(d.path + "/s.png"));
-  EXPECT_EQ(slurp(d.path + "/s.csv").substr(0, 17), "beta,omega,motion");
+  EXPECT_EQ(slurp(d.path + "/s.csv").substr(0, 23), "index,beta,omega,motion");
 }
 
 TEST(CliSurvival, BadInputIsAUsageError) {

@@ -26,8 +26,8 @@ import numpy as np
 from . import _core
 
 __version__ = _core.__version__
-__all__ = ["simulate", "assembly", "spectrum", "survival", "sweep", "map", "run", "Simulation", "Assembly",
-           "__version__"]
+__all__ = ["simulate", "assembly", "spectrum", "survival", "response_curve", "cycles", "impact_map", "sweep", "map", "run",
+           "Simulation", "Assembly", "lyapunov", "chaos_map", "periodic_orbits", "__version__"]
 
 # Where the plot scripts are once installed (share/blockdyn/python beside lib/python3/...).
 _here = os.path.dirname(os.path.abspath(__file__))
@@ -187,6 +187,62 @@ def survival(**options):
     j["motion"] = np.array([p["motion"] for p in pts], dtype=object)
     j["t_failure"] = np.array([np.nan if p["t_failure"] is None else p["t_failure"] for p in pts], dtype=float)
     j["max_abs_rotation"] = np.array([p["max_abs_rotation"] for p in pts], dtype=float)
+    j["cycle"] = np.array([p["cycle"] for p in pts], dtype=object)
+    return j
+
+
+def response_curve(**options):
+    """Runs `blockdyn response-curve` and returns its JSON summary, with arrays "beta", "omega",
+    "theta_max_over_alpha", "max_sliding_over_b", "motion", "t_failure" (NaN without failure) and,
+    against the friction angle, "phi_s" and "phi_l" over the points."""
+    j = _json_command("response-curve", options)
+    pts = j["points"]
+    for key in ("beta", "omega", "theta_max_over_alpha", "max_sliding_over_b", "phi_s", "phi_l"):
+        if pts and key in pts[0]:
+            j[key] = np.array([p[key] for p in pts], dtype=float)
+    j["motion"] = np.array([p["motion"] for p in pts], dtype=object)
+    j["t_failure"] = np.array([np.nan if p["t_failure"] is None else p["t_failure"] for p in pts], dtype=float)
+    return j
+
+
+def _harmonic_command(command, tables, options):
+    """Runs COMMAND with its JSON summary and the CSV tables {key: flag} in a temporary directory;
+    returns the summary with each table as {column: NumPy array} under its key."""
+    for reserved in ("json", "json_out", *tables.values()):
+        if reserved in options:
+            raise ValueError(f"{reserved}: set by blockdyn.{command.replace('-', '_')} itself")
+    with tempfile.TemporaryDirectory(prefix="blockdyn-py-") as tmp:
+        summ = os.path.join(tmp, "summary.json")
+        paths = {key: os.path.join(tmp, key + ".csv") for key in tables}
+        opts = dict(options, json_out=summ, quiet=True, **{tables[k]: p for k, p in paths.items()})
+        run(*_args(command, opts))
+        with open(summ) as f:
+            j = json.load(f)
+        for key, path in paths.items():
+            j[key] = _read_csv(path)
+        return j
+
+
+def cycles(trace=False, **options):
+    """Runs `blockdyn cycles` (stroboscopic samples and (m, n) cycles, 2m impacts per n forcing
+    periods) and returns its JSON summary with the strobe samples under "strobe" ({column: array}:
+    k, t, x_b, y_b, theta_b, vx_b, vy_b, omega_b per block, cycle) and the analysed block's "t",
+    "theta", "omega" at t = k T; with trace=True also the trajectory under "trace"."""
+    tables = {"strobe": "out", **({"trace": "trace"} if trace else {})}
+    j = _harmonic_command("cycles", tables, options)
+    b = j["block"]
+    j["t"], j["theta"], j["omega"] = (j["strobe"][c] for c in ("t", f"theta_{b}", f"omega_{b}"))
+    return j
+
+
+def impact_map(trace=False, **options):
+    """Runs `blockdyn impact-map` and returns its JSON summary with the impacts as arrays "t",
+    "phase" ((Omega t + phase) mod 2 pi), "omega_before", "omega_after", the Poincare section under
+    "poincare" ({column: array}) and, with trace=True, the trajectory under "trace"."""
+    tables = {"impacts": "out", "poincare": "poincare", **({"trace": "trace"} if trace else {})}
+    j = _harmonic_command("impact-map", tables, options)
+    for c in ("t", "phase", "omega_before", "omega_after"):
+        j[c] = j["impacts"].get(c, np.array([], dtype=float))
     return j
 
 
@@ -215,3 +271,64 @@ def map(**options):  # noqa: A001 (the command's name)
     """Runs `blockdyn map` (response types over (k, 1/r) with boundaries) and returns its table as
     {column: NumPy array}, "_sidecar", and the boundaries table under "_boundaries"."""
     return _table_command("map", None, options)
+
+
+def lyapunov(**options):
+    """Runs `blockdyn lyapunov` (the free Winkler block, or model="housner"|"rigid"|"assembly" under
+    a ground motion) and returns its JSON summary with the convergence history as arrays "t",
+    "growth", "estimate", and for forced models the two nearby orbits' separation as "twin_t",
+    "twin_separation", "twin_predicted"."""
+    for reserved in ("csv", "twin_csv", "json", "json_out"):
+        if reserved in options:
+            raise ValueError(f"{reserved}: set by blockdyn.lyapunov itself")
+    forced = options.get("model", "winkler") != "winkler"
+    with tempfile.TemporaryDirectory(prefix="blockdyn-py-") as tmp:
+        summ, hist, twin = (os.path.join(tmp, n) for n in ("summary.json", "history.csv", "twin.csv"))
+        opts = dict(options, json_out=summ, csv=hist)
+        if forced:
+            opts["twin_csv"] = twin
+        run(*_args("lyapunov", opts))
+        with open(summ) as f:
+            j = json.load(f)
+        h = _read_csv(hist)
+        for k in ("t", "growth", "estimate"):
+            j[k] = h.get(k, np.array([], dtype=float))
+        if forced:
+            tw = _read_csv(twin)
+            for k in ("t", "separation", "predicted"):
+                j["twin_" + k] = tw.get(k, np.array([], dtype=float))
+        return j
+
+
+def _table_and_json(command, options):
+    """Runs COMMAND with --out (CSV) and --json-out; returns (columns, summary)."""
+    for reserved in ("out", "json", "json_out"):
+        if reserved in options:
+            raise ValueError(f"{reserved}: set by blockdyn.{command.replace('-', '_')} itself")
+    with tempfile.TemporaryDirectory(prefix="blockdyn-py-") as tmp:
+        out, summ = os.path.join(tmp, "table.csv"), os.path.join(tmp, "summary.json")
+        run(*_args(command, dict(options, out=out, json_out=summ, quiet=True)))
+        with open(summ) as f:
+            j = json.load(f)
+        cols = _read_csv(out) if os.path.exists(out) else {}
+        return cols, j
+
+
+def chaos_map(**options):
+    """Runs `blockdyn chaos-map` and returns its JSON summary with one NumPy array per CSV column:
+    "beta", "omega", "motion", "exponent" (1/s; -inf superstable, NaN none), "exponent_nondim",
+    "exponent_second_half", "status", "impacts", "collapse_mode", "t_failure"."""
+    cols, j = _table_and_json("chaos-map", options)
+    j.update(cols)
+    return j
+
+
+def periodic_orbits(**options):
+    """Runs `blockdyn periodic-orbits` and returns its JSON summary with the table's columns as NumPy
+    arrays: the orbits (phase, velocity, mu1_re, ..., stable), the branch points of `continue_`
+    ("continue" is a Python keyword: pass it as continue_="ks") or the region grid (region=True)."""
+    if "continue_" in options:
+        options["continue"] = options.pop("continue_")
+    cols, j = _table_and_json("periodic-orbits", options)
+    j.update(cols)
+    return j

@@ -148,3 +148,42 @@ def test_assembly_spectrum_and_survival_from_python():
     assert len(v["beta"]) == 6 and v["motion"][0] == "rest"
     with pytest.raises(ValueError, match="preset"):
         blockdyn.assembly(preset="arch")
+
+
+def test_response_curve_equals_the_command_line():
+    r = blockdyn.response_curve(model="housner", width=0.3, height=1.5, betas=[2, 3], omega_points=3, periods=10)
+    j = json.loads(cli("response-curve", "--model", "housner", "--width", "0.3", "--height", "1.5", "--betas", "2,3",
+                       "--omega-points", "3", "--periods", "10", "--json"))
+    assert r["points"] == j["points"] and len(r["beta"]) == 6
+    assert r["beta"].tolist() == [p["beta"] for p in j["points"]]
+    assert r["theta_max_over_alpha"].tolist() == [p["theta_max_over_alpha"] for p in j["points"]]
+    assert set(r["motion"]) <= {"rest", "stable", "collapse", "invalid"}
+
+
+def test_cycles_and_impact_map_equal_the_command_line():
+    opts = dict(model="housner", width=0.3, height=1.5, beta=2, omega=5, periods=80)
+    c = blockdyn.cycles(**opts)
+    with tempfile.TemporaryDirectory() as tmp:
+        out = os.path.join(tmp, "s.csv")
+        j = json.loads(cli("cycles", "--model", "housner", "--width", "0.3", "--height", "1.5", "--beta", "2",
+                           "--omega", "5", "--periods", "80", "--out", out, "--json"))
+        with open(out, newline="") as f:
+            rows = list(csv.DictReader(f))
+    assert c["segments"] == j["segments"] and c["dominant_cycle"] == j["dominant_cycle"] == "(1,1)"
+    assert c["theta"].tolist() == [float(r["theta_0"]) for r in rows]
+    assert list(c["strobe"]["cycle"]) == [r["cycle"] for r in rows]
+    assert len(c["t"]) == 81 and c["t"][0] == 0.0
+    m = blockdyn.impact_map(trace=True, transient=20, section_phase=1.0, **opts)
+    with tempfile.TemporaryDirectory() as tmp:
+        out = os.path.join(tmp, "i.csv")
+        j = json.loads(cli("impact-map", "--model", "housner", "--width", "0.3", "--height", "1.5", "--beta", "2",
+                           "--omega", "5", "--periods", "80", "--transient", "20", "--section-phase", "1",
+                           "--out", out, "--json"))
+        with open(out, newline="") as f:
+            rows = list(csv.DictReader(f))
+    assert m["impacts"]["phase"].tolist() == [float(r["phase"]) for r in rows]
+    assert np.all((m["phase"] >= 0) & (m["phase"] < 2 * np.pi)) and len(m["phase"]) == 120
+    assert j["poincare_samples"] == len(m["poincare"]["t"]) == 60
+    assert len(m["trace"]["t"]) > len(m["poincare"]["t"])
+    with pytest.raises(ValueError, match="beta"):
+        blockdyn.cycles(model="housner", width=0.3, height=1.5, omega=5)

@@ -200,6 +200,61 @@ class AssemblyCsv final : public Observer<Model<Cap>> {
   double e0_ = 0;
 };
 
+// The forced analyses' probe (run_probe.hpp): block states from the dense output, passages of
+// each rotation through 0, contact ends closing and opening under each block.
+template <int Cap>
+class AssemblyProbe final : public Observer<Model<Cap>> {
+ public:
+  using M = Model<Cap>;
+  using typename Observer<M>::Mode;
+  using typename Observer<M>::State;
+  using typename Observer<M>::Event;
+  using typename Observer<M>::Segment;
+
+  explicit AssemblyProbe(RunProbe& p) : p_(p) {}
+
+  void on_start(const M& m, double t, const Mode&, const State& z) override {
+    p_.advance(t, m.blocks(), [&](double, RunProbe::BlockState* s) { fill(m, z, s); });
+  }
+  bool on_segment(const M& m, const Segment& seg, double, double t1, const Mode& md) override {
+    p_.advance(t1, m.blocks(), [&](double t, RunProbe::BlockState* s) {
+      State z;
+      seg.eval(t, z);
+      m.complete(md, z);
+      fill(m, z, s);
+    });
+    return true;
+  }
+  bool on_event(const M& m, const Event& e) override {
+    ProbeEvent pe;
+    pe.t = e.t;
+    const int idx = e.index;
+    if (e.kind == kAsmWZero) {
+      pe.kind = ProbeEvent::Passage;
+      pe.block = (idx - M::ev_wzero(0)) % Cap;
+    } else if ((e.kind == kAsmClose || e.kind == kAsmOpen) && idx < M::ev_wzero(0)) {
+      pe.kind = e.kind == kAsmClose ? ProbeEvent::Close : ProbeEvent::Open;
+      pe.block = m.assembly().interfaces[(idx % M::kPoints) / 2].upper;
+      pe.side = (idx % M::kPoints) % 2 == 0 ? -1 : 1;
+    } else {
+      return true;
+    }
+    pe.theta = e.z[M::ix(pe.block) + 2];
+    pe.omega_before = e.z_before[M::iv(pe.block) + 2];
+    pe.omega_after = e.z[M::iv(pe.block) + 2];
+    p_.event(pe);
+    return true;
+  }
+  void on_finish(const M&, double t, const Mode&, const State&) override { p_.finish(t); }
+
+ private:
+  static void fill(const M& m, const State& z, RunProbe::BlockState* s) {
+    for (int b = 0; b < m.blocks(); ++b)
+      s[b] = {z[M::ix(b)], z[M::ix(b) + 1], z[M::ix(b) + 2], z[M::iv(b)], z[M::iv(b) + 1], z[M::iv(b) + 2]};
+  }
+  RunProbe& p_;
+};
+
 template <int Cap>
 AssemblyEnergy energy_of(const Model<Cap>& m, const typename Model<Cap>::Mode& md, const typename Model<Cap>::State& z) {
   const auto e = m.energy_terms(md, z);
@@ -207,7 +262,8 @@ AssemblyEnergy energy_of(const Model<Cap>& m, const typename Model<Cap>::Mode& m
 }
 
 template <int Cap>
-AssemblyResult run(const Assembly& a, const GroundMotion& g, const AssemblyRunOptions& o, std::ostream* csv_out) {
+AssemblyResult run(const Assembly& a, const GroundMotion& g, const AssemblyRunOptions& o, std::ostream* csv_out,
+                   RunProbe* probe) {
   using M = Model<Cap>;
   // Passages through theta = 0 and contact-end switches count beyond the integration error.
   const M m(a, g, std::fmax(1e-12, 10.0 * o.integrator.atol));
@@ -226,6 +282,11 @@ AssemblyResult run(const Assembly& a, const GroundMotion& g, const AssemblyRunOp
   if (csv_out) {
     csv = std::make_unique<AssemblyCsv<Cap>>(*csv_out, o.output_interval);
     fan.add(csv.get());
+  }
+  std::unique_ptr<AssemblyProbe<Cap>> probe_obs;
+  if (probe) {
+    probe_obs = std::make_unique<AssemblyProbe<Cap>>(*probe);
+    fan.add(probe_obs.get());
   }
   const RunOutcome<M> out = run_model(m, md, z, 0.0, o.t_end, o.integrator, fan);
   r.integrator_status = to_string(out.status);
@@ -268,7 +329,8 @@ AssemblyResult run(const Assembly& a, const GroundMotion& g, const AssemblyRunOp
 // between consecutive steps: contact ends opening and closing (an impact when the end
 // approached), stick and slip, passages of theta through 0 and the collapse criteria, the
 // crossings of theta interpolated linearly within the step.
-AssemblyResult run_rigid(const Assembly& a, const GroundMotion& g, const AssemblyRunOptions& o, std::ostream* csv) {
+AssemblyResult run_rigid(const Assembly& a, const GroundMotion& g, const AssemblyRunOptions& o, std::ostream* csv,
+                         RunProbe* probe) {
   MoreauJeanOptions mo;
   mo.h = o.step;
   MoreauJean mj(a, g, mo);
@@ -277,7 +339,7 @@ AssemblyResult run_rigid(const Assembly& a, const GroundMotion& g, const Assembl
   r.damping.assign(ni, 0.0);
   r.blocks.resize(nb);
   r.interfaces.resize(ni);
-  std::vector<double> q(3 * nb), v(3 * nb), theta_prev(nb), s0(ni);
+  std::vector<double> q(3 * nb), v(3 * nb), theta_prev(nb), s0(ni), overlaps(ni), base(ni);
   std::vector<int> side(nb, 1);
   // A passage through theta = 0 counts once theta is this far on the other side (rounding).
   constexpr double kBand = 1e-12;
@@ -290,10 +352,10 @@ AssemblyResult run_rigid(const Assembly& a, const GroundMotion& g, const Assembl
     r.blocks[b].max_abs_rotation = std::fabs(k.theta);
     side[b] = k.theta < 0 ? -1 : 1;
   }
+  mj.measure_interfaces(q, overlaps, s0);
   for (int i = 0; i < ni; ++i) {
     r.interfaces[i].lower = a.interfaces[i].lower;
     r.interfaces[i].upper = a.interfaces[i].upper;
-    s0[i] = mj.base_position_of(q, i);
   }
   // Contact end states: 'O' open, 'K' stick, 'P'/'N' slip.
   std::vector<char> state(np, 'O'), next(np, 'O');
@@ -354,6 +416,32 @@ AssemblyResult run_rigid(const Assembly& a, const GroundMotion& g, const Assembl
     *csv << ",E_kin,E_grav,E_spring_n,E_spring_t,E_total,W_ground,W_normal,W_friction,W_switch,energy_balance\n";
     write_row(0.0, "start");
   }
+  // The probe's states between step ends: linear in time (the scheme is first order).
+  std::vector<double> q_prev, v_prev;
+  auto probe_states = [&](double tau, double t_lo, RunProbe::BlockState* s) {
+    const double w = o.step > 0 ? std::clamp((tau - t_lo) / o.step, 0.0, 1.0) : 1.0;
+    for (int b = 0; b < nb; ++b)
+      for (int k = 0; k < 3; ++k) {
+        s[b][k] = q_prev[3 * b + k] + w * (q[3 * b + k] - q_prev[3 * b + k]);
+        s[b][3 + k] = v_prev[3 * b + k] + w * (v[3 * b + k] - v_prev[3 * b + k]);
+      }
+  };
+  auto probe_event = [&](double te, int b, ProbeEvent::Kind kind, double w_before, double w_after, int end = -1) {
+    ProbeEvent pe;
+    pe.t = te;
+    pe.block = b;
+    pe.kind = kind;
+    pe.side = end < 0 ? 0 : end == 0 ? -1 : 1;
+    pe.theta = q[3 * b + 2];
+    pe.omega_before = w_before;
+    pe.omega_after = w_after;
+    probe->event(pe);
+  };
+  if (probe) {
+    q_prev = q;
+    v_prev = v;
+    probe->advance(0.0, nb, [&](double tau, RunProbe::BlockState* s) { probe_states(tau, 0.0, s); });
+  }
   const long steps = long(std::ceil(o.t_end / o.step - 1e-9));
   long next_out = 1;
   double t = 0;
@@ -361,6 +449,10 @@ AssemblyResult run_rigid(const Assembly& a, const GroundMotion& g, const Assembl
   const double v_tol = a.g * o.step;
   for (long k = 0; k < steps; ++k) {
     for (int b = 0; b < nb; ++b) theta_prev[b] = q[3 * b + 2];
+    if (probe) {
+      q_prev = q;
+      v_prev = v;
+    }
     if (!mj.step(t, q, v)) {
       r.status = "invalid";
       r.note = "the contact problem (LCP) has no solution at t = " + std::to_string(t) + " s";
@@ -371,7 +463,7 @@ AssemblyResult run_rigid(const Assembly& a, const GroundMotion& g, const Assembl
     for (int p = 0; p < np; ++p) {
       const auto& e = mj.ends()[p];
       // An end is closed while it touches (active), whether or not this step needed an impulse.
-      next[p] = !e.active ? 'O' : !e.slipping ? 'K' : (e.ut_after > 0 ? 'P' : 'N');
+      next[p] = !e.active ? 'O' : !e.slipping ? 'K' : (e.slip > 0 ? 'P' : 'N');
       const int blk = a.interfaces[p / 2].upper;
       if (k == 0) {
         // The contacts the assembly starts on are not events; a slip from the start is.
@@ -383,9 +475,11 @@ AssemblyResult run_rigid(const Assembly& a, const GroundMotion& g, const Assembl
         const bool impact = e.un_before < -v_tol;
         add_event(t1, impact ? kAsmImpact : kAsmClose, impact ? "impact" : "close", blk, p / 2, p % 2, 0);
         if (impact) ++r.impacts;
+        if (probe) probe_event(t1, blk, ProbeEvent::Close, v_prev[3 * blk + 2], v[3 * blk + 2], p % 2);
       } else if (next[p] == 'O' && state[p] != 'O') {
         add_event(t1, kAsmOpen, "open", blk, p / 2, p % 2, 0);
         ++r.interfaces[p / 2].opens;
+        if (probe) probe_event(t1, blk, ProbeEvent::Open, v_prev[3 * blk + 2], v[3 * blk + 2], p % 2);
       } else if ((next[p] == 'P' || next[p] == 'N') && state[p] == 'K') {
         add_event(t1, kAsmSlip, "slip", blk, p / 2, p % 2, 0);
         ++r.interfaces[p / 2].slips;
@@ -415,6 +509,7 @@ AssemblyResult run_rigid(const Assembly& a, const GroundMotion& g, const Assembl
       if (side[b] * th1 < -kBand) {
         const double tc = t + o.step * (th0 / (th0 - th1));  // linear within the step
         add_event(std::clamp(tc, t, t1), kAsmWZero, "w_zero", b, -1, -1, 0);
+        if (probe) probe_event(std::clamp(tc, t, t1), b, ProbeEvent::Passage, v_prev[3 * b + 2], v[3 * b + 2]);
         side[b] = -side[b];
       }
       if (std::fabs(th1) > r.blocks[b].max_abs_rotation) {
@@ -432,9 +527,10 @@ AssemblyResult run_rigid(const Assembly& a, const GroundMotion& g, const Assembl
         stop = true;
       }
     }
+    mj.measure_interfaces(q, overlaps, base);
     for (int i = 0; i < ni && !stop; ++i) {
       if (a.interfaces[i].lower < 0) continue;
-      if (mj.overlap_of(q, i) <= a.min_bearing) {
+      if (overlaps[i] <= a.min_bearing) {
         add_event(t1, kAsmCollapse2, "failure", a.interfaces[i].upper, i, -1, 2);
         r.collapse_mode = 2;
         r.t_failure = t1;
@@ -444,8 +540,8 @@ AssemblyResult run_rigid(const Assembly& a, const GroundMotion& g, const Assembl
       }
     }
     for (int i = 0; i < ni; ++i)
-      r.interfaces[i].max_abs_sliding =
-          std::fmax(r.interfaces[i].max_abs_sliding, std::fabs(mj.base_position_of(q, i) - s0[i]));
+      r.interfaces[i].max_abs_sliding = std::fmax(r.interfaces[i].max_abs_sliding, std::fabs(base[i] - s0[i]));
+    if (probe) probe->advance(t1, nb, [&](double tau, RunProbe::BlockState* s) { probe_states(tau, t, s); });
     t = t1;
     if (csv) {
       while (o.output_interval > 0 && next_out * o.output_interval <= t + 1e-12 * o.step) {
@@ -460,7 +556,11 @@ AssemblyResult run_rigid(const Assembly& a, const GroundMotion& g, const Assembl
     }
   }
   r.t_final = t;
+  if (probe) probe->finish(t);
   r.steps = long(std::lround(t / o.step));
+  r.direct_solves = mj.solve_stats().direct;
+  r.gauss_seidel_solves = mj.solve_stats().gauss_seidel;
+  r.gauss_seidel_sweeps = mj.solve_stats().sweeps;
   r.rhs_evals = r.steps;
   for (int b = 0; b < nb; ++b) {
     for (int k = 0; k < 3; ++k) {
@@ -494,14 +594,16 @@ AssemblyResult run_rigid(const Assembly& a, const GroundMotion& g, const Assembl
 }  // namespace
 
 AssemblyResult simulate_assembly(const Assembly& a, const GroundMotion& g, const AssemblyRunOptions& o,
-                                 std::ostream* trajectory) {
+                                 std::ostream* trajectory, RunProbe* probe) {
   validate(a);
   validate(o);
-  if (a.contact == "rigid") return run_rigid(a, g, o, trajectory);
+  if (probe && a.blocks.size() > std::size_t(RunProbe::kMaxBlocks))
+    throw std::invalid_argument("a probed run takes at most " + std::to_string(RunProbe::kMaxBlocks) + " blocks");
+  if (a.contact == "rigid") return run_rigid(a, g, o, trajectory, probe);
   const int n = int(a.blocks.size());
-  if (n == 1 && a.interfaces.size() <= 2) return run<1>(a, g, o, trajectory);
-  if (n <= 3 && a.interfaces.size() <= 4) return run<3>(a, g, o, trajectory);
-  return run<8>(a, g, o, trajectory);
+  if (n == 1 && a.interfaces.size() <= 2) return run<1>(a, g, o, trajectory, probe);
+  if (n <= 3 && a.interfaces.size() <= 4) return run<3>(a, g, o, trajectory, probe);
+  return run<8>(a, g, o, trajectory, probe);
 }
 
 }  // namespace blockdyn

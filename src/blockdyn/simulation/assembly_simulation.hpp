@@ -15,6 +15,7 @@
 #include "blockdyn/excitation/ground_motion.hpp"
 #include "blockdyn/integrate/hybrid_integrator.hpp"
 #include "blockdyn/model/assembly/assembly_params.hpp"
+#include "blockdyn/simulation/run_probe.hpp"
 
 namespace blockdyn {
 
@@ -76,10 +77,15 @@ struct AssemblyResult {
   long steps = 0, rejected_steps = 0, rhs_evals = 0;
   std::vector<double> damping;  // calibrated damping per interface (N s/m per point)
   long impacts = 0;              // rigid law: contact ends closing with an approach velocity
+  // Rigid law: how the steps' contact problems were solved (direct active-set solves, Gauss-Seidel
+  // for degenerate ones and its sweeps).
+  long direct_solves = 0, gauss_seidel_solves = 0, gauss_seidel_sweeps = 0;
 };
 
-// One run. `trajectory` (optional) receives the CSV. Throws std::invalid_argument on bad input.
+// One run. `trajectory` (optional) receives the CSV; `probe` (optional) the samples, passages of
+// the rotations through 0 and contact closings/openings under each block (run_probe.hpp). Throws
+// std::invalid_argument on bad input.
 AssemblyResult simulate_assembly(const Assembly& a, const GroundMotion& g, const AssemblyRunOptions& o,
-                                 std::ostream* trajectory = nullptr);
+                                 std::ostream* trajectory = nullptr, RunProbe* probe = nullptr);
 
 }  // namespace blockdyn

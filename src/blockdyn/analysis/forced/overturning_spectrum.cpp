@@ -24,17 +24,22 @@ double rect_pulse_overturning_linear(double alpha, double p, double t_p) {
   return alpha / (1.0 - std::exp(-p * t_p));
 }
 
-namespace {
+std::vector<double> scan_amplitudes(const SpectrumOptions& o) {
+  const int n = o.scan_points;
+  std::vector<double> amp(n);
+  for (int j = 0; j < n; ++j) amp[j] = o.amplitude_min * std::pow(o.amplitude_max / o.amplitude_min, double(j) / (n - 1));
+  return amp;
+}
 
-SpectrumRow one_duration(const OverturnTest& overturns, const SpectrumOptions& o, double duration) {
+SpectrumRow spectrum_row(const OverturnTest& overturns, const SpectrumOptions& o, double duration) {
   SpectrumRow row;
   row.duration = duration;
   const int n = o.scan_points;
-  std::vector<double> amp(n);
-  std::vector<char> over(n);
+  const std::vector<double> amp = scan_amplitudes(o);
+  std::vector<char>& over = row.scan;
+  over.resize(n);
   for (int j = 0; j < n; ++j) {
-    amp[j] = o.amplitude_min * std::pow(o.amplitude_max / o.amplitude_min, double(j) / (n - 1));
-    over[j] = overturns(amp[j], duration);
+    over[j] = overturns(amp[j], duration) ? 1 : 0;
     ++row.runs;
   }
   int k = 0;
@@ -62,15 +67,13 @@ SpectrumRow one_duration(const OverturnTest& overturns, const SpectrumOptions& o
   return row;
 }
 
-}  // namespace
-
 std::vector<SpectrumRow> overturning_spectrum(const OverturnTest& overturns, const SpectrumOptions& o,
                                               const std::function<void(std::size_t)>& progress) {
   validate(o);
   std::vector<SpectrumRow> rows(o.durations.size());
   std::size_t done = 0;
   parallel_for(
-      rows.size(), o.threads, [&](std::size_t i) { rows[i] = one_duration(overturns, o, o.durations[i]); },
+      rows.size(), o.threads, [&](std::size_t i) { rows[i] = spectrum_row(overturns, o, o.durations[i]); },
       [&](std::size_t) {
         ++done;
         if (progress) progress(done);

@@ -33,6 +33,7 @@ struct SpectrumRow {
   bool at_scan_floor = false;   // the smallest scanned amplitude already overturns
   std::vector<SpectrumIsland> safe_islands;
   long runs = 0;
+  std::vector<char> scan;  // per scan amplitude (scan_amplitudes()): 1 overturns, 0 survives
 };
 
 // overturns(amplitude_g, duration_s) must be thread-safe (it runs one simulation).
@@ -42,6 +43,11 @@ std::vector<SpectrumRow> overturning_spectrum(const OverturnTest& overturns, con
                                               const std::function<void(std::size_t done)>& progress = {});
 
 void validate(const SpectrumOptions& o);  // throws std::invalid_argument naming the field
+
+// The scanned amplitudes (g): geometric from amplitude_min to amplitude_max.
+std::vector<double> scan_amplitudes(const SpectrumOptions& o);
+// One duration: scan, bisection, islands. A pure function of its arguments (the runner's rule).
+SpectrumRow spectrum_row(const OverturnTest& overturns, const SpectrumOptions& o, double duration);
 
 // The linearised closed form for a rectangular pulse (spec rigid-ground-block.md, small alpha):
 // a_p / (g alpha) = 1 / (1 - exp(-p t_p)). Returns a_p in g.

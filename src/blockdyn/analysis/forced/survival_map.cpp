@@ -49,33 +49,43 @@ std::string t_star_class(const SurvivalOptions& o, double t) {
   return names[4];
 }
 
+double grid_value(double lo, double hi, int n, int i) { return n == 1 ? lo : lo + (hi - lo) * i / (n - 1); }
+
+SurvivalPoint survival_point(const SurvivalRun& run, const SurvivalOptions& o, double alpha, double p, double beta,
+                             double omega) {
+  SurvivalPoint pt;
+  pt.beta = beta;
+  pt.omega = omega;
+  const double t_end = o.periods > 0 ? o.periods * 2 * M_PI / (omega * p) : o.t_end;
+  const SurvivalOutcome r = run(survival_motion(o, beta, omega, alpha, p), t_end);
+  pt.max_abs_rotation = r.max_abs_rotation;
+  pt.max_sliding = r.max_sliding;
+  pt.collapse_mode = r.collapse_mode;
+  pt.t_failure = r.t_failure;
+  pt.cycle = r.cycle;
+  if (r.invalid) pt.motion = "invalid";
+  else if (r.collapse_mode) pt.motion = "collapse";
+  else if (r.moved) pt.motion = "stable";
+  else pt.motion = "rest";
+  if (r.collapse_mode && r.t_failure) pt.t_star_class = t_star_class(o, *r.t_failure);
+  return pt;
+}
+
 std::vector<SurvivalPoint> survival_map(const SurvivalRun& run, const SurvivalOptions& o, double alpha, double p,
                                         const std::function<void(std::size_t)>& progress) {
   validate(o);
   if (!o.betas.empty() && int(o.betas.size()) != o.beta_points)
     throw std::invalid_argument("betas: beta-points must equal the number of betas given");
-  auto grid = [](double lo, double hi, int n, int i) { return n == 1 ? lo : lo + (hi - lo) * i / (n - 1); };
   const std::size_t n = std::size_t(o.beta_points) * o.omega_points;
   std::vector<SurvivalPoint> pts(n);
   std::size_t done = 0;
   parallel_for(
       n, o.threads,
       [&](std::size_t k) {
-        SurvivalPoint& pt = pts[k];
         const int bi = int(k / o.omega_points);
-        pt.beta = o.betas.empty() ? grid(o.beta_min, o.beta_max, o.beta_points, bi) : o.betas[bi];
-        pt.omega = grid(o.omega_min, o.omega_max, o.omega_points, int(k % o.omega_points));
-        const double t_end = o.periods > 0 ? o.periods * 2 * M_PI / (pt.omega * p) : o.t_end;
-        const SurvivalOutcome r = run(survival_motion(o, pt.beta, pt.omega, alpha, p), t_end);
-        pt.max_abs_rotation = r.max_abs_rotation;
-        pt.max_sliding = r.max_sliding;
-        pt.collapse_mode = r.collapse_mode;
-        pt.t_failure = r.t_failure;
-        if (r.invalid) pt.motion = "invalid";
-        else if (r.collapse_mode) pt.motion = "collapse";
-        else if (r.moved) pt.motion = "stable";
-        else pt.motion = "rest";
-        if (r.collapse_mode && r.t_failure) pt.t_star_class = t_star_class(o, *r.t_failure);
+        const double beta = o.betas.empty() ? grid_value(o.beta_min, o.beta_max, o.beta_points, bi) : o.betas[bi];
+        const double omega = grid_value(o.omega_min, o.omega_max, o.omega_points, int(k % o.omega_points));
+        pts[k] = survival_point(run, o, alpha, p, beta, omega);
       },
       [&](std::size_t) {
         ++done;

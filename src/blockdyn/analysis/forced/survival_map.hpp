@@ -36,6 +36,7 @@ struct SurvivalPoint {
   std::string t_star_class;  // "<=5 s", "short", "medium", "long", "very long" (collapse only)
   double max_abs_rotation = 0;
   double max_sliding = 0;    // m (assemblies: the largest slip between blocks)
+  std::string cycle;         // harmonic: the dominant (m, n) cycle label of the run, "" if none
 };
 
 struct SurvivalOutcome {
@@ -43,6 +44,7 @@ struct SurvivalOutcome {
   std::optional<int> collapse_mode;
   std::optional<double> t_failure;
   double max_abs_rotation = 0, max_sliding = 0;
+  std::string cycle;  // harmonic motion: the dominant cycle label (cycle_detection.hpp), "" if none
 };
 // Thread-safe: one run under g to t_end (s).
 using SurvivalRun = std::function<SurvivalOutcome(const GroundMotion& g, double t_end)>;
@@ -50,6 +52,13 @@ using SurvivalRun = std::function<SurvivalOutcome(const GroundMotion& g, double 
 // The ground motion of a point: amplitude beta alpha (g), Omega = omega p.
 GroundMotion survival_motion(const SurvivalOptions& o, double beta, double omega, double alpha, double p);
 std::string t_star_class(const SurvivalOptions& o, double t_star);
+
+// One point: a pure function of its arguments (the runner's rule: any thread, rank or rerun
+// computes the same point). t_end from o.t_end or o.periods.
+SurvivalPoint survival_point(const SurvivalRun& run, const SurvivalOptions& o, double alpha, double p, double beta,
+                             double omega);
+// The value of point i of n uniform from lo to hi (lo when n == 1), as every grid here spaces them.
+double grid_value(double lo, double hi, int n, int i);
 
 // Points in row-major order: beta outer, omega inner.
 std::vector<SurvivalPoint> survival_map(const SurvivalRun& run, const SurvivalOptions& o, double alpha, double p,

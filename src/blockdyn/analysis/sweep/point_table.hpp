@@ -4,7 +4,8 @@
 // any model family: a fixed number of points, each row a pure function of the definition and
 // the index (the same bytes on any thread, rank or rerun), a header, a fingerprint tying a journal
 // to its definition, and the definition itself for the sidecar. SweepEvaluator (Winkler block)
-// and RigidSweepEvaluator (housner, rigid) implement it.
+// and RigidSweepEvaluator (housner, rigid) implement it; GridTable (grid_table.hpp) makes one from
+// a per-point function for the other grid analyses (spectrum, survival, response-curve).
 #include <nlohmann/json.hpp>
 
 #include <cstddef>
@@ -29,6 +30,9 @@ class PointTable {
   virtual nlohmann::ordered_json definition() const = 0;
   virtual nlohmann::ordered_json tolerances() const = 0;
   virtual const std::string& output() const = 0;  // the CSV path
+  // The command the table belongs to: the sidecar's schema (blockdyn.<kind>.sidecar/1) and the
+  // progress label.
+  virtual std::string kind() const { return "sweep"; }
 };
 
 // Helpers for cell formatting (exposed for tests and metric authors).

@@ -142,8 +142,8 @@ void SweepJournal::append(std::size_t index, const std::string& row) {
   ++done_;
 }
 
-void SweepJournal::write_csv(const std::string& csv_path) const {
-  if (done_ != rows_.size()) throw std::logic_error("sweep CSV written before all rows were done");
+void SweepJournal::write_csv(const std::string& csv_path, bool sparse) const {
+  if (!sparse && done_ != rows_.size()) throw std::logic_error("sweep CSV written before all rows were done");
   AtomicFile f(csv_path);
   f.stream() << header_;
   for (const auto& r : rows_) f.stream() << r;

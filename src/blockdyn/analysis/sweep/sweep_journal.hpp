@@ -26,12 +26,14 @@ class SweepJournal {
   std::size_t done() const { return done_; }
   std::size_t resumed() const { return resumed_; }  // rows found on opening
   bool has(std::size_t index) const { return !rows_[index].empty(); }
+  const std::string* row(std::size_t index) const { return rows_[index].empty() ? nullptr : &rows_[index]; }
   std::vector<std::size_t> pending() const;  // indices without a row, ascending
 
   // Records the row of `index` (must end in '\n' and start with the index). Not thread-safe.
   void append(std::size_t index, const std::string& row);
-  // Writes header + all rows sorted by index to csv_path atomically; needs done() == points().
-  void write_csv(const std::string& csv_path) const;
+  // Writes header + all rows sorted by index to csv_path atomically; needs done() == points()
+  // unless `sparse` (an adaptive plan computes only some points).
+  void write_csv(const std::string& csv_path, bool sparse = false) const;
   void remove_file();  // closes and deletes the journal (after the CSV is safely written)
 
   static std::string first_line(const std::string& fingerprint, std::size_t points);

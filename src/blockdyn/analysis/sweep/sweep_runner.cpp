@@ -117,14 +117,36 @@ SweepSession::SweepSession(const PointTable& ev, const SweepRunOptions& o)
   journal_ = std::make_unique<SweepJournal>(paths_.journal, ev.fingerprint(), ev.header(), ev.size(),
                                             o.resume);
   write_file_atomically(paths_.sidecar, dump_json(sidecar("running", resolve_threads(o.threads))) + "\n");
-  progress_ = std::make_unique<Progress>("sweep", ev.size(), journal_->done(), o.progress, stderr,
-                                         o.progress_interval);
 }
 
 SweepSession::~SweepSession() = default;
 
 std::vector<std::size_t> SweepSession::pending() const {
   return journal_ ? journal_->pending() : std::vector<std::size_t>{};
+}
+
+const std::string* SweepSession::row(std::size_t index) const {
+  return journal_ && index < journal_->points() ? journal_->row(index) : nullptr;
+}
+
+std::vector<std::size_t> SweepSession::next_stage(PointPlan& plan) {
+  if (!journal_) return {};
+  if (progress_) progress_->finish();
+  const FinishedRow finished = [this](std::size_t i) { return row(i); };
+  for (;;) {
+    const std::vector<std::size_t> stage = plan.next_stage(finished);
+    if (stage.empty()) return {};
+    std::vector<std::size_t> todo;
+    for (std::size_t i : stage) {
+      if (i >= ev_.size()) throw std::logic_error("point plan: index out of range");
+      if (!journal_->has(i)) todo.push_back(i);
+    }
+    if (todo.empty()) continue;
+    const std::string label = plan.stage_label();
+    progress_ = std::make_unique<Progress>(label.empty() ? ev_.kind() : ev_.kind() + " " + label, stage.size(),
+                                           stage.size() - todo.size(), opt_.progress, stderr, opt_.progress_interval);
+    return todo;
+  }
 }
 
 void SweepSession::record(std::size_t index, const SweepRow& row) {
@@ -139,7 +161,7 @@ void SweepSession::record(std::size_t index, const SweepRow& row) {
 
 json SweepSession::sidecar(const std::string& status, int threads) const {
   json j;
-  j["schema"] = schema_name("sweep", "sidecar");
+  j["schema"] = schema_name(ev_.kind(), "sidecar");
   j["run"] = run_info();
   j["status"] = status;
   j["fingerprint"] = ev_.fingerprint();
@@ -159,7 +181,7 @@ json SweepSession::sidecar(const std::string& status, int threads) const {
   return j;
 }
 
-SweepOutcome SweepSession::finish(int threads) {
+SweepOutcome SweepSession::finish(int threads, bool sparse) {
   SweepOutcome out;
   out.paths = paths_;
   out.points = ev_.size();
@@ -169,7 +191,7 @@ SweepOutcome SweepSession::finish(int threads) {
     return out;
   }
   if (progress_) progress_->finish();
-  journal_->write_csv(paths_.csv);
+  journal_->write_csv(paths_.csv, sparse);
   out.resumed = journal_->resumed();
   out.computed = journal_->done() - journal_->resumed();
   out.errors = errors_;
@@ -180,6 +202,7 @@ SweepOutcome SweepSession::finish(int threads) {
   t["wall_seconds"] = out.wall_seconds;
   t["points_computed"] = out.computed;
   t["points_resumed"] = out.resumed;
+  if (sparse) j["rows_in_table"] = journal_->done();
   t["points_per_second"] = out.wall_seconds > 0 ? double(out.computed) / out.wall_seconds : 0.0;
   rusage ru{};
   if (::getrusage(RUSAGE_SELF, &ru) == 0)
@@ -192,13 +215,17 @@ SweepOutcome SweepSession::finish(int threads) {
   return out;
 }
 
-SweepOutcome run_sweep(const PointTable& ev, const SweepRunOptions& o) {
+SweepOutcome run_sweep(const PointTable& ev, const SweepRunOptions& o, PointPlan* plan) {
+  AllPoints all(ev.size());
+  PointPlan& p = plan ? *plan : all;
   SweepSession session(ev, o);
   const int threads = resolve_threads(o.threads);
-  if (!session.was_complete())
-    compute_rows(ev, session.pending(), threads,
-                 [&](std::size_t i, const SweepRow& row) { session.record(i, row); });
-  return session.finish(threads);
+  for (;;) {
+    const std::vector<std::size_t> todo = session.next_stage(p);
+    if (todo.empty()) break;
+    compute_rows(ev, todo, threads, [&](std::size_t i, const SweepRow& row) { session.record(i, row); });
+  }
+  return session.finish(threads, p.sparse());
 }
 
 }  // namespace blockdyn

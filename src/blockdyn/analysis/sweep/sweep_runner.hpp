@@ -3,7 +3,8 @@
 // Running a sweep: rows computed on threads (any order), recorded by one writer (journal +
 // progress), then the sorted CSV and the JSON sidecar. SweepSession is the writer's side; it is
 // shared by the single-process driver below and the MPI driver (apps/mpi_sweep.cpp), where rank
-// 0 owns the session and the other ranks only compute rows.
+// 0 owns the session and the other ranks only compute rows. The points run in the stages of a
+// PointPlan (point_plan.hpp): all at once for a plain grid, stage by stage for adaptive analyses.
 //
 // Output files for `--output OUT.csv`:
 //   OUT.csv          final table, written atomically when every point is done
@@ -17,6 +18,7 @@
 #include <string>
 #include <vector>
 
+#include "blockdyn/analysis/sweep/point_plan.hpp"
 #include "blockdyn/analysis/sweep/point_table.hpp"
 #include "blockdyn/analysis/sweep/sweep_journal.hpp"
 #include "blockdyn/io/progress.hpp"
@@ -56,10 +58,15 @@ class SweepSession {
   ~SweepSession();
 
   bool was_complete() const { return was_complete_; }
-  std::vector<std::size_t> pending() const;
+  std::vector<std::size_t> pending() const;  // every point without a row
+  // The unfinished points of the plan's next stage, and starts that stage's progress report;
+  // empty when the plan is complete. A stage already finished (resumed) is passed over.
+  std::vector<std::size_t> next_stage(PointPlan& plan);
+  const std::string* row(std::size_t index) const;  // a finished row, or nullptr
   void record(std::size_t index, const SweepRow& row);  // not thread-safe
-  // Writes the CSV and the final sidecar, removes the journal. `threads`: per rank.
-  SweepOutcome finish(int threads);
+  // Writes the CSV and the final sidecar, removes the journal. `threads`: per rank; `sparse`:
+  // the plan left points out (PointPlan::sparse()).
+  SweepOutcome finish(int threads, bool sparse = false);
 
  private:
   nlohmann::ordered_json sidecar(const std::string& status, int threads) const;
@@ -75,8 +82,8 @@ class SweepSession {
   nlohmann::ordered_json load_at_start_;
 };
 
-// Single-process sweep (threads only).
-SweepOutcome run_sweep(const PointTable& ev, const SweepRunOptions& o);
+// Single-process sweep (threads only) of the plan's points (nullptr: every point).
+SweepOutcome run_sweep(const PointTable& ev, const SweepRunOptions& o, PointPlan* plan = nullptr);
 
 // Fingerprint recorded by a sidecar whose status is "complete"; "" if absent, unreadable or
 // unfinished (lets --resume recognise a finished sweep).

@@ -81,6 +81,15 @@ class AssemblyModel {
 
   void rhs(double t, const Mode& m, const State& z, State& dz) const;
   void events(double t, const Mode& m, const State& z, std::array<double, kNumEvents>& g) const;
+  // The event functions and their time derivatives at (t, z), given dz = rhs(t, m, z) (an
+  // integrator has it for free at a step's end: the last stage, FSAL). One geometry evaluation
+  // and no dynamics: cheaper than events() alone when a point slips, about as cheap otherwise,
+  // so an event scan can bracket each function with values and rates at both ends of a step
+  // (cubic Hermite) instead of sampling the step. Exact in closed form, except the switch back
+  // to stick of a slipping point (its rate needs F_N'', the third derivative of the gap): NaN,
+  // meaning "not known, sample this one".
+  void event_rates(double t, const Mode& m, const State& z, const State& dz, std::array<double, kNumEvents>& g,
+                   std::array<double, kNumEvents>& g_rate) const;
   void complete(const Mode& m, State& z) const;
   Transition<Mode> transition(double t, const Mode& m, State& z, int event) const;
   std::optional<Transition<Mode>> resolve_chatter(double, const Mode&, const State&) const { return std::nullopt; }
@@ -111,24 +120,33 @@ class AssemblyModel {
   };
   // The poses and faces of a state, computed once per evaluation (one sincos per block).
   struct Geometry {
-    std::array<BodyPose, Cap + 1> pose{};  // blocks; the last slot is the ground (at rest)
-    std::array<Face, kIfaces> lower{}, upper{};
+    std::array<BodyPose, Cap + 1> pose;  // blocks; the last slot is the ground (at rest)
+    std::array<Face, kIfaces> lower, upper;
     const BodyPose& of(int b) const { return b < 0 ? pose[Cap] : pose[b]; }
   };
   void geometry(const State& z, Geometry& g) const;
-  PointForce point_force(const Mode& m, const State& z, const Geometry& g, int p) const;
+  void point_force(const Mode& m, const State& z, const Geometry& g, int p, PointForce& f) const;
+  PointForce point_force(const Mode& m, const State& z, const Geometry& g, int p) const {
+    PointForce f;
+    point_force(m, z, g, p, f);
+    return f;
+  }
   PointForce point_force(const Mode& m, const State& z, int p) const {
     Geometry g;
     geometry(z, g);
     return point_force(m, z, g, p);
   }
-  // Accelerations of every block (and the normal-force rates of the slipping points).
+  // Accelerations of every block (and the normal-force rates of the slipping points), the
+  // ground's accelerations and the contact points. all_points = false: the open points clear of
+  // their faces get only their gap (what the right-hand side needs).
   struct Dynamics {
-    std::array<double, 3 * Cap> acc{};
-    std::array<PointForce, kPoints> pf{};
-    std::array<double, kPoints> fn_rate{};
+    double ah, av;
+    std::array<double, 3 * Cap> acc;
+    std::array<PointForce, kPoints> pf;
+    std::array<double, kPoints> fn_rate;
   };
-  void dynamics(double t, const Mode& m, const State& z, const Geometry& geo, Dynamics& d, bool need_rates) const;
+  void dynamics(double t, const Mode& m, const State& z, const Geometry& geo, Dynamics& d, bool need_rates,
+                bool all_points = true) const;
   BodyPose pose(const State& z, int b) const;
   double overlap_of(const State& z, int iface) const;
   double rotation_limit(int b) const { return limit_[b]; }
@@ -141,12 +159,21 @@ class AssemblyModel {
   // Whether a point slips (then the slip rates need the normal forces' rates).
   bool any_slip(const Mode& m) const;
   PointState consistent_state(const Mode& m, const State& z, const Geometry& g, int p) const;
+  // The event functions from an evaluation's geometry and points.
+  void event_values(const Mode& m, const State& z, const Geometry& geo, const Dynamics& d,
+                    std::array<double, kNumEvents>& g) const;
+  // A point's gap acceleration for block accelerations acc, and its normal force's rate.
+  double gap_acceleration(const State& z, const std::array<double, 3 * Cap>& acc, const PointForce& pf, int i) const;
+  double normal_force_rate(const State& z, const std::array<double, 3 * Cap>& acc, const PointForce& pf, int p) const;
+  // Rate of along_lower(lower, upper, side) (the upper base corner's coordinate along the lower
+  // face) of interface i.
+  double along_lower_rate(const Geometry& geo, int i, int side) const;
 
   Assembly asm_;
   GroundMotion ground_;
   bool forced_;
   int nb_, ni_;
-  std::array<double, Cap> m_{}, I_{}, b_{}, h_{}, limit_{}, y0_{};
+  std::array<double, Cap> m_{}, I_{}, inv_m_{}, inv_I_{}, b_{}, h_{}, limit_{}, y0_{};
   std::array<PointLaw, kIfaces> law_{};
   std::array<int, kIfaces> lower_{}, upper_{};
   double g_, step_hint_, d_max_, switch_band_, rotation_band_;

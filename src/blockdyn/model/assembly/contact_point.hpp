@@ -74,6 +74,13 @@ inline double owner_margin(const Face& lower, const Face& upper, int end, int ow
   return owner == 0 ? d : -d;
 }
 
+// The gap of an end alone (no velocities): enough for an open point clear of its face.
+inline double contact_gap(const Face& lower, const Face& upper, int end, int owner) {
+  const int side = end == 0 ? -1 : +1;
+  return owner == 0 ? dot(face_corner(upper, side) - lower.c, lower.n)
+                    : dot(face_corner(lower, side) - upper.c, upper.n);
+}
+
 // The contact point of an end: the corner P of block A on the face of block B.
 struct FaceContact {
   Vec2 P, n, t;

@@ -7,7 +7,20 @@
 namespace blockdyn {
 
 namespace {
+// The contact problem is solved when no end's relative velocity is off by more than this
+// fraction of the problem's velocity scale.
 constexpr double kSolveTolerance = 1e-12;
+// A pivot this small against the Delassus diagonal: the guessed active set is degenerate (the
+// impulses of redundant ends are not unique) and Gauss-Seidel takes over.
+constexpr double kSingularPivot = 1e-10;
+// Guesses of the active-set iteration before Gauss-Seidel takes over (one or two in practice).
+constexpr int kMaxActiveSetIterations = 12;
+// After a degenerate problem, steps with the same active ends go to Gauss-Seidel directly for
+// this many steps before the direct solve is tried again.
+constexpr int kSkipAfterDegenerate = 32;
+// An end slips when its tangential velocity after the step exceeds this fraction of the
+// problem's velocity scale (the solve's own accuracy is 1e-12 of it).
+constexpr double kSlipVelocity = 1e-9;
 
 // The 2 x 2 frictional contact problem of one end: u = [a c; c d] [pn; pt] + [bn; bt],
 // 0 <= pn _|_ u_N >= 0, |pt| <= mu pn, pt = -mu pn sign(u_T) when u_T != 0. Exact: separation,
@@ -42,10 +55,82 @@ void solve_local(double a, double c, double d, double bn, double bt, double mu, 
   }
   if (best_pn < 0.0) pn = pt = 0.0;
 }
+
+// Solves A x = b in place (x into b) by Gaussian elimination with partial pivoting; A is m x m
+// with row stride `stride`. False when a pivot is not above `min_pivot` (singular).
+bool gauss_solve(double* __restrict A, double* __restrict b, int m, int stride, double min_pivot) {
+  const std::size_t S = std::size_t(stride);
+  for (int k = 0; k < m; ++k) {
+    int piv = k;
+    for (int r = k + 1; r < m; ++r)
+      if (std::fabs(A[std::size_t(r) * S + k]) > std::fabs(A[std::size_t(piv) * S + k])) piv = r;
+    if (!(std::fabs(A[std::size_t(piv) * S + k]) > min_pivot)) return false;
+    if (piv != k) {
+      std::swap_ranges(A + std::size_t(k) * S + k, A + std::size_t(k) * S + m, A + std::size_t(piv) * S + k);
+      std::swap(b[k], b[piv]);
+    }
+    const double* rk = A + std::size_t(k) * S;
+    const double inv = 1.0 / rk[k];
+    for (int r = k + 1; r < m; ++r) {
+      double* rr = A + std::size_t(r) * S;
+      const double f = rr[k] * inv;
+      if (f == 0.0) continue;
+      for (int c = k + 1; c < m; ++c) rr[c] -= f * rk[c];
+      b[r] -= f * b[k];
+    }
+  }
+  for (int k = m - 1; k >= 0; --k) {
+    const double* rk = A + std::size_t(k) * S;
+    double s = b[k];
+    for (int c = k + 1; c < m; ++c) s -= rk[c] * b[c];
+    b[k] = s / rk[k];
+  }
+  return true;
+}
+
+// Solves A x = b in place for a symmetric positive definite A (the Delassus matrix of sticking
+// and separating ends) by Cholesky's factorisation (the lower triangle is used and overwritten).
+bool cholesky_solve(double* __restrict A, double* __restrict b, int m, int stride, double min_pivot) {
+  const std::size_t S = std::size_t(stride);
+  for (int j = 0; j < m; ++j) {
+    double* rj = A + std::size_t(j) * S;
+    double d = rj[j];
+    for (int k = 0; k < j; ++k) d -= rj[k] * rj[k];
+    if (!(d > min_pivot)) return false;
+    const double l = std::sqrt(d), inv = 1.0 / l;
+    rj[j] = l;
+    for (int i = j + 1; i < m; ++i) {
+      double* ri = A + std::size_t(i) * S;
+      double s = ri[j];
+      for (int k = 0; k < j; ++k) s -= ri[k] * rj[k];
+      ri[j] = s * inv;
+    }
+  }
+  for (int i = 0; i < m; ++i) {
+    const double* ri = A + std::size_t(i) * S;
+    double s = b[i];
+    for (int k = 0; k < i; ++k) s -= ri[k] * b[k];
+    b[i] = s / ri[i];
+  }
+  for (int i = m - 1; i >= 0; --i) {
+    double s = b[i];
+    for (int k = i + 1; k < m; ++k) s -= A[std::size_t(k) * S + i] * b[k];
+    b[i] = s / A[std::size_t(i) * S + i];
+  }
+  return true;
+}
+
+inline double dot3(const double* a, const double* b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 }  // namespace
 
 MoreauJean::MoreauJean(const Assembly& a, const GroundMotion& g, const MoreauJeanOptions& o)
-    : asm_(a), ground_(g), forced_(!g.is_zero()), o_(o), nb_(int(a.blocks.size())), ni_(int(a.interfaces.size())),
+    : asm_(a),
+      ground_(g),
+      forced_(!g.is_zero()),
+      o_(o),
+      nb_(int(a.blocks.size())),
+      ni_(int(a.interfaces.size())),
+      m_cap_(4 * int(a.interfaces.size())),
       sweeps_(0) {
   double min_size = INFINITY;
   for (const AssemblyBlock& k : a.blocks) min_size = std::fmin(min_size, std::fmin(k.width, k.height));
@@ -59,19 +144,21 @@ MoreauJean::MoreauJean(const Assembly& a, const GroundMotion& g, const MoreauJea
     minv_[3 * b + 2] = 1.0 / a.blocks[b].inertia();
   }
   const int np = 2 * ni_, n = 3 * nb_;
+  poses_.resize(nb_);
+  rot_.resize(nb_);
+  lower_face_.resize(ni_);
+  upper_face_.resize(ni_);
   qm_.resize(n);
   vfree_.resize(n);
   vnew_.resize(n);
   dv_.resize(n);
-  rows_.resize(std::size_t(2 * np) * n);
-  W_.resize(std::size_t(2 * np) * (2 * np));
-  z_.resize(4 * np);
-  bn_.resize(np);
-  bt_.resize(np);
-  mu_.resize(np);
-  pn_.resize(np);
-  pt_.resize(np);
-  active_.resize(np);
+  W_.resize(std::size_t(m_cap_) * std::size_t(m_cap_));
+  A_.resize(std::size_t(m_cap_) * std::size_t(m_cap_));
+  rhs_.resize(m_cap_);
+  for (auto* x : {&bn_, &bt_, &mu_, &mu_k_, &pn_, &pt_, &un_shift_}) x->resize(np);
+  for (auto* x : {&ub_, &lb_, &active_, &col_n_, &col_t_}) x->resize(np);
+  for (auto* x : {&ju_, &jl_, &mju_, &mjl_}) x->resize(np);
+  cls_.resize(np);
   ends_.resize(np);
 }
 
@@ -128,6 +215,44 @@ double MoreauJean::base_position_of(const std::vector<double>& q, int i) const {
   return base_position(lf, uf);
 }
 
+void MoreauJean::measure_interfaces(const std::vector<double>& q, std::vector<double>& ov,
+                                    std::vector<double>& base) const {
+  std::vector<BodyRotation>& rot = rot_;
+  for (int b = 0; b < nb_; ++b) rot[b] = BodyRotation::of(q[3 * b + 2]);
+  auto pose_of = [&](int b) {
+    BodyPose p;
+    if (b < 0) return p;
+    p.x = q[3 * b];
+    p.y = q[3 * b + 1];
+    p.theta = q[3 * b + 2];
+    p.q = rot[b];
+    return p;
+  };
+  for (int i = 0; i < ni_; ++i) {
+    const AssemblyInterface& f = asm_.interfaces[i];
+    const Face uf = base_face(pose_of(f.upper), asm_.blocks[f.upper].width, asm_.blocks[f.upper].height);
+    const Face lf = f.lower < 0 ? ground_face()
+                                : top_face(pose_of(f.lower), asm_.blocks[f.lower].width, asm_.blocks[f.lower].height);
+    ov[i] = overlap(lf, uf);
+    base[i] = base_position(lf, uf);
+  }
+}
+
+void MoreauJean::velocity_change(int nc, std::vector<double>& dv) const {
+  std::fill(dv.begin(), dv.end(), 0.0);
+  for (int i = 0; i < nc; ++i) {
+    const double pn = pn_[i], pt = pt_[i];
+    double* du = &dv[3 * ub_[i]];
+    const auto& a = mju_[i];
+    for (int k = 0; k < 3; ++k) du[k] += a[k] * pn + a[3 + k] * pt;
+    if (lb_[i] >= 0) {
+      double* dl = &dv[3 * lb_[i]];
+      const auto& l = mjl_[i];
+      for (int k = 0; k < 3; ++k) dl[k] += l[k] * pn + l[3 + k] * pt;
+    }
+  }
+}
+
 bool MoreauJean::step(double t, std::vector<double>& q, std::vector<double>& v) {
   const double h = o_.h;
   const int n = 3 * nb_, np = 2 * ni_;
@@ -139,135 +264,132 @@ bool MoreauJean::step(double t, std::vector<double>& q, std::vector<double>& v) 
     vfree_[3 * b + 1] = v[3 * b + 1] - h * asm_.g * (1.0 + a[1]);
     vfree_[3 * b + 2] = v[3 * b + 2];
   }
-  // Active contact ends at the midpoint positions and their Jacobian rows (normal, tangent) of
-  // the relative velocity of the upper block's side against the lower's.
+  // Poses and faces at the midpoint positions: one sincos per block.
+  for (int b = 0; b < nb_; ++b) poses_[b] = pose(qm_, v, b);
+  const BodyPose ground{};
+  auto pose_of = [&](int b) -> const BodyPose& { return b < 0 ? ground : poses_[b]; };
+  for (int i = 0; i < ni_; ++i) {
+    const AssemblyInterface& f = asm_.interfaces[i];
+    upper_face_[i] = base_face(poses_[f.upper], asm_.blocks[f.upper].width, asm_.blocks[f.upper].height);
+    lower_face_[i] = f.lower < 0 ? ground_face()
+                                 : top_face(poses_[f.lower], asm_.blocks[f.lower].width, asm_.blocks[f.lower].height);
+  }
+  // Active contact ends and their Jacobian rows (normal, tangent) of the relative velocity of the
+  // upper block's side against the lower's, per block.
   int nc = 0;
+  bool same_ends = true;
   for (int p = 0; p < np; ++p) {
     const AssemblyInterface& f = asm_.interfaces[p / 2];
-    const BodyPose up = pose(qm_, v, f.upper), lp = pose(qm_, v, f.lower);
-    const Face uf = base_face(up, asm_.blocks[f.upper].width, asm_.blocks[f.upper].height);
-    const Face lf = f.lower < 0 ? ground_face() : top_face(lp, asm_.blocks[f.lower].width, asm_.blocks[f.lower].height);
+    const Face& uf = upper_face_[p / 2];
+    const Face& lf = lower_face_[p / 2];
     End& e = ends_[p];
+    // What the end did in the previous step: its friction cone and the first guess.
+    const bool was_pushing = e.active && e.pushing;
+    const int was_slip = was_pushing && e.slipping ? e.slip : 0;
     e.owner = owner_margin(lf, uf, p % 2, 0) >= 0.0 ? 0 : 1;
-    e.c = contact_point(lp, lf, up, uf, p % 2, e.owner);
+    e.c = contact_point(pose_of(f.lower), lf, pose_of(f.upper), uf, p % 2, e.owner);
+    const bool was_active = e.active;
     e.active = e.c.gap <= touch_;
+    same_ends = same_ends && was_active == e.active;
     e.pushing = e.slipping = false;
+    e.slip = 0;
     e.pn = e.pt = 0;
     if (!e.active) continue;
-    active_[nc] = p;
+    const int i = nc++;
+    active_[i] = p;
+    ub_[i] = f.upper;
+    lb_[i] = f.lower;
     // Direction of the normal impulse on the upper block (away from the lower one).
     const Vec2 nu = e.c.corner_of_upper ? e.c.n : -1.0 * e.c.n;
-    double* rn = &rows_[std::size_t(2 * nc) * n];
-    double* rt = &rows_[std::size_t(2 * nc + 1) * n];
-    std::fill(rn, rn + 2 * n, 0.0);
-    auto add = [&](int b, double s) {
-      if (b < 0) return;
-      const Vec2 r = e.c.P - Vec2{qm_[3 * b], qm_[3 * b + 1]};
-      rn[3 * b] += s * nu.x;
-      rn[3 * b + 1] += s * nu.y;
-      rn[3 * b + 2] += s * cross(r, nu);
-      rt[3 * b] += s * e.c.t.x;
-      rt[3 * b + 1] += s * e.c.t.y;
-      rt[3 * b + 2] += s * cross(r, e.c.t);
+    const Vec2 ru = e.c.P - Vec2{qm_[3 * f.upper], qm_[3 * f.upper + 1]};
+    ju_[i] = {nu.x, nu.y, cross(ru, nu), e.c.t.x, e.c.t.y, cross(ru, e.c.t)};
+    const double* mu = &minv_[3 * f.upper];
+    for (int k = 0; k < 6; ++k) mju_[i][k] = mu[k % 3] * ju_[i][k];
+    if (f.lower >= 0) {
+      const Vec2 rl = e.c.P - Vec2{qm_[3 * f.lower], qm_[3 * f.lower + 1]};
+      jl_[i] = {-nu.x, -nu.y, -cross(rl, nu), -e.c.t.x, -e.c.t.y, -cross(rl, e.c.t)};
+      const double* ml = &minv_[3 * f.lower];
+      for (int k = 0; k < 6; ++k) mjl_[i][k] = ml[k % 3] * jl_[i][k];
+    }
+    auto row_dot = [&](int w, const std::vector<double>& x) {
+      double s = dot3(&ju_[i][3 * w], &x[3 * f.upper]);
+      if (f.lower >= 0) s += dot3(&jl_[i][3 * w], &x[3 * f.lower]);
+      return s;
     };
-    add(f.upper, 1.0);
-    add(f.lower, -1.0);
-    ++nc;
+    const ContactLaw& law = f.law;
+    e.un_before = row_dot(0, v);
+    // u_N+ + e u_N- >= 0, relaxed by the gap an end still has above its face (see below).
+    un_shift_[i] = law.restitution * std::min(e.un_before, 0.0) + 2.0 * std::max(e.c.gap, 0.0) / h;
+    bn_[i] = row_dot(0, vfree_) + un_shift_[i];
+    bt_[i] = row_dot(1, vfree_);
+    // Static friction for an end that was not slipping, kinetic for one that was (the static
+    // coefficient drops to the kinetic one in solve() if the end slips all the same).
+    mu_k_[i] = std::min(law.mu_k, o_.max_friction);
+    mu_[i] = was_slip != 0 ? mu_k_[i] : std::max(mu_k_[i], std::min(law.mu_s, o_.max_friction));
+    // Warm start from the end's impulses and pattern of the previous step.
+    pn_[i] = e.pn_prev;
+    pt_[i] = e.pt_prev;
+    cls_[i] = was_slip > 0 ? kSlipPos : was_slip < 0 ? kSlipNeg : (was_pushing || bn_[i] < 0.0) ? kStick : kSeparate;
   }
-  auto dotrow = [&](int r, const std::vector<double>& x) {
-    const double* row = &rows_[std::size_t(r) * n];
-    double s = 0;
-    for (int k = 0; k < n; ++k) s += row[k] * x[k];
-    return s;
-  };
-  std::vector<double>& z = z_;
+  // The Delassus matrix W = H M^-1 H^T in closed form: 2 x 2 blocks of the ends sharing a block.
+  const std::size_t S = std::size_t(m_cap_);
+  double diag_max = 0;
+  for (int i = 0; i < nc; ++i)
+    for (int j = i; j < nc; ++j) {
+      double w[4] = {0, 0, 0, 0};  // nn, nt, tn, tt
+      auto acc = [&](const std::array<double, 6>& A, const std::array<double, 6>& B) {
+        w[0] += dot3(&A[0], &B[0]);
+        w[1] += dot3(&A[0], &B[3]);
+        w[2] += dot3(&A[3], &B[0]);
+        w[3] += dot3(&A[3], &B[3]);
+      };
+      if (ub_[i] == ub_[j]) acc(mju_[i], ju_[j]);
+      if (lb_[j] >= 0 && ub_[i] == lb_[j]) acc(mju_[i], jl_[j]);
+      if (lb_[i] >= 0) {
+        if (lb_[i] == ub_[j]) acc(mjl_[i], ju_[j]);
+        if (lb_[j] >= 0 && lb_[i] == lb_[j]) acc(mjl_[i], jl_[j]);
+      }
+      const std::size_t ni = 2 * std::size_t(i), nj = 2 * std::size_t(j);
+      W_[ni * S + nj] = W_[nj * S + ni] = w[0];
+      W_[ni * S + nj + 1] = W_[(nj + 1) * S + ni] = w[1];
+      W_[(ni + 1) * S + nj] = W_[nj * S + ni + 1] = w[2];
+      W_[(ni + 1) * S + nj + 1] = W_[(nj + 1) * S + ni + 1] = w[3];
+      if (i == j) diag_max = std::max({diag_max, w[0], w[3]});
+    }
+  // An optional compliance on the Delassus diagonal (0 by default).
+  if (o_.regularisation > 0)
+    for (int k = 0; k < 2 * nc; ++k) W_[std::size_t(k) * (S + 1)] += o_.regularisation * diag_max;
+  ++stats_.steps;
+  sweeps_ = 0;
   if (nc > 0) {
-    const int m = 2 * nc;
-    double diag_max = 0;
-    for (int i = 0; i < m; ++i)
-      for (int j = 0; j < m; ++j) {
-        double s = 0;
-        const double* ri = &rows_[std::size_t(i) * n];
-        const double* rj = &rows_[std::size_t(j) * n];
-        for (int k = 0; k < n; ++k) s += ri[k] * minv_[k] * rj[k];
-        W_[std::size_t(i) * m + j] = s;
-        if (i == j) diag_max = std::fmax(diag_max, s);
-      }
-    // An optional compliance on the Delassus diagonal (0 by default).
-    for (int i = 0; i < m; ++i) W_[std::size_t(i) * m + i] += o_.regularisation * diag_max;
-    // Nonsmooth Gauss-Seidel (Moreau; Jean): each end's 2 x 2 Coulomb problem solved exactly
-    // with the others' impulses fixed, sweeps repeated until no end's relative velocity changes
-    // by more than kSolveTolerance of the problem's velocity scale. The velocities are what is
-    // unique: the impulses of redundant contacts (two ends per face of a resting assembly,
-    // statically indeterminate) are not, and pivoting methods lose accuracy on them.
-    for (int i = 0; i < nc; ++i) {
-      End& e = ends_[active_[i]];
-      const ContactLaw& law = asm_.interfaces[active_[i] / 2].law;
-      e.un_before = dotrow(2 * i, v);
-      // u_N+ + e u_N- >= 0, relaxed by the gap an end still has above its face (see below).
-      bn_[i] = dotrow(2 * i, vfree_) + law.restitution * std::fmin(e.un_before, 0.0) + 2.0 * std::fmax(e.c.gap, 0.0) / h;
-      bt_[i] = dotrow(2 * i + 1, vfree_);
-      mu_[i] = std::fmin(law.mu_k, o_.max_friction);
-      // Warm start from the end's impulses of the previous step.
-      pn_[i] = e.pn_prev;
-      pt_[i] = e.pt_prev;
-    }
-    auto Wx = [&](int i, int j) { return W_[std::size_t(i) * m + j]; };
     double v_scale = asm_.g * h;
-    for (int i = 0; i < nc; ++i) v_scale = std::fmax(v_scale, std::fmax(std::fabs(bn_[i]), std::fabs(bt_[i])));
-    std::fill(dv_.begin(), dv_.end(), 0.0);
-    bool converged = false;
-    for (int sweep = 0; sweep < o_.max_sweeps && !converged; ++sweep) {
-      double change = 0;
-      for (int i = 0; i < nc; ++i) {
-        double bn = bn_[i], bt = bt_[i];
-        for (int j = 0; j < nc; ++j) {
-          if (j == i) continue;
-          bn += Wx(2 * i, 2 * j) * pn_[j] + Wx(2 * i, 2 * j + 1) * pt_[j];
-          bt += Wx(2 * i + 1, 2 * j) * pn_[j] + Wx(2 * i + 1, 2 * j + 1) * pt_[j];
-        }
-        double pn, pt;
-        solve_local(Wx(2 * i, 2 * i), Wx(2 * i, 2 * i + 1), Wx(2 * i + 1, 2 * i + 1), bn, bt, mu_[i], pn, pt);
-        pn_[i] = pn;
-        pt_[i] = pt;
-      }
-      // The blocks' velocity change due to the impulses: unique even where the impulses are not.
-      for (int k = 0; k < n; ++k) {
-        double dv = 0;
-        for (int i = 0; i < nc; ++i)
-          dv += minv_[k] * (rows_[std::size_t(2 * i) * n + k] * pn_[i] + rows_[std::size_t(2 * i + 1) * n + k] * pt_[i]);
-        change = std::fmax(change, std::fabs(dv - dv_[k]));
-        dv_[k] = dv;
-      }
-      converged = sweep > 0 && change <= kSolveTolerance * v_scale;
-      sweeps_ = sweep + 1;
-    }
-    if (!converged) return false;
-    for (int i = 0; i < nc; ++i) {
-      z[i] = pn_[i];
-      z[nc + i] = pt_[i];
-    }
+    for (int i = 0; i < nc; ++i) v_scale = std::max({v_scale, std::fabs(bn_[i]), std::fabs(bt_[i])});
+    slip_velocity_ = kSlipVelocity * v_scale;
+    if (!solve(nc, v_scale, same_ends)) return false;
+  } else {
+    ++stats_.empty;
   }
   // v+ = v_free + M^-1 H^T P.
-  std::vector<double>& vnew = vnew_;
-  for (int k = 0; k < n; ++k) vnew[k] = vfree_[k];
-  for (int i = 0; i < nc; ++i) {
-    const double pn = z[i], pt = z[nc + i];
-    const double* rn = &rows_[std::size_t(2 * i) * n];
-    const double* rt = &rows_[std::size_t(2 * i + 1) * n];
-    for (int k = 0; k < n; ++k) vnew[k] += minv_[k] * (rn[k] * pn + rt[k] * pt);
-  }
+  velocity_change(nc, dv_);
+  for (int k = 0; k < n; ++k) vnew_[k] = vfree_[k] + dv_[k];
   // Works of the step (each impulse's P (u+ + u-)/2) and of the ground's inertial forces.
   work_normal = work_tangential = 0;
   for (int i = 0; i < nc; ++i) {
     End& e = ends_[active_[i]];
-    e.pn = z[i];
-    e.pt = z[nc + i];
-    e.un_after = dotrow(2 * i, vnew);
-    e.ut_after = dotrow(2 * i + 1, vnew);
-    const double ut_before = dotrow(2 * i + 1, v);
+    auto row_dot = [&](int w, const std::vector<double>& x) {
+      double s = dot3(&ju_[i][3 * w], &x[3 * ub_[i]]);
+      if (lb_[i] >= 0) s += dot3(&jl_[i][3 * w], &x[3 * lb_[i]]);
+      return s;
+    };
+    e.pn = pn_[i];
+    e.pt = pt_[i];
+    e.un_after = row_dot(0, vnew_);
+    e.ut_after = row_dot(1, vnew_);
+    const double ut_before = row_dot(1, v);
     e.pushing = e.pn > 0.0;
-    e.slipping = e.pushing && std::fabs(e.pt) >= (1.0 - 1e-9) * mu_[i] * e.pn && std::fabs(e.ut_after) > 0.0;
+    // Slipping is a velocity (unique where the redundant ends' impulses are not).
+    e.slipping = e.pushing && std::fabs(e.ut_after) > slip_velocity_;
+    e.slip = !e.slipping ? 0 : e.ut_after > 0 ? 1 : -1;
     work_normal += e.pn * 0.5 * (e.un_after + e.un_before);
     work_tangential += e.pt * 0.5 * (e.ut_after + ut_before);
   }
@@ -278,12 +400,186 @@ bool MoreauJean::step(double t, std::vector<double>& q, std::vector<double>& v) 
   work_ground = 0;
   for (int b = 0; b < nb_; ++b)
     work_ground -= asm_.blocks[b].mass * asm_.g * h *
-                   (a[0] * 0.5 * (v[3 * b] + vnew[3 * b]) + a[1] * 0.5 * (v[3 * b + 1] + vnew[3 * b + 1]));
+                   (a[0] * 0.5 * (v[3 * b] + vnew_[3 * b]) + a[1] * 0.5 * (v[3 * b + 1] + vnew_[3 * b + 1]));
   for (int k = 0; k < n; ++k) {
-    q[k] = qm_[k] + 0.5 * h * vnew[k];
-    v[k] = vnew[k];
+    q[k] = qm_[k] + 0.5 * h * vnew_[k];
+    v[k] = vnew_[k];
   }
   return true;
+}
+
+bool MoreauJean::solve(int nc, double v_scale, bool same_ends) {
+  // A degenerate problem (a resting face's redundant ends) usually stays so while the same ends
+  // are active: Gauss-Seidel directly for a while.
+  if (!same_ends)
+    skip_direct_ = 0;
+  else if (skip_direct_ > 0)
+    --skip_direct_;
+  // Each pass solves a Coulomb problem with one coefficient per end; an end that slips with its
+  // static coefficient gets the kinetic one and the problem is solved again (at most once per
+  // end: the coefficients only drop).
+  for (int pass = 0; pass <= nc; ++pass) {
+    if (!solve_coulomb(nc, v_scale)) return false;
+    bool dropped = false;
+    velocity_change(nc, dv_);
+    for (int k = 0; k < 3 * nb_; ++k) vnew_[k] = vfree_[k] + dv_[k];
+    for (int i = 0; i < nc; ++i) {
+      if (!(mu_[i] > mu_k_[i]) || !(pn_[i] > 0.0)) continue;
+      double ut = dot3(&ju_[i][3], &vnew_[3 * ub_[i]]);
+      if (lb_[i] >= 0) ut += dot3(&jl_[i][3], &vnew_[3 * lb_[i]]);
+      if (std::fabs(ut) > slip_velocity_) {
+        mu_[i] = mu_k_[i];
+        dropped = true;
+      }
+    }
+    if (!dropped) return true;
+    ++stats_.static_drops;
+  }
+  return true;
+}
+
+bool MoreauJean::solve_coulomb(int nc, double v_scale) {
+  if (o_.direct && skip_direct_ == 0) {
+    const DirectOutcome d = solve_direct(nc, v_scale);
+    if (d == kSolved) {
+      ++stats_.direct;
+      return true;
+    }
+    if (d == kDegenerate) skip_direct_ = kSkipAfterDegenerate;
+  }
+  ++stats_.gauss_seidel;
+  return solve_gauss_seidel(nc, v_scale);
+}
+
+// Active-set iteration: for the guessed pattern (separate, stick, slip +/-) the impulses solve
+// one linear system (u_N = 0 for every end in contact, u_T = 0 for every sticking end, P_T =
+// -s mu_k P_N for every slipping one); then every condition is checked (P_N >= 0, the cone,
+// the slip direction, u_N >= 0 where separate) and the violated ones change their end's guess.
+MoreauJean::DirectOutcome MoreauJean::solve_direct(int nc, double v_scale) {
+  const double tol = kSolveTolerance * v_scale;
+  const std::size_t S = std::size_t(m_cap_);
+  double diag_max = 0;
+  for (int k = 0; k < 2 * nc; ++k) diag_max = std::max(diag_max, W_[std::size_t(k) * (S + 1)]);
+  for (int iter = 0; iter < kMaxActiveSetIterations; ++iter) {
+    ++stats_.active_set_iterations;
+    int m = 0;
+    for (int i = 0; i < nc; ++i) col_n_[i] = cls_[i] != kSeparate ? m++ : -1;
+    for (int i = 0; i < nc; ++i) col_t_[i] = cls_[i] == kStick ? m++ : -1;
+    // Equation rows in the same order as the unknowns: u_N of ends in contact, u_T of sticking ones.
+    auto coeff_row = [&](int wrow, double* out) {
+      for (int j = 0; j < nc; ++j) {
+        if (col_n_[j] < 0) continue;
+        double c = W(wrow, 2 * j);
+        if (cls_[j] == kSlipPos || cls_[j] == kSlipNeg)
+          c -= (cls_[j] == kSlipPos ? 1.0 : -1.0) * mu_[j] * W(wrow, 2 * j + 1);
+        out[col_n_[j]] = c;
+        if (col_t_[j] >= 0) out[col_t_[j]] = W(wrow, 2 * j + 1);
+      }
+    };
+    for (int i = 0; i < nc; ++i) {
+      if (col_n_[i] >= 0) {
+        coeff_row(2 * i, &A_[std::size_t(col_n_[i]) * S]);
+        rhs_[col_n_[i]] = -bn_[i];
+      }
+      if (col_t_[i] >= 0) {
+        coeff_row(2 * i + 1, &A_[std::size_t(col_t_[i]) * S]);
+        rhs_[col_t_[i]] = -bt_[i];
+      }
+    }
+    // Without slipping ends the system is the Delassus matrix's restriction (symmetric positive
+    // definite unless degenerate).
+    bool any_slip = false;
+    for (int i = 0; i < nc; ++i) any_slip = any_slip || cls_[i] == kSlipPos || cls_[i] == kSlipNeg;
+    if (!(any_slip ? gauss_solve(A_.data(), rhs_.data(), m, m_cap_, kSingularPivot * diag_max)
+                   : cholesky_solve(A_.data(), rhs_.data(), m, m_cap_, kSingularPivot * diag_max)))
+      return iter == 0 ? kDegenerate : kFailed;
+    for (int i = 0; i < nc; ++i) {
+      pn_[i] = col_n_[i] >= 0 ? rhs_[col_n_[i]] : 0.0;
+      pt_[i] = col_t_[i] >= 0        ? rhs_[col_t_[i]]
+               : cls_[i] == kSlipPos ? -mu_[i] * pn_[i]
+               : cls_[i] == kSlipNeg ? mu_[i] * pn_[i]
+                                     : 0.0;
+    }
+    // Check every condition; the violated ones change their end's guess. The relative
+    // velocities after the step from the blocks' (sparse: two blocks per end).
+    velocity_change(nc, dv_);
+    for (int k = 0; k < 3 * nb_; ++k) vnew_[k] = vfree_[k] + dv_[k];
+    bool ok = true, accurate = true;
+    for (int i = 0; i < nc; ++i) {
+      double un = dot3(&ju_[i][0], &vnew_[3 * ub_[i]]), ut = dot3(&ju_[i][3], &vnew_[3 * ub_[i]]);
+      if (lb_[i] >= 0) {
+        un += dot3(&jl_[i][0], &vnew_[3 * lb_[i]]);
+        ut += dot3(&jl_[i][3], &vnew_[3 * lb_[i]]);
+      }
+      un += un_shift_[i];  // Newton's law and the gap allowance (see step())
+      switch (cls_[i]) {
+        case kSeparate:
+          if (un < -tol) cls_[i] = kStick, ok = false;
+          break;
+        case kStick:
+          accurate = accurate && std::fabs(un) <= tol && std::fabs(ut) <= tol;
+          if (pn_[i] < 0.0) {
+            cls_[i] = kSeparate, ok = false;
+          } else if (std::fabs(pt_[i]) > mu_[i] * pn_[i]) {
+            // Outside the cone: slip against the impulse's tendency.
+            cls_[i] = pt_[i] > 0 ? kSlipNeg : kSlipPos;
+            ok = false;
+          }
+          break;
+        case kSlipPos:
+        case kSlipNeg: {
+          accurate = accurate && std::fabs(un) <= tol;
+          const double s = cls_[i] == kSlipPos ? 1.0 : -1.0;
+          if (pn_[i] < 0.0) {
+            cls_[i] = kSeparate, ok = false;
+          } else if (s * ut < -tol) {
+            cls_[i] = kStick, ok = false;
+          }
+          break;
+        }
+      }
+    }
+    if (ok) return accurate ? kSolved : kFailed;
+  }
+  return kFailed;
+}
+
+// Nonsmooth Gauss-Seidel (Moreau; Jean): each end's 2 x 2 Coulomb problem solved exactly with
+// the others' impulses fixed, sweeps repeated until no block's velocity change from the
+// impulses moves by more than kSolveTolerance of the problem's velocity scale. The velocities
+// are what is unique: the impulses of redundant contacts (two ends per face of a resting
+// assembly, statically indeterminate) are not, and pivoting methods lose accuracy on them.
+bool MoreauJean::solve_gauss_seidel(int nc, double v_scale) {
+  const int n = 3 * nb_;
+  for (int i = 0; i < nc; ++i) {
+    pn_[i] = ends_[active_[i]].pn_prev;
+    pt_[i] = ends_[active_[i]].pt_prev;
+  }
+  std::fill(dv_.begin(), dv_.end(), 0.0);
+  std::vector<double>& dv_new = vnew_;  // scratch until the step's end
+  bool converged = false;
+  for (int sweep = 0; sweep < o_.max_sweeps && !converged; ++sweep) {
+    for (int i = 0; i < nc; ++i) {
+      double bn = bn_[i], bt = bt_[i];
+      for (int j = 0; j < nc; ++j) {
+        if (j == i) continue;
+        bn += W(2 * i, 2 * j) * pn_[j] + W(2 * i, 2 * j + 1) * pt_[j];
+        bt += W(2 * i + 1, 2 * j) * pn_[j] + W(2 * i + 1, 2 * j + 1) * pt_[j];
+      }
+      solve_local(W(2 * i, 2 * i), W(2 * i, 2 * i + 1), W(2 * i + 1, 2 * i + 1), bn, bt, mu_[i], pn_[i], pt_[i]);
+    }
+    // The blocks' velocity change due to the impulses: unique even where the impulses are not.
+    velocity_change(nc, dv_new);
+    double change = 0;
+    for (int k = 0; k < n; ++k) {
+      change = std::max(change, std::fabs(dv_new[k] - dv_[k]));
+      dv_[k] = dv_new[k];
+    }
+    converged = sweep > 0 && change <= kSolveTolerance * v_scale;
+    sweeps_ = sweep + 1;
+  }
+  stats_.sweeps += sweeps_;
+  return converged;
 }
 
 }  // namespace blockdyn

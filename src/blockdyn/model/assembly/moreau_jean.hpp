@@ -1,21 +1,37 @@
 // SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The "rigid" contact law for assemblies (spec block-assemblies.md; seed 001): unilateral,
-// non-penetrating contacts with Coulomb friction and Newton's impact law, integrated by Moreau and
-// Jean's nonsmooth time-stepping scheme. Each step of length h:
+// non-penetrating contacts with Coulomb friction (static and kinetic) and Newton's impact law,
+// integrated by Moreau and Jean's nonsmooth time-stepping scheme. Each step of length h:
 //   q_m = q + h/2 v                        (midpoint positions)
-//   the contact ends with gap(q_m) <= 0 are active (contact_point.hpp, the same ends as the
+//   the contact ends with gap(q_m) <= g h^2 are active (contact_point.hpp, the same ends as the
 //   deformable law);
 //   v+ = v + h M^-1 f(t + h/2) + M^-1 H^T P, with, per active end, the impulses (P_N, P_T) solving
 //     u_N+ + e u_N- >= 0  _|_  P_N >= 0                  (Newton, u_N- < 0 only)
-//     |P_T| <= mu P_N, P_T opposing u_T+ when it is not 0  (Coulomb at the impulse level)
-//   solved by nonsmooth Gauss-Seidel: each end's 2 x 2 Coulomb problem exactly, the others
-//   fixed, sweeps until the impulses change by less than 1e-12 of the largest;
+//     Coulomb at the impulse level: stick (u_T+ = 0) with |P_T| <= mu P_N, or slip with
+//     P_T = -mu P_N sign(u_T+), mu the end's static or kinetic coefficient (below);
 //   q+ = q_m + h/2 v+.
-// Events (contacts opening and closing, impacts, stick and slip) are known to within one step.
+// Static and kinetic friction: an end that was not slipping at the end of the previous step
+// (sticking, or just coming into contact) has the static coefficient mu_s, an end that was
+// slipping the kinetic one mu_k. The step's problem is solved with these; an end that slips all
+// the same (static friction exceeded) gets mu_k and the problem is solved again (the
+// coefficients only drop, so this ends after at most one pass per end). An end slips when its
+// tangential velocity after the step is not zero (beyond 1e-9 of the problem's velocity scale):
+// a velocity, unique even where the impulses of a face's two ends are not, so a face slides or
+// sticks as a whole. A sliding end sticks again once the kinetic impulse can stop it, as the
+// deformable law's slip ends where the slip rate vanishes; then mu_s holds it.
+// The contact problem of a step is solved exactly: the previous step's stick / slip / separation
+// pattern is the first guess of an active-set iteration (each guess one small dense linear solve,
+// checked against every complementarity and cone condition; a violated condition changes that
+// end's guess); where the problem is degenerate (the redundant ends of a resting face: impulses
+// not unique) or the guesses cycle, nonsmooth Gauss-Seidel (each end's 2 x 2 Coulomb problem
+// exactly, sweeps until the blocks' velocities change by less than 1e-12 of the problem's scale)
+// from the same warm start. Events (contacts opening and closing, impacts, stick and slip) are
+// known to within one step.
 #include <array>
-#include <utility>
+#include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "blockdyn/excitation/ground_motion.hpp"
@@ -29,17 +45,23 @@ struct MoreauJeanOptions {
   double max_friction = 1e3;     // friction coefficients above this (90 degrees) are capped here
   double regularisation = 0.0;   // relative compliance added to the Delassus diagonal
   int max_sweeps = 20000;        // Gauss-Seidel sweeps per step before the step is refused
+  bool direct = true;            // active-set direct solve first (false: Gauss-Seidel only)
 };
 
 class MoreauJean {
  public:
   struct End {
     bool active = false, pushing = false, slipping = false;
+    int slip = 0;  // slip direction (+1 / -1) when slipping: sign of the tangential velocity after the step
     int owner = 0;
     FaceContact c;
     double pn = 0, pt = 0;        // impulses of the last step on the upper block (N s)
     double un_before = 0, un_after = 0, ut_after = 0;  // normal and tangential relative velocities
     double pn_prev = 0, pt_prev = 0;                   // the previous step's impulses (warm start)
+  };
+  // How the contact problems were solved (counts over the run).
+  struct SolveStats {
+    long steps = 0, empty = 0, direct = 0, gauss_seidel = 0, sweeps = 0, active_set_iterations = 0, static_drops = 0;
   };
 
   MoreauJean(const Assembly& a, const GroundMotion& g, const MoreauJeanOptions& o);
@@ -53,7 +75,8 @@ class MoreauJean {
   bool step(double t, std::vector<double>& q, std::vector<double>& v);
   const std::vector<End>& ends() const { return ends_; }
   double h() const { return o_.h; }
-  int sweeps() const { return sweeps_; }  // of the last step's contact problem
+  int sweeps() const { return sweeps_; }  // Gauss-Seidel sweeps of the last step (0: direct solve)
+  const SolveStats& solve_stats() const { return stats_; }
 
   // Works of the last step: of the ground's inertial forces, of the normal and of the
   // tangential contact impulses (each P . (u+ + u-) / 2: exact for an impulse).
@@ -64,23 +87,47 @@ class MoreauJean {
   double overlap_of(const std::vector<double>& q, int iface) const;
   // The upper base centre along the lower face (its change: the interface's relative sliding).
   double base_position_of(const std::vector<double>& q, int iface) const;
+  // Both for every interface at once (one sincos per block): overlap[i], base_position[i].
+  void measure_interfaces(const std::vector<double>& q, std::vector<double>& overlap,
+                          std::vector<double>& base_position) const;
   double rotation_limit(int b) const;
   std::array<double, 2> ground_acceleration(double t) const;
 
  private:
+  enum Class : std::uint8_t { kSeparate, kStick, kSlipPos, kSlipNeg };
   BodyPose pose(const std::vector<double>& q, const std::vector<double>& v, int b) const;
   std::pair<Face, Face> faces(const std::vector<double>& q, int iface) const;  // lower, upper
+  // The contact problem of the nc active ends (W_, bn_, bt_, mu_*): impulses into pn_, pt_ and
+  // the classes into cls_. False when Gauss-Seidel does not converge.
+  bool solve(int nc, double v_scale, bool same_ends);
+  bool solve_coulomb(int nc, double v_scale);
+  enum DirectOutcome { kSolved, kDegenerate, kFailed };
+  DirectOutcome solve_direct(int nc, double v_scale);
+  bool solve_gauss_seidel(int nc, double v_scale);
+  double W(int i, int j) const { return W_[std::size_t(i) * std::size_t(m_cap_) + std::size_t(j)]; }
+  // Velocity change of the blocks from the impulses (sparse: each end touches two blocks).
+  void velocity_change(int nc, std::vector<double>& dv) const;
   Assembly asm_;
   GroundMotion ground_;
   bool forced_;
   MoreauJeanOptions o_;
-  int nb_, ni_;
+  int nb_, ni_, m_cap_;
   std::vector<double> minv_;  // 3 per block
-  std::vector<double> qm_, vfree_, vnew_, dv_, rows_, W_, z_, bn_, bt_, mu_, pn_, pt_;
-  std::vector<int> active_;
+  std::vector<BodyPose> poses_;
+  mutable std::vector<BodyRotation> rot_;  // measure_interfaces' scratch
+  std::vector<Face> lower_face_, upper_face_;
+  // Per active end: the blocks (upper, lower; -1 the ground), the Jacobian rows (normal x, y,
+  // theta, then tangent) on each, and the same rows scaled by the inverse masses.
+  std::vector<int> ub_, lb_, active_;
+  std::vector<std::array<double, 6>> ju_, jl_, mju_, mjl_;
+  std::vector<double> qm_, vfree_, vnew_, dv_, W_, bn_, bt_, mu_, mu_k_, pn_, pt_, un_shift_;
+  std::vector<double> A_, rhs_;  // the active-set iteration's linear system
+  std::vector<int> col_n_, col_t_;
+  std::vector<Class> cls_;
   std::vector<End> ends_;
-  int sweeps_ = 0;
-  double touch_ = 0;
+  int sweeps_ = 0, skip_direct_ = 0;
+  double touch_ = 0, slip_velocity_ = 0;
+  SolveStats stats_;
 };
 
 }  // namespace blockdyn

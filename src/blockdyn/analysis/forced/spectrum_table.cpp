@@ -1,0 +1,57 @@
+// SPDX-License-Identifier: Apache-2.0
+#include "blockdyn/analysis/forced/spectrum_table.hpp"
+
+#include <stdexcept>
+
+namespace blockdyn {
+
+const std::vector<std::string>& spectrum_columns() {
+  static const std::vector<std::string> c{"duration",      "min_overturning_amplitude", "linearised_rect", "safe_islands",
+                                          "at_scan_floor", "islands",                   "runs",            "scan"};
+  return c;
+}
+
+void add_spectrum_cells(const SpectrumRow& r, std::optional<double> linearised_rect, RowBuilder& row) {
+  row.add(r.duration);
+  if (r.min_overturning_amplitude) row.add(*r.min_overturning_amplitude);
+  else row.empty();
+  if (linearised_rect) row.add(*linearised_rect);
+  else row.empty();
+  row.add(r.safe_islands.size());
+  row.add(static_cast<long long>(r.at_scan_floor));
+  std::string isl;
+  for (const SpectrumIsland& i : r.safe_islands) {
+    if (!isl.empty()) isl.push_back(';');
+    isl.append(format_double(i.from)).push_back(':');
+    isl.append(format_double(i.to));
+  }
+  row.add(isl);
+  row.add(static_cast<long long>(r.runs));
+  std::string scan;
+  for (char c : r.scan) scan += c ? '1' : '0';
+  row.add(scan);
+}
+
+SpectrumRow spectrum_row_from(const Table& t, const TableRow& r) {
+  auto cell = [&](const char* name) -> const std::string& { return r.cells[t.column(name)]; };
+  SpectrumRow s;
+  s.duration = cell_double(cell("duration"));
+  s.min_overturning_amplitude = cell_optional_double(cell("min_overturning_amplitude"));
+  s.at_scan_floor = cell_integer(cell("at_scan_floor")) != 0;
+  const std::string& isl = cell("islands");
+  std::size_t pos = 0;
+  while (pos < isl.size()) {
+    std::size_t end = isl.find(';', pos);
+    if (end == std::string::npos) end = isl.size();
+    const std::string one = isl.substr(pos, end - pos);
+    const std::size_t colon = one.find(':');
+    if (colon == std::string::npos) throw std::runtime_error("table: island '" + one + "' is not from:to");
+    s.safe_islands.push_back({cell_double(one.substr(0, colon)), cell_double(one.substr(colon + 1))});
+    pos = end + 1;
+  }
+  s.runs = long(cell_integer(cell("runs")));
+  for (char c : cell("scan")) s.scan.push_back(c == '1' ? 1 : 0);
+  return s;
+}
+
+}  // namespace blockdyn

@@ -1,0 +1,21 @@
+// SPDX-License-Identifier: Apache-2.0
+#pragma once
+// A survival point as cells of a runner table (grid_table.hpp) and back: survival and
+// response-curve write their points with add_survival_cells and rebuild them from the finished
+// table, so their JSON and figures are the same whatever computed the rows. A field added to
+// SurvivalPoint (e.g. the dominant cycle) gets a column here.
+#include <string>
+#include <vector>
+
+#include "blockdyn/analysis/forced/survival_map.hpp"
+#include "blockdyn/analysis/sweep/grid_table.hpp"
+
+namespace blockdyn {
+
+// beta, omega, motion, collapse_mode, t_failure, t_star_class, max_abs_rotation, max_sliding, cycle
+const std::vector<std::string>& survival_columns();
+void add_survival_cells(const SurvivalPoint& p, RowBuilder& row);
+// The point of a row of a table that holds survival_columns() (found by name).
+SurvivalPoint survival_point_from(const Table& t, const TableRow& r);
+
+}  // namespace blockdyn

@@ -1,0 +1,222 @@
+// SPDX-License-Identifier: Apache-2.0
+// spectrum, survival and response-curve on the sweep runner, end to end: the same bytes for 1 and
+// 2 threads and under MPI (also for a refined survival map, which runs in stages), a killed run
+// resumed without losing a point and to identical bytes, the friction-angle curve on a case with
+// a known answer, and bad input (exit 2 naming the field).
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+#include <signal.h>
+
+#include <chrono>
+#include <thread>
+
+#include "test_sweep_util.hpp"
+
+using nlohmann::json;
+using namespace sweep_test;
+
+namespace {
+
+const std::string kMpirun =
+    "OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1 "
+    "mpirun --oversubscribe --allow-run-as-root -np ";
+
+std::vector<std::string> with(std::vector<std::string> a, const std::vector<std::string>& more) {
+  a.insert(a.end(), more.begin(), more.end());
+  return a;
+}
+
+const std::vector<std::string> kBlock{"--model", "housner", "--width", "0.3", "--height", "1.5"};
+
+// A Housner survival map refined twice near class changes: 3 stages.
+std::vector<std::string> refined_survival(const std::string& out, const std::string& periods = "20") {
+  return with(with({"survival"}, kBlock), {"--beta-min", "0.5", "--beta-max", "6", "--beta-points", "5", "--omega-min",
+                                           "1", "--omega-max", "20", "--omega-points", "5", "--periods", periods,
+                                           "--refine", "2", "--out", out});
+}
+
+std::vector<std::string> one_sine_spectrum(const std::string& csv) {
+  return with(with({"spectrum"}, kBlock), {"--pulse", "one-sine", "--duration-min", "0.15", "--duration-max", "3",
+                                           "--duration-points", "12", "--scan-points", "60", "--rel-tol", "1e-8",
+                                           "--csv", csv});
+}
+
+std::size_t journal_rows(const std::string& path) {
+  const std::size_t n = count_lines(slurp(path));
+  return n >= 2 ? n - 2 : 0;
+}
+
+// Starts a run and SIGKILLs it once its journal holds `rows` rows; returns the rows kept.
+std::size_t start_and_kill(const std::vector<std::string>& args, const std::string& dir, const std::string& csv,
+                           std::size_t rows) {
+  const pid_t pid = spawn_cli(args, dir);
+  const std::string journal = dir + "/" + csv + ".journal";
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
+  int st = 0;
+  bool ended = false;
+  while (std::chrono::steady_clock::now() < deadline) {
+    if (::waitpid(pid, &st, WNOHANG) != 0) {
+      ended = true;
+      break;
+    }
+    if (journal_rows(journal) >= rows) break;
+    std::this_thread::sleep_for(std::chrono::milliseconds(2));
+  }
+  if (!ended) {
+    ::kill(pid, SIGKILL);
+    ::waitpid(pid, &st, 0);
+  }
+  EXPECT_TRUE(WIFSIGNALED(st)) << "the run ended before it could be interrupted: " << slurp(dir + "/spawn.err");
+  EXPECT_FALSE(exists(dir + "/" + csv));
+  return journal_rows(journal);
+}
+
+bool have_mpi(const std::string& dir) {
+  if (std::system("command -v mpirun >/dev/null 2>&1") != 0) return false;
+  const CliResult r = run_cli({"survival", "--model", "housner", "--width", "0.3", "--height", "1.5", "--beta-points",
+                               "1", "--omega-points", "1", "--quiet", "--out", "probe.csv"},
+                              dir, kMpirun + "2");
+  return r.err.find("built without MPI") == std::string::npos && r.code == 0;
+}
+
+}  // namespace
+
+TEST(ForcedRunner, SameBytesForOneAndTwoThreads) {
+  TmpDir d("forced-threads");
+  for (const char* t : {"1", "2"}) {
+    const CliResult r = run_cli(with(refined_survival(std::string("s") + t + ".csv"),
+                                     {"--threads", t, "--json-out", std::string("s") + t + "_summary.json", "--quiet"}),
+                                d.path);
+    ASSERT_EQ(r.code, 0) << r.err;
+    const CliResult q = run_cli(with(one_sine_spectrum(std::string("p") + t + ".csv"), {"--threads", t, "--quiet"}), d.path);
+    ASSERT_EQ(q.code, 0) << q.err;
+    const CliResult c = run_cli(with(with({"response-curve"}, kBlock),
+                                     {"--betas", "1.5,3", "--omega-min", "2", "--omega-max", "12", "--omega-points", "6",
+                                      "--t-end", "8", "--threads", t, "--quiet", "--out", std::string("c") + t + ".csv"}),
+                                d.path);
+    ASSERT_EQ(c.code, 0) << c.err;
+  }
+  for (const char* f : {"s", "p", "c"}) EXPECT_EQ(slurp(d.path + "/" + f + "1.csv"), slurp(d.path + "/" + f + "2.csv")) << f;
+  const json a = json::parse(slurp(d.path + "/s1_summary.json")), b = json::parse(slurp(d.path + "/s2_summary.json"));
+  EXPECT_EQ(a["points"], b["points"]);
+  // The refined map holds the coarse grid and points of levels 1 and 2, not the whole lattice.
+  const json side = json::parse(slurp(d.path + "/s1.json"));
+  EXPECT_EQ(side["schema"], "blockdyn.survival.sidecar/1");
+  EXPECT_EQ(side["point_count"], 17 * 17);
+  EXPECT_LT(a["points"].size(), 17u * 17u);
+  EXPECT_GT(a["points"].size(), 25u);
+  EXPECT_TRUE(side.contains("tolerances"));
+  EXPECT_EQ(side["definition"]["options"]["refine"], 2);
+}
+
+TEST(ForcedRunner, MpiRanksMatchOneProcess) {
+  TmpDir d("forced-mpi");
+  if (!have_mpi(d.path)) GTEST_SKIP() << "mpirun or an MPI build not available";
+  ASSERT_EQ(run_cli(with(refined_survival("one.csv"), {"--quiet", "--threads", "1"}), d.path).code, 0);
+  const CliResult two = run_cli(with(refined_survival("two.csv"), {"--progress", "none", "--threads", "1"}), d.path,
+                                kMpirun + "2");
+  ASSERT_EQ(two.code, 0) << two.err;
+  EXPECT_NE(two.out.find("2 rank(s)"), std::string::npos) << two.out;
+  EXPECT_EQ(slurp(d.path + "/two.csv"), slurp(d.path + "/one.csv"));
+  ASSERT_EQ(run_cli(with(one_sine_spectrum("p1.csv"), {"--quiet", "--threads", "2"}), d.path).code, 0);
+  const CliResult three = run_cli(with(one_sine_spectrum("p3.csv"), {"--quiet", "--threads", "1"}), d.path, kMpirun + "3");
+  ASSERT_EQ(three.code, 0) << three.err;
+  EXPECT_EQ(slurp(d.path + "/p3.csv"), slurp(d.path + "/p1.csv"));
+  EXPECT_NE(slurp(d.path + "/p3.json").find("\"mpi_ranks\": 3"), std::string::npos);
+}
+
+TEST(ForcedRunner, KilledRefinedSurvivalResumesToIdenticalBytes) {
+  TmpDir d("forced-kill");
+  // Long runs (1500 forcing periods) so that the run is interrupted inside a refinement level.
+  ASSERT_EQ(run_cli(with(refined_survival("ref.csv", "1500"), {"--quiet", "--threads", "2"}), d.path).code, 0);
+  const std::size_t total = count_lines(slurp(d.path + "/ref.csv")) - 1;
+  const std::size_t kept = start_and_kill(with(refined_survival("s.csv", "1500"), {"--threads", "1"}), d.path, "s.csv", 30);
+  if (HasFailure()) return;
+  EXPECT_LT(kept, total);
+  const CliResult refused = run_cli(with(refined_survival("s.csv", "1500"), {"--quiet"}), d.path);
+  EXPECT_EQ(refused.code, 2);
+  EXPECT_NE(refused.err.find("--resume"), std::string::npos) << refused.err;
+  const CliResult res = run_cli(with(refined_survival("s.csv", "1500"), {"--resume", "--progress", "none"}), d.path);
+  ASSERT_EQ(res.code, 0) << res.err;
+  EXPECT_NE(res.out.find("(" + std::to_string(total - kept) + " computed, " + std::to_string(kept) + " resumed"),
+            std::string::npos)
+      << res.out;
+  EXPECT_EQ(slurp(d.path + "/s.csv"), slurp(d.path + "/ref.csv"));
+  EXPECT_FALSE(exists(d.path + "/s.csv.journal"));
+}
+
+TEST(ForcedRunner, KilledSpectrumResumesToIdenticalBytes) {
+  TmpDir d("forced-kill-spectrum");
+  ASSERT_EQ(run_cli(with(one_sine_spectrum("ref.csv"), {"--quiet", "--threads", "2"}), d.path).code, 0);
+  const std::size_t kept = start_and_kill(with(one_sine_spectrum("s.csv"), {"--threads", "1"}), d.path, "s.csv", 3);
+  if (HasFailure()) return;
+  const CliResult res = run_cli(with(one_sine_spectrum("s.csv"), {"--resume", "--json"}), d.path);
+  ASSERT_EQ(res.code, 0) << res.err;
+  EXPECT_EQ(slurp(d.path + "/s.csv"), slurp(d.path + "/ref.csv"));
+  EXPECT_EQ(json::parse(res.out)["rows"].size(), 12u);
+  EXPECT_LT(kept, 12u);
+}
+
+TEST(ForcedRunner, FrictionAngleCurveOfTheRigidTrilith) {
+  // A half-cosine pulse of peak beta alpha g = 0.147 g, below the columns' uplift (tan alpha =
+  // 0.25): nothing rocks, the columns stick to the ground (phi_s = 90) and move with it, and the
+  // lintel follows them as long as friction can accelerate it: it slides exactly when
+  // tan(phi_l) < 0.147, i.e. phi_l < 8.36 deg.
+  TmpDir d("forced-phi");
+  const std::vector<std::string> base{"response-curve", "--model", "assembly", "--preset", "trilith", "--contact",
+                                      "rigid", "--excitation", "half-cosine", "--betas", "0.6", "--omega", "2",
+                                      "--t-end", "1.5", "--json", "--quiet"};
+  const CliResult r = run_cli(with(base, {"--phi-l-values", "5,8,9,20,90"}), d.path);
+  ASSERT_EQ(r.code, 0) << r.err;
+  const json j = json::parse(r.out);
+  ASSERT_EQ(j["points"].size(), 5u);
+  const double b = j["width"];
+  for (const auto& p : j["points"]) {
+    const double phi = p["phi_l"], slip = p["max_sliding_over_b"].get<double>() * b;
+    if (phi < 8.36) EXPECT_GT(slip, 1e-6) << phi;
+    else EXPECT_LT(slip, 1e-12) << phi;  // no sliding at all, phi = 90 included
+    EXPECT_LT(p["theta_max_over_alpha"].get<double>(), 1e-12) << phi;
+    EXPECT_EQ(p["phi_s"], 90.0);
+  }
+  // The phi_l = 90 point of the curve is the run with the default (no-slip) friction, bit for bit.
+  const CliResult ref = run_cli(base, d.path);
+  ASSERT_EQ(ref.code, 0) << ref.err;
+  const json k = json::parse(ref.out);
+  EXPECT_EQ(k["points"][0]["phi_l"], 90.0);
+  EXPECT_EQ(k["points"][0]["max_sliding_over_b"], j["points"][4]["max_sliding_over_b"]);
+  EXPECT_EQ(k["points"][0]["theta_max_over_alpha"], j["points"][4]["theta_max_over_alpha"]);
+}
+
+TEST(ForcedRunner, BadInputIsAUsageError) {
+  TmpDir d("forced-bad");
+  const auto survival = with({"survival"}, kBlock);
+  const auto curve = with(with({"response-curve"}, kBlock), {"--betas", "2"});
+  const std::vector<std::string> trilith{"response-curve", "--model", "assembly", "--preset", "trilith", "--betas", "2"};
+  const std::vector<std::pair<std::vector<std::string>, std::string>> cases{
+      {with(survival, {"--resume"}), "resume: needs --out"},
+      {with(survival, {"--out", "x.csv", "--resume", "--overwrite"}), "--resume and --overwrite"},
+      {with(survival, {"--refine", "9"}), "refine"},
+      {with(survival, {"--beta-points", "400", "--omega-points", "400", "--refine", "4"}), "refine"},
+      {with(survival, {"--out", "x.csv", "--json-out", "x.json"}), "json-out"},
+      {with(survival, {"--out", "x.csv", "--progress-interval", "0"}), "progress-interval"},
+      {with(with({"spectrum"}, kBlock), {"--durations", "1", "--resume"}), "resume: needs --csv"},
+      {with(curve, {"--phi-l-values", "5,10"}), "assembly"},
+      {with(trilith, {"--phi-l-values", "0,45"}), "phi-l-values"},
+      {with(trilith, {"--phi-l-values", "5:95:4"}), "phi-l-values"},
+      {with(trilith, {"--phi-l-values", "5,10", "--omega-points", "3"}), "omega"},
+      {with(trilith, {"--phi-l-values", "5,10", "--phi-l", "20", "--omega", "3"}), "--phi-l"},
+      {with(curve, {"--omega", "3", "--omega-min", "2"}), "--omega"},
+      {with(curve, {"--omega", "-1"}), "omega"},
+  };
+  for (const auto& [args, word] : cases) {
+    const CliResult r = run_cli(args, d.path);
+    EXPECT_EQ(r.code, 2) << word << ": " << r.err;
+    EXPECT_NE(r.err.find(word), std::string::npos) << r.err;
+    EXPECT_EQ(count_lines(r.err), 1u) << r.err;
+  }
+  // An existing table is never replaced silently.
+  ASSERT_EQ(run_cli(with(survival, {"--beta-points", "2", "--omega-points", "2", "--out", "t.csv", "--quiet"}), d.path).code, 0);
+  const CliResult again = run_cli(with(survival, {"--beta-points", "2", "--omega-points", "2", "--out", "t.csv"}), d.path);
+  EXPECT_EQ(again.code, 2);
+  EXPECT_NE(again.err.find("--overwrite"), std::string::npos) << again.err;
+}
