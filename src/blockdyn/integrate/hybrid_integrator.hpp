@@ -215,9 +215,7 @@ class HybridIntegrator {
       t_clamp = to_break ? std::nextafter(t_break, -INFINITY) : std::numeric_limits<double>::infinity();
       const double err = attempt(f, t, h, z, k1, y_new, k7);
       if (!(err <= 1.0)) {
-        const double h_event = rejected_step_event(t, h, mode, y_new, err);
         if (const auto failure = shrink_rejected_step(err, t, h)) return *failure;
-        if (h_event > 0.0) h = h_event;
         continue;
       }
       ++stats_.accepted;
@@ -451,44 +449,6 @@ class HybridIntegrator {
     te = tn;
     ze = zn;
     dense(f, t, tn - t, z, zn, k1, kn, seg);
-  }
-
-  // A step rejected with a large error often straddles a point where the right-hand side stops
-  // being smooth, and in a hybrid model that is usually where an event function crosses zero (the
-  // foundation force of a corner leaving the springs vanishes as the corner rises through the
-  // surface). Shrinking by the usual factor then takes a ladder of rejections to get below it.
-  // If an armed event function is negative at the trial step's end, the next trial ends just past
-  // its estimated crossing (quadratic through the value and rate at the start and the trial
-  // value): the straddled part is then small, the step is accepted and the scan locates the
-  // event. Returns that step, or 0 (none: shrink as usual).
-  double rejected_step_event(double t, double h, const Mode& mode, const State& y_trial, double err) {
-    if (!(err > kKinkError) || !std::isfinite(err)) return 0.0;
-    State y = y_trial;
-    model_.complete(mode, y);
-    for (std::size_t i = 0; i < N; ++i)
-      if (!std::isfinite(y[i])) return 0.0;
-    Events g1;
-    model_.events(std::fmin(t + h, *t_clamp_), mode, y, g1);
-    double s_first = 1.0;
-    for (std::size_t i = 0; i < NE; ++i) {
-      const double g0 = g_start_[i];
-      if (!armed_[i] || !(g0 > 0.0) || !(g1[i] < 0.0)) continue;
-      // q(s) = g0 + a s + b s^2 with q'(0) = h g'(0), q(1) = g1: its first root in (0, 1).
-      const double a = h * gd_start_[i], b = g1[i] - g0 - a;
-      double s_root = g0 / (g0 - g1[i]);  // the secant, unless the quadratic has a root in (0, 1)
-      if (std::isfinite(a) && b != 0.0 && a * a - 4.0 * b * g0 >= 0.0) {
-        // Roots (-a +- sqrt(disc)) / (2 b), written without cancellation.
-        const double q = -0.5 * (a + std::copysign(std::sqrt(a * a - 4.0 * b * g0), a));
-        double best = 2.0;
-        for (double r : {q / b, q != 0.0 ? g0 / q : -1.0})
-          if (r > 0.0 && r < 1.0) best = std::fmin(best, r);
-        if (best < 1.0) s_root = best;
-      }
-      s_first = std::fmin(s_first, s_root);
-    }
-    if (!(s_first < 1.0)) return 0.0;
-    const double h_event = std::fmin(kKinkOvershoot * s_first, kKinkMaxFraction) * h;
-    return h_event > 16.0 * std::numeric_limits<double>::epsilon() * std::fmax(1.0, std::fabs(t)) ? h_event : 0.0;
   }
 
   // After a rejected step: shrink h, or report why integration cannot go on.
@@ -763,9 +723,6 @@ class HybridIntegrator {
   static constexpr int kMaxRefine = 2;          // extra samples in a doubtful stretch before a search
   static constexpr int kSubdivision = 5;        // doubtful stretches are located to 1/32 of a step
   static constexpr double kRateStep = 0x1p-20;  // difference quotients over this fraction of a step
-  static constexpr double kKinkError = 16.0;        // rejected steps this far off look for an event
-  static constexpr double kKinkOvershoot = 1.01;     // the next trial ends this far past its estimate
-  static constexpr double kKinkMaxFraction = 0.9;    // and at most at this fraction of the rejected step
   static constexpr int kResample = 4;           // interior samples at least every this many steps
   static constexpr double kLagSafety = 8.0;     // margin on a remainder measured on an earlier step
   const Model& model_;
