@@ -8,6 +8,7 @@
 
 #include "blockdyn/io/assembly_file.hpp"
 #include "blockdyn/io/assembly_json.hpp"
+#include "blockdyn/io/json_event_spool.hpp"
 #include "blockdyn/simulation/assembly_simulation.hpp"
 #include "cli_common.hpp"
 #include "cli_registry.hpp"
@@ -160,6 +161,14 @@ void run(const CLI::App& s, const AssemblyFlags& f) {
   require_writable("json-out", f.json_out);
   require_animation(f.animate, f.animate_frames);
   TrajectoryTarget target(f.trajectory, f.plot.empty() ? f.animate : f.plot);
+  // Events go straight to a spool of the JSON summary (only when one is asked for): memory stays
+  // flat however long the run.
+  std::unique_ptr<JsonEventSpool> spool;
+  if (f.json || !f.json_out.empty()) {
+    spool = std::make_unique<JsonEventSpool>();
+    o.on_event = [&spool](const AssemblyEventRecord& e) { spool->add(to_json(e)); };
+  }
+  o.record_events = false;
   AssemblyResult r;
   try {
     r = simulate_assembly(a, g, o, target.file ? &target.file->stream() : nullptr);
@@ -179,9 +188,11 @@ void run(const CLI::App& s, const AssemblyFlags& f) {
   target.figures_and_clean({{"plot_assembly.py", f.plot, {"--title", title}},
                             {"animate_assembly.py", f.animate,
                              {"--frames", std::to_string(f.animate_frames), "--title", title, "--sizes", sizes}}});
-  const auto j = assembly_result_json(a, g, o, r);
-  if (!f.json_out.empty()) emit_json(j, f.json_out);
-  if (f.json) emit_json(j, "-");
+  if (spool) {
+    const auto j = assembly_result_json(a, g, o, r);
+    if (!f.json_out.empty()) emit_json(j, f.json_out, *spool);
+    if (f.json) emit_json(j, "-", *spool);
+  }
   if (!f.json && !f.quiet) print_summary(r);
 }
 

@@ -195,3 +195,33 @@ TEST(CliAssembly, BadInputIsAUsageError) {
     EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
   }
 }
+
+TEST(CliAssembly, EventsAreStreamedToTheJsonWhole) {
+  // Both contact laws: the events reach the JSON through a spool (the run keeps no list), all of
+  // them, in time order, and --json and --json-out print the same text.
+  for (const char* law : {"deformable", "rigid"}) {
+    SCOPED_TRACE(law);
+    TmpDir d(std::string("asm_spool_") + law);
+    const auto r = run_cli(std::vector<std::string>{"assembly", "--preset", "trilith", "--contact", law, "--phi-s", "30",
+                                                    "--phi-l", "30", "--t-end", "1.5", "--json", "--json-out",
+                                                    d.path + "/s.json"} +
+                               kHarmonic,
+                           d.path);
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_EQ(slurp(d.path + "/s.json"), r.out);
+    const json j = json::parse(r.out);
+    ASSERT_GT(j["events_total"].get<long>(), 10);
+    EXPECT_EQ(long(j["events"].size()), j["events_total"].get<long>());
+    double t_prev = -1;
+    for (const auto& e : j["events"]) {
+      EXPECT_GE(e["t"].get<double>(), t_prev);
+      t_prev = e["t"].get<double>();
+    }
+    const auto q = run_cli(std::vector<std::string>{"assembly", "--preset", "trilith", "--contact", law, "--phi-s", "30",
+                                                    "--phi-l", "30", "--t-end", "1.5"} +
+                               kHarmonic,
+                           d.path);
+    ASSERT_EQ(q.code, 0) << q.err;
+    EXPECT_NE(q.out.find("events: " + std::to_string(j["events_total"].get<long>()) + ","), std::string::npos) << q.out;
+  }
+}

@@ -51,6 +51,15 @@ json to_json(const Assembly& a) {
   return j;
 }
 
+json to_json(const AssemblyEventRecord& e) {
+  json x = {{"t", e.t}, {"kind", e.kind}, {"block", e.block >= 0 ? json(e.block) : json(nullptr)}};
+  if (e.interface >= 0) x["interface"] = e.interface;
+  if (e.end >= 0) x["end"] = e.end;
+  if (e.collapse_mode) x["collapse_mode"] = e.collapse_mode;
+  x["pose"] = e.pose;
+  return x;
+}
+
 json assembly_result_json(const Assembly& a, const GroundMotion& g, const AssemblyRunOptions& o,
                           const AssemblyResult& r) {
   auto opt = [](const auto& v) { return v ? json(*v) : json(nullptr); };
@@ -127,14 +136,7 @@ json assembly_result_json(const Assembly& a, const GroundMotion& g, const Assemb
   j["event_counts"] = counts;
   j["events_total"] = r.events_total;
   json ev = json::array();
-  for (const AssemblyEventRecord& e : r.events) {
-    json x = {{"t", e.t}, {"kind", e.kind}, {"block", e.block >= 0 ? json(e.block) : json(nullptr)}};
-    if (e.interface >= 0) x["interface"] = e.interface;
-    if (e.end >= 0) x["end"] = e.end;
-    if (e.collapse_mode) x["collapse_mode"] = e.collapse_mode;
-    x["pose"] = e.pose;
-    ev.push_back(x);
-  }
+  for (const AssemblyEventRecord& e : r.events) ev.push_back(to_json(e));
   j["events"] = ev;
   return j;
 }

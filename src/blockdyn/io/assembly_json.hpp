@@ -9,6 +9,8 @@
 namespace blockdyn {
 
 nlohmann::ordered_json to_json(const Assembly& a);
+// One event of the summary's "events" list.
+nlohmann::ordered_json to_json(const AssemblyEventRecord& e);
 nlohmann::ordered_json assembly_result_json(const Assembly& a, const GroundMotion& g, const AssemblyRunOptions& o,
                                             const AssemblyResult& r);
 

@@ -7,6 +7,7 @@
 // rotation and sliding and the final state, the energy terms and their closed balance, and the
 // events. SI units.
 #include <array>
+#include <functional>
 #include <optional>
 #include <ostream>
 #include <string>
@@ -19,16 +20,6 @@
 
 namespace blockdyn {
 
-struct AssemblyRunOptions {
-  double t_end = 10.0;
-  IntegratorOptions integrator{1e-8, 1e-10};
-  double output_interval = 0.01;  // trajectory CSV (s)
-  bool record_events = true;      // keep the event list (counts are always kept)
-  long max_events = 1'000'000;    // kept in the list; further events are counted only
-  double step = 1e-4;             // rigid law: Moreau-Jean time step (s)
-};
-void validate(const AssemblyRunOptions& o);
-
 struct AssemblyEventRecord {
   double t = 0;
   std::string kind;  // open, close, slip, stick, end_switch, w_zero, failure, invalid
@@ -37,6 +28,19 @@ struct AssemblyEventRecord {
   int collapse_mode = 0;
   std::array<double, 3> pose{};  // x, y, theta of `block` after the event
 };
+
+struct AssemblyRunOptions {
+  double t_end = 10.0;
+  IntegratorOptions integrator{1e-8, 1e-10};
+  double output_interval = 0.01;  // trajectory CSV (s)
+  bool record_events = true;      // keep the event list (counts are always kept)
+  long max_events = 1'000'000;    // kept in the list; further events are counted only
+  double step = 1e-4;             // rigid law: Moreau-Jean time step (s)
+  // Called with every event as it happens, whatever record_events and max_events say: a caller
+  // that streams the events (the command line's JSON spool) holds O(1) memory on a run of any length.
+  std::function<void(const AssemblyEventRecord&)> on_event;
+};
+void validate(const AssemblyRunOptions& o);
 
 struct AssemblyBlockSummary {
   std::string name;
