@@ -7,6 +7,7 @@
 // rotation and sliding and the final state, the energy terms and their closed balance, and the
 // events. SI units.
 #include <array>
+#include <cmath>
 #include <functional>
 #include <optional>
 #include <ostream>
@@ -31,7 +32,7 @@ struct AssemblyEventRecord {
 
 struct AssemblyRunOptions {
   double t_end = 10.0;
-  IntegratorOptions integrator{1e-8, 1e-10};
+  IntegratorOptions integrator{1e-8, 1e-10, INFINITY, 200000000, 4};
   double output_interval = 0.01;  // trajectory CSV (s)
   bool record_events = true;      // keep the event list (counts are always kept)
   long max_events = 1'000'000;    // kept in the list; further events are counted only

@@ -418,6 +418,12 @@ Transition<typename AssemblyModel<Cap>::Mode> AssemblyModel<Cap>::transition(dou
     } else {
       tr.next.point[p] = PointState::Stick;
       tr.kind = kAsmStick;
+      // The point sticks with its spring where slip left it, on the kinetic cone: with equal
+      // static and kinetic friction its sticking margin starts at zero with zero slope, and
+      // rounding alone would decide whether it slips again at once (zero-time stick/slip
+      // chatter). A spring inside the cone by kStickInset of its force starts the margin
+      // above rounding; a stick that cannot hold still ends at a located slip event.
+      z[iu(p)] *= 1.0 - kStickInset;
     }
   } else if (event < ev_valid(0)) {
     const int p = event - ev_owner(0);

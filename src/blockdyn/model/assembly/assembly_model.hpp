@@ -68,6 +68,9 @@ class AssemblyModel {
   static constexpr int ev_wzero(int b) { return 4 * kPoints + b; }
   static constexpr int ev_collapse(int b) { return 4 * kPoints + Cap + b; }
   static constexpr int ev_bearing(int i) { return 4 * kPoints + 2 * Cap + i; }
+  // Relative inset of a tangential spring's force inside the kinetic cone when a slipping
+  // point sticks (see transition()).
+  static constexpr double kStickInset = 1e-12;
 
   // noise_band (rad, m): a block's rotation has passed 0 once it is this far on the other side,
   // and a contact end passes to the other corner once the corners are this far apart: at rest
