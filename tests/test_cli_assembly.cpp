@@ -195,3 +195,25 @@ TEST(CliAssembly, BadInputIsAUsageError) {
     EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
   }
 }
+
+TEST(CliAssembly, EventsAreListedInTimeOrder) {
+  // Both contact laws; the rigid law stamps a step's contact changes at the step's end and its
+  // passages through theta = 0 inside it: the list is still in time order.
+  for (const char* law : {"deformable", "rigid"}) {
+    SCOPED_TRACE(law);
+    TmpDir d(std::string("asm_order_") + law);
+    const auto r = run_cli(std::vector<std::string>{"assembly", "--preset", "trilith", "--contact", law, "--phi-s", "30",
+                                                    "--phi-l", "30", "--t-end", "1.5", "--json"} +
+                               kHarmonic,
+                           d.path);
+    ASSERT_EQ(r.code, 0) << r.err;
+    const json j = json::parse(r.out);
+    ASSERT_GT(j["events_total"].get<long>(), 10);
+    EXPECT_EQ(long(j["events"].size()), j["events_total"].get<long>());
+    double t_prev = -1;
+    for (const auto& e : j["events"]) {
+      EXPECT_GE(e["t"].get<double>(), t_prev) << e.dump();
+      t_prev = e["t"].get<double>();
+    }
+  }
+}

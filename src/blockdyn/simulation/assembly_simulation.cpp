@@ -363,10 +363,12 @@ AssemblyResult run_rigid(const Assembly& a, const GroundMotion& g, const Assembl
   r.energy_initial.kinetic = mj.kinetic_energy(v);
   r.energy_initial.total = e0;
   double w_ground = 0, w_normal = 0, w_tangent = 0, max_err = 0, max_change = 0;
+  std::vector<AssemblyEventRecord> step_events;
+  step_events.reserve(4 * std::size_t(np + nb) + 4);
   auto add_event = [&](double t, int kind_code, const char* kind, int block, int iface, int end, int mode) {
     ++r.events_total;
     if (kind_code >= 0) ++r.event_counts[kind_code];
-    if (!o.record_events || long(r.events.size()) >= o.max_events) return;
+    if (!o.record_events || long(r.events.size() + step_events.size()) >= o.max_events) return;
     AssemblyEventRecord e;
     e.t = t;
     e.kind = kind;
@@ -375,7 +377,15 @@ AssemblyResult run_rigid(const Assembly& a, const GroundMotion& g, const Assembl
     e.end = end;
     e.collapse_mode = mode;
     if (block >= 0) e.pose = {q[3 * block], q[3 * block + 1], q[3 * block + 2]};
-    r.events.push_back(e);
+    step_events.push_back(e);
+  };
+  // A step's contact events carry the step's end time, its passages and failures the time
+  // interpolated inside it: listed in time order at the end of each step.
+  auto flush_step_events = [&] {
+    std::stable_sort(step_events.begin(), step_events.end(),
+                     [](const AssemblyEventRecord& x, const AssemblyEventRecord& y) { return x.t < y.t; });
+    r.events.insert(r.events.end(), step_events.begin(), step_events.end());
+    step_events.clear();
   };
   auto write_row = [&](double t, const char* ev) {
     if (!csv) return;
@@ -448,6 +458,7 @@ AssemblyResult run_rigid(const Assembly& a, const GroundMotion& g, const Assembl
   // An end closes with an impact when it approaches faster than one step of free fall.
   const double v_tol = a.g * o.step;
   for (long k = 0; k < steps; ++k) {
+    flush_step_events();
     for (int b = 0; b < nb; ++b) theta_prev[b] = q[3 * b + 2];
     if (probe) {
       q_prev = q;
@@ -555,6 +566,7 @@ AssemblyResult run_rigid(const Assembly& a, const GroundMotion& g, const Assembl
       break;
     }
   }
+  flush_step_events();
   r.t_final = t;
   if (probe) probe->finish(t);
   r.steps = long(std::lround(t / o.step));
