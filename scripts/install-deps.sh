@@ -6,7 +6,7 @@ PKGS=(build-essential cmake ninja-build pkg-config
       libboost-dev libeigen3-dev libcli11-dev libtomlplusplus-dev nlohmann-json3-dev libfmt-dev
       libgtest-dev libgmock-dev libbenchmark-dev
       libopenmpi-dev openmpi-bin
-      python3-numpy python3-matplotlib python3-pil python3-pytest python3-dev pybind11-dev ffmpeg
+      python3-numpy python3-scipy python3-matplotlib python3-pil python3-pytest python3-dev pybind11-dev ffmpeg
       dpkg-dev clang)
 missing=()
 for p in "${PKGS[@]}"; do dpkg -s "$p" >/dev/null 2>&1 || missing+=("$p"); done
