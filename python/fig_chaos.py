@@ -26,7 +26,7 @@ import os
 import sys
 import tempfile
 
-from plotkit import Cli, legend_below, legend_outside, plt, read_table, save
+from plotkit import figure_script_args, legend_below, legend_outside, plt, read_table, save
 
 SURFACE = [  # (figure, [(type, mu, r, k), ...])
     ("5_1", [("steady rocking", 0.2, 0.2, 1e3), ("settle down", 0.1, 0.5, 1e5)]),
@@ -120,11 +120,7 @@ def poincare_figure(cli, tmp, out, label, title, args, t_end, t_le, t_min=0, lim
 
 
 def main(argv):
-    if len(argv) not in (3, 4) or (len(argv) == 4 and argv[3] != "--tiny"):
-        raise SystemExit(__doc__)
-    cli, out = Cli(argv[1]), argv[2]
-    tiny = len(argv) == 4
-    os.makedirs(out, exist_ok=True)
+    cli, out, tiny = figure_script_args(argv, __doc__)
     t_end, t_le = (20, 10) if tiny else (1000, 300)
     summary = []
     with tempfile.TemporaryDirectory(prefix="blockdyn-chaos-") as tmp:

@@ -22,7 +22,7 @@ import os
 import sys
 import tempfile
 
-from plotkit import Cli, legend_outside, np, plt, read_table, save
+from plotkit import figure_script_args, legend_outside, np, plt, read_table, save
 
 RE_STYLE = dict(color="C0", lw=1.0)
 RR_STYLE = dict(color="k", lw=1.0, ls="--")
@@ -211,11 +211,7 @@ def vertical_figure(cli, tmp, out, mu, t_end):
 
 
 def main(argv):
-    if len(argv) not in (3, 4) or (len(argv) == 4 and argv[3] != "--tiny"):
-        raise SystemExit(__doc__)
-    cli, out = Cli(argv[1]), argv[2]
-    tiny = len(argv) == 4
-    os.makedirs(out, exist_ok=True)
+    cli, out, tiny = figure_script_args(argv, __doc__)
     summary = {}
     with tempfile.TemporaryDirectory(prefix="blockdyn-conv-") as tmp:
         runs = Runs(cli, tmp)

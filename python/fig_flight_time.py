@@ -20,7 +20,7 @@ import os
 import sys
 import tempfile
 
-from plotkit import Cli, legend_below, plt, read_table, save
+from plotkit import figure_script_args, legend_below, plt, read_table, save
 
 FIGS = [
     ("flight_time_fig4_6-4_9.png", "4.6-4.9", [(1.0, 0.2), (0.5, 0.2), (0.3, 0.2), (0.2, 0.2)]),
@@ -64,11 +64,7 @@ def draw(ax, tab, k_min, cmap, norm):
 
 
 def main(argv):
-    if len(argv) not in (3, 4) or (len(argv) == 4 and argv[3] != "--tiny"):
-        raise SystemExit(__doc__)
-    cli, out = Cli(argv[1]), argv[2]
-    tiny = len(argv) == 4
-    os.makedirs(out, exist_ok=True)
+    cli, out, tiny = figure_script_args(argv, __doc__)
     points = 12 if tiny else 200
     figs = [(FIGS[0][0], FIGS[0][1], FIGS[0][2][:2])] if tiny else FIGS
     cmap = plt.get_cmap("viridis")

@@ -19,7 +19,7 @@ import os
 import sys
 import tempfile
 
-from plotkit import Cli, legend_outside, np, plt, read_table, save
+from plotkit import figure_script_args, legend_outside, np, plt, read_table, save
 
 # Table 4.1: (figure, mu, r, k, ic, the thesis's type)
 TABLE = [
@@ -111,11 +111,7 @@ def fig_4_52(cli, tmp, out, t_end, seg):
 
 
 def main(argv):
-    if len(argv) not in (3, 4) or (len(argv) == 4 and argv[3] != "--tiny"):
-        raise SystemExit(__doc__)
-    cli, out = Cli(argv[1]), argv[2]
-    tiny = len(argv) == 4
-    os.makedirs(out, exist_ok=True)
+    cli, out, tiny = figure_script_args(argv, __doc__)
     rows = [TABLE[0], TABLE[6], TABLE[11]] if tiny else TABLE
     t_end = 20 if tiny else T_END
     summary = []

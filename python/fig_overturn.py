@@ -21,7 +21,7 @@ import os
 import sys
 import tempfile
 
-from plotkit import Cli, np, plt, read_table, save
+from plotkit import figure_script_args, np, plt, read_table, save
 
 FIGS = [  # (figure, mu, [(r, k_min, k_max), ...])
     ("4.21", 0.0, [(0.3, 10, 1e5), (0.15, 10, 1e6)]),
@@ -63,11 +63,7 @@ def panel(ax_t, ax_i, tab, meta):
 
 
 def main(argv):
-    if len(argv) not in (3, 4) or (len(argv) == 4 and argv[3] != "--tiny"):
-        raise SystemExit(__doc__)
-    cli, out = Cli(argv[1]), argv[2]
-    tiny = len(argv) == 4
-    os.makedirs(out, exist_ok=True)
+    cli, out, tiny = figure_script_args(argv, __doc__)
     figs = [FIGS[4]] if tiny else FIGS
     points, window = (10, 4) if tiny else (120, 40)
     summary = []

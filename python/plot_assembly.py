@@ -3,15 +3,14 @@
 forces per interface, the ground acceleration and the energy balance.
 Usage: plot_assembly.py TRAJECTORY.csv OUT.png [--title T]"""
 import argparse
-import os
 
 import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
-import numpy as np  # noqa: E402
 
 from assembly_csv import load  # noqa: E402
+from plotkit import save  # noqa: E402
 
 
 def main():
@@ -42,8 +41,7 @@ def main():
         x.grid(alpha=0.3)
     fig.suptitle(a.title, fontsize=10)
     fig.tight_layout()
-    fig.savefig(a.out, dpi=120)
-    fig.savefig(os.path.splitext(a.out)[0] + ".svg")
+    save(fig, a.out, dpi=120)
 
 
 if __name__ == "__main__":

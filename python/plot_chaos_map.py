@@ -5,7 +5,6 @@ crosses, rest as grey dots, superstable (came to rest: exponent -infinity) as bl
 Usage: plot_chaos_map.py POINTS.csv OUT.png [--title T] [--threshold X]"""
 import argparse
 import csv
-import os
 
 import matplotlib
 
@@ -13,6 +12,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 from matplotlib.colors import TwoSlopeNorm  # noqa: E402
+from plotkit import save  # noqa: E402
 
 
 def main():
@@ -72,8 +72,7 @@ def main():
     if marks:
         ax.legend(fontsize=7, loc="upper left", bbox_to_anchor=(1.25, 1.0))
     fig.tight_layout()
-    fig.savefig(a.out, dpi=120)
-    fig.savefig(os.path.splitext(a.out)[0] + ".svg")
+    save(fig, a.out, dpi=120)
 
 
 if __name__ == "__main__":

@@ -5,7 +5,6 @@ segment faint, its last two cycles bold, the strobe samples as dots).
 Usage: plot_cycles.py STROBE.csv OUT.png --trace TRACE.csv --block B --period T [--title T]"""
 import argparse
 import csv
-import os
 import re
 
 import matplotlib
@@ -13,6 +12,7 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
+from plotkit import save  # noqa: E402
 
 
 def read(path):
@@ -95,8 +95,7 @@ def main():
         axp.set_title(f"{'cycle ' if m else ''}{lab}, {t0:.4g} <= t <= {t1:.4g} s", fontsize=9)
         axp.grid(alpha=0.3)
     fig.tight_layout()
-    fig.savefig(a.out, dpi=120)
-    fig.savefig(os.path.splitext(a.out)[0] + ".svg")
+    save(fig, a.out, dpi=120)
 
 
 if __name__ == "__main__":

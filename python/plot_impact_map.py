@@ -6,13 +6,13 @@ Usage: plot_impact_map.py IMPACTS.csv OUT.png --poincare SECTION.csv --trace TRA
 [--section-phase PHI0] [--title T]"""
 import argparse
 import csv
-import os
 
 import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
+from plotkit import save  # noqa: E402
 
 
 def load(path):
@@ -64,8 +64,7 @@ def main():
     if a.title:
         fig.suptitle(a.title, fontsize=10)
     fig.tight_layout()
-    fig.savefig(a.out, dpi=120)
-    fig.savefig(os.path.splitext(a.out)[0] + ".svg")
+    save(fig, a.out, dpi=120)
 
 
 if __name__ == "__main__":

@@ -6,13 +6,13 @@ usage: plot_map.py MAP.csv BOUNDARIES.csv OUT.png TITLE   (an SVG is written bes
 """
 import csv
 import math
-import os
 import sys
 
 import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+from plotkit import save  # noqa: E402
 
 STYLE = {  # response type -> (marker, face colour, label)
     "steady_rocking": ("s", "none", "steady rocking"),
@@ -79,8 +79,7 @@ def main(argv):
     ax.set_title(f"response types in the (k, 1/r) plane, {title}")
     # Outside the axes: inside, it hid the lower-right corner of the grid.
     ax.legend(fontsize=8, loc="upper left", bbox_to_anchor=(1.01, 1.0), borderaxespad=0.0)
-    fig.savefig(out, dpi=110)
-    fig.savefig(os.path.splitext(out)[0] + ".svg")
+    save(fig, out, dpi=110)
 
 
 if __name__ == "__main__":

@@ -13,13 +13,13 @@ Usage: plot_periodic_orbits.py CSV OUT.png --kind K [--parameter ks|omega] [--ti
 """
 import argparse
 import csv
-import os
 
 import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
+from plotkit import save  # noqa: E402
 
 
 def read(path):
@@ -197,8 +197,7 @@ def main():
     else:
         fig = plot_region(rows, lin, a.title)
     fig.tight_layout()
-    fig.savefig(a.out, dpi=120)
-    fig.savefig(os.path.splitext(a.out)[0] + ".svg")
+    save(fig, a.out, dpi=120)
 
 
 if __name__ == "__main__":

@@ -4,12 +4,12 @@ per beta (and per phi_s when it varies), collapsed points marked, and the larges
 blocks over b when any. Usage: plot_response_curve.py POINTS.csv OUT.png [--title T] [--x omega|phi_l]"""
 import argparse
 import csv
-import os
 
 import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+from plotkit import save  # noqa: E402
 
 
 def main():
@@ -55,8 +55,7 @@ def main():
         axes[1][0].grid(alpha=0.3)
     axes[-1][0].set_xlabel("omega = Omega / p" if a.x == "omega" else "friction angle between blocks phi_l [deg]")
     fig.tight_layout()
-    fig.savefig(a.out, dpi=120)
-    fig.savefig(os.path.splitext(a.out)[0] + ".svg")
+    save(fig, a.out, dpi=120)
 
 
 if __name__ == "__main__":

@@ -6,12 +6,12 @@ are geometric from AMIN to AMAX, one per character of the `scan` column).
 Usage: plot_spectrum.py SPECTRUM.csv OUT.png [--title T] [--map AMIN AMAX]"""
 import argparse
 import csv
-import os
 
 import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+from plotkit import save  # noqa: E402
 
 
 def main():
@@ -44,8 +44,7 @@ def main():
     ax.grid(alpha=0.3, which="both")
     ax.legend(fontsize=8, loc="upper right")
     fig.tight_layout()
-    fig.savefig(a.out, dpi=120)
-    fig.savefig(os.path.splitext(a.out)[0] + ".svg")
+    save(fig, a.out, dpi=120)
 
 
 def edges(v, log):
@@ -85,8 +84,7 @@ def picture(rows, d, amin, a):
     ax.set_title(a.title, fontsize=9)
     ax.legend(handles=h, fontsize=8, loc="upper right")
     fig.tight_layout()
-    fig.savefig(a.out, dpi=120)
-    fig.savefig(os.path.splitext(a.out)[0] + ".svg")
+    save(fig, a.out, dpi=120)
 
 
 if __name__ == "__main__":

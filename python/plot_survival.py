@@ -7,12 +7,12 @@ and beta) every point is drawn as a tile of its level's cell size, coarse tiles 
 fine boundary shows. Usage: plot_survival.py POINTS.csv OUT.png [--title T] [--refined DW DB]"""
 import argparse
 import csv
-import os
 
 import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+from plotkit import save  # noqa: E402
 
 MARKERS = {"short": "^", "medium": "D", "long": "s", "very long": "o"}
 
@@ -58,8 +58,7 @@ def main():
     ax.grid(alpha=0.3)
     ax.legend(fontsize=7, loc="upper left", bbox_to_anchor=(1.01, 1.0))
     fig.tight_layout()
-    fig.savefig(a.out, dpi=120)
-    fig.savefig(os.path.splitext(a.out)[0] + ".svg")
+    save(fig, a.out, dpi=120)
 
 
 TILE_COLOURS = {"rest": "0.85", "stable": "#9ecae1", "invalid": "#ff00ff"}
@@ -97,8 +96,7 @@ def tiles(rows, a):
     ax.legend(handles=[Patch(color=c, label=l) for l, c in seen.items()], fontsize=7, loc="upper left",
               bbox_to_anchor=(1.01, 1.0))
     fig.tight_layout()
-    fig.savefig(a.out, dpi=150)
-    fig.savefig(os.path.splitext(a.out)[0] + ".svg")
+    save(fig, a.out, dpi=150)
 
 
 if __name__ == "__main__":

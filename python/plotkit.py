@@ -130,6 +130,16 @@ def split_args(argv, doc, n_inputs):
     return argv[1:n_inputs + 1], argv[n_inputs + 1], title
 
 
+def figure_script_args(argv, doc):
+    """argv = [script, BLOCKDYN, OUTDIR, [--tiny]] -> (Cli(BLOCKDYN), OUTDIR (created), tiny).
+
+    The calling convention of the fig_*.py scripts; any other form exits with the usage `doc`."""
+    if len(argv) not in (3, 4) or (len(argv) == 4 and argv[3] != "--tiny"):
+        raise SystemExit(doc)
+    os.makedirs(argv[2], exist_ok=True)
+    return Cli(argv[1]), argv[2], len(argv) == 4
+
+
 def run_in_out(main, doc):
     """Call main(TABLE.csv, OUT.png) from the command line; exit with `doc` on a wrong count."""
     if len(sys.argv) != 3:

@@ -214,7 +214,7 @@ TEST(CliAssembly, EventsAreStreamedToTheJsonWhole) {
     EXPECT_EQ(long(j["events"].size()), j["events_total"].get<long>());
     double t_prev = -1;
     for (const auto& e : j["events"]) {
-      EXPECT_GE(e["t"].get<double>(), t_prev);
+      EXPECT_GE(e["t"].get<double>(), t_prev) << e.dump();
       t_prev = e["t"].get<double>();
     }
     const auto q = run_cli(std::vector<std::string>{"assembly", "--preset", "trilith", "--contact", law, "--phi-s", "30",

@@ -382,9 +382,11 @@ AssemblyResult run_rigid(const Assembly& a, const GroundMotion& g, const Assembl
   };
   // A step's contact events carry the step's end time, its passages and failures the time
   // interpolated inside it: passed on in time order at the end of each step.
+  // (A stable insertion sort of the few events of a step: std::stable_sort would allocate.)
   auto flush_step_events = [&] {
-    std::stable_sort(step_events.begin(), step_events.end(),
-                     [](const AssemblyEventRecord& x, const AssemblyEventRecord& y) { return x.t < y.t; });
+    for (std::size_t i = 1; i < step_events.size(); ++i)
+      for (std::size_t j = i; j > 0 && step_events[j].t < step_events[j - 1].t; --j)
+        std::swap(step_events[j], step_events[j - 1]);
     for (const AssemblyEventRecord& e : step_events) {
       if (o.on_event) o.on_event(e);
       if (o.record_events && long(r.events.size()) < o.max_events) r.events.push_back(e);

@@ -4,7 +4,6 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "blockdyn/analysis/sweep/parallel_map.hpp"
 
 namespace blockdyn {
 
@@ -70,25 +69,10 @@ ChaosPoint chaos_point(const ForcedLyapunovRun& run, const ChaosMapOptions& o, d
 std::vector<ChaosPoint> chaos_map(const ForcedLyapunovRun& run, const ChaosMapOptions& o, double alpha, double p,
                                   const std::function<void(std::size_t)>& progress) {
   validate(o);
-  const SurvivalOptions& g = o.grid;
-  if (!g.betas.empty() && int(g.betas.size()) != g.beta_points)
-    throw std::invalid_argument("betas: beta-points must equal the number of betas given");
-  auto axis = [](double lo, double hi, int n, int i) { return n == 1 ? lo : lo + (hi - lo) * i / (n - 1); };
-  const std::size_t n = std::size_t(g.beta_points) * g.omega_points;
-  std::vector<ChaosPoint> pts(n);
-  std::size_t done = 0;
-  parallel_for(
-      n, g.threads,
-      [&](std::size_t k) {
-        const int bi = int(k / g.omega_points);
-        const double beta = g.betas.empty() ? axis(g.beta_min, g.beta_max, g.beta_points, bi) : g.betas[bi];
-        const double omega = axis(g.omega_min, g.omega_max, g.omega_points, int(k % g.omega_points));
-        pts[k] = chaos_point(run, o, beta, omega, alpha, p);
-      },
-      [&](std::size_t) {
-        ++done;
-        if (progress) progress(done);
-      });
+  std::vector<ChaosPoint> pts(std::size_t(o.grid.beta_points) * o.grid.omega_points);
+  for_each_beta_omega(
+      o.grid, [&](std::size_t k, double beta, double omega) { pts[k] = chaos_point(run, o, beta, omega, alpha, p); },
+      progress);
   return pts;
 }
 

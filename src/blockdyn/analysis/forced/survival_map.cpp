@@ -74,24 +74,34 @@ SurvivalPoint survival_point(const SurvivalRun& run, const SurvivalOptions& o, d
 std::vector<SurvivalPoint> survival_map(const SurvivalRun& run, const SurvivalOptions& o, double alpha, double p,
                                         const std::function<void(std::size_t)>& progress) {
   validate(o);
+  std::vector<SurvivalPoint> pts(std::size_t(o.beta_points) * o.omega_points);
+  for_each_beta_omega(
+      o, [&](std::size_t k, double beta, double omega) { pts[k] = survival_point(run, o, alpha, p, beta, omega); },
+      progress);
+  return pts;
+}
+
+std::pair<double, double> beta_omega_of(const SurvivalOptions& o, std::size_t k) {
+  const int bi = int(k / o.omega_points);
+  const double beta = o.betas.empty() ? grid_value(o.beta_min, o.beta_max, o.beta_points, bi) : o.betas[bi];
+  return {beta, grid_value(o.omega_min, o.omega_max, o.omega_points, int(k % o.omega_points))};
+}
+
+void for_each_beta_omega(const SurvivalOptions& o, const std::function<void(std::size_t, double, double)>& point,
+                         const std::function<void(std::size_t)>& progress) {
   if (!o.betas.empty() && int(o.betas.size()) != o.beta_points)
     throw std::invalid_argument("betas: beta-points must equal the number of betas given");
-  const std::size_t n = std::size_t(o.beta_points) * o.omega_points;
-  std::vector<SurvivalPoint> pts(n);
   std::size_t done = 0;
   parallel_for(
-      n, o.threads,
+      std::size_t(o.beta_points) * o.omega_points, o.threads,
       [&](std::size_t k) {
-        const int bi = int(k / o.omega_points);
-        const double beta = o.betas.empty() ? grid_value(o.beta_min, o.beta_max, o.beta_points, bi) : o.betas[bi];
-        const double omega = grid_value(o.omega_min, o.omega_max, o.omega_points, int(k % o.omega_points));
-        pts[k] = survival_point(run, o, alpha, p, beta, omega);
+        const auto [beta, omega] = beta_omega_of(o, k);
+        point(k, beta, omega);
       },
       [&](std::size_t) {
         ++done;
         if (progress) progress(done);
       });
-  return pts;
 }
 
 }  // namespace blockdyn

@@ -9,6 +9,7 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "blockdyn/excitation/ground_motion.hpp"
@@ -59,6 +60,14 @@ SurvivalPoint survival_point(const SurvivalRun& run, const SurvivalOptions& o, d
                              double omega);
 // The value of point i of n uniform from lo to hi (lo when n == 1), as every grid here spaces them.
 double grid_value(double lo, double hi, int n, int i);
+
+// (beta, omega) of point k of o's grid (beta outer, omega inner; an explicit beta list, when
+// given, must hold beta_points values).
+std::pair<double, double> beta_omega_of(const SurvivalOptions& o, std::size_t k);
+// point(beta, omega) at every point of o's grid on o.threads threads, each landing at its index
+// (the same map for any thread count); progress(done) after each.
+void for_each_beta_omega(const SurvivalOptions& o, const std::function<void(std::size_t, double, double)>& point,
+                         const std::function<void(std::size_t)>& progress);
 
 // Points in row-major order: beta outer, omega inner.
 std::vector<SurvivalPoint> survival_map(const SurvivalRun& run, const SurvivalOptions& o, double alpha, double p,

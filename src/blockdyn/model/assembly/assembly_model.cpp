@@ -99,16 +99,7 @@ bool AssemblyModel<Cap>::any_slip(const Mode& m) const {
 
 template <int Cap>
 void AssemblyModel<Cap>::geometry(const State& z, Geometry& g) const {
-  for (int b = 0; b < nb_; ++b) {
-    BodyPose& p = g.pose[b];
-    p.x = z[ix(b)];
-    p.y = z[ix(b) + 1];
-    p.theta = z[ix(b) + 2];
-    p.vx = z[iv(b)];
-    p.vy = z[iv(b) + 1];
-    p.omega = z[iv(b) + 2];
-    p.q = BodyRotation::of(p.theta);
-  }
+  for (int b = 0; b < nb_; ++b) g.pose[b] = pose(z, b);
   for (int i = 0; i < ni_; ++i) {
     const int l = lower_[i], u = upper_[i];
     if (l < 0)
