@@ -59,6 +59,7 @@ class AssemblyRecorder final : public Observer<Model<Cap>> {
     track(m, t1, z);
     return true;
   }
+  bool needs_dense() const override { return false; }  // step ends only
   bool on_event(const M& m, const Event& e) override {
     track(m, e.t, e.z_before);
     if (e.kind == kAsmBreakpoint) return true;

@@ -32,7 +32,7 @@ struct AssemblyEventRecord {
 
 struct AssemblyRunOptions {
   double t_end = 10.0;
-  IntegratorOptions integrator{1e-8, 1e-10, INFINITY, 200000000, 4};
+  IntegratorOptions integrator{1e-8, 1e-10};
   double output_interval = 0.01;  // trajectory CSV (s)
   bool record_events = true;      // keep the event list (counts are always kept)
   long max_events = 1'000'000;    // kept in the list; further events are counted only

@@ -68,6 +68,7 @@ AssemblyModel<Cap>::AssemblyModel(const Assembly& a, const GroundMotion& g, doub
     l.mu_s = f.law.mu_s;
     l.mu_k = f.law.mu_k;
     l.no_slip = f.law.mu_s >= kNoSlipFriction;
+    l.stick_band = l.kt * kStickBand;
     // Calibration mass: the upper block's share on this interface, dropped flat on its two points.
     const double m_share = m_[f.upper] / std::max(1, supports[f.upper]);
     l.cn = f.law.damping >= 0 ? f.law.damping : damping_for_restitution(f.law.restitution, m_share, l.kn);
@@ -409,12 +410,6 @@ Transition<typename AssemblyModel<Cap>::Mode> AssemblyModel<Cap>::transition(dou
     } else {
       tr.next.point[p] = PointState::Stick;
       tr.kind = kAsmStick;
-      // The point sticks with its spring where slip left it, on the kinetic cone: with equal
-      // static and kinetic friction its sticking margin starts at zero with zero slope, and
-      // rounding alone would decide whether it slips again at once (zero-time stick/slip
-      // chatter). A spring inside the cone by kStickInset of its force starts the margin
-      // above rounding; a stick that cannot hold still ends at a located slip event.
-      z[iu(p)] *= 1.0 - kStickInset;
     }
   } else if (event < ev_valid(0)) {
     const int p = event - ev_owner(0);

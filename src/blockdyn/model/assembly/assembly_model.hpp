@@ -68,9 +68,11 @@ class AssemblyModel {
   static constexpr int ev_wzero(int b) { return 4 * kPoints + b; }
   static constexpr int ev_collapse(int b) { return 4 * kPoints + Cap + b; }
   static constexpr int ev_bearing(int i) { return 4 * kPoints + 2 * Cap + i; }
-  // Relative inset of a tangential spring's force inside the kinetic cone when a slipping
-  // point sticks (see transition()).
-  static constexpr double kStickInset = 1e-12;
+
+  // Elongation (m) by which a sticking point's tangential spring may exceed the static cone
+  // before it slips (PointLaw::stick_band = k_T kStickBand: 3e-4 N at seed 002's stiffness, far
+  // below any force the runs resolve, above the integration noise of the spring).
+  static constexpr double kStickBand = 1e-10;
 
   // noise_band (rad, m): a block's rotation has passed 0 once it is this far on the other side,
   // and a contact end passes to the other corner once the corners are this far apart: at rest

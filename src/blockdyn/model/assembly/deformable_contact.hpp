@@ -25,6 +25,11 @@ struct PointLaw {
   // A 90 degree friction angle: the point never slips; its tangential spring is released when
   // the point opens.
   bool no_slip = false;
+  // Hysteresis of the stick-to-slip switch (N): a sticking point slips once its spring exceeds the
+  // static cone by this much. At the switch back to stick the sticking margin starts at zero with
+  // zero slope (equal static and kinetic friction) and the integration error of the spring would
+  // decide alone whether it slips again at once (zero-time stick/slip chatter).
+  double stick_band = 0.0;
   // mu_s = 0: the point never sticks; it stays in slip (no tangential force) while closed.
   bool frictionless() const { return mu_s == 0.0; }
 };
@@ -39,7 +44,7 @@ inline double closing_margin(const PointLaw& l, double d, double d_rate) {
 
 // Sticking points: >= 0 while the spring is inside the static cone.
 inline double sticking_margin(const PointLaw& l, double fn, double u) {
-  return l.no_slip ? 1.0 : l.mu_s * fn - l.kt * std::fabs(u);
+  return l.no_slip ? 1.0 : l.mu_s * fn - l.kt * std::fabs(u) + l.stick_band;
 }
 
 // Slipping points in direction s: the slip rate (>= 0 while slipping goes on).
