@@ -321,3 +321,65 @@ TEST(Geometry, NonPotentialTorqueIsTorquePlusEnergyGradient) {
   }
   EXPECT_GT(two_nonzero, 100);  // the mismatch is a real effect, not rounding
 }
+
+// The two smooth pieces of the Region (FarCorner::Above / Below) equal the Region itself on
+// their own side of the far corner's crossing, to the last bit, and continue it smoothly past it:
+// the Region's second derivative in h jumps at the crossing, each piece's does not.
+TEST(Geometry, FarCornerPiecesMatchOnTheirSideAndAreSmoothPastIt) {
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> U(0.0, 1.0);
+  for (int n = 0; n < 300; ++n) {
+    const double r = 0.05 + 2.9 * U(rng);
+    const double w = (U(rng) < 0.5 ? -1 : 1) * std::atan(r) * (0.01 + 0.98 * U(rng));
+    const Gaps g = gaps(r, std::fabs(w));
+    if (g.other_bottom > g.upper_pivot) continue;  // the far corner is the second to go under
+    const Tilt t = make_tilt(w);
+    const double hc = h_for_depth(r, w, g.other_bottom);  // far corner at the surface
+    const double e = 1e-3 * g.other_bottom;
+    for (double f : {0.5, 1.0, 2.0}) {
+      const double h_above = hc + f * e, h_below = hc - f * e;  // far corner above / below
+      const RegionIntegrals a = region_integrals(r, h_above, t), pa = region_integrals(r, h_above, t, FarCorner::Above);
+      const RegionIntegrals b = region_integrals(r, h_below, t), pb = region_integrals(r, h_below, t, FarCorner::Below);
+      EXPECT_EQ(a.area, pa.area);
+      EXPECT_EQ(a.moment, pa.moment);
+      EXPECT_EQ(b.area, pb.area);
+      EXPECT_EQ(b.moment, pb.moment);
+      EXPECT_EQ(b.depth_far_end, pb.depth_far_end);
+    }
+    // Second differences over a stencil that straddles the crossing against one that does not.
+    auto second = [&](FarCorner far, double h0) {
+      return region_integrals(r, h0 + e, t, far).area - 2 * region_integrals(r, h0, t, far).area +
+             region_integrals(r, h0 - e, t, far).area;
+    };
+    for (FarCorner far : {FarCorner::Above, FarCorner::Below}) {
+      const double side = far == FarCorner::Above ? 1.0 : -1.0;  // h on the piece's own side
+      const double own = second(far, hc + side * 2 * e), across = second(far, hc);
+      EXPECT_NEAR(across, own, 1e-2 * std::fabs(own) + 1e-12 * e * e) << r << " " << w;
+    }
+    const double jump = second(FarCorner::Auto, hc) - second(FarCorner::Above, hc);
+    EXPECT_GT(std::fabs(jump), 0.1 * std::fabs(second(FarCorner::Above, hc + 2 * e)) + 1e-300) << r << " " << w;
+  }
+}
+
+// Past a take-off (the lowest corner above the surface) the chosen pieces continue the
+// one-corner Region K s^2 (s the lowest corner's depth, K = (cot a + tan a) / 2 fixed by the tilt
+// a) to negative s, where the Region itself is empty: the force has no kink at the take-off.
+TEST(Geometry, OneCornerPieceContinuesPastTakeoff) {
+  for (double r : {0.1, 0.5, 1.0, 2.0}) {
+    for (double a : {1e-6, 1e-3, 0.3 * std::atan(r)}) {
+      const Tilt t = make_tilt(a);
+      const double h0 = h_for_depth(r, a, 0.0);  // lowest corner at the surface
+      const double d = 1e-3 * gaps(r, a).other_bottom;
+      const double K = 0.5 * (1.0 / std::tan(a) + std::tan(a));
+      for (double h : {h0 - d, h0 + d}) {
+        const double s = -corner_heights(r, h, t).lowest;  // exact in h
+        const RegionIntegrals piece = region_integrals(r, h, t, FarCorner::Above);
+        EXPECT_NEAR(piece.area, K * s * s, 1e-9 * K * s * s) << r << " " << a << " " << s;
+        if (s > 0.0)
+          EXPECT_EQ(piece.area, region_integrals(r, h, t).area);
+        else
+          EXPECT_EQ(region_integrals(r, h, t).area, 0.0);
+      }
+    }
+  }
+}

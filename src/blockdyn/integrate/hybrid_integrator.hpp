@@ -203,6 +203,9 @@ class HybridIntegrator {
     armed_.fill(true);
     double err_old = 1e-4;
     int zero_time_events = 0;
+    // Zero-duration events at one instant, across chatter resolutions: a resolution that does not
+    // resolve would otherwise loop there for ever.
+    int events_at_instant = 0;
     DenseSegment<N> seg;
     double t_break = next_breakpoint_of(model_, t, mode);
     while (t < t_end) {
@@ -219,6 +222,7 @@ class HybridIntegrator {
         continue;
       }
       ++stats_.accepted;
+      restarting_ = false;
       if (high_order_ && dop853_.stiffness() > 6.1) ++stats_.stiff_steps;
       // The dense output costs DOP853 three more stages: computed only when the scan or an
       // observer evaluates inside the step (else seg holds the step's end points only).
@@ -251,6 +255,7 @@ class HybridIntegrator {
         gd_err_start_ = gd_err_end_;
         h = h_new;
         zero_time_events = 0;
+        events_at_instant = 0;
         for (std::size_t i = 0; i < NE; ++i)
           if (!armed_[i] && g_start_[i] > 0.0) {
             armed_[i] = true;
@@ -287,6 +292,8 @@ class HybridIntegrator {
         if (!obs.on_step(seg, t, te, mode)) return RunStatus::ObserverStop;
       }
       zero_time_events = (te == t) ? zero_time_events + 1 : 0;
+      events_at_instant = (te == t) ? events_at_instant + 1 : 0;
+      if (events_at_instant > kMaxEventsAtInstant * opt_.chatter_limit) return RunStatus::Chatter;
       model_.complete(mode, ze);
       t_clamp = std::numeric_limits<double>::infinity();
       t = te;
@@ -380,6 +387,7 @@ class HybridIntegrator {
   void start_rates(double t, const Mode& mode, const State& z, const State& k1, double h) {
     values_and_rates(t, mode, z, k1, h, g_start_, gd_start_, gd_err_start_);
     remainder_known_ = false;
+    restarting_ = true;
   }
 
   // Observers say whether they evaluate the dense output inside a step (`needs_dense()`,
@@ -459,6 +467,7 @@ class HybridIntegrator {
   // After a rejected step: shrink h, or report why integration cannot go on.
   std::optional<RunStatus> shrink_rejected_step(double err, double t, double& h) {
     ++stats_.rejected;
+    if (restarting_) ++stats_.rejected_at_restart;
     just_rejected_ = true;
     if (!std::isfinite(err) && h < 1e-300) return RunStatus::NonFinite;
     const double expo = high_order_ ? Dop853<N>::kOrderExponent : Dopri5<N>::kOrderExponent;
@@ -726,6 +735,7 @@ class HybridIntegrator {
 
   static constexpr int kMaxSamples = 64;
   static constexpr int kPolishIterations = 2;
+  static constexpr int kMaxEventsAtInstant = 4;  // chatter resolutions tried at one instant
   static constexpr int kMaxRefine = 2;          // extra samples in a doubtful stretch before a search
   static constexpr int kSubdivision = 5;        // doubtful stretches are located to 1/32 of a step
   static constexpr double kRateStep = 0x1p-20;  // difference quotients over this fraction of a step
@@ -735,6 +745,7 @@ class HybridIntegrator {
   IntegratorOptions opt_;
   bool high_order_;
   bool just_rejected_ = false;
+  bool restarting_ = true;  // no step accepted since the last restart
   Dopri5<N> dopri5_;
   Dop853<N> dop853_;
   StepperStats stats_;

@@ -151,6 +151,7 @@ json result_json(const BlockParams& p, const GroundMotion& g, const SimulationOp
   j["work_ground"] = r.work_ground();
   j["steps"] = r.stats.accepted;
   j["rejected_steps"] = r.stats.rejected;
+  j["rejected_at_restart"] = r.stats.rejected_at_restart;
   j["rhs_evals"] = r.stats.rhs_evals;
   json counts = json::object();
   for (int k = 0; k < kNumEventKinds; ++k)
@@ -220,6 +221,7 @@ json rigid_result_json(const RigidBlockParams& p, const GroundMotion& g, const R
   j["max_abs_energy_change"] = r.max_abs_energy_change;
   j["steps"] = r.stats.accepted;
   j["rejected_steps"] = r.stats.rejected;
+  j["rejected_at_restart"] = r.stats.rejected_at_restart;
   j["rhs_evals"] = r.stats.rhs_evals;
   json counts = json::object();
   for (int k = 0; k < kNumRigidEventKinds; ++k)

@@ -15,8 +15,9 @@ struct FoundationForce {
   int corners_below = 0;
 };
 
-inline FoundationForce foundation_force(const BlockParams& p, double h, const Tilt& t) {
-  const RegionIntegrals g = region_integrals(p.r, h, t);
+inline FoundationForce foundation_force(const BlockParams& p, double h, const Tilt& t,
+                                        FarCorner far = FarCorner::Auto) {
+  const RegionIntegrals g = region_integrals(p.r, h, t, far);
   const double kr = p.k / p.r;
   FoundationForce f;
   f.Ry = kr * g.area;
