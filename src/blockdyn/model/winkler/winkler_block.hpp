@@ -52,6 +52,9 @@ class WinklerBlock {
 
   void rhs(double t, const Mode& m, const State& z, State& dz) const;
   void events(double t, const Mode& m, const State& z, std::array<double, kNumEvents>& g) const;
+  // Event function i alone (equal to events()[i]): a root search needs one function, and only the
+  // friction margin in contact needs the foundation force.
+  double event_value(double t, const Mode& m, const State& z, int i) const;
   // The event functions and their time derivatives along dz = f(t, z), with one tilt evaluation
   // (closed forms; in contact the friction margin's rate is left NaN for the integrator).
   void event_rates(double t, const Mode& m, const State& z, const State& dz, std::array<double, kNumEvents>& g,
@@ -78,6 +81,7 @@ class WinklerBlock {
   std::optional<std::string> validity_problem(const State& z) const;
 
  private:
+  double event_from(int i, double t, const Mode& m, const State& z, const Tilt& tilt, const CornerHeights& ch) const;
   // The event function of the far corner's crossing is far_corner_sign * (its height): +1 while
   // it is taken as above, -1 below, 0 when there is no such event (flight, or a mode with Auto).
   static int far_corner_sign(const Mode& m);
