@@ -53,7 +53,7 @@ class WinklerRecorder final : public Observer<WinklerBlock> {
 
   bool on_event(const WinklerBlock& m, const Event& e) override {
     const EventKind kind = EventKind(e.kind);
-    if (kind == EventKind::GroundBreak || kind == EventKind::FarCornerCrossing) return true;
+    if (kind == EventKind::GroundBreak) return true;
     if (kind == EventKind::WZero) ++res_.ihor;
     ++res_.event_counts[int(kind)];
     EventRecord rec{e.t, kind, e.from, e.to, e.z, res_.ihor};

@@ -15,9 +15,8 @@ struct FoundationForce {
   int corners_below = 0;
 };
 
-inline FoundationForce foundation_force(const BlockParams& p, double h, const Tilt& t,
-                                        FarCorner far = FarCorner::Auto) {
-  const RegionIntegrals g = region_integrals(p.r, h, t, far);
+inline FoundationForce foundation_force(const BlockParams& p, double h, const Tilt& t) {
+  const RegionIntegrals g = region_integrals(p.r, h, t);
   const double kr = p.k / p.r;
   FoundationForce f;
   f.Ry = kr * g.area;

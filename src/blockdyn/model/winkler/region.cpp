@@ -40,28 +40,20 @@ struct Accum {
   double area = 0, moment = 0, s2 = 0;
 };
 
-// Adds the integrals of s over the linear piece from (a, sa) to (b, sb).
-void add_piece(double a, double sa, double b, double sb, Accum& acc) {
-  const double L = b - a;
-  acc.area += 0.5 * L * (sa + sb);
-  acc.moment += L / 6.0 * ((2.0 * a + b) * sa + (a + 2.0 * b) * sb);
-  acc.s2 += L / 3.0 * (sa * sa + sa * sb + sb * sb);
-}
-
-// The abscissa where the line through (a, sa) and (b, sb) meets the surface s = 0.
-double surface_crossing(double a, double sa, double b, double sb) { return a + (b - a) * (sa / (sa - sb)); }
-
 // Adds the integrals of max(0, s) over the linear piece from (a, sa) to (b, sb), a <= b.
 void add_segment(double a, double sa, double b, double sb, Accum& acc) {
   if (sa <= 0.0 && sb <= 0.0) return;
   if (sa < 0.0) {  // clip at the surface crossing
-    a = surface_crossing(a, sa, b, sb);
+    a = a + (b - a) * (sa / (sa - sb));
     sa = 0.0;
   } else if (sb < 0.0) {
-    b = surface_crossing(a, sa, b, sb);
+    b = a + (b - a) * (sa / (sa - sb));
     sb = 0.0;
   }
-  add_piece(a, sa, b, sb, acc);
+  const double L = b - a;
+  acc.area += 0.5 * L * (sa + sb);
+  acc.moment += L / 6.0 * ((2.0 * a + b) * sa + (a + 2.0 * b) * sb);
+  acc.s2 += L / 3.0 * (sa * sa + sa * sb + sb * sb);
 }
 
 }  // namespace
@@ -70,7 +62,7 @@ RegionIntegrals region_integrals(double r, double h, double w) {
   return region_integrals(r, h, make_tilt(w));
 }
 
-RegionIntegrals region_integrals(double r, double h, const Tilt& t, FarCorner far) {
+RegionIntegrals region_integrals(double r, double h, const Tilt& t) {
   const double c = t.c, sn = t.s;
   const CornerHeights y = corner_heights(r, h, t);
   // Envelope for tilt a >= 0, abscissae about the centre: upper-left corner -> lower-left
@@ -78,33 +70,14 @@ RegionIntegrals region_integrals(double r, double h, const Tilt& t, FarCorner fa
   const double x_ul = -0.5 * (r * c + sn), x_ll = -0.5 * (r * c - sn), x_lr = 0.5 * (r * c + sn);
   const double s_ul = -y.upper_pivot_side, s_ll = -y.lowest, s_lr = -y.other_bottom;
   Accum acc;
-  // The triangle piece of the bottom edge needs the edge tilted (at w = 0 both bottom corners
-  // are at one depth and only the trapezoid exists).
-  if (far == FarCorner::Above && !(s_ll > s_lr)) far = FarCorner::Auto;
-  // With a chosen piece the side edge's triangle is continued too, past the lowest corner's rise
-  // above the surface (a take-off, an event of the models that choose): its area s_ll^2 / (2 sin w)
-  // stays a smooth function there instead of ending in a kink. The upper corner is above the
-  // surface in any state a model integrates (s_ul < s_ll: the side edge rises from the corner).
-  if (far == FarCorner::Auto || s_ul >= 0.0)
-    add_segment(x_ul, s_ul, x_ll, s_ll, acc);
-  else
-    add_piece(surface_crossing(x_ul, s_ul, x_ll, s_ll), 0.0, x_ll, s_ll, acc);
-  double depth_far_end = std::max(0.0, s_lr);
-  if (far == FarCorner::Below) {
-    add_piece(x_ll, s_ll, x_lr, s_lr, acc);
-    depth_far_end = s_lr;
-  } else if (far == FarCorner::Above) {
-    add_piece(x_ll, s_ll, surface_crossing(x_ll, s_ll, x_lr, s_lr), 0.0, acc);
-    depth_far_end = 0.0;
-  } else {
-    add_segment(x_ll, s_ll, x_lr, s_lr, acc);
-  }
+  add_segment(x_ul, s_ul, x_ll, s_ll, acc);
+  add_segment(x_ll, s_ll, x_lr, s_lr, acc);
   RegionIntegrals out;
   out.area = acc.area;
   out.moment = (t.sign < 0) ? -acc.moment : acc.moment;
   out.s2 = acc.s2;
   out.depth_pivot_end = std::max(0.0, s_ul);
-  out.depth_far_end = depth_far_end;
+  out.depth_far_end = std::max(0.0, s_lr);
   out.corners_below = int(s_ll > 0.0) + int(s_lr > 0.0) + int(s_ul > 0.0);
   return out;
 }

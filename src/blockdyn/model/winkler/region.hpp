@@ -52,19 +52,8 @@ struct CornerHeights {
 CornerHeights corner_heights(double r, double h, const Tilt& t);
 CornerHeights corner_heights(double r, double h, double w);
 
-// How the Region treats the far bottom corner (the other end of the bottom edge). Auto: as it
-// is (the Region clipped at the surface). Above / Below: as if it were above (the bottom edge's
-// triangle, clipped where the edge's line meets the surface, even past the corner) or below (the
-// edge's trapezoid, not clipped) the surface: the two smooth pieces of the Region, each continued
-// past the corner's crossing. The foundation force has a kink where the far corner crosses the
-// surface; a model that makes the crossing an event integrates each piece on its own side.
-// With Above or Below the lowest corner's side-edge triangle is continued as well past a take-off
-// (where the Region ends with a kink): its area K s^2 in the corner's depth s stays K s^2 for
-// s < 0.
-enum class FarCorner : unsigned char { Auto, Above, Below };
-
 // Region integrals for a block of aspect ratio r with centre height h = y - 1/2 and tilt w.
-RegionIntegrals region_integrals(double r, double h, const Tilt& t, FarCorner far = FarCorner::Auto);
+RegionIntegrals region_integrals(double r, double h, const Tilt& t);
 RegionIntegrals region_integrals(double r, double h, double w);
 
 // Brute-force midpoint quadrature of the same integrals from the envelope s(X) (tests only).

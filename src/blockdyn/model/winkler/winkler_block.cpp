@@ -22,7 +22,6 @@ const char* to_string(EventKind k) {
     case EventKind::Invalid: return "invalid";
     case EventKind::GroundBreak: return "ground_break";
     case EventKind::GrazingHold: return "grazing_hold";
-    case EventKind::FarCornerCrossing: return "far_corner_crossing";
   }
   return "?";
 }
@@ -44,7 +43,7 @@ BlockForces WinklerBlock::forces(double t, const Mode& m, const State& z, const 
     f.v_corner = z[kVX] + arm.B * z[kVW];
     return f;
   }
-  const FoundationForce ff = foundation_force(p_, z[kH], tilt, m.far);
+  const FoundationForce ff = foundation_force(p_, z[kH], tilt);
   f.Ry = ff.Ry;
   f.torque = ff.torque;
   f.torque_nonpot = ff.torque_nonpot;
@@ -109,10 +108,6 @@ double WinklerBlock::event_from(int i, double t, const Mode& m, const State& z, 
     case kEvInvalid: return std::max(ch.other_bottom, ch.upper_pivot_side);  // third-lowest corner
     case kEvSurface: return (m.regime == Regime::Flight) ? ch.lowest : -ch.lowest;
     case kEvWZero: return m.side * z[kW];
-    case kEvFarCorner: {
-      const int far = far_corner_sign(m);
-      return far != 0 ? far * ch.other_bottom : 1.0;
-    }
     case kEvFriction:
       if (m.regime == Regime::Contact) return forces(t, m, z, tilt).margin;
       if (m.regime == Regime::Slide && p_.mu > 0.0)
@@ -144,9 +139,6 @@ void WinklerBlock::event_rates(double t, const Mode& m, const State& z, const St
   gdot[kEvSurface] = surface_sign * lowest_rate;
   g[kEvWZero] = m.side * z[kW];
   gdot[kEvWZero] = m.side * vw;
-  const int far = far_corner_sign(m);
-  g[kEvFarCorner] = far != 0 ? far * ch.other_bottom : 1.0;
-  gdot[kEvFarCorner] = far * other_rate;
   if (m.regime == Regime::Contact) {
     g[kEvFriction] = forces(t, m, z, tilt).margin;
     gdot[kEvFriction] = std::numeric_limits<double>::quiet_NaN();
@@ -194,40 +186,11 @@ WinklerBlock::Mode WinklerBlock::initial_mode(double t, const State& z) const {
     if (side == 0) side = 1;
   }
   if (airborne) return Mode{Regime::Flight, side, 0, 0.0};
-  return with_far_corner(submerged_mode(t, z, side), z);
-}
-
-int WinklerBlock::far_corner_sign(const Mode& m) {
-  if (m.regime == Regime::Flight || m.far == FarCorner::Auto) return 0;
-  return m.far == FarCorner::Above ? 1 : -1;
-}
-
-WinklerBlock::Mode WinklerBlock::with_far_corner(Mode m, const State& z) const {
-  m.far = m.regime == Regime::Flight                              ? FarCorner::Auto
-          : corner_heights(p_.r, z[kH], z[kW]).other_bottom < 0.0 ? FarCorner::Below
-                                                                   : FarCorner::Above;
-  return m;
+  return submerged_mode(t, z, side);
 }
 
 Transition<WinklerBlock::Mode> WinklerBlock::transition(double t, const Mode& m, State& z,
                                                         int event) const {
-  Transition<Mode> tr = transition_regime(t, m, z, event);
-  // The piece of the foundation force follows the far corner: toggled at its crossing, kept
-  // through the other events of a contact phase (at a crossing the state alone cannot tell the
-  // side, and a disagreement would fire the crossing again), read from the state on landing.
-  if (tr.next.regime == Regime::Flight)
-    tr.next.far = FarCorner::Auto;
-  else if (event == kEvFarCorner)
-    tr.next.far = m.far == FarCorner::Above ? FarCorner::Below : FarCorner::Above;
-  else if (m.regime != Regime::Flight && m.far != FarCorner::Auto)
-    tr.next.far = m.far;
-  else
-    tr.next = with_far_corner(tr.next, z);
-  return tr;
-}
-
-Transition<WinklerBlock::Mode> WinklerBlock::transition_regime(double t, const Mode& m, State& z,
-                                                               int event) const {
   Transition<Mode> tr;
   tr.next = m;
   switch (event) {
@@ -263,9 +226,6 @@ Transition<WinklerBlock::Mode> WinklerBlock::transition_regime(double t, const M
                                                         : EventKind::SlideReversal);
       }
       break;
-    case kEvFarCorner:
-      tr.kind = int(EventKind::FarCornerCrossing);
-      break;
     case kBreakpoint:
       tr.kind = int(EventKind::GroundBreak);
       if (m.regime == Regime::Contact) tr.next = stick_or_slip(t, z, m.side, 0);
@@ -280,7 +240,7 @@ std::optional<Transition<WinklerBlock::Mode>> WinklerBlock::resolve_chatter(doub
   // Grazing: v_P and the friction margin vanish together. Hold the corner, unless the contact
   // margin is falling (Ry -> 0 just before a take-off): then holding fails again at once, and the
   // corner must slip in the direction the stick reaction pushes (the only consistent mode).
-  Mode c{Regime::Contact, m.side, 0, z[kX] - m.side * corner_arms(p_.r, z[kW], m.side).A, m.far};
+  Mode c{Regime::Contact, m.side, 0, z[kX] - m.side * corner_arms(p_.r, z[kW], m.side).A};
   State zc = z;
   complete(c, zc);
   const BlockForces f0 = forces(t, c, zc);
@@ -293,8 +253,8 @@ std::optional<Transition<WinklerBlock::Mode>> WinklerBlock::resolve_chatter(doub
     complete(c, z1);
     const double margin1 = forces(t + dt, c, z1).margin;
     if (margin1 < 0.0 && margin1 < f0.margin && f0.Rx != 0.0) {
-      return Transition<Mode>{Mode{Regime::Slide, m.side, sign_of(f0.Rx), 0.0, m.far}, false,
-                              int(EventKind::ContactToSlide)};
+      const Mode s{Regime::Slide, m.side, sign_of(f0.Rx), 0.0};
+      return Transition<Mode>{s, false, int(EventKind::ContactToSlide)};
     }
   }
   return Transition<Mode>{c, false, int(EventKind::GrazingHold)};

@@ -19,9 +19,7 @@ namespace blockdyn {
 
 enum class EventKind : int {
   ContactToSlide, SlideToContact, SlideReversal, Takeoff, Landing, WZero, Overturn, Invalid,
-  GroundBreak, GrazingHold,
-  // The far bottom corner crosses the foundation surface: the force changes piece (not reported).
-  FarCornerCrossing
+  GroundBreak, GrazingHold
 };
 const char* to_string(EventKind k);
 
@@ -39,7 +37,7 @@ struct BlockForces {
 class WinklerBlock {
  public:
   // Event functions; each stays >= 0 while the current mode is valid.
-  enum Event : int { kEvOverturn, kEvInvalid, kEvSurface, kEvWZero, kEvFriction, kEvFarCorner, kNumBlockEvents };
+  enum Event : int { kEvOverturn, kEvInvalid, kEvSurface, kEvWZero, kEvFriction, kNumBlockEvents };
   static constexpr std::size_t kDim = kStateDim;
   static constexpr std::size_t kNumEvents = kNumBlockEvents;
   using Mode = BlockMode;
@@ -65,8 +63,6 @@ class WinklerBlock {
   double next_breakpoint(double t) const { return forced_ ? ground_.next_break(t) : INFINITY; }
   std::optional<Transition<Mode>> resolve_chatter(double t, const Mode& m, const State& z) const;
   double step_hint(const Mode& m) const;
-  // The mode's piece of the foundation force set from where the far bottom corner is in z.
-  Mode with_far_corner(Mode m, const State& z) const;
   State abs_tol_scale() const;
 
   BlockForces forces(double t, const Mode& m, const State& z) const;
@@ -82,10 +78,6 @@ class WinklerBlock {
 
  private:
   double event_from(int i, double t, const Mode& m, const State& z, const Tilt& tilt, const CornerHeights& ch) const;
-  // The event function of the far corner's crossing is far_corner_sign * (its height): +1 while
-  // it is taken as above, -1 below, 0 when there is no such event (flight, or a mode with Auto).
-  static int far_corner_sign(const Mode& m);
-  Transition<Mode> transition_regime(double t, const Mode& m, State& z, int event) const;
   Mode submerged_mode(double t, const State& z, int side) const;
   Mode stick_or_slip(double t, const State& z, int side, int slip_sign_if_stuck_fails) const;
   double ah(double t) const { return forced_ ? ground_.horizontal.at(t) : 0.0; }

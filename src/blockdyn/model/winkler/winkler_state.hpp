@@ -5,8 +5,6 @@
 #include <cstddef>
 #include <cstdint>
 
-#include "blockdyn/model/winkler/region.hpp"
-
 namespace blockdyn {
 
 // Layout of the integrated state vector. The vertical coordinate is stored as h = y - 1/2
@@ -44,10 +42,6 @@ struct BlockMode {
   int side = 1;           // lowest corner: +1 lower-left (w > 0), -1 lower-right (w < 0)
   int friction_sign = 0;  // slide: Rx = friction_sign * mu * Ry (opposes the corner's velocity)
   double anchor = 0.0;    // contact: abscissa of the pivot corner
-  // Contact and slide: the piece of the foundation force in use, by where the far bottom corner
-  // is (its crossing of the surface is an event). Auto (a mode built by hand): the Region as it
-  // is, kink included, and no event.
-  FarCorner far = FarCorner::Auto;
 };
 
 }  // namespace blockdyn
