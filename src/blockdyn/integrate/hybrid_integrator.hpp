@@ -155,20 +155,6 @@ constexpr bool has_event_rates() {
   };
 }
 
-// Event function `index` alone at (t, z): the model's
-// `double event_value(double t, const Mode&, const State& z, int index) const` where it has one
-// (it must equal events()[index]), else all of events().
-template <class M>
-double event_value_of(const M& m, double t, const typename M::Mode& mode, const Vec<M::kDim>& z, int index) {
-  if constexpr (requires {
-                  { m.event_value(t, mode, z, index) } -> std::convertible_to<double>;
-                })
-    return m.event_value(t, mode, z, index);
-  std::array<double, M::kNumEvents> g;
-  m.events(t, mode, z, g);
-  return g[std::size_t(index)];
-}
-
 template <class Mode, std::size_t N>
 struct EventInfo {
   double t;
@@ -452,8 +438,10 @@ class HybridIntegrator {
   void polish_event(F&, double t, double t_next, int index, const Mode& mode, const State&, const State&, double& te,
                     State& ze, DenseSegment<N>& seg) {
     auto g_at = [&](double tt, State y) {
+      Events ge;
       model_.complete(mode, y);
-      return event_value_of(model_, std::fmin(tt, *t_clamp_), mode, y, index);
+      model_.events(std::fmin(tt, *t_clamp_), mode, y, ge);
+      return ge[std::size_t(index)];
     };
     double g_e = g_at(te, ze);
     const double reach = 1e-3 * (te - t), t_fresh = te;
@@ -540,10 +528,9 @@ class HybridIntegrator {
       if (!armed_[i]) continue;
       const double g0 = g_start_[i], g1 = g_end_[i];
       auto gi = [&](double tt) {
-        State yy;
-        seg.eval(tt, yy);
-        model_.complete(mode, yy);
-        return event_value_of(model_, std::fmin(tt, *t_clamp_), mode, yy, int(i));
+        Events ge;
+        g_all(tt, ge);
+        return ge[i];
       };
       // A function at or below zero at the step start (one that just fired, or any other at a
       // restart) fires there unless it rises first.
@@ -582,7 +569,9 @@ class HybridIntegrator {
           const double sm = model_minimum(env.model, sa, sb);
           const double tm = t0 + sm * h;
           if (!(tm > t0) || !(tm < t1)) break;
-          const double gm = gi(tm);
+          Events gm_all;
+          g_all(tm, gm_all);
+          const double gm = gm_all[i];
           if (gm < 0.0) {
             root = dip_crossing(gi, t0, h, sa, tm, g0, gm, at_zero);
             settled = true;

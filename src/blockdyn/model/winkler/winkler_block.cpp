@@ -93,28 +93,17 @@ void WinklerBlock::events(double t, const Mode& m, const State& z,
                           std::array<double, kNumEvents>& g) const {
   const Tilt tilt = make_tilt(z[kW]);
   const CornerHeights ch = corner_heights(p_.r, z[kH], tilt);
-  for (int i = 0; i < int(kNumEvents); ++i) g[std::size_t(i)] = event_from(i, t, m, z, tilt, ch);
-}
-
-double WinklerBlock::event_value(double t, const Mode& m, const State& z, int i) const {
-  const Tilt tilt = make_tilt(z[kW]);
-  return event_from(i, t, m, z, tilt, corner_heights(p_.r, z[kH], tilt));
-}
-
-double WinklerBlock::event_from(int i, double t, const Mode& m, const State& z, const Tilt& tilt,
-                                const CornerHeights& ch) const {
-  switch (i) {
-    case kEvOverturn: return alpha_ - m.side * z[kW];
-    case kEvInvalid: return std::max(ch.other_bottom, ch.upper_pivot_side);  // third-lowest corner
-    case kEvSurface: return (m.regime == Regime::Flight) ? ch.lowest : -ch.lowest;
-    case kEvWZero: return m.side * z[kW];
-    case kEvFriction:
-      if (m.regime == Regime::Contact) return forces(t, m, z, tilt).margin;
-      if (m.regime == Regime::Slide && p_.mu > 0.0)
-        return -m.friction_sign * (z[kVX] + corner_arms(p_.r, tilt, m.side).B * z[kVW]);
-      return 1.0;
+  g[kEvOverturn] = alpha_ - m.side * z[kW];
+  g[kEvInvalid] = std::max(ch.other_bottom, ch.upper_pivot_side);  // third-lowest corner
+  g[kEvSurface] = (m.regime == Regime::Flight) ? ch.lowest : -ch.lowest;
+  g[kEvWZero] = m.side * z[kW];
+  if (m.regime == Regime::Contact) {
+    g[kEvFriction] = forces(t, m, z, tilt).margin;
+  } else if (m.regime == Regime::Slide && p_.mu > 0.0) {
+    g[kEvFriction] = -m.friction_sign * (z[kVX] + corner_arms(p_.r, tilt, m.side).B * z[kVW]);
+  } else {
+    g[kEvFriction] = 1.0;
   }
-  return 1.0;
 }
 
 void WinklerBlock::event_rates(double t, const Mode& m, const State& z, const State& dz,

@@ -50,9 +50,6 @@ class WinklerBlock {
 
   void rhs(double t, const Mode& m, const State& z, State& dz) const;
   void events(double t, const Mode& m, const State& z, std::array<double, kNumEvents>& g) const;
-  // Event function i alone (equal to events()[i]): a root search needs one function, and only the
-  // friction margin in contact needs the foundation force.
-  double event_value(double t, const Mode& m, const State& z, int i) const;
   // The event functions and their time derivatives along dz = f(t, z), with one tilt evaluation
   // (closed forms; in contact the friction margin's rate is left NaN for the integrator).
   void event_rates(double t, const Mode& m, const State& z, const State& dz, std::array<double, kNumEvents>& g,
@@ -77,7 +74,6 @@ class WinklerBlock {
   std::optional<std::string> validity_problem(const State& z) const;
 
  private:
-  double event_from(int i, double t, const Mode& m, const State& z, const Tilt& tilt, const CornerHeights& ch) const;
   Mode submerged_mode(double t, const State& z, int side) const;
   Mode stick_or_slip(double t, const State& z, int side, int slip_sign_if_stuck_fails) const;
   double ah(double t) const { return forced_ ? ground_.horizontal.at(t) : 0.0; }
