@@ -30,3 +30,20 @@ static void BM_Ic1(benchmark::State& state) {
                                                         benchmark::Counter::kInvert);
 }
 BENCHMARK(BM_Ic1)->Arg(10000)->Arg(1000000)->Arg(100000000)->Unit(benchmark::kMillisecond);
+
+// One right-hand side of the Winkler block in contact (arg 0) or slide (arg 1), both bottom
+// corners submerged (the micro-bouncing late regime of the costliest map points): the model's
+// share of the cost of a step (twelve of these per DOP853 step).
+static void BM_WinklerRhs(benchmark::State& state) {
+  const BlockParams p{1.0, 0.2, 1e7};
+  const WinklerBlock block(p);
+  const BlockMode mode = state.range(0) == 0 ? BlockMode{Regime::Contact, 1, 0, 0.0} : BlockMode{Regime::Slide, 1, 1, 0.0};
+  BlockStateVec z{0.5, -2e-7, 2e-10, 0.0, 3e-4, 1e-8, 0.0, 0.0, 0.0};
+  BlockStateVec dz{};
+  for (auto _ : state) {
+    z[kH] += 1e-22;  // a new state each time, so nothing is hoisted out of the loop
+    block.rhs(0.0, mode, z, dz);
+    benchmark::DoNotOptimize(dz);
+  }
+}
+BENCHMARK(BM_WinklerRhs)->Arg(0)->Arg(1);

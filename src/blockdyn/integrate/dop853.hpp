@@ -168,10 +168,11 @@ class Dop853 {
     k_[12] = k_end;
     st.rhs_evals += 12;
     double err5 = 0.0, err3 = 0.0, stnum = 0.0, stden = 0.0;
+    const Vec<N> c5 = combine_all(e5), cb = combine_all(b);
     for (std::size_t i = 0; i < N; ++i) {
       const double sk = atol[i] + rtol[i] * std::fmax(std::fabs(y[i]), std::fabs(y_new[i]));
-      const double est5 = combine(e5, i) / sk;
-      const double est3 = (combine(b, i) - bhh0 * k_[0][i] - bhh8 * k_[8][i] - bhh11 * k_[11][i]) / sk;
+      const double est5 = c5[i] / sk;
+      const double est3 = (cb[i] - bhh0 * k_[0][i] - bhh8 * k_[8][i] - bhh11 * k_[11][i]) / sk;
       err5 += est5 * est5;
       err3 += est3 * est3;
       const double dk = k_end[i] - k_[11][i], dy = y_new[i] - y_stage11_[i];
@@ -202,6 +203,7 @@ class Dop853 {
     seg.t0 = t;
     seg.h = h;
     seg.terms = 8;
+    const Vec<N> c4 = combine_all(d4), c5 = combine_all(d5), c6 = combine_all(d6), c7 = combine_all(d7);
     for (std::size_t i = 0; i < N; ++i) {
       const double ydiff = y_new[i] - y[i];
       const double bspl = h * k1[i] - ydiff;
@@ -209,24 +211,31 @@ class Dop853 {
       seg.r[1][i] = ydiff;
       seg.r[2][i] = bspl;
       seg.r[3][i] = ydiff - h * k_end[i] - bspl;
-      seg.r[4][i] = h * combine(d4, i);
-      seg.r[5][i] = h * combine(d5, i);
-      seg.r[6][i] = h * combine(d6, i);
-      seg.r[7][i] = h * combine(d7, i);
+      seg.r[4][i] = h * c4[i];
+      seg.r[5][i] = h * c5[i];
+      seg.r[6][i] = h * c6[i];
+      seg.r[7][i] = h * c7[i];
     }
   }
 
  private:
+  // sum_m a_m k_{j_m} for every component at once: the loop over components innermost, so it
+  // vectorizes (each component still adds its terms in the row's order).
   template <std::size_t M>
-  double combine(const dop853::Row<M>& row, std::size_t i) const {
-    double s = 0.0;
-    for (std::size_t m = 0; m < M; ++m) s += row.a[m] * k_[row.j[m]][i];
+  Vec<N> combine_all(const dop853::Row<M>& row) const {
+    Vec<N> s{};
+    for (std::size_t m = 0; m < M; ++m) {
+      const double a = row.a[m];
+      const Vec<N>& k = k_[row.j[m]];
+      for (std::size_t i = 0; i < N; ++i) s[i] += a * k[i];
+    }
     return s;
   }
 
   template <std::size_t M>
   void stage_state(const Vec<N>& y, double h, const dop853::Row<M>& row, Vec<N>& out) const {
-    for (std::size_t i = 0; i < N; ++i) out[i] = y[i] + h * combine(row, i);
+    const Vec<N> s = combine_all(row);
+    for (std::size_t i = 0; i < N; ++i) out[i] = y[i] + h * s[i];
   }
 
   template <class Rhs, std::size_t M>

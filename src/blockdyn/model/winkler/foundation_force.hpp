@@ -15,19 +15,28 @@ struct FoundationForce {
   int corners_below = 0;
 };
 
-inline FoundationForce foundation_force(const BlockParams& p, double h, const Tilt& t) {
-  const RegionIntegrals g = region_integrals(p.r, h, t);
-  const double kr = p.k / p.r;
+// The stiffness per unit length k / r and k / (6 r), fixed for a block (computed once by the model).
+struct FoundationStiffness {
+  double kr = 0.0, kr6 = 0.0;
+  explicit FoundationStiffness(const BlockParams& p) : kr(p.k / p.r), kr6(kr / 6.0) {}
+};
+
+inline FoundationForce foundation_force(const FoundationStiffness& ks, double r, double h, const Tilt& t) {
+  const RegionIntegrals g = region_integrals(r, h, t);
   FoundationForce f;
-  f.Ry = kr * g.area;
-  f.torque = kr * g.moment;
+  f.Ry = ks.kr * g.area;
+  f.torque = ks.kr * g.moment;
   // dV/dw = -torque + sign(w) (k / 6r) (s_far^3 - s_pivot_end^3): virtual work of a rigid
   // rotation on the clipped envelope, with the moving wall at each submerged Region end.
   const double a = g.depth_far_end, b = g.depth_pivot_end;
-  const double mismatch = kr / 6.0 * (a * a * a - b * b * b);
+  const double mismatch = ks.kr6 * (a * a * a - b * b * b);
   f.torque_nonpot = t.sign * mismatch;
   f.corners_below = g.corners_below;
   return f;
+}
+
+inline FoundationForce foundation_force(const BlockParams& p, double h, const Tilt& t) {
+  return foundation_force(FoundationStiffness(p), p.r, h, t);
 }
 
 inline FoundationForce foundation_force(const BlockParams& p, double h, double w) {

@@ -27,7 +27,7 @@ const char* to_string(EventKind k) {
 }
 
 WinklerBlock::WinklerBlock(const BlockParams& p, const GroundMotion& g)
-    : p_(p), ground_(g), forced_(!g.is_zero()), inertia_(p.inertia()), alpha_(p.alpha()) {}
+    : p_(p), ground_(g), forced_(!g.is_zero()), inertia_(p.inertia()), alpha_(p.alpha()), stiffness_(p) {}
 
 BlockForces WinklerBlock::forces(double t, const Mode& m, const State& z) const {
   return forces(t, m, z, make_tilt(z[kW]));
@@ -43,7 +43,7 @@ BlockForces WinklerBlock::forces(double t, const Mode& m, const State& z, const 
     f.v_corner = z[kVX] + arm.B * z[kVW];
     return f;
   }
-  const FoundationForce ff = foundation_force(p_, z[kH], tilt);
+  const FoundationForce ff = foundation_force(stiffness_, p_.r, z[kH], tilt);
   f.Ry = ff.Ry;
   f.torque = ff.torque;
   f.torque_nonpot = ff.torque_nonpot;

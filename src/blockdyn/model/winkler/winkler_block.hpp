@@ -83,6 +83,7 @@ class WinklerBlock {
   GroundMotion ground_;
   bool forced_;
   double inertia_, alpha_;
+  FoundationStiffness stiffness_;
 };
 
 }  // namespace blockdyn
