@@ -155,6 +155,20 @@ constexpr bool has_event_rates() {
   };
 }
 
+// Completes z (complete()) and evaluates the event functions there (events()). A model may fuse
+// the two (`void complete_and_events(double t, const Mode&, State& z, Events& g) const`, optional),
+// e.g. to compute its trigonometry once: the event scan does this at every point it looks at.
+template <class M>
+void complete_and_events(const M& m, double t, const typename M::Mode& mode, Vec<M::kDim>& z,
+                         std::array<double, M::kNumEvents>& g) {
+  if constexpr (requires { m.complete_and_events(t, mode, z, g); }) {
+    m.complete_and_events(t, mode, z, g);
+  } else {
+    m.complete(mode, z);
+    m.events(t, mode, z, g);
+  }
+}
+
 template <class Mode, std::size_t N>
 struct EventInfo {
   double t;
@@ -368,10 +382,9 @@ class HybridIntegrator {
     const double d = kRateStep * delta;
     State zd;
     for (std::size_t i = 0; i < N; ++i) zd[i] = z[i] + d * dz[i];
-    model_.complete(mode, zd);
     Events gdd;
     const double td = t + d;
-    model_.events(std::fmin(td, *t_clamp_), mode, zd, gdd);
+    complete_and_events(model_, std::fmin(td, *t_clamp_), mode, zd, gdd);
     const double dt = td - t;  // the step actually taken in t
     for (std::size_t i = 0; i < NE; ++i) {
       if (!std::isnan(gd[i])) continue;
@@ -439,8 +452,7 @@ class HybridIntegrator {
                     State& ze, DenseSegment<N>& seg) {
     auto g_at = [&](double tt, State y) {
       Events ge;
-      model_.complete(mode, y);
-      model_.events(std::fmin(tt, *t_clamp_), mode, y, ge);
+      complete_and_events(model_, std::fmin(tt, *t_clamp_), mode, y, ge);
       return ge[std::size_t(index)];
     };
     double g_e = g_at(te, ze);
@@ -516,8 +528,7 @@ class HybridIntegrator {
     auto g_all = [&](double tt, Events& ge) {
       State yy;
       seg.eval(tt, yy);
-      model_.complete(mode, yy);
-      model_.events(std::fmin(tt, *t_clamp_), mode, yy, ge);
+      complete_and_events(model_, std::fmin(tt, *t_clamp_), mode, yy, ge);
     };
     for (int j = 1; j <= S; ++j, ++n) {
       s_at[n] = double(j) / (S + 1);

@@ -84,14 +84,29 @@ void WinklerBlock::rhs(double t, const Mode& m, const State& z, State& dz) const
 
 void WinklerBlock::complete(const Mode& m, State& z) const {
   if (m.regime != Regime::Contact) return;
-  const CornerArms arm = corner_arms(p_.r, z[kW], m.side);
+  complete(m, z, make_tilt(z[kW]));
+}
+
+void WinklerBlock::complete(const Mode& m, State& z, const Tilt& tilt) const {
+  if (m.regime != Regime::Contact) return;
+  const CornerArms arm = corner_arms(p_.r, tilt, m.side);
   z[kX] = m.anchor + m.side * arm.A;
   z[kVX] = -arm.B * z[kVW];
 }
 
+void WinklerBlock::complete_and_events(double t, const Mode& m, State& z, std::array<double, kNumEvents>& g) const {
+  const Tilt tilt = make_tilt(z[kW]);  // complete() changes x and x', not w
+  complete(m, z, tilt);
+  events(t, m, z, tilt, g);
+}
+
 void WinklerBlock::events(double t, const Mode& m, const State& z,
                           std::array<double, kNumEvents>& g) const {
-  const Tilt tilt = make_tilt(z[kW]);
+  events(t, m, z, make_tilt(z[kW]), g);
+}
+
+void WinklerBlock::events(double t, const Mode& m, const State& z, const Tilt& tilt,
+                          std::array<double, kNumEvents>& g) const {
   const CornerHeights ch = corner_heights(p_.r, z[kH], tilt);
   g[kEvOverturn] = alpha_ - m.side * z[kW];
   g[kEvInvalid] = std::max(ch.other_bottom, ch.upper_pivot_side);  // third-lowest corner

@@ -55,6 +55,8 @@ class WinklerBlock {
   void event_rates(double t, const Mode& m, const State& z, const State& dz, std::array<double, kNumEvents>& g,
                    std::array<double, kNumEvents>& gdot) const;
   void complete(const Mode& m, State& z) const;
+  // complete() then events() with one tilt evaluation (the integrator's event scan).
+  void complete_and_events(double t, const Mode& m, State& z, std::array<double, kNumEvents>& g) const;
   // event kBreakpoint: the ground motion kinks or jumps at t (contact re-checks friction).
   Transition<Mode> transition(double t, const Mode& m, State& z, int event) const;
   double next_breakpoint(double t) const { return forced_ ? ground_.next_break(t) : INFINITY; }
@@ -74,6 +76,8 @@ class WinklerBlock {
   std::optional<std::string> validity_problem(const State& z) const;
 
  private:
+  void complete(const Mode& m, State& z, const Tilt& tilt) const;
+  void events(double t, const Mode& m, const State& z, const Tilt& tilt, std::array<double, kNumEvents>& g) const;
   Mode submerged_mode(double t, const State& z, int side) const;
   Mode stick_or_slip(double t, const State& z, int side, int slip_sign_if_stuck_fails) const;
   double ah(double t) const { return forced_ ? ground_.horizontal.at(t) : 0.0; }
