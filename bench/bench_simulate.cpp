@@ -22,12 +22,10 @@ static void BM_Ic1(benchmark::State& state) {
   (void)sec_per_run;
   state.counters["steps"] = double(r.stats.accepted);
   state.counters["rhs_evals"] = double(r.stats.rhs_evals);
-  state.counters["ns_per_step"] =
-      benchmark::Counter(double(r.stats.accepted), benchmark::Counter::kIsIterationInvariantRate |
-                                                       benchmark::Counter::kInvert);
-  state.counters["ns_per_rhs"] =
-      benchmark::Counter(double(r.stats.rhs_evals), benchmark::Counter::kIsIterationInvariantRate |
-                                                        benchmark::Counter::kInvert);
+  state.counters["ns_per_step"] = benchmark::Counter(
+      double(r.stats.accepted), benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+  state.counters["ns_per_rhs"] = benchmark::Counter(
+      double(r.stats.rhs_evals), benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
 }
 BENCHMARK(BM_Ic1)->Arg(10000)->Arg(1000000)->Arg(100000000)->Unit(benchmark::kMillisecond);
 
@@ -37,7 +35,8 @@ BENCHMARK(BM_Ic1)->Arg(10000)->Arg(1000000)->Arg(100000000)->Unit(benchmark::kMi
 static void BM_WinklerRhs(benchmark::State& state) {
   const BlockParams p{1.0, 0.2, 1e7};
   const WinklerBlock block(p);
-  const BlockMode mode = state.range(0) == 0 ? BlockMode{Regime::Contact, 1, 0, 0.0} : BlockMode{Regime::Slide, 1, 1, 0.0};
+  const BlockMode mode =
+      state.range(0) == 0 ? BlockMode{Regime::Contact, 1, 0, 0.0} : BlockMode{Regime::Slide, 1, 1, 0.0};
   BlockStateVec z{0.5, -2e-7, 2e-10, 0.0, 3e-4, 1e-8, 0.0, 0.0, 0.0};
   BlockStateVec dz{};
   for (auto _ : state) {

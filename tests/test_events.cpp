@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <functional>
 #include <map>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -246,4 +247,38 @@ TEST(Events, StickSlipJustBeforeTakeoffAtEveryTolerance) {
     ASSERT_EQ(a.events[i].kind, b.events[i].kind) << i << " t = " << b.events[i].t;
     EXPECT_NEAR(a.events[i].t, b.events[i].t, 1e-6) << i;
   }
+}
+
+// The event scan's fused complete_and_events() (one tilt for both) gives the same completed
+// state and event values, to the last bit, as complete() then events(), in every regime and
+// on both sides, with and without a ground motion.
+TEST(Events, FusedCompleteAndEventsEqualsTheTwoCalls) {
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> U(-1.0, 1.0);
+  GroundMotion shaken;
+  shaken.horizontal.amplitude = 0.3;
+  shaken.horizontal.frequency = 1.5;
+  int compared = 0;
+  for (const GroundMotion& g : {GroundMotion{}, shaken}) {
+    const BlockParams p{0.4, 0.3, 1e5};
+    const WinklerBlock block(p, g);
+    for (int n = 0; n < 200; ++n) {
+      const int side = U(rng) < 0.0 ? -1 : 1;
+      BlockStateVec z{0.1 * U(rng), 2e-5 * U(rng), side * 0.3 * std::fabs(U(rng)), 0.1 * U(rng), 1e-2 * U(rng),
+                      0.2 * U(rng), 0.0, 0.0, 0.0};
+      for (const BlockMode m : {BlockMode{Regime::Contact, side, 0, 0.05 * U(rng)}, BlockMode{Regime::Slide, side, 1, 0.0},
+                                BlockMode{Regime::Flight, side, 0, 0.0}}) {
+        const double t = 2.0 * std::fabs(U(rng));
+        BlockStateVec a = z, b = z;
+        std::array<double, WinklerBlock::kNumEvents> ga{}, gb{};
+        block.complete(m, a);
+        block.events(t, m, a, ga);
+        block.complete_and_events(t, m, b, gb);
+        for (std::size_t i = 0; i < kStateDim; ++i) EXPECT_EQ(a[i], b[i]) << i;
+        for (std::size_t i = 0; i < ga.size(); ++i) EXPECT_EQ(ga[i], gb[i]) << i << " " << to_string(m.regime);
+        ++compared;
+      }
+    }
+  }
+  EXPECT_EQ(compared, 1200);
 }
