@@ -248,3 +248,57 @@ TEST(Housner, UpliftAtTheStaticThreshold) {
   EXPECT_NEAR(*r.first_uplift_time, std::asin(0.5) / M_PI, 1e-13);
   EXPECT_GT(r.final_state[2], 0.0);  // a_H > 0 tips it counter-clockwise, onto corner A
 }
+
+// A pulse whose peak barely exceeds the threshold (0.2099 g against tan(alpha) = 0.2): the uplift
+// starts with zero rotation, rate and angular acceleration (the force balance tips through zero),
+// and the rotation stays tiny (1e-4 rad). Before the integrator told a dip of its dense output's
+// error (-1e-24) from a crossing, the impact function fired at the uplift instant, the block went
+// back to rest there and uplifted again at the same instant until the run ended in chatter (or,
+// at rtol 1e-8, numerical_failure). Reference: the rocking equation integrated from the uplift
+// time by a fixed-step RK4 written here (independent of the engine) to the first impact.
+TEST(Housner, UpliftFromZeroAccelerationRocksAtEveryTolerance) {
+  const BlockShape s = slender(0.2, 1.5);
+  const double A = 0.2099, T = 0.2586, alpha = s.alpha(), p = s.p();
+  GroundMotion g;
+  g.horizontal.pulse = PulseShape::OneSine;
+  g.horizontal.amplitude = A;
+  g.horizontal.duration = T;
+  const double t0 = std::asin(std::tan(alpha) / A) * T / (2.0 * M_PI);
+  auto acc = [&](double t, double th) {
+    const double ah = t < T ? A * std::sin(2.0 * M_PI * t / T) : 0.0;
+    return -p * p * (std::sin(alpha - th) - ah * std::cos(alpha - th));
+  };
+  double t = t0, th = 0.0, om = 0.0, th_max = 0.0, t_impact = 0.0;
+  const double dt = 2e-6;
+  for (int i = 0; i < 1000000; ++i) {
+    const double k1t = om, k1o = acc(t, th);
+    const double k2t = om + 0.5 * dt * k1o, k2o = acc(t + 0.5 * dt, th + 0.5 * dt * k1t);
+    const double k3t = om + 0.5 * dt * k2o, k3o = acc(t + 0.5 * dt, th + 0.5 * dt * k2t);
+    const double k4t = om + dt * k3o, k4o = acc(t + dt, th + dt * k3t);
+    const double th_new = th + dt / 6.0 * (k1t + 2.0 * k2t + 2.0 * k3t + k4t);
+    const double om_new = om + dt / 6.0 * (k1o + 2.0 * k2o + 2.0 * k3o + k4o);
+    if (th > 0.0 && th_new <= 0.0) {  // back to zero: the first impact (linear interpolation)
+      t_impact = t + dt * th / (th - th_new);
+      break;
+    }
+    t += dt;
+    th = th_new;
+    om = om_new;
+    th_max = std::fmax(th_max, th);
+  }
+  ASSERT_GT(t_impact, t0 + 0.01);
+  ASSERT_GT(th_max, 1e-5);
+  for (double rtol : {1e-6, 1e-8, 1e-10, 1e-12}) {
+    SCOPED_TRACE(rtol);
+    RigidRunOptions o = run_to(t_impact + 1e-3);
+    o.integrator.rtol = rtol;
+    const RigidResult r = simulate_housner(s, std::nullopt, g, RigidInitial{}, o);
+    EXPECT_EQ(r.status, SimStatus::TEnd);
+    ASSERT_TRUE(r.first_uplift_time);
+    EXPECT_NEAR(*r.first_uplift_time, t0, 1e-12);
+    const auto imp = impacts(r);
+    ASSERT_EQ(imp.size(), 1u);
+    EXPECT_NEAR(imp[0].t, t_impact, 1e-6);
+    EXPECT_NEAR(r.max_abs_rotation, th_max, 1e-5 * th_max);
+  }
+}
