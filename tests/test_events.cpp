@@ -282,3 +282,46 @@ TEST(Events, FusedCompleteAndEventsEqualsTheTwoCalls) {
   }
   EXPECT_EQ(compared, 1200);
 }
+
+// After a take-off without ground motion the first flight step is the predicted flight (any step
+// integrates a free flight exactly) instead of the last contact step grown six-fold per step. A
+// block leaving the surface upright at speed v lands after 2 v (free fall, y'' = -1): the first
+// step holds that, within step_hint(); a falling corner, contact, slide and a shaken block keep
+// the step they are given.
+TEST(Events, FirstFlightStepHoldsThePredictedFlight) {
+  const BlockParams p{0.5, 0.2, 1e6};
+  GroundMotion shaken;
+  shaken.horizontal.amplitude = 0.1;
+  shaken.horizontal.frequency = 2.0;
+  const WinklerBlock block(p), shaken_block(p, shaken);
+  const double v = 1e-3, h_in = 1e-7;
+  const BlockMode flight{Regime::Flight, 1, 0, 0.0};
+  BlockStateVec z{0.0, 0.0, 0.0, 0.0, v, 0.0, 0.0, 0.0, 0.0};  // h = 0: the base on the surface
+  BlockStateVec dz;
+  block.rhs(0.0, flight, z, dz);
+  const double h = block.restart_step(0.0, flight, z, dz, h_in);
+  EXPECT_GE(h, 2.0 * v);
+  EXPECT_LE(h, 1.5 * 2.0 * v);
+  EXPECT_LE(h, block.step_hint(flight));
+  EXPECT_EQ(shaken_block.restart_step(0.0, flight, z, dz, h_in), h_in);
+  for (const BlockMode m : {BlockMode{Regime::Contact, 1, 0, 0.0}, BlockMode{Regime::Slide, 1, 1, 0.0}})
+    EXPECT_EQ(block.restart_step(0.0, m, z, dz, h_in), h_in);
+  BlockStateVec falling = z;
+  falling[kVY] = -v;
+  block.rhs(0.0, flight, falling, dz);
+  EXPECT_EQ(block.restart_step(0.0, flight, falling, dz, h_in), h_in);
+  // Integrated: the run starts on the surface, takes off at once and restarts in flight with that
+  // step; the landing is where free fall puts it, for a short flight and for a long one (where
+  // step_hint() caps the first step).
+  for (const double vy : {v, 0.2}) {
+    z[kVY] = vy;
+    SimulationOptions o;
+    o.t_end = 3.0 * vy;
+    const SimulationResult r = simulate(p, {}, z, o);
+    ASSERT_GE(r.events.size(), 2u);
+    EXPECT_EQ(r.events[0].kind, EventKind::Takeoff);
+    EXPECT_EQ(r.events[0].t, 0.0);
+    EXPECT_EQ(r.events[1].kind, EventKind::Landing);
+    EXPECT_NEAR(r.events[1].t, 2.0 * vy, 1e-15 + 1e-13 * vy);
+  }
+}

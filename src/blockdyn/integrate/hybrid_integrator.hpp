@@ -156,6 +156,19 @@ constexpr bool has_event_rates() {
   };
 }
 
+// The first step after an event: `double restart_step(double t, const Mode&, const State& z,
+// const State& dz, double h) const` may return a step other than h, the one the step-size
+// control and step_hint() give (optional; e.g. a whole free flight, which any step integrates
+// exactly, where the control would grow the step from the last contact step's size six-fold per
+// step).
+template <class M>
+double restart_step_of(const M& m, double t, const typename M::Mode& mode, const Vec<M::kDim>& z,
+                       const Vec<M::kDim>& dz, double h) {
+  if constexpr (requires { { m.restart_step(t, mode, z, dz, h) } -> std::convertible_to<double>; })
+    return m.restart_step(t, mode, z, dz, h);
+  return h;
+}
+
 // Completes z (complete()) and evaluates the event functions there (events()). A model may fuse
 // the two (`void complete_and_events(double t, const Mode&, State& z, Events& g) const`, optional),
 // e.g. to compute its trigonometry once: the event scan does this at every point it looks at.
@@ -331,6 +344,7 @@ class HybridIntegrator {
       ++stats_.rhs_evals;
       t_break = next_breakpoint_of(model_, t, mode);
       h = std::fmin(h_new, model_.step_hint(mode));
+      h = restart_step_of(model_, t, mode, z, k1, std::fmin(h, opt_.h_max));
       start_rates(t, mode, z, k1, h);
     }
     return RunStatus::ReachedEnd;

@@ -269,6 +269,17 @@ double WinklerBlock::step_hint(const Mode& m) const {
   return 0.5 / std::sqrt(std::max(1.0, p_.k));
 }
 
+double WinklerBlock::restart_step(double t, const Mode& m, const State& z, const State& dz, double h) const {
+  if (m.regime != Regime::Flight || forced_) return h;
+  std::array<double, kNumEvents> g, gd;
+  event_rates(t, m, z, dz, g, gd);
+  // The lowest corner rises at gd and falls back under gravity (y'' = -1) in about 2 gd; a step
+  // a little longer holds the landing, which the scan then finds.
+  const double flight = 2.0 * gd[kEvSurface];
+  if (!(flight > 0.0)) return h;
+  return std::fmax(h, std::fmin(kFlightStepMargin * flight, step_hint(m)));
+}
+
 WinklerBlock::State WinklerBlock::abs_tol_scale() const {
   State s;
   s.fill(1.0);

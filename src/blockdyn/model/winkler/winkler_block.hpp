@@ -62,6 +62,9 @@ class WinklerBlock {
   double next_breakpoint(double t) const { return forced_ ? ground_.next_break(t) : INFINITY; }
   std::optional<Transition<Mode>> resolve_chatter(double t, const Mode& m, const State& z) const;
   double step_hint(const Mode& m) const;
+  // After a take-off without ground motion: the flight's predicted length (a step integrates a free
+  // flight exactly), if longer than h.
+  double restart_step(double t, const Mode& m, const State& z, const State& dz, double h) const;
   State abs_tol_scale() const;
 
   BlockForces forces(double t, const Mode& m, const State& z) const;
@@ -82,6 +85,8 @@ class WinklerBlock {
   Mode stick_or_slip(double t, const State& z, int side, int slip_sign_if_stuck_fails) const;
   double ah(double t) const { return forced_ ? ground_.horizontal.at(t) : 0.0; }
   double av(double t) const { return forced_ ? ground_.vertical.at(t) : 0.0; }
+
+  static constexpr double kFlightStepMargin = 1.25;  // first flight step / predicted flight
 
   BlockParams p_;
   GroundMotion ground_;
