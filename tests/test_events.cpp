@@ -325,3 +325,40 @@ TEST(Events, FirstFlightStepHoldsThePredictedFlight) {
     EXPECT_NEAR(r.events[1].t, 2.0 * vy, 1e-15 + 1e-13 * vy);
   }
 }
+
+// After a landing (slide or contact) with the far bottom corner just above the surface and
+// falling, the first step ends just past its submersion (a kink of the foundation force, which
+// a longer step crosses only to be rejected): its height over its falling speed, 1 % more. Not
+// when the block is upright (both corners meet the surface together), when that corner rises, or
+// when its submersion is far (a linear prediction is then poor).
+TEST(Events, FirstContactStepEndsJustPastTheFarCornerSubmersion) {
+  const BlockParams p{1.0, 0.2, 1e7};
+  const WinklerBlock block(p);
+  const double w = 2e-10, vy = -2e-4, h_in = 1.6e-4;
+  for (const BlockMode m : {BlockMode{Regime::Slide, 1, 1, 0.0}, BlockMode{Regime::Contact, 1, 0, 0.0}}) {
+    // The lowest corner (side +1, w > 0) at the surface: h = (r sin w - (1 - cos w)) / 2.
+    BlockStateVec z{0.0, 0.5 * (p.r * std::sin(w) - (1.0 - std::cos(w))), w, 0.0, vy, 0.0, 0.0, 0.0, 0.0};
+    block.complete(m, z);
+    BlockStateVec dz;
+    block.rhs(0.0, m, z, dz);
+    const double far = corner_heights(p.r, z[kH], w).other_bottom;  // r sin w above the surface
+    const double to_kink = far / -vy;
+    const double h = block.restart_step(0.0, m, z, dz, h_in);
+    EXPECT_GT(h, to_kink);
+    EXPECT_LT(h, 1.02 * to_kink);
+    BlockStateVec upright = z;
+    upright[kW] = 0.0;
+    upright[kH] = 0.0;
+    block.complete(m, upright);
+    EXPECT_EQ(block.restart_step(0.0, m, upright, dz, h_in), h_in);
+    BlockStateVec rising = z;
+    rising[kVY] = -vy;
+    block.rhs(0.0, m, rising, dz);
+    EXPECT_EQ(block.restart_step(0.0, m, rising, dz, h_in), h_in);
+    BlockStateVec far_above = z;
+    far_above[kW] = 1e-3;  // far corner 5e-4 up, 2.5 time units away at this speed
+    block.complete(m, far_above);
+    block.rhs(0.0, m, far_above, dz);
+    EXPECT_EQ(block.restart_step(0.0, m, far_above, dz, h_in), h_in);
+  }
+}

@@ -270,7 +270,21 @@ double WinklerBlock::step_hint(const Mode& m) const {
 }
 
 double WinklerBlock::restart_step(double t, const Mode& m, const State& z, const State& dz, double h) const {
-  if (m.regime != Regime::Flight || forced_) return h;
+  if (m.regime != Regime::Flight) {
+    // In contact or slide with the far bottom corner just above the surface and falling: its
+    // submersion is a kink of the foundation force, and a step across it is rejected until it is
+    // about 1e-6 long. End the first step just past it (linear prediction, good when it is close).
+    const Tilt tilt = make_tilt(z[kW]);
+    const CornerHeights ch = corner_heights(p_.r, z[kH], tilt);
+    const double abs_rate = tilt.sign != 0 ? tilt.sign * dz[kW] : std::fabs(dz[kW]);
+    const double rate = dz[kH] + 0.5 * (p_.r * tilt.c * abs_rate + tilt.s * abs_rate);
+    if (!(ch.other_bottom > 0.0) || !(rate < 0.0)) return h;
+    // (Upright, both corners meet the surface together: no separate kink.)
+    const double to_kink = ch.other_bottom / -rate, hint = step_hint(m);
+    if (to_kink > 1e-6 * hint && to_kink < 0.1 * hint) return std::fmin(h, 1.01 * to_kink);
+    return h;
+  }
+  if (forced_) return h;
   std::array<double, kNumEvents> g, gd;
   event_rates(t, m, z, dz, g, gd);
   // The lowest corner rises at gd and falls back under gravity (y'' = -1) in about 2 gd; a step
