@@ -350,6 +350,7 @@ TEST(Events, FirstContactStepEndsJustPastTheFarCornerSubmersion) {
     upright[kW] = 0.0;
     upright[kH] = 0.0;
     block.complete(m, upright);
+    block.rhs(0.0, m, upright, dz);
     EXPECT_EQ(block.restart_step(0.0, m, upright, dz, h_in), h_in);
     BlockStateVec rising = z;
     rising[kVY] = -vy;

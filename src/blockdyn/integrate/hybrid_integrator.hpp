@@ -15,7 +15,6 @@
 // of the breakpoint, and at the breakpoint the model's transition is called with event index
 // kBreakpoint so it can re-select its mode. The integrator knows nothing about blocks.
 #include <algorithm>
-#include <cstdio>
 #include <array>
 #include <cmath>
 #include <concepts>
@@ -781,6 +780,7 @@ class HybridIntegrator {
   static constexpr double kRateStep = 0x1p-20;  // difference quotients over this fraction of a step
   static constexpr int kResample = 4;           // interior samples at least every this many steps
   static constexpr double kLagSafety = 8.0;     // margin on a remainder measured on an earlier step
+  // A dip after a restart shallower than this (or rtol) times the function is not resolved.
   static constexpr double kDipRounding = 64 * std::numeric_limits<double>::epsilon();
   const Model& model_;
   IntegratorOptions opt_;

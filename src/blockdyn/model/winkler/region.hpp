@@ -72,6 +72,16 @@ inline CornerHeights corner_heights(double r, double h, const Tilt& t) {
 
 inline CornerHeights corner_heights(double r, double h, double w) { return corner_heights(r, h, make_tilt(w)); }
 
+// The same heights' time derivatives, given h' and w'. At w = 0 the lowest corner is the one |w|
+// makes lowest as it grows.
+inline CornerHeights corner_height_rates(double r, const Tilt& t, double h_rate, double w_rate) {
+  const double abs_rate = t.sign != 0 ? t.sign * w_rate : std::fabs(w_rate);
+  const double rs_rate = r * t.c * abs_rate;  // d(r sin|w|)/dt
+  const double omc_rate = t.s * abs_rate;     // d(1 - cos w)/dt
+  return {h_rate - 0.5 * (rs_rate - omc_rate), h_rate + 0.5 * (rs_rate + omc_rate),
+          h_rate - 0.5 * (omc_rate + rs_rate)};
+}
+
 namespace region_detail {
 
 struct Accum {

@@ -126,21 +126,15 @@ void WinklerBlock::event_rates(double t, const Mode& m, const State& z, const St
   const Tilt tilt = make_tilt(z[kW]);
   const CornerHeights ch = corner_heights(p_.r, z[kH], tilt);
   const double vw = dz[kW];
-  // d|w|/dt; at w = 0 the lowest corner is the one |w| makes lowest as it grows.
-  const double abs_rate = tilt.sign != 0 ? tilt.sign * vw : std::fabs(vw);
-  const double rs_rate = p_.r * tilt.c * abs_rate;  // d(r sin|w|)/dt
-  const double omc_rate = tilt.s * abs_rate;        // d(1 - cos w)/dt
-  const double lowest_rate = dz[kH] - 0.5 * (rs_rate - omc_rate);
-  const double other_rate = dz[kH] + 0.5 * (rs_rate + omc_rate);
-  const double upper_rate = dz[kH] - 0.5 * (omc_rate + rs_rate);
+  const CornerHeights rate = corner_height_rates(p_.r, tilt, dz[kH], vw);
   g[kEvOverturn] = alpha_ - m.side * z[kW];
   gdot[kEvOverturn] = -m.side * vw;
   const bool other = ch.other_bottom >= ch.upper_pivot_side;
   g[kEvInvalid] = other ? ch.other_bottom : ch.upper_pivot_side;
-  gdot[kEvInvalid] = other ? other_rate : upper_rate;
+  gdot[kEvInvalid] = other ? rate.other_bottom : rate.upper_pivot_side;
   const double surface_sign = (m.regime == Regime::Flight) ? 1.0 : -1.0;
   g[kEvSurface] = surface_sign * ch.lowest;
-  gdot[kEvSurface] = surface_sign * lowest_rate;
+  gdot[kEvSurface] = surface_sign * rate.lowest;
   g[kEvWZero] = m.side * z[kW];
   gdot[kEvWZero] = m.side * vw;
   if (m.regime == Regime::Contact) {
@@ -269,29 +263,26 @@ double WinklerBlock::step_hint(const Mode& m) const {
   return 0.5 / std::sqrt(std::max(1.0, p_.k));
 }
 
-double WinklerBlock::restart_step(double t, const Mode& m, const State& z, const State& dz, double h) const {
-  if (m.regime != Regime::Flight) {
-    // In contact or slide with the far bottom corner just above the surface and falling: its
-    // submersion is a kink of the foundation force, and a step across it is rejected until it is
-    // about 1e-6 long. End the first step just past it (linear prediction, good when it is close).
-    const Tilt tilt = make_tilt(z[kW]);
-    const CornerHeights ch = corner_heights(p_.r, z[kH], tilt);
-    const double abs_rate = tilt.sign != 0 ? tilt.sign * dz[kW] : std::fabs(dz[kW]);
-    const double rate = dz[kH] + 0.5 * (p_.r * tilt.c * abs_rate + tilt.s * abs_rate);
-    if (!(ch.other_bottom > 0.0) || !(rate < 0.0)) return h;
-    // (Upright, both corners meet the surface together: no separate kink.)
-    const double to_kink = ch.other_bottom / -rate, hint = step_hint(m);
-    if (to_kink > 1e-6 * hint && to_kink < 0.1 * hint) return std::fmin(h, 1.01 * to_kink);
-    return h;
+double WinklerBlock::restart_step(double, const Mode& m, const State& z, const State& dz, double h) const {
+  const Tilt tilt = make_tilt(z[kW]);
+  const CornerHeights rate = corner_height_rates(p_.r, tilt, dz[kH], dz[kW]);
+  if (m.regime == Regime::Flight) {
+    if (forced_) return h;
+    // The lowest corner rises at its rate and falls back under gravity (y'' = -1) in about twice
+    // that; a step a little longer holds the landing, which the scan then finds.
+    const double flight = 2.0 * rate.lowest;
+    if (!(flight > 0.0)) return h;
+    return std::fmax(h, std::fmin(kFlightStepMargin * flight, step_hint(m)));
   }
-  if (forced_) return h;
-  std::array<double, kNumEvents> g, gd;
-  event_rates(t, m, z, dz, g, gd);
-  // The lowest corner rises at gd and falls back under gravity (y'' = -1) in about 2 gd; a step
-  // a little longer holds the landing, which the scan then finds.
-  const double flight = 2.0 * gd[kEvSurface];
-  if (!(flight > 0.0)) return h;
-  return std::fmax(h, std::fmin(kFlightStepMargin * flight, step_hint(m)));
+  // In contact or slide with the far bottom corner just above the surface and falling: its
+  // submersion is a kink of the foundation force, and a step across it is rejected until it is
+  // about 1e-6 long. End the first step just past it (linear prediction, good when it is close;
+  // upright, both corners meet the surface together and there is no separate kink).
+  const double far = corner_heights(p_.r, z[kH], tilt).other_bottom;
+  if (!(far > 0.0) || !(rate.other_bottom < 0.0)) return h;
+  const double to_kink = far / -rate.other_bottom, hint = step_hint(m);
+  if (to_kink > 1e-6 * hint && to_kink < 0.1 * hint) return std::fmin(h, 1.01 * to_kink);
+  return h;
 }
 
 WinklerBlock::State WinklerBlock::abs_tol_scale() const {

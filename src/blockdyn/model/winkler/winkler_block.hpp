@@ -62,8 +62,9 @@ class WinklerBlock {
   double next_breakpoint(double t) const { return forced_ ? ground_.next_break(t) : INFINITY; }
   std::optional<Transition<Mode>> resolve_chatter(double t, const Mode& m, const State& z) const;
   double step_hint(const Mode& m) const;
-  // After a take-off without ground motion: the flight's predicted length (a step integrates a free
-  // flight exactly), if longer than h.
+  // The first step after an event, given h: after a take-off without ground motion the flight's
+  // predicted length (a step integrates a free flight exactly) if longer; after a landing, the
+  // time just past the far bottom corner's submersion (a kink of the force) if it is close.
   double restart_step(double t, const Mode& m, const State& z, const State& dz, double h) const;
   State abs_tol_scale() const;
 
