@@ -153,7 +153,12 @@ INSTANTIATE_TEST_SUITE_P(
                       TablePoint{"4.51", 0.2, 0.1, 1e6, false, 100, ResponseType::RockToVertical},
                       TablePoint{"4.53", 0.2, 0.3, 1e4, true, 100, ResponseType::SteadyRocking},
                       TablePoint{"4.54", 0.1, 0.2, 1e4, true, 100, ResponseType::SettleDown},
-                      TablePoint{"4.55", 0.2, 0.15, 1e6, true, 100, ResponseType::RockToVertical},
+                      // k = 1e5 of the OCR's "1e5 or 1e6": with k = 1e6 the late rotational
+                      // share sits on the settle-down threshold 0.1 (0.03-0.5 over t = 100..1000
+                      // as the step sequence changes, so settle down in some runs). With k = 1e5
+                      // it is 0.36-0.60 and the late flight fraction 0.22-0.57 at rtol
+                      // 1e-9..1e-12: rock to vertical by a wide margin, in every run.
+                      TablePoint{"4.55", 0.2, 0.15, 1e5, true, 100, ResponseType::RockToVertical},
                       // Below k_uns(0.2) no stable equilibrium exists: the block falls over.
                       TablePoint{"(k<k_uns)", 0.2, 0.2, 1e2, false, 20, ResponseType::Overturned}),
     [](const ::testing::TestParamInfo<TablePoint>& point) {

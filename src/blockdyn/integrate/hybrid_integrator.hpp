@@ -168,6 +168,17 @@ double restart_step_of(const M& m, double t, const typename M::Mode& mode, const
   return h;
 }
 
+// The predicted time to the next kink of the right-hand side ahead of (t, z): a point where it
+// is continuous but not smooth, and not an event (`double kink_ahead(double t, const Mode&,
+// const State& z, const State& dz) const`, optional; infinity: none known).
+template <class M>
+double kink_ahead_of(const M& m, double t, const typename M::Mode& mode, const Vec<M::kDim>& z,
+                     const Vec<M::kDim>& dz) {
+  if constexpr (requires { { m.kink_ahead(t, mode, z, dz) } -> std::convertible_to<double>; })
+    return m.kink_ahead(t, mode, z, dz);
+  return std::numeric_limits<double>::infinity();
+}
+
 // Completes z (complete()) and evaluates the event functions there (events()). A model may fuse
 // the two (`void complete_and_events(double t, const Mode&, State& z, Events& g) const`, optional),
 // e.g. to compute its trigonometry once: the event scan does this at every point it looks at.
@@ -280,7 +291,7 @@ class HybridIntegrator {
         g_start_ = g_end_;
         gd_start_ = gd_end_;
         gd_err_start_ = gd_err_end_;
-        h = h_new;
+        h = cut_at_kink(t, mode, z, k1, h_new);
         zero_time_events = 0;
         events_at_instant = 0;
         for (std::size_t i = 0; i < NE; ++i)
@@ -344,6 +355,7 @@ class HybridIntegrator {
       t_break = next_breakpoint_of(model_, t, mode);
       h = std::fmin(h_new, model_.step_hint(mode));
       h = restart_step_of(model_, t, mode, z, k1, std::fmin(h, opt_.h_max));
+      h = cut_at_kink(t, mode, z, k1, h);
       start_rates(t, mode, z, k1, h);
     }
     return RunStatus::ReachedEnd;
@@ -488,6 +500,19 @@ class HybridIntegrator {
       ze = zn;
       g_e = g_n;
     }
+  }
+
+  // A step that would cross a kink the model predicts stops at it instead: across a kink the
+  // error estimate is large until the step is tiny (a cascade of rejections), and the step
+  // finally accepted across it can be off by more than its estimate says. A kink predicted
+  // within a tenth of the step (where the Winkler block's second-order prediction is good to
+  // better than 1e-5 of the distance) is stepped onto, ending past it by 1e-6 of the distance;
+  // a farther one is approached to 0.9 of it first. The steps after it grow from there under
+  // the step-size control (resuming the size wanted before the cut: docs/performance.md).
+  double cut_at_kink(double t, const Mode& mode, const State& z, const State& dz, double h) const {
+    const double tau = kink_ahead_of(model_, t, mode, z, dz);
+    if (!(tau < h)) return h;
+    return tau < kKinkNear * h ? kKinkOvershoot * tau : kKinkApproach * tau;
   }
 
   // After a rejected step: shrink h, or report why integration cannot go on.
@@ -780,6 +805,9 @@ class HybridIntegrator {
   static constexpr double kRateStep = 0x1p-20;  // difference quotients over this fraction of a step
   static constexpr int kResample = 4;           // interior samples at least every this many steps
   static constexpr double kLagSafety = 8.0;     // margin on a remainder measured on an earlier step
+  static constexpr double kKinkNear = 0.1;              // a kink this close (in steps) is stepped onto
+  static constexpr double kKinkOvershoot = 1.0 + 1e-6;  // ... ending this far past it
+  static constexpr double kKinkApproach = 0.9;          // a farther one approached to this fraction
   // A dip after a restart shallower than this (or rtol) times the function is not resolved.
   static constexpr double kDipRounding = 64 * std::numeric_limits<double>::epsilon();
   const Model& model_;

@@ -269,25 +269,46 @@ double WinklerBlock::step_hint(const Mode& m) const {
 }
 
 double WinklerBlock::restart_step(double, const Mode& m, const State& z, const State& dz, double h) const {
+  if (m.regime != Regime::Flight || forced_) return h;
+  const CornerHeights rate = corner_height_rates(p_.r, make_tilt(z[kW]), dz[kH], dz[kW]);
+  // The lowest corner rises at its rate and falls back under gravity (y'' = -1) in about twice
+  // that; a step a little longer holds the landing, which the scan then finds.
+  const double flight = 2.0 * rate.lowest;
+  if (!(flight > 0.0)) return h;
+  return std::fmax(h, std::fmin(kFlightStepMargin * flight, step_hint(m)));
+}
+
+namespace {
+// The first tau > 0 with x + v tau + a tau^2 / 2 = 0 (infinity if none).
+double first_zero(double x, double v, double a) {
+  if (std::fabs(a) * std::fabs(x) < 1e-12 * v * v) return (v != 0.0 && -x / v > 0.0) ? -x / v : INFINITY;
+  const double disc = v * v - 2.0 * a * x;
+  if (!(disc >= 0.0)) return INFINITY;
+  const double q = -(v + std::copysign(std::sqrt(disc), v));  // the two roots: q / a and 2 x / q
+  double best = INFINITY;
+  for (const double r : {q / a, q != 0.0 ? 2.0 * x / q : INFINITY})
+    if (r > 0.0 && r < best) best = r;
+  return best;
+}
+}  // namespace
+
+double WinklerBlock::kink_ahead(double, const Mode& m, const State& z, const State& dz) const {
+  if (m.regime == Regime::Flight) return INFINITY;
+  // Corner heights along the motion to second order: y'' and w'' from dz, the corner offsets'
+  // derivatives from the tilt (u = |w|: d(r sin u) = r cos u u', d(1 - cos u) = sin u u').
   const Tilt tilt = make_tilt(z[kW]);
-  const CornerHeights rate = corner_height_rates(p_.r, tilt, dz[kH], dz[kW]);
-  if (m.regime == Regime::Flight) {
-    if (forced_) return h;
-    // The lowest corner rises at its rate and falls back under gravity (y'' = -1) in about twice
-    // that; a step a little longer holds the landing, which the scan then finds.
-    const double flight = 2.0 * rate.lowest;
-    if (!(flight > 0.0)) return h;
-    return std::fmax(h, std::fmin(kFlightStepMargin * flight, step_hint(m)));
-  }
-  // In contact or slide with the far bottom corner just above the surface and falling: its
-  // submersion is a kink of the foundation force, and a step across it is rejected until it is
-  // about 1e-6 long. End the first step just past it (linear prediction, good when it is close;
-  // upright, both corners meet the surface together and there is no separate kink).
-  const double far = corner_heights(p_.r, z[kH], tilt).other_bottom;
-  if (!(far > 0.0) || !(rate.other_bottom < 0.0)) return h;
-  const double to_kink = far / -rate.other_bottom, hint = step_hint(m);
-  if (to_kink > 1e-6 * hint && to_kink < 0.1 * hint) return std::fmin(h, 1.01 * to_kink);
-  return h;
+  const CornerHeights ch = corner_heights(p_.r, z[kH], tilt);
+  const int sg = tilt.sign != 0 ? tilt.sign : (dz[kW] >= 0.0 ? 1 : -1);
+  const double u1 = sg * dz[kW], u2 = sg * dz[kVW];
+  const double rs1 = p_.r * tilt.c * u1, omc1 = tilt.s * u1;
+  const double rs2 = p_.r * (tilt.c * u2 - tilt.s * u1 * u1), omc2 = tilt.s * u2 + tilt.c * u1 * u1;
+  const double far = first_zero(ch.other_bottom, dz[kH] + 0.5 * (rs1 + omc1), dz[kVY] + 0.5 * (rs2 + omc2));
+  // The take-off: the lowest corner rising through the surface.
+  const double low_rate = dz[kH] - 0.5 * (rs1 - omc1);
+  const double lift = ch.lowest < 0.0 ? first_zero(ch.lowest, low_rate, dz[kVY] - 0.5 * (rs2 - omc2)) : INFINITY;
+  const double tau = std::fmin(far, lift);
+  // Upright, both corners meet the surface together: no separate kink to step onto.
+  return tau > 1e-6 * step_hint(m) ? tau : INFINITY;
 }
 
 WinklerBlock::State WinklerBlock::abs_tol_scale() const {

@@ -63,9 +63,11 @@ class WinklerBlock {
   std::optional<Transition<Mode>> resolve_chatter(double t, const Mode& m, const State& z) const;
   double step_hint(const Mode& m) const;
   // The first step after an event, given h: after a take-off without ground motion the flight's
-  // predicted length (a step integrates a free flight exactly) if longer; after a landing, the
-  // time just past the far bottom corner's submersion (a kink of the force) if it is close.
+  // predicted length (a step integrates a free flight exactly) if longer.
   double restart_step(double t, const Mode& m, const State& z, const State& dz, double h) const;
+  // In contact or slide: the predicted time (second order) to the next kink of the foundation
+  // force, where the far bottom corner crosses the surface or the lowest one leaves it.
+  double kink_ahead(double t, const Mode& m, const State& z, const State& dz) const;
   State abs_tol_scale() const;
 
   BlockForces forces(double t, const Mode& m, const State& z) const;
