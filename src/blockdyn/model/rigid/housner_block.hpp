@@ -28,7 +28,12 @@ struct HousnerMode {
 class HousnerBlock {
  public:
   // theta, theta', work of the ground's inertial forces, kinetic energy lost at impacts.
+  // Class-scoped on purpose, reusing names of the Winkler state indices (namespace scope):
+  // clang's -Wshadow reports the hiding, which is what is meant here.
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wshadow"
   enum : std::size_t { kTheta, kOmega, kWorkGround, kWorkImpact, kDimH };
+#pragma GCC diagnostic pop
   enum Event : int { kEvImpact, kEvOverturn, kEvAlpha, kEvUplift, kEvLiftOff, kNumEventsH };
   static constexpr std::size_t kDim = kDimH;
   static constexpr std::size_t kNumEvents = kNumEventsH;

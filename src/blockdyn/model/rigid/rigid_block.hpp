@@ -38,7 +38,12 @@ struct RigidReactions {
 
 class RigidBlock {
  public:
+  // Class-scoped on purpose, reusing names of the Winkler state indices (namespace scope):
+  // clang's -Wshadow reports the hiding, which is what is meant here.
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wshadow"
   enum : std::size_t { kX, kY, kTheta, kVX, kVY, kOmega, kWorkFriction, kWorkGround, kWorkImpact, kDimR };
+#pragma GCC diagnostic pop
   enum Event : int { kEvContact0, kEvContact1, kEvFriction, kEvImpact, kEvOverturn, kEvAlpha, kEvPainleve, kNumEventsR };
   static constexpr std::size_t kDim = kDimR;
   static constexpr std::size_t kNumEvents = kNumEventsR;
