@@ -34,41 +34,29 @@ BlockForces WinklerBlock::forces(double t, const Mode& m, const State& z) const 
 }
 
 BlockForces WinklerBlock::forces(double t, const Mode& m, const State& z, const Tilt& tilt) const {
-  BlockForces f;
+  // Every branch returns all the fields at once: a default-constructed result assigned field by
+  // field was zero-filled first, with a `rep stos` that cost about a tenth of this function.
+  // Fields: Rx, Ry, torque, torque_nonpot, ax, ay, aw, v_corner, margin, vx, corners_below.
   const double a_h = ah(t), a_v = av(t);
   const CornerArms arm = corner_arms(p_.r, tilt, m.side);
-  if (m.regime == Regime::Flight) {
-    f.ax = -a_h;
-    f.ay = -1.0 - a_v;
-    f.v_corner = z[kVX] + arm.B * z[kVW];
-    return f;
-  }
+  if (m.regime == Regime::Flight)
+    return BlockForces{0.0, 0.0, 0.0, 0.0, -a_h, -1.0 - a_v, 0.0, z[kVX] + arm.B * z[kVW], 0.0, 0.0, 0};
   const FoundationForce ff = foundation_force(stiffness_, p_.r, z[kH], tilt);
-  f.Ry = ff.Ry;
-  f.torque = ff.torque;
   // The lowest corner's side, not the sign of w: the two agree except at w = 0 (an upright start,
   // or a w_zero event whose state is left of the root by rounding), where the non-potential
   // torque jumps and the side says which way the block goes on. With sign(w) there, the first
   // stage of the next step took the wrong branch, an error the step's estimate did not see
   // (5e-11 in the energy balance at rtol 1e-11).
-  f.torque_nonpot = m.side * ff.wall_mismatch;
-  f.corners_below = ff.corners_below;
-  f.ay = ff.Ry - 1.0 - a_v;
+  const double torque_nonpot = m.side * ff.wall_mismatch;
+  const double ay = ff.Ry - 1.0 - a_v;
   if (m.regime == Regime::Contact) {
     const StickReaction st = stick_reaction(inertia_, arm, m.side, ff.torque, z[kVW], a_h);
-    f.Rx = st.Rx;
-    f.aw = st.ww;
-    f.ax = st.Rx - a_h;
-    f.margin = friction_margin(p_.mu, ff.Ry, st.Rx);
-    f.v_corner = 0.0;
-    f.vx = -arm.B * z[kVW];
-  } else {
-    f.Rx = m.friction_sign * p_.mu * ff.Ry;
-    f.ax = f.Rx - a_h;
-    f.aw = (ff.torque + arm.B * f.Rx) / inertia_;
-    f.v_corner = z[kVX] + arm.B * z[kVW];
+    return BlockForces{st.Rx, ff.Ry, ff.torque, torque_nonpot, st.Rx - a_h, ay, st.ww, 0.0,
+                       friction_margin(p_.mu, ff.Ry, st.Rx), -arm.B * z[kVW], ff.corners_below};
   }
-  return f;
+  const double Rx = m.friction_sign * p_.mu * ff.Ry;
+  return BlockForces{Rx, ff.Ry, ff.torque, torque_nonpot, Rx - a_h, ay, (ff.torque + arm.B * Rx) / inertia_,
+                     z[kVX] + arm.B * z[kVW], 0.0, 0.0, ff.corners_below};
 }
 
 void WinklerBlock::rhs(double t, const Mode& m, const State& z, State& dz) const {
