@@ -11,12 +11,14 @@ namespace blockdyn {
 struct FoundationForce {
   double Ry = 0.0;              // vertical reaction, units of weight
   double torque = 0.0;          // (x_R - x) * Ry
-  double torque_nonpot = 0.0;   // torque + dV/dw, V the spring energy
-  // The non-potential torque for the lowest corner on side +1 (torque_nonpot = sign(w) times it).
-  // It does not vanish as w -> 0 with two corners submerged (a wall at the far end only), so
-  // at w = 0 the side the block tips to decides it: see WinklerBlock::forces.
+  // (k / 6r) (s_far^3 - s_pivot_end^3): the non-potential torque for the lowest corner on side +1.
   double wall_mismatch = 0.0;
   int corners_below = 0;
+
+  // The non-potential torque torque + dV/dw (V the spring energy) with the lowest corner on side
+  // `side` (sign(w) away from the upright). It does not vanish as w -> 0 with two corners
+  // submerged (a wall at the far end only), so at w = 0 the side the block tips to decides it.
+  double torque_nonpot(int side) const { return side * wall_mismatch; }
 };
 
 // The stiffness per unit length k / r and k / (6 r), fixed for a block (computed once by the model).
@@ -33,9 +35,7 @@ inline FoundationForce foundation_force(const FoundationStiffness& ks, double r,
   // dV/dw = -torque + sign(w) (k / 6r) (s_far^3 - s_pivot_end^3): virtual work of a rigid
   // rotation on the clipped envelope, with the moving wall at each submerged Region end.
   const double a = g.depth_far_end, b = g.depth_pivot_end;
-  const double mismatch = ks.kr6 * (a * a * a - b * b * b);
-  f.wall_mismatch = mismatch;
-  f.torque_nonpot = t.sign * mismatch;
+  f.wall_mismatch = ks.kr6 * (a * a * a - b * b * b);
   f.corners_below = g.corners_below;
   return f;
 }

@@ -82,6 +82,16 @@ inline CornerHeights corner_height_rates(double r, const Tilt& t, double h_rate,
           h_rate - 0.5 * (omc_rate + rs_rate)};
 }
 
+// Their second derivatives, given h'', w' and w''. With u = |w| (u' = sign w', at w = 0 the sign
+// of w'): d2(r sin u) = r (cos u u'' - sin u u'^2), d2(1 - cos u) = sin u u'' + cos u u'^2.
+inline CornerHeights corner_height_accelerations(double r, const Tilt& t, double h_acc, double w_rate, double w_acc) {
+  const int sg = t.sign != 0 ? t.sign : (w_rate >= 0.0 ? 1 : -1);
+  const double u1 = sg * w_rate, u2 = sg * w_acc;
+  const double rs_acc = r * (t.c * u2 - t.s * u1 * u1);
+  const double omc_acc = t.s * u2 + t.c * u1 * u1;
+  return {h_acc - 0.5 * (rs_acc - omc_acc), h_acc + 0.5 * (rs_acc + omc_acc), h_acc - 0.5 * (omc_acc + rs_acc)};
+}
+
 namespace region_detail {
 
 struct Accum {

@@ -47,7 +47,7 @@ BlockForces WinklerBlock::forces(double t, const Mode& m, const State& z, const 
   // torque jumps and the side says which way the block goes on. With sign(w) there, the first
   // stage of the next step took the wrong branch, an error the step's estimate did not see
   // (5e-11 in the energy balance at rtol 1e-11).
-  const double torque_nonpot = m.side * ff.wall_mismatch;
+  const double torque_nonpot = ff.torque_nonpot(m.side);
   const double ay = ff.Ry - 1.0 - a_v;
   if (m.regime == Regime::Contact) {
     const StickReaction st = stick_reaction(inertia_, arm, m.side, ff.torque, z[kVW], a_h);
@@ -282,18 +282,14 @@ double first_zero(double x, double v, double a) {
 
 double WinklerBlock::kink_ahead(double, const Mode& m, const State& z, const State& dz) const {
   if (m.regime == Regime::Flight) return INFINITY;
-  // Corner heights along the motion to second order: y'' and w'' from dz, the corner offsets'
-  // derivatives from the tilt (u = |w|: d(r sin u) = r cos u u', d(1 - cos u) = sin u u').
+  // Corner heights along the motion to second order (h' = y', h'' = y'', w', w'' from dz).
   const Tilt tilt = make_tilt(z[kW]);
   const CornerHeights ch = corner_heights(p_.r, z[kH], tilt);
-  const int sg = tilt.sign != 0 ? tilt.sign : (dz[kW] >= 0.0 ? 1 : -1);
-  const double u1 = sg * dz[kW], u2 = sg * dz[kVW];
-  const double rs1 = p_.r * tilt.c * u1, omc1 = tilt.s * u1;
-  const double rs2 = p_.r * (tilt.c * u2 - tilt.s * u1 * u1), omc2 = tilt.s * u2 + tilt.c * u1 * u1;
-  const double far = first_zero(ch.other_bottom, dz[kH] + 0.5 * (rs1 + omc1), dz[kVY] + 0.5 * (rs2 + omc2));
+  const CornerHeights rate = corner_height_rates(p_.r, tilt, dz[kH], dz[kW]);
+  const CornerHeights acc = corner_height_accelerations(p_.r, tilt, dz[kVY], dz[kW], dz[kVW]);
+  const double far = first_zero(ch.other_bottom, rate.other_bottom, acc.other_bottom);
   // The take-off: the lowest corner rising through the surface.
-  const double low_rate = dz[kH] - 0.5 * (rs1 - omc1);
-  const double lift = ch.lowest < 0.0 ? first_zero(ch.lowest, low_rate, dz[kVY] - 0.5 * (rs2 - omc2)) : INFINITY;
+  const double lift = ch.lowest < 0.0 ? first_zero(ch.lowest, rate.lowest, acc.lowest) : INFINITY;
   const double tau = std::fmin(far, lift);
   // Upright, both corners meet the surface together: no separate kink to step onto.
   return tau > 1e-6 * step_hint(m) ? tau : INFINITY;
