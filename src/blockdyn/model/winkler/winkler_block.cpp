@@ -290,9 +290,10 @@ double WinklerBlock::kink_ahead(double, const Mode& m, const State& z, const Sta
   const double far = first_zero(ch.other_bottom, rate.other_bottom, acc.other_bottom);
   // The take-off: the lowest corner rising through the surface.
   const double lift = ch.lowest < 0.0 ? first_zero(ch.lowest, rate.lowest, acc.lowest) : INFINITY;
-  const double tau = std::fmin(far, lift);
-  // Upright, both corners meet the surface together: no separate kink to step onto.
-  return tau > 1e-6 * step_hint(m) ? tau : INFINITY;
+  // A kink closer than this is where the step starts (both corners meeting the surface together,
+  // or the last one stepped onto): not one to step to, but the other may still be ahead.
+  const double near = 1e-6 * step_hint(m);
+  return std::fmin(far > near ? far : INFINITY, lift > near ? lift : INFINITY);
 }
 
 WinklerBlock::State WinklerBlock::abs_tol_scale() const {
