@@ -197,3 +197,62 @@ TEST(Energy, NonPotentialWorkFromTheUprightStartClosesTheBalance) {
   ASSERT_GT(std::fabs(r.work_nonpotential()), 1e-13);
   EXPECT_LT(r.max_abs_energy_error, 1e-2 * std::fabs(r.work_nonpotential()));
 }
+
+// The components' rates the swing averages use (their trapezoidal end corrections): each is the
+// time derivative of the component along the motion, checked by central differences of energy()
+// along the right-hand side (z +- eps dz, completed) in every regime, with one and two corners
+// submerged, with friction sliding and sticking, and under ground motion.
+TEST(Energy, RatesAreTheTimeDerivativesOfTheComponents) {
+  const BlockParams p{0.5, 0.3, 1e4};
+  GroundMotion shaken;
+  shaken.horizontal.amplitude = 0.2;
+  shaken.horizontal.frequency = 1.5;
+  shaken.vertical.amplitude = 0.1;
+  shaken.vertical.frequency = 0.7;
+  struct Case {
+    const char* what;
+    BlockMode mode;
+    BlockStateVec z;
+  };
+  // Centre height with the lowest corner `depth` below the surface at tilt w.
+  auto sunk = [&](double w, double depth) { return 0.5 * (p.r * std::sin(std::fabs(w)) - (1.0 - std::cos(w))) - depth; };
+  const Case cases[] = {
+      {"contact, one corner", {Regime::Contact, 1, 0, 0.0}, {0.0, sunk(0.05, 1e-4), 0.05, 0.0, -0.01, 0.3}},
+      {"contact, two corners", {Regime::Contact, -1, 0, 0.0}, {0.0, -3e-4, -2e-3, 0.0, 0.02, -0.1}},
+      {"slide, two corners", {Regime::Slide, 1, -1, 0.0}, {0.0, -2e-4, 1e-3, 0.05, 0.01, 0.2}},
+      {"slide, one corner", {Regime::Slide, -1, 1, 0.0}, {0.0, sunk(-0.1, 2e-4), -0.1, -0.02, 0.0, -0.4}},
+      {"flight", {Regime::Flight, 1, 0, 0.0}, {0.0, 0.05, 0.02, 0.1, 0.3, -0.2}},
+      // Deep and nearly upright: the non-potential torque is 5 % of the torque here.
+      {"slide, two corners deep, rotating", {Regime::Slide, 1, -1, 0.0}, {0.0, -3e-3, 1e-5, 0.0, 0.0, 1.0}},
+  };
+  for (const GroundMotion& g : {GroundMotion{}, shaken}) {
+    const WinklerBlock block(p, g);
+    const double t = 0.3;
+    for (const Case& c : cases) {
+      BlockStateVec z = c.z, dz;
+      block.complete(c.mode, z);
+      block.rhs(t, c.mode, z, dz);
+      const Energy rate = block.energy_rates(t, c.mode, z);
+      const double eps = 1e-7;
+      BlockStateVec zp = z, zm = z;
+      for (std::size_t i = 0; i < kStateDim; ++i) {
+        zp[i] += eps * dz[i];
+        zm[i] -= eps * dz[i];
+      }
+      block.complete(c.mode, zp);
+      block.complete(c.mode, zm);
+      const Energy ep = energy(p, zp), em = energy(p, zm);
+      const double fd[5] = {(ep.kinetic_x - em.kinetic_x) / (2 * eps), (ep.kinetic_y - em.kinetic_y) / (2 * eps),
+                            (ep.rotation - em.rotation) / (2 * eps), (ep.gravity - em.gravity) / (2 * eps),
+                            (ep.springs - em.springs) / (2 * eps)};
+      const double got[5] = {rate.kinetic_x, rate.kinetic_y, rate.rotation, rate.gravity, rate.springs};
+      double scale = 0.0;
+      for (const double v : fd) scale = std::fmax(scale, std::fabs(v));
+      ASSERT_GT(scale, 0.0) << c.what;
+      for (int i = 0; i < 5; ++i) EXPECT_NEAR(got[i], fd[i], 1e-7 * scale) << c.what << ", component " << i;
+      if (c.mode.regime == Regime::Flight) {
+        EXPECT_EQ(rate.springs, 0.0);
+      }
+    }
+  }
+}

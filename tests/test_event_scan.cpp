@@ -47,6 +47,7 @@ TEST(EventEnvelope, BernsteinFormAndHalvesReproduceThePolynomial) {
   bernstein_halves(b, l, r);
   for (double s : {0.0, 0.1, 0.37, 0.5, 0.81, 1.0}) {
     EXPECT_NEAR(bernstein_value(b, s), power_value(a, s), 1e-14) << s;
+    EXPECT_NEAR(to_power(b)(s), power_value(a, s), 1e-14) << s;
     if (s <= 0.5) {
       EXPECT_NEAR(bernstein_value(l, 2 * s), power_value(a, s), 1e-14) << s;
     }

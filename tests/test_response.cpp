@@ -89,6 +89,31 @@ TEST(ResponseSwings, AveragedTotalEnergyLiesInTheRangeOfTheEnergy) {
   }
 }
 
+// The swing averages integrate the energy components over the step ends with the trapezoidal
+// end corrections (their rates): against the same run sampled every 5e-6 (about 200 samples a
+// step), every component of every swing agrees to 5e-5 of the swing's energy scale (measured
+// 7e-6; the plain trapezoidal rule at two samples a step was off by 1e-3, in kinetic_y and
+// springs, which exchange energy at the vertical frequency).
+TEST(ResponseSwings, AveragesMatchAFinelySampledRun) {
+  const BlockParams p{0.5, 0.1, 1e5};
+  ResponseOptions o;
+  o.t_end = 20;
+  const ResponseRun coarse = run_response(p, {}, ic1(p), o);
+  o.quadrature_dt = 5e-6;
+  const ResponseRun fine = run_response(p, {}, ic1(p), o);
+  ASSERT_GT(coarse.swings.size(), 100u);
+  ASSERT_EQ(coarse.swings.size(), fine.swings.size());
+  for (std::size_t i = 0; i < fine.swings.size(); ++i) {
+    const Energy& a = coarse.swings[i].average;
+    const Energy& b = fine.swings[i].average;
+    EXPECT_NEAR(coarse.swings[i].t_end, fine.swings[i].t_end, 1e-12);
+    const double scale = std::fabs(b.rotation) + std::fabs(b.springs) + std::fabs(b.kinetic_y);
+    const double da[5] = {a.kinetic_x - b.kinetic_x, a.kinetic_y - b.kinetic_y, a.rotation - b.rotation,
+                          a.gravity - b.gravity, a.springs - b.springs};
+    for (int c = 0; c < 5; ++c) EXPECT_LT(std::fabs(da[c]), 5e-5 * scale) << "swing " << i << ", component " << c;
+  }
+}
+
 TEST(ResponseSwings, DissipationMakesAveragedEnergyDecrease) {
   const BlockParams p{0.5, 0.1, 1e5};  // settle down
   const auto r = run(p, ic1(p), 20);
@@ -172,11 +197,15 @@ INSTANTIATE_TEST_SUITE_P(
 // Blocks that flew and came to rest (issue 12): r = 1, mu = 0.2, t = 30 as in the response map.
 // They used to be labelled steady rocking (no late flight). Settled needs E < 0 late (flight
 // impossible) and at most 1e-2 of the available energy left above rest.
+// The points are settled at rtol 1e-9 ... 1e-12. Not k = 1e7 with ic1 (here until 2026-11-26):
+// whether the vertical energy left after its chaotic transient is above rest (it bounces on the
+// undamped springs for ever: settle down) or below (settled) is a knife edge, +-1e-7, that the
+// tolerance or an ulp-level change of the engine flips either way.
 TEST(ResponseSettled, BlocksThatFlewAndCameToRestAreSettled) {
   ResponseOptions o;
   o.t_end = 30;
   for (const auto& [k, use_ic2] :
-       {std::pair{1e6, true}, std::pair{1e4, true}, std::pair{1e6, false}, std::pair{1e7, false}}) {
+       {std::pair{1e6, true}, std::pair{1e4, true}, std::pair{1e6, false}, std::pair{5e6, true}}) {
     const BlockParams p{1.0, 0.2, k};
     const auto rep = classify_response(p, {}, use_ic2 ? ic2(p) : ic1(p), o);
     const auto& m = rep.metrics;

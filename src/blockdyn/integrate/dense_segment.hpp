@@ -23,6 +23,20 @@ struct DenseSegment {
 
   double t1() const { return t0 + h; }
 
+  // A segment of an accepted step whose full dense output was not computed (DOP853, when neither
+  // the event scan nor an observer needed it) holds the cubic Hermite interpolant of the step's
+  // end values and rates instead (terms = 4: exact at both ends, 4th order inside) and can be
+  // refined: while the observers see it, ensure_full() computes the full dense output in place
+  // (three more stages). On any other segment it does nothing.
+  void ensure_full() const {
+    if (refine_ != nullptr) refine_(refine_context_);
+  }
+  bool refinable() const { return refine_ != nullptr; }
+  void set_refine(void (*fn)(void*), void* context) {
+    refine_ = fn;
+    refine_context_ = context;
+  }
+
   // The loop over components innermost, so it vectorizes; each component still takes the same
   // operations in the same order (the same bits as one component at a time).
   void eval(double t, Vec<N>& y) const {
@@ -36,6 +50,10 @@ struct DenseSegment {
     }
     y = acc;
   }
+
+ private:
+  void (*refine_)(void*) = nullptr;
+  void* refine_context_ = nullptr;
 };
 
 struct StepperStats {

@@ -32,6 +32,20 @@ inline double bernstein_value(const Bernstein4& c, double s) {
   return b[0];
 }
 
+// The same polynomial in the power basis, a0 + a1 s + ... + a4 s^4, for the grid searches that
+// evaluate one model many times (Horner: four multiply-adds a point instead of ten).
+struct Power4 {
+  std::array<double, 5> a{};
+  double operator()(double s) const { return a[0] + s * (a[1] + s * (a[2] + s * (a[3] + s * a[4]))); }
+};
+
+inline Power4 to_power(const Bernstein4& b) {
+  const double d1 = b[1] - b[0], d2 = b[2] - 2.0 * b[1] + b[0];
+  const double d3 = b[3] - 3.0 * b[2] + 3.0 * b[1] - b[0];
+  const double d4 = b[4] - 4.0 * b[3] + 6.0 * b[2] - 4.0 * b[1] + b[0];
+  return Power4{{b[0], 4.0 * d1, 6.0 * d2, 4.0 * d3, d4}};
+}
+
 // Split at s = 1/2 into the coefficients on [0, 1/2] and on [1/2, 1] (each rescaled to [0, 1]).
 inline void bernstein_halves(const Bernstein4& c, Bernstein4& left, Bernstein4& right) {
   Bernstein4 b = c;

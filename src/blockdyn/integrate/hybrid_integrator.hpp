@@ -263,7 +263,8 @@ class HybridIntegrator {
       restarting_ = false;
       if (high_order_ && dop853_.stiffness() > 6.1) ++stats_.stiff_steps;
       // The dense output costs DOP853 three more stages: computed only when the scan or an
-      // observer evaluates inside the step (else seg holds the step's end points only).
+      // observer evaluates inside the step (else seg holds the cubic Hermite interpolant of the
+      // step ends, which observers may refine: DenseSegment::ensure_full()).
       bool dense_done = false;
       auto ensure_dense = [&] {
         if (!dense_done) dense(f, t, h, z, y_new, k1, k7, seg);
@@ -272,7 +273,7 @@ class HybridIntegrator {
       if (!high_order_)
         ensure_dense();
       else
-        linear_segment(t, h, z, y_new, seg);
+        hermite_segment(t, h, z, y_new, k1, k7, seg);
       const double t_next = last ? t_end : (to_break ? t_break : t + h);
       State y_end = y_new;
       model_.complete(mode, y_end);
@@ -284,7 +285,13 @@ class HybridIntegrator {
       double h_new = next_step_size(err, h, err_old);
       if (to_break || last) h_new = std::fmax(h_new, std::fmin(h_wanted, opt_.h_max));
       if (!hit) {
-        if (!obs.on_step(seg, t, t_next, mode)) return RunStatus::ObserverStop;
+        if (!dense_done) {
+          using Ensure = decltype(ensure_dense);
+          seg.set_refine([](void* e) { (*static_cast<Ensure*>(e))(); }, &ensure_dense);
+        }
+        const bool go = obs.on_step(seg, t, t_next, mode);
+        seg.set_refine(nullptr, nullptr);
+        if (!go) return RunStatus::ObserverStop;
         t = t_next;
         z = y_end;
         k1 = k7;
@@ -440,15 +447,20 @@ class HybridIntegrator {
     return true;
   }
 
-  // A segment exact at both ends of the step (y0 + s (y1 - y0)), for steps whose dense output
-  // nobody evaluates inside.
-  static void linear_segment(double t, double h, const State& y, const State& y_new, DenseSegment<N>& seg) {
+  // The cubic Hermite interpolant of the step's end values and rates (the first four terms of
+  // DOP853's continuous extension), for steps whose full dense output nobody asked for.
+  static void hermite_segment(double t, double h, const State& y, const State& y_new, const State& k1,
+                              const State& k_end, DenseSegment<N>& seg) {
     seg.t0 = t;
     seg.h = h;
-    seg.terms = 2;
+    seg.terms = 4;
     for (std::size_t i = 0; i < N; ++i) {
+      const double ydiff = y_new[i] - y[i];
+      const double bspl = h * k1[i] - ydiff;
       seg.r[0][i] = y[i];
-      seg.r[1][i] = y_new[i] - y[i];
+      seg.r[1][i] = ydiff;
+      seg.r[2][i] = bspl;
+      seg.r[3][i] = ydiff - h * k_end[i] - bspl;
     }
   }
 
@@ -762,7 +774,8 @@ class HybridIntegrator {
     // A local minimum of the model strictly inside: look at the function's own minimum first.
     constexpr int kGrid = 16;
     std::array<double, kGrid + 1> q;
-    for (int k = 0; k <= kGrid; ++k) q[k] = bernstein_value(env.model, s_lo + (1.0 - s_lo) * k / kGrid);
+    const Power4 model = to_power(env.model);
+    for (int k = 0; k <= kGrid; ++k) q[k] = model(s_lo + (1.0 - s_lo) * k / kGrid);
     for (int k = 1; k < kGrid; ++k) {
       if (!(q[k] <= q[k - 1] && q[k] < q[k + 1])) continue;
       const double a = t0 + (s_lo + (1.0 - s_lo) * (k - 1) / kGrid) * h;
@@ -777,10 +790,11 @@ class HybridIntegrator {
   // Where a model of the function (Bernstein form on the step) is smallest on [sa, sb].
   static double model_minimum(const Bernstein4& q, double sa, double sb) {
     constexpr int kGrid = 16;
+    const Power4 model = to_power(q);
     double best_s = 0.5 * (sa + sb), best_q = INFINITY;
     for (int k = 0; k <= kGrid; ++k) {
       const double s = sa + (sb - sa) * k / kGrid;
-      const double v = bernstein_value(q, s);
+      const double v = model(s);
       if (v < best_q) {
         best_q = v;
         best_s = s;

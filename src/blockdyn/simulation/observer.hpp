@@ -25,9 +25,10 @@ class Observer {
   virtual bool on_segment(const Model&, const Segment&, double /*t0*/, double /*t1*/, const Mode&) { return true; }
   virtual bool on_event(const Model&, const Event&) { return true; }
   virtual void on_finish(const Model&, double /*t*/, const Mode&, const State&) {}
-  // Whether on_segment evaluates the dense output inside the step; if no observer does, a step
-  // with no event nearby skips the dense output's extra stages (DOP853) and the segment is exact
-  // only at its two ends.
+  // Whether on_segment evaluates the dense output inside every step; if no observer does, a step
+  // with no event nearby skips the dense output's extra stages (DOP853): the segment is then the
+  // cubic Hermite interpolant of the step ends (exact at both), and an observer that needs the
+  // full accuracy inside a particular step calls its ensure_full().
   virtual bool needs_dense() const { return true; }
 };
 

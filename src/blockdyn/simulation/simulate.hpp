@@ -74,7 +74,8 @@ class SimulationSink {
                           double /*t1*/, const BlockMode&) {}
   virtual void on_event(const WinklerBlock&, const EventRecord&) {}
   virtual bool keep_going() const { return true; }
-  // Whether on_segment evaluates the dense output inside a step (see Observer::needs_dense).
+  // Whether on_segment evaluates the dense output inside every step (see Observer::needs_dense;
+  // a sink that answers false may call DenseSegment::ensure_full() on the steps that need it).
   virtual bool needs_dense() const { return true; }
 };
 

@@ -41,6 +41,11 @@ class FanOutSink : public SimulationSink {
       if (!s->keep_going()) return false;
     return true;
   }
+  bool needs_dense() const override {
+    for (auto* s : sinks)
+      if (s->needs_dense()) return true;
+    return false;
+  }
 };
 
 // A metric's value as a cell.

@@ -26,12 +26,13 @@ namespace {
 
 int sign_of(double v) { return (v > 0) - (v < 0); }
 
-void add_scaled(Energy& acc, const Energy& a, const Energy& b, double w) {
-  acc.kinetic_x += w * (a.kinetic_x + b.kinetic_x);
-  acc.kinetic_y += w * (a.kinetic_y + b.kinetic_y);
-  acc.rotation += w * (a.rotation + b.rotation);
-  acc.gravity += w * (a.gravity + b.gravity);
-  acc.springs += w * (a.springs + b.springs);
+// acc += w (a + sb b), component by component.
+void add_scaled(Energy& acc, const Energy& a, const Energy& b, double w, double sb = 1.0) {
+  acc.kinetic_x += w * (a.kinetic_x + sb * b.kinetic_x);
+  acc.kinetic_y += w * (a.kinetic_y + sb * b.kinetic_y);
+  acc.rotation += w * (a.rotation + sb * b.rotation);
+  acc.gravity += w * (a.gravity + sb * b.gravity);
+  acc.springs += w * (a.springs + sb * b.springs);
 }
 
 }  // namespace
@@ -42,14 +43,16 @@ SwingAccumulator::SwingAccumulator(const BlockParams& p, SwingOptions opt) : p_(
 }
 
 SwingAccumulator::Sample SwingAccumulator::sample_at(const DenseSegment<kStateDim>& seg, const WinklerBlock& m,
-                                                     const BlockMode& mode, double t, BlockStateVec& z) const {
+                                                     const BlockMode& mode, double t, double t_rate,
+                                                     BlockStateVec& z) const {
   seg.eval(t, z);
   m.complete(mode, z);
-  return Sample{t, z[kVW], energy(p_, z)};
+  return Sample{t, z[kVW], energy(p_, z), m.energy_rates(t_rate, mode, z)};
 }
 
-void SwingAccumulator::on_start(const WinklerBlock&, double t, const BlockMode& mode, const BlockStateVec& z) {
-  last_ = Sample{t, z[kVW], energy(p_, z)};
+void SwingAccumulator::on_start(const WinklerBlock& m, double t, const BlockMode& mode, const BlockStateVec& z) {
+  last_ = Sample{t, z[kVW], energy(p_, z), m.energy_rates(t, mode, z)};
+  last_mode_ = mode;
   if (opt_.late_start <= t) {
     late_captured_ = true;
     late_energy_ = last_.e.total();
@@ -69,8 +72,13 @@ void SwingAccumulator::on_start(const WinklerBlock&, double t, const BlockMode& 
   }
 }
 
+// The trapezoidal rule with its end correction (h^2 / 12) (E'(a) - E'(b)): exact for cubics, so
+// the step-end samples alone integrate each component to O(h^5) per step.
 void SwingAccumulator::integrate(const Sample& a, const Sample& b) {
-  if (in_swing_) add_scaled(integral_, a.e, b.e, 0.5 * (b.t - a.t));
+  if (!in_swing_) return;
+  const double h = b.t - a.t;
+  add_scaled(integral_, a.e, b.e, 0.5 * h);
+  add_scaled(integral_, a.rate, b.rate, h * h / 12.0, -1.0);
 }
 
 void SwingAccumulator::close_swing(double t) {
@@ -105,7 +113,39 @@ void SwingAccumulator::on_segment(const WinklerBlock& m, const DenseSegment<kSta
     late_flight_time_ += std::max(0.0, t1 - std::max(t0, opt_.late_start));
   }
   BlockStateVec z;
-  if (!late_captured_ && opt_.late_start >= t0 && opt_.late_start <= t1) {
+  // The energy rates at the step start on this step's side: those of the last sample unless the
+  // mode changed there (an event) or the ground moves (an input breakpoint may fall there).
+  const bool same_mode = last_mode_.regime == mode.regime && last_mode_.side == mode.side &&
+                         last_mode_.friction_sign == mode.friction_sign;
+  if (!(last_.t == t0 && same_mode && m.ground().is_zero())) {
+    seg.eval(t0, z);
+    m.complete(mode, z);
+    last_.rate = m.energy_rates(t0, mode, z);
+  }
+  last_mode_ = mode;
+  // Rates at the step end from its own side (ground motion evaluated just before t1).
+  const double t1_side = std::nextafter(t1, t0);
+  const int n = std::max(opt_.min_samples_per_step, int(std::ceil((t1 - t0) / opt_.quadrature_dt)));
+  const bool late_here = !late_captured_ && opt_.late_start >= t0 && opt_.late_start <= t1;
+  const bool phase_here = opt_.phase_dt > 0 && next_phase_t_ <= t1;
+  // Interior points need the full dense output (the cubic of the step ends is exact only there).
+  bool full = n > 1 || late_here || phase_here;
+  Sample end;
+  if (!full) {
+    end = sample_at(seg, m, mode, t1, t1_side, z);
+    // A turning point inside: located on the full dense output.
+    full = sign_ != 0 && sign_of(end.vw) == -sign_;
+    if (!full) {
+      max_abs_w_ = std::max(max_abs_w_, std::fabs(z[kW]));
+      if (sign_ == 0) sign_ = sign_of(end.vw);
+      integrate(last_, end);
+      if (flight) swing_flight_ += t1 - last_.t;
+      last_ = end;
+      return;
+    }
+  }
+  seg.ensure_full();
+  if (late_here) {
     seg.eval(opt_.late_start, z);
     m.complete(mode, z);
     late_captured_ = true;
@@ -123,10 +163,9 @@ void SwingAccumulator::on_segment(const WinklerBlock& m, const DenseSegment<kSta
       next_phase_t_ = phase_t0_ + double(++n_phase_) * opt_.phase_dt;
     }
   }
-  const int n = std::max(opt_.min_samples_per_step, int(std::ceil((t1 - t0) / opt_.quadrature_dt)));
   for (int j = 1; j <= n; ++j) {
     const double tj = (j == n) ? t1 : t0 + (t1 - t0) * double(j) / n;
-    const Sample sj = sample_at(seg, m, mode, tj, z);
+    const Sample sj = sample_at(seg, m, mode, tj, (j == n) ? t1_side : tj, z);
     max_abs_w_ = std::max(max_abs_w_, std::fabs(z[kW]));
     const int s = sign_of(sj.vw);
     if (sign_ == 0) {
@@ -142,7 +181,7 @@ void SwingAccumulator::on_segment(const WinklerBlock& m, const DenseSegment<kSta
       };
       const double ts = locate_root(g, last_.t, tj, sg * last_.vw, sg * sj.vw);
       BlockStateVec zs;
-      const Sample star = sample_at(seg, m, mode, ts, zs);
+      const Sample star = sample_at(seg, m, mode, ts, ts, zs);
       integrate(last_, star);
       if (flight) swing_flight_ += ts - last_.t;
       close_swing(ts);

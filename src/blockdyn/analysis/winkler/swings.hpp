@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Swings (thesis sec. 4.4): the motion between two successive sign changes of w'. For each swing:
-// its length (Fig. 4.57) and the five energy components averaged over it (trapezoidal rule at
-// fine sampling, divided by the length, reported at the swing end). Also samples the phase
+// its length (Fig. 4.57) and the five energy components averaged over it (the trapezoidal rule
+// with end corrections from the components' rates, over the step ends and samples at most
+// quadrature_dt apart; divided by the length, reported at the swing end). Also samples the phase
 // portraits (y, y'), (w, w'), (x, x') at constant time intervals (Figs. 4.41-4.56) and keeps the
 // flight statistics the response classification needs.
 #include <ostream>
@@ -29,7 +30,7 @@ struct PhaseSample {
 
 struct SwingOptions {
   double quadrature_dt = 1e-3;  // largest spacing of the energy samples (trapezoidal rule)
-  int min_samples_per_step = 2;  // and at least this many per integrator step
+  int min_samples_per_step = 1;  // and at least this many per integrator step
   double phase_dt = 0.0;        // phase-portrait sampling interval (<= 0: none)
   double late_start = 0.0;      // flight statistics are also kept for t >= late_start
 };
@@ -47,6 +48,10 @@ class SwingAccumulator : public SimulationSink {
   void on_segment(const WinklerBlock& m, const DenseSegment<kStateDim>& seg, double t0, double t1,
                   const BlockMode& mode) override;
   void on_event(const WinklerBlock& m, const EventRecord& e) override;
+  // A step shorter than quadrature_dt is integrated from its two ends, which are exact on any
+  // segment; a step with interior samples, a turning point, a phase sample or the late-statistics
+  // start inside asks for the full dense output (DenseSegment::ensure_full()).
+  bool needs_dense() const override { return false; }
 
   const std::vector<SwingRecord>& swings() const { return swings_; }
   const std::vector<PhaseSample>& phase() const { return phase_; }
@@ -65,9 +70,12 @@ class SwingAccumulator : public SimulationSink {
     double t = 0;
     double vw = 0;
     Energy e;
+    Energy rate;  // dE/dt of each component
   };
+  // The sample at t; its energy rates evaluated with the input at t_rate (t, or just before a
+  // step end).
   Sample sample_at(const DenseSegment<kStateDim>& seg, const WinklerBlock& m, const BlockMode& mode, double t,
-                   BlockStateVec& z) const;
+                   double t_rate, BlockStateVec& z) const;
   void integrate(const Sample& a, const Sample& b);
   void close_swing(double t);
 
@@ -76,6 +84,7 @@ class SwingAccumulator : public SimulationSink {
   std::vector<SwingRecord> swings_;
   std::vector<PhaseSample> phase_;
   Sample last_;
+  BlockMode last_mode_;  // the mode last_.rate was evaluated in
   int sign_ = 0;           // sign of w' since the last turning point (0: not yet known)
   bool in_swing_ = false;  // a turning point has been seen
   double swing_t0_ = 0;

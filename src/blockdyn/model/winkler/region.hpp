@@ -11,6 +11,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "blockdyn/model/common/quarter_turn_sincos.hpp"
+
 namespace blockdyn {
 
 struct RegionIntegrals {
@@ -43,7 +45,7 @@ struct Tilt {
 // into the model's force computation.
 inline Tilt make_tilt(double w) {
   double sn, c;
-  ::sincos(std::fabs(w), &sn, &c);
+  sincos_quarter_turn(std::fabs(w), sn, c);
   // 1 - cos = sin^2 / (1 + cos): no cancellation near w = 0, and cos > 0 here.
   return {w, sn, c, sn * sn / (1.0 + c), (w > 0.0) - (w < 0.0)};
 }
@@ -108,10 +110,12 @@ inline void add_segment(double a, double sa, double b, double sb, Accum& acc) {
     b = a + (b - a) * (sa / (sa - sb));
     sb = 0.0;
   }
+  // Multiplied by 1/6 and 1/3 rather than divided: two divisions fewer on every right-hand side.
+  constexpr double kSixth = 1.0 / 6.0, kThird = 1.0 / 3.0;
   const double L = b - a;
   acc.area += 0.5 * L * (sa + sb);
-  acc.moment += L / 6.0 * ((2.0 * a + b) * sa + (a + 2.0 * b) * sb);
-  acc.s2 += L / 3.0 * (sa * sa + sa * sb + sb * sb);
+  acc.moment += kSixth * L * ((2.0 * a + b) * sa + (a + 2.0 * b) * sb);
+  acc.s2 += kThird * L * (sa * sa + sa * sb + sb * sb);
 }
 
 }  // namespace region_detail

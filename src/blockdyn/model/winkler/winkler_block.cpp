@@ -59,6 +59,13 @@ BlockForces WinklerBlock::forces(double t, const Mode& m, const State& z, const 
                      z[kVX] + arm.B * z[kVW], 0.0, 0.0, ff.corners_below};
 }
 
+Energy WinklerBlock::energy_rates(double t, const Mode& m, const State& z) const {
+  const BlockForces f = forces(t, m, z);
+  // dV/dy = -Ry; dV/dw = torque_nonpot - torque (foundation_force.hpp).
+  return Energy{z[kVX] * f.ax, z[kVY] * f.ay, inertia_ * z[kVW] * f.aw, z[kVY],
+                -f.Ry * z[kVY] + (f.torque_nonpot - f.torque) * z[kVW]};
+}
+
 void WinklerBlock::rhs(double t, const Mode& m, const State& z, State& dz) const {
   const BlockForces f = forces(t, m, z);
   const bool contact = m.regime == Regime::Contact;

@@ -76,6 +76,9 @@ class WinklerBlock {
   // for the closed energy balance.
   double energy(const Mode&, const State& z) const { return blockdyn::energy(p_, z).total(); }
   double work(const State& z) const { return z[kWorkFriction] + z[kWorkNonPotential] + z[kWorkGround]; }
+  // The time derivatives of the five energy components at (t, z) (z completed) in mode m: the
+  // kinetic ones from the accelerations, gravity y', the springs -Ry y' + (torque_nonpot - torque) w'.
+  Energy energy_rates(double t, const Mode& m, const State& z) const;
   // The mode a state starts in (regime, lowest corner, friction direction).
   Mode initial_mode(double t, const State& z) const;
   // Empty if the state is inside the model; otherwise a description of why not.
