@@ -32,6 +32,22 @@ struct DenseSegment {
     if (refine_ != nullptr) refine_(refine_context_);
   }
   bool refinable() const { return refine_ != nullptr; }
+
+  // The state at t1 as the step computed it, completed by the model (null when not at hand):
+  // observers that look at step ends take it instead of evaluating and completing again.
+  const Vec<N>* end_state = nullptr;
+
+  // The completed state at the end t_end of the piece an observer is given: the step's own when
+  // given, else `complete(eval(t_end))`.
+  template <class Complete>
+  void completed_end(double t_end, Vec<N>& y, Complete&& complete) const {
+    if (end_state != nullptr) {
+      y = *end_state;
+      return;
+    }
+    eval(t_end, y);
+    complete(y);
+  }
   void set_refine(void (*fn)(void*), void* context) {
     refine_ = fn;
     refine_context_ = context;

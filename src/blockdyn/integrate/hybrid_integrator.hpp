@@ -289,8 +289,10 @@ class HybridIntegrator {
           using Ensure = decltype(ensure_dense);
           seg.set_refine([](void* e) { (*static_cast<Ensure*>(e))(); }, &ensure_dense);
         }
+        seg.end_state = &y_end;
         const bool go = obs.on_step(seg, t, t_next, mode);
         seg.set_refine(nullptr, nullptr);
+        seg.end_state = nullptr;
         if (!go) return RunStatus::ObserverStop;
         t = t_next;
         z = y_end;

@@ -95,8 +95,7 @@ class EnergyBalance final : public Observer<Model> {
   }
   bool on_segment(const Model& m, const Segment& s, double, double t1, const Mode& md) override {
     State z;
-    s.eval(t1, z);
-    m.complete(md, z);
+    s.completed_end(t1, z, [&](State& y) { m.complete(md, y); });
     track(m, md, z);
     return true;
   }

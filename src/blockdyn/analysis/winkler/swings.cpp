@@ -43,11 +43,17 @@ SwingAccumulator::SwingAccumulator(const BlockParams& p, SwingOptions opt) : p_(
 }
 
 SwingAccumulator::Sample SwingAccumulator::sample_at(const DenseSegment<kStateDim>& seg, const WinklerBlock& m,
-                                                     const BlockMode& mode, double t, double t_rate,
-                                                     BlockStateVec& z) const {
+                                                     const BlockMode& mode, double t, BlockStateVec& z) const {
   seg.eval(t, z);
   m.complete(mode, z);
-  return Sample{t, z[kVW], energy(p_, z), m.energy_rates(t_rate, mode, z)};
+  return Sample{t, z[kVW], energy(p_, z), m.energy_rates(t, mode, z)};
+}
+
+SwingAccumulator::Sample SwingAccumulator::end_sample(const DenseSegment<kStateDim>& seg, const WinklerBlock& m,
+                                                      const BlockMode& mode, double t1, BlockStateVec& z) const {
+  seg.completed_end(t1, z, [&](BlockStateVec& y) { m.complete(mode, y); });
+  // Rates from the step's side of t1 (the ground motion just before it).
+  return Sample{t1, z[kVW], energy(p_, z), m.energy_rates(std::nextafter(t1, -INFINITY), mode, z)};
 }
 
 void SwingAccumulator::on_start(const WinklerBlock& m, double t, const BlockMode& mode, const BlockStateVec& z) {
@@ -123,8 +129,6 @@ void SwingAccumulator::on_segment(const WinklerBlock& m, const DenseSegment<kSta
     last_.rate = m.energy_rates(t0, mode, z);
   }
   last_mode_ = mode;
-  // Rates at the step end from its own side (ground motion evaluated just before t1).
-  const double t1_side = std::nextafter(t1, t0);
   const int n = std::max(opt_.min_samples_per_step, int(std::ceil((t1 - t0) / opt_.quadrature_dt)));
   const bool late_here = !late_captured_ && opt_.late_start >= t0 && opt_.late_start <= t1;
   const bool phase_here = opt_.phase_dt > 0 && next_phase_t_ <= t1;
@@ -132,7 +136,7 @@ void SwingAccumulator::on_segment(const WinklerBlock& m, const DenseSegment<kSta
   bool full = n > 1 || late_here || phase_here;
   Sample end;
   if (!full) {
-    end = sample_at(seg, m, mode, t1, t1_side, z);
+    end = end_sample(seg, m, mode, t1, z);
     // A turning point inside: located on the full dense output.
     full = sign_ != 0 && sign_of(end.vw) == -sign_;
     if (!full) {
@@ -165,7 +169,7 @@ void SwingAccumulator::on_segment(const WinklerBlock& m, const DenseSegment<kSta
   }
   for (int j = 1; j <= n; ++j) {
     const double tj = (j == n) ? t1 : t0 + (t1 - t0) * double(j) / n;
-    const Sample sj = sample_at(seg, m, mode, tj, (j == n) ? t1_side : tj, z);
+    const Sample sj = (j == n) ? end_sample(seg, m, mode, t1, z) : sample_at(seg, m, mode, tj, z);
     max_abs_w_ = std::max(max_abs_w_, std::fabs(z[kW]));
     const int s = sign_of(sj.vw);
     if (sign_ == 0) {
@@ -181,7 +185,7 @@ void SwingAccumulator::on_segment(const WinklerBlock& m, const DenseSegment<kSta
       };
       const double ts = locate_root(g, last_.t, tj, sg * last_.vw, sg * sj.vw);
       BlockStateVec zs;
-      const Sample star = sample_at(seg, m, mode, ts, ts, zs);
+      const Sample star = sample_at(seg, m, mode, ts, zs);
       integrate(last_, star);
       if (flight) swing_flight_ += ts - last_.t;
       close_swing(ts);

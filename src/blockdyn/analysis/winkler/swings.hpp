@@ -72,10 +72,11 @@ class SwingAccumulator : public SimulationSink {
     Energy e;
     Energy rate;  // dE/dt of each component
   };
-  // The sample at t; its energy rates evaluated with the input at t_rate (t, or just before a
-  // step end).
+  // The sample at t inside the piece, and at its end t1 (the step's own end state when given).
   Sample sample_at(const DenseSegment<kStateDim>& seg, const WinklerBlock& m, const BlockMode& mode, double t,
-                   double t_rate, BlockStateVec& z) const;
+                   BlockStateVec& z) const;
+  Sample end_sample(const DenseSegment<kStateDim>& seg, const WinklerBlock& m, const BlockMode& mode, double t1,
+                    BlockStateVec& z) const;
   void integrate(const Sample& a, const Sample& b);
   void close_swing(double t);
 
