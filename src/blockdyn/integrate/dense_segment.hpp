@@ -31,7 +31,10 @@ struct DenseSegment {
   void ensure_full() const {
     if (refine_ != nullptr) refine_(refine_context_);
   }
-  bool refinable() const { return refine_ != nullptr; }
+  void set_refine(void (*fn)(void*), void* context) {
+    refine_ = fn;
+    refine_context_ = context;
+  }
 
   // The state at t1 as the step computed it, completed by the model (null when not at hand):
   // observers that look at step ends take it instead of evaluating and completing again.
@@ -47,10 +50,6 @@ struct DenseSegment {
     }
     eval(t_end, y);
     complete(y);
-  }
-  void set_refine(void (*fn)(void*), void* context) {
-    refine_ = fn;
-    refine_context_ = context;
   }
 
   // The loop over components innermost, so it vectorizes; each component still takes the same

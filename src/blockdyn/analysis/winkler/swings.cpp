@@ -134,8 +134,10 @@ void SwingAccumulator::on_segment(const WinklerBlock& m, const DenseSegment<kSta
   const bool phase_here = opt_.phase_dt > 0 && next_phase_t_ <= t1;
   // Interior points need the full dense output (the cubic of the step ends is exact only there).
   bool full = n > 1 || late_here || phase_here;
+  // With one sample (n = 1) the end is taken first; z then holds its state.
+  const bool end_first = !full;
   Sample end;
-  if (!full) {
+  if (end_first) {
     end = end_sample(seg, m, mode, t1, z);
     // A turning point inside: located on the full dense output.
     full = sign_ != 0 && sign_of(end.vw) == -sign_;
@@ -169,7 +171,7 @@ void SwingAccumulator::on_segment(const WinklerBlock& m, const DenseSegment<kSta
   }
   for (int j = 1; j <= n; ++j) {
     const double tj = (j == n) ? t1 : t0 + (t1 - t0) * double(j) / n;
-    const Sample sj = (j == n) ? end_sample(seg, m, mode, t1, z) : sample_at(seg, m, mode, tj, z);
+    const Sample sj = (j < n) ? sample_at(seg, m, mode, tj, z) : end_first ? end : end_sample(seg, m, mode, t1, z);
     max_abs_w_ = std::max(max_abs_w_, std::fabs(z[kW]));
     const int s = sign_of(sj.vw);
     if (sign_ == 0) {
