@@ -113,7 +113,8 @@ double RigidBlock::next_breakpoint(double t, const Mode& md) const {
   return ground_.next_break(t);
 }
 
-void RigidBlock::rhs(double t, const Mode& md, const State& z, State& dz) const {
+// Flattened: the reactions inline here (no call and no result through memory at every stage).
+[[gnu::flatten]] void RigidBlock::rhs(double t, const Mode& md, const State& z, State& dz) const {
   const RigidReactions f = reactions(t, md, z);
   dz[kX] = z[kVX];
   dz[kY] = z[kVY];

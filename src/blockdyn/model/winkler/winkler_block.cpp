@@ -59,14 +59,16 @@ BlockForces WinklerBlock::forces(double t, const Mode& m, const State& z, const 
                      z[kVX] + arm.B * z[kVW], 0.0, 0.0, ff.corners_below};
 }
 
-Energy WinklerBlock::energy_rates(double t, const Mode& m, const State& z) const {
+[[gnu::flatten]] Energy WinklerBlock::energy_rates(double t, const Mode& m, const State& z) const {
   const BlockForces f = forces(t, m, z);
   // dV/dy = -Ry; dV/dw = torque_nonpot - torque (foundation_force.hpp).
   return Energy{z[kVX] * f.ax, z[kVY] * f.ay, inertia_ * z[kVW] * f.aw, z[kVY],
                 -f.Ry * z[kVY] + (f.torque_nonpot - f.torque) * z[kVW]};
 }
 
-void WinklerBlock::rhs(double t, const Mode& m, const State& z, State& dz) const {
+// Flattened: the forces inline here (the stages' calls and the result passed through memory were
+// a tenth of a response map's time).
+[[gnu::flatten]] void WinklerBlock::rhs(double t, const Mode& m, const State& z, State& dz) const {
   const BlockForces f = forces(t, m, z);
   const bool contact = m.regime == Regime::Contact;
   // In contact x and x' follow from w (complete()); only 4 mechanical states are integrated.
@@ -94,7 +96,7 @@ void WinklerBlock::complete(const Mode& m, State& z, const Tilt& tilt) const {
   z[kVX] = -arm.B * z[kVW];
 }
 
-void WinklerBlock::complete_and_events(double t, const Mode& m, State& z, std::array<double, kNumEvents>& g) const {
+[[gnu::flatten]] void WinklerBlock::complete_and_events(double t, const Mode& m, State& z, std::array<double, kNumEvents>& g) const {
   const Tilt tilt = make_tilt(z[kW]);  // complete() changes x and x', not w
   complete(m, z, tilt);
   events(t, m, z, tilt, g);
@@ -121,7 +123,7 @@ void WinklerBlock::events(double t, const Mode& m, const State& z, const Tilt& t
   }
 }
 
-void WinklerBlock::event_rates(double t, const Mode& m, const State& z, const State& dz,
+[[gnu::flatten]] void WinklerBlock::event_rates(double t, const Mode& m, const State& z, const State& dz,
                                std::array<double, kNumEvents>& g, std::array<double, kNumEvents>& gdot) const {
   const Tilt tilt = make_tilt(z[kW]);
   const CornerHeights ch = corner_heights(p_.r, z[kH], tilt);
