@@ -171,7 +171,11 @@ void SwingAccumulator::on_segment(const WinklerBlock& m, const DenseSegment<kSta
   }
   for (int j = 1; j <= n; ++j) {
     const double tj = (j == n) ? t1 : t0 + (t1 - t0) * double(j) / n;
-    const Sample sj = (j < n) ? sample_at(seg, m, mode, tj, z) : end_first ? end : end_sample(seg, m, mode, t1, z);
+    Sample sj;
+    if (j < n)
+      sj = sample_at(seg, m, mode, tj, z);
+    else
+      sj = end_first ? end : end_sample(seg, m, mode, t1, z);  // z holds the end state either way
     max_abs_w_ = std::max(max_abs_w_, std::fabs(z[kW]));
     const int s = sign_of(sj.vw);
     if (sign_ == 0) {

@@ -67,7 +67,7 @@ BlockForces WinklerBlock::forces(double t, const Mode& m, const State& z, const 
 }
 
 // Flattened: the forces inline here (the stages' calls and the result passed through memory were
-// a tenth of a response map's time).
+// a fifth of a response map's time).
 [[gnu::flatten]] void WinklerBlock::rhs(double t, const Mode& m, const State& z, State& dz) const {
   const BlockForces f = forces(t, m, z);
   const bool contact = m.regime == Regime::Contact;
