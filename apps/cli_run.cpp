@@ -10,6 +10,7 @@
 #include "blockdyn/version.hpp"
 #include "cli_common.hpp"
 #include "cli_registry.hpp"
+#include "mpi_sweep.hpp"
 
 namespace blockdyn::cli {
 
@@ -32,7 +33,11 @@ CliOutcome run_cli(const std::vector<std::string>& args) {
   app.require_subcommand(1);
   auto reg = command_registry();
   std::sort(reg.begin(), reg.end(), [](const auto& a, const auto& b) { return a.order < b.order; });
-  for (const auto& c : reg) c.add(app);
+  std::vector<std::string> refusing_mpi;
+  for (const auto& c : reg) {
+    c.add(app);
+    if (c.mpi == MpiUse::Refuses) refusing_mpi.push_back(app.get_subcommands({}).back()->get_name());
+  }
   reject_empty_values(app);
   // The subcommand names the schema of its JSON outputs.
   current_command().clear();
@@ -41,6 +46,11 @@ CliOutcome run_cli(const std::vector<std::string>& args) {
       current_command() = a;
       break;
     }
+  const int ranks = launched_by_mpi() ? launcher_world_size() : 1;
+  if (ranks > 1 && std::find(refusing_mpi.begin(), refusing_mpi.end(), current_command()) != refusing_mpi.end())
+    return {2, "MPI: `blockdyn " + current_command() + "` does not distribute its work over MPI ranks (launched with " +
+                   std::to_string(ranks) +
+                   "): run it without mpirun (sweep, map, survival, spectrum and response-curve distribute)"};
   // CLI11 parses the arguments in reverse order from a vector.
   std::vector<std::string> rev(args.rbegin(), args.rend());
   CliOutcome out;

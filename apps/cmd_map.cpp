@@ -19,6 +19,7 @@
 #include "bounds_common.hpp"
 #include "cli_common.hpp"
 #include "cli_registry.hpp"
+#include "grid_run.hpp"
 
 namespace blockdyn::cli {
 namespace {
@@ -104,7 +105,9 @@ void run(const CLI::App& s, const MapFlags& f) {
   ro.resume = f.resume;
   ro.overwrite = f.overwrite;
   ro.progress = f.quiet ? ProgressMode::None : ProgressMode::Auto;
-  const SweepOutcome out = run_sweep(ev, ro);
+  const GridRunResult dispatched = dispatch_points(ev, ro);
+  if (!dispatched.root) return;  // the other ranks computed their share of the points
+  const SweepOutcome& out = dispatched.outcome;
 
   // Boundary curves on a coarser set of 1/r values spanning the grid.
   const double ir_lo = spec.r.values.front(), ir_hi = spec.r.values.back();
@@ -178,7 +181,7 @@ void add(CLI::App& app) {
   s->callback([s, f] { run(*s, *f); });
 }
 
-RegisterCommand reg(25, add);
+RegisterCommand reg(25, add, MpiUse::Distributes);
 
 }  // namespace
 }  // namespace blockdyn::cli

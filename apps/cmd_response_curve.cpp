@@ -193,7 +193,7 @@ void add(CLI::App& app) {
   s->callback([s, f] { run(*s, *f); });
 }
 
-RegisterCommand reg(15, add);
+RegisterCommand reg(15, add, MpiUse::Distributes);
 
 }  // namespace
 }  // namespace blockdyn::cli

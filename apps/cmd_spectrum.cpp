@@ -181,7 +181,7 @@ void add(CLI::App& app) {
   s->callback([s, f] { run(*s, *f); });
 }
 
-RegisterCommand reg(13, add);
+RegisterCommand reg(13, add, MpiUse::Distributes);
 
 }  // namespace
 }  // namespace blockdyn::cli

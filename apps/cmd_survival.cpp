@@ -157,7 +157,7 @@ void add(CLI::App& app) {
   s->callback([s, f] { run(*s, *f); });
 }
 
-RegisterCommand reg(14, add);
+RegisterCommand reg(14, add, MpiUse::Distributes);
 
 }  // namespace
 }  // namespace blockdyn::cli

@@ -19,6 +19,7 @@
 #include "blockdyn/io/toml_read.hpp"
 #include "cli_common.hpp"
 #include "cli_registry.hpp"
+#include "grid_run.hpp"
 #include "ground_flags.hpp"
 #include "mpi_sweep.hpp"
 
@@ -271,22 +272,10 @@ void execute(const PointTable& ev, const SweepFlags& f, const nlohmann::ordered_
   o.overwrite = f.overwrite;
   o.progress = f.quiet ? ProgressMode::None : parse_progress_mode(f.progress);
   o.progress_interval = f.progress_interval;
-  SweepOutcome out;
-  int ranks = 1;
-  if (launched_by_mpi()) {
-    if (!mpi_built() && launcher_world_size() > 1)
-      throw UsageError("this blockdyn was built without MPI: run it without mpirun, or rebuild with Open MPI");
-    if (mpi_built()) {
-      const MpiSweepResult res = run_sweep_mpi(ev, o);
-      if (!res.root) return;  // only rank 0 reports
-      out = res.outcome;
-      ranks = res.ranks;
-    } else {
-      out = run_sweep(ev, o);
-    }
-  } else {
-    out = run_sweep(ev, o);
-  }
+  const GridRunResult res = dispatch_points(ev, o);
+  if (!res.root) return;  // only rank 0 reports
+  const SweepOutcome& out = res.outcome;
+  const int ranks = res.ranks;
   make_plot(out.paths);
   if (f.quiet) return;
   if (out.was_complete) {
@@ -399,7 +388,7 @@ void add(CLI::App& app) {
   s->callback([s, f] { run(*s, *f); });
 }
 
-RegisterCommand reg(20, add);
+RegisterCommand reg(20, add, MpiUse::Distributes);
 
 }  // namespace
 }  // namespace blockdyn::cli

@@ -80,6 +80,7 @@ ForcedModel build_forced_model(const CLI::App& s, const ForcedModelFlags& f) {
     if (f.restitution >= 0) rp.restitution = f.restitution;
     try {
       validate(rp);
+      if (f.model == "housner") housner_coefficient(rp.shape, rp.restitution);
     } catch (const std::invalid_argument& e) {
       throw UsageError(e.what());
     }

@@ -51,6 +51,10 @@ GridRunResult run_grid(const PointTable& t, const GridRunFlags& f, int threads, 
   o.overwrite = f.overwrite;
   o.progress = quiet ? ProgressMode::None : parse_progress_mode(progress);
   o.progress_interval = f.progress_interval;
+  return dispatch_points(t, o, plan);
+}
+
+GridRunResult dispatch_points(const PointTable& t, const SweepRunOptions& o, PointPlan* plan) {
   GridRunResult r;
   try {
     if (launched_by_mpi() && (mpi_built() || launcher_world_size() > 1)) {

@@ -52,6 +52,11 @@ struct GridRunResult {
 GridRunResult run_grid(const PointTable& t, const GridRunFlags& f, int threads, const std::string& progress,
                        bool quiet, PointPlan* plan = nullptr);
 
+// The one MPI dispatch of every command that distributes points: over the ranks of an mpirun
+// launch (results byte-identical to one rank; only the root's result has root = true), else
+// over threads. Usage errors (existing outputs, an unwritable directory) throw UsageError.
+GridRunResult dispatch_points(const PointTable& t, const SweepRunOptions& o, PointPlan* plan = nullptr);
+
 // A number for a figure's title (%.4g).
 std::string short_number(double v);
 

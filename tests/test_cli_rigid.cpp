@@ -152,3 +152,34 @@ TEST(CliRigid, PlotIsWritten) {
   EXPECT_TRUE(exists(d.path + "/p.png"));
   EXPECT_TRUE(exists(d.path + "/p.svg"));
 }
+
+// Issue 25 item 3: under a constant 0.5 g a block with b/h = 0.25, mu_s = 0.35, mu_k = 0.2 can
+// start rocking (friction holds the pivot) or sliding (kinetic friction 0.2 g keeps both corners
+// loaded: N_B = N (1 - mu_k h / b) / 2 > 0): both are consistent. The choice is reported, with
+// the rule; with mu_k = 0.3 sliding would unload a corner (1 - 0.3 * 4 < 0): rocking is unique.
+TEST(CliRigid, AmbiguousOnsetIsReported) {
+  TmpDir d("ambiguous");
+  auto run = [&](const char* mu_k) {
+    const auto r = run_cli({"simulate", "--model", "rigid", "--width", "0.25", "--height", "1", "--mass", "10",
+                            "--mu-s", "0.35", "--mu-k", mu_k, "--ground-h", "0.5", "--t-end", "0.2", "--json"},
+                           d.path);
+    EXPECT_EQ(r.code, 0) << r.err;
+    return json::parse(r.out);
+  };
+  const json j = run("0.2");
+  EXPECT_EQ(j["ambiguous_onsets"], 1);
+  EXPECT_EQ(j["event_counts"]["ambiguous_onset"], 1);
+  int seen = 0;
+  for (const auto& e : j["events"]) {
+    if (e["kind"] != "ambiguous_onset") continue;
+    ++seen;
+    EXPECT_EQ(e["t"], 0.0);
+    EXPECT_EQ(e["mechanisms"], json::array({"rock", "slide"}));
+    EXPECT_EQ(e["chosen"], "rock");
+    EXPECT_EQ(e["chosen"], j["initial_mode"]);
+  }
+  EXPECT_EQ(seen, 1);
+  const json u = run("0.3");
+  EXPECT_EQ(u["ambiguous_onsets"], 0);
+  EXPECT_EQ(u["initial_mode"], "rock");
+}

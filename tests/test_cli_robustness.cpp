@@ -4,6 +4,7 @@
 // and scenario files (fixed seed, a fixed budget in CI) never crashes, hangs or floods the disk.
 #include <gtest/gtest.h>
 #include <signal.h>
+#include <sys/stat.h>
 
 #include <chrono>
 #include <filesystem>
@@ -124,7 +125,7 @@ TEST(CliRobustness, CorruptJournalRowIsRefused) {
   const std::string side = slurp(d.path + "/s.json");
   const auto fp_at = side.find("\"fingerprint\": \"") + 16;
   const std::string fp = side.substr(fp_at, 16);
-  std::ofstream(d.path + "/s.csv.journal") << "# blockdyn sweep journal v1 fingerprint=" << fp << " points=3\n"
+  std::ofstream(d.path + "/s.csv.journal") << "# blockdyn sweep journal v2 fingerprint=" << fp << " points=3\n"
                                           << csv.substr(0, csv.find('\n') + 1) << "2,garbage\n";
   fs::remove(d.path + "/s.csv");
   auto resumed = args;
@@ -228,4 +229,42 @@ TEST(CliRobustness, RandomHostileInputNeverCrashesOrHangs) {
   const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   ::testing::Test::RecordProperty("fuzz_runs", runs);
   ::testing::Test::RecordProperty("fuzz_seconds", std::to_string(secs));
+}
+
+// Issue 25 item 5: records with a sample spacing no instrument has (the step loop never ended),
+// a FIFO given as a record (the read blocked), a Housner block whose default restitution is
+// negative, an assembly of grains: usage errors within seconds, naming the field.
+TEST(CliRobustness, RecordsAndBlocksOutsideTheirRangeAreUsageErrors) {
+  TmpDir d("issue25");
+  std::ofstream(d.path + "/tiny.AT2") << "T\nD\nU\nNPTS= 2, DT= 1e-200\n0.5 0.5\n";
+  std::ofstream(d.path + "/tiny.csv") << "t,a\n0,0.5\n1e-300,0.5\n2e-300,0.5\n";
+  ASSERT_EQ(::mkfifo((d.path + "/fifo.AT2").c_str(), 0600), 0);
+  const std::vector<std::string> housner = {"--model", "housner", "--width", "0.3", "--height", "1.5"};
+  auto with_h = [&](std::vector<std::string> head, std::vector<std::string> tail) {
+    head.insert(head.end(), housner.begin(), housner.end());
+    head.insert(head.end(), tail.begin(), tail.end());
+    return head;
+  };
+  const std::vector<Case> cases = {
+      {with_h({"simulate"}, {"--ground-h-record", "tiny.AT2"}), "dt = "},
+      {with_h({"simulate"}, {"--ground-h-record", "tiny.csv"}), "time step"},
+      {with_h({"lyapunov"}, {"--ground-h-record", "tiny.AT2"}), "dt = "},
+      {with_h({"simulate"}, {"--ground-h-record", "fifo.AT2"}), "not a regular file"},
+      {{"simulate", "--model", "housner", "--width", "1.6", "--height", "1", "--w0", "0.1"}, "restitution"},
+      {{"cycles", "--model", "housner", "--width", "1.6", "--height", "1", "--beta", "2", "--omega", "5"},
+       "restitution"},
+      {{"assembly", "--preset", "trilith", "--block-width", "1e-5", "--t-end", "0.01"}, "block-width"},
+      {{"assembly", "--preset", "trilith", "--block-width", "2.4e-6", "--t-end", "0.01"}, "block-width"},
+  };
+  for (const Case& c : cases) expect_usage_error(c, d.path);
+  // The message names the ways out.
+  const CliResult r = run_cli({"simulate", "--model", "housner", "--width", "1.6", "--height", "1"}, d.path);
+  EXPECT_NE(r.err.find("--restitution"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("--model rigid"), std::string::npos) << r.err;
+  // At b/h = sqrt(2) exactly Housner's coefficient is 0: a plastic impact, allowed.
+  EXPECT_EQ(run_cli({"simulate", "--model", "housner", "--width", "1.41", "--height", "1", "--w0", "0.1",
+                     "--t-end", "1"},
+                    d.path)
+                .code,
+            0);
 }

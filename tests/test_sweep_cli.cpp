@@ -5,6 +5,8 @@
 
 #include <chrono>
 #include <fstream>
+#include <set>
+#include <sstream>
 #include <thread>
 
 #include "test_sweep_util.hpp"
@@ -217,4 +219,51 @@ TEST(SweepCli, TomlDefinitionDryRunAndPlots) {
   ASSERT_EQ(again.code, 0) << again.err;
   EXPECT_NE(again.out.find("already complete"), std::string::npos) << again.out;
   EXPECT_TRUE(exists(dir + "/status.png"));
+}
+
+// Issue 25 item 4: under more than one rank every command either distributes its points (map:
+// the CSV byte-identical to one process, each point computed once) or refuses with exit 2 naming
+// MPI; none runs every point on every rank.
+TEST(SweepCli, MpiEveryCommandDistributesOrRefuses) {
+  if (std::system("command -v mpirun >/dev/null 2>&1") != 0) GTEST_SKIP() << "mpirun not found";
+  const std::string mpirun =
+      "OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1 "
+      "mpirun -np 2 --oversubscribe --allow-run-as-root";
+  const sweep_test::TmpDir tmp("mpi-commands");
+  const std::string& dir = tmp.path;
+  const std::vector<std::string> map = {"map", "--k", "1e2:1e6:5", "--inv-r", "2:6:3", "--t-end", "3",
+                                        "--boundary-points", "0", "--threads", "1", "--quiet"};
+  const CliResult one = run_cli(with(map, {"-o", "one.csv"}), dir);
+  ASSERT_EQ(one.code, 0) << one.err;
+  const CliResult two = run_cli(with(map, {"-o", "two.csv"}), dir, mpirun);
+  if (two.err.find("built without MPI") != std::string::npos) GTEST_SKIP() << "CLI built without MPI";
+  ASSERT_EQ(two.code, 0) << two.err;
+  EXPECT_EQ(slurp(dir + "/two.csv"), slurp(dir + "/one.csv"));
+  const std::string side = slurp(dir + "/two.json");
+  EXPECT_NE(side.find("\"mpi_ranks\": 2"), std::string::npos);
+  EXPECT_NE(side.find("\"points_computed\": 15"), std::string::npos) << side;
+  // Every subcommand listed by --help: the distributing ones run (their --help), the others refuse.
+  const CliResult help = run_cli({"--help"}, dir);
+  const auto at = help.out.find("Subcommands:");
+  ASSERT_NE(at, std::string::npos) << help.out;
+  std::istringstream lines(help.out.substr(at));
+  std::string line;
+  const std::set<std::string> distribute = {"sweep", "map", "survival", "spectrum", "response-curve"};
+  int refused = 0, ran = 0;
+  while (std::getline(lines, line)) {
+    std::istringstream words(line);
+    std::string name;
+    if (!(words >> name) || name == "Subcommands:") continue;
+    const CliResult r = run_cli({name, "--help"}, dir, mpirun);
+    if (distribute.count(name)) {
+      EXPECT_EQ(r.code, 0) << name << ": " << r.err;
+      ++ran;
+    } else {
+      EXPECT_EQ(r.code, 2) << name;
+      EXPECT_NE(r.err.find("MPI"), std::string::npos) << name << ": " << r.err;
+      ++refused;
+    }
+  }
+  EXPECT_EQ(ran, 5);
+  EXPECT_GT(refused, 15);
 }

@@ -254,3 +254,41 @@ TEST(SweepProgress, PlainLinesAndDurations) {
   EXPECT_EQ(sweep_test::count_lines(text), 2u) << text;
   EXPECT_NE(text.find("10 points, 4 already done"), std::string::npos);
 }
+
+// Issue 25 item 5: a journal row altered after it was written (a cell made nan or a word) is
+// refused by its checksum, never copied into the CSV; the row as written resumes.
+TEST(SweepRun, AlteredJournalCellsAreRefused) {
+  const sweep_test::TmpDir tmp("sweep-altered");
+  const std::string& dir = tmp.path;
+  const SweepEvaluator ev(small_spec(dir + "/s.csv"));
+  const std::string row = ev.row(4).text;
+  const std::size_t cut = row.find(',', row.find(',') + 1);  // the second cell
+  SweepRunOptions o = quiet(1);
+  o.resume = true;
+  for (const std::string cell : {"nan", "zzz"}) {
+    SCOPED_TRACE(cell);
+    {
+      SweepJournal j(dir + "/s.csv.journal", ev.fingerprint(), ev.header(), ev.size(), false);
+      j.append(4, row);
+    }
+    std::string text = slurp(dir + "/s.csv.journal");
+    const std::size_t at = text.find(row.substr(0, cut));
+    ASSERT_NE(at, std::string::npos);
+    const std::size_t end = text.find(',', at + cut + 1);
+    text.replace(at + cut + 1, end - (at + cut + 1), cell);
+    std::ofstream(dir + "/s.csv.journal", std::ios::trunc) << text;
+    try {
+      run_sweep(ev, o);
+      FAIL() << "expected an error";
+    } catch (const std::invalid_argument& e) {
+      EXPECT_NE(std::string(e.what()).find("checksum"), std::string::npos) << e.what();
+    }
+    EXPECT_FALSE(sweep_test::exists(dir + "/s.csv"));
+  }
+  {
+    SweepJournal j(dir + "/s.csv.journal", ev.fingerprint(), ev.header(), ev.size(), false);
+    j.append(4, row);
+  }
+  EXPECT_EQ(run_sweep(ev, o).resumed, 1u);
+  EXPECT_NE(slurp(dir + "/s.csv").find(row), std::string::npos);
+}

@@ -10,6 +10,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include <sys/stat.h>
+
 namespace blockdyn {
 
 namespace {
@@ -100,7 +102,8 @@ void parse_at2_counts(const std::string& line, const std::string& where, long& n
 
 Accelerogram::Accelerogram(std::vector<double> a, double dt, std::string source)
     : a_(std::move(a)), dt_(dt), uniform_(true), source_(std::move(source)) {
-  if (!(dt > 0) || !std::isfinite(dt)) fail(source_, "sample spacing dt must be finite and > 0");
+  if (!(dt >= kMinRecordDt) || !(dt <= kMaxRecordDt))
+    fail(source_, "sample spacing dt = " + std::to_string(dt) + " s is out of range: must be in [1e-6, 1e3] s");
   inv_dt_ = 1.0 / dt_;
   check_values();
 }
@@ -113,8 +116,12 @@ Accelerogram::Accelerogram(std::vector<double> t, std::vector<double> a, std::st
     if (!std::isfinite(t_[i])) fail(source_, "sample " + std::to_string(i + 1) + ": time is not finite");
     if (i > 0 && !(t_[i] > t_[i - 1]))
       fail(source_, "sample " + std::to_string(i + 1) + ": times must be strictly increasing");
+    if (i > 0 && !(t_[i] - t_[i - 1] >= kMinRecordDt))
+      fail(source_, "sample " + std::to_string(i + 1) + ": the time step " + std::to_string(t_[i] - t_[i - 1]) +
+                        " s is out of range: must be >= 1e-6 s");
   }
   if (t_.front() < 0) fail(source_, "the first sample time must be >= 0");
+  if (!(t_.back() <= kMaxRecordDuration)) fail(source_, "the last sample time must be <= 1e7 s");
   // Equally spaced (to rounding): use the O(1) lookup of uniform records.
   const double d = (t_.back() - t_.front()) / double(t_.size() - 1);
   bool eq = t_.front() == 0.0;
@@ -154,14 +161,29 @@ double Accelerogram::at(double t) const {
   return a_[i - 1] + f * (a_[i] - a_[i - 1]);
 }
 
+double Accelerogram::slope(double t) const {
+  if (uniform_) {
+    const double u = t * inv_dt_;
+    if (!(u >= 0.0) || u >= double(a_.size() - 1)) return 0.0;
+    const std::size_t i = std::size_t(u);
+    return (a_[i + 1] - a_[i]) * inv_dt_;
+  }
+  if (t < t_.front() || t >= t_.back()) return 0.0;
+  const std::size_t i = std::size_t(std::upper_bound(t_.begin(), t_.end(), t) - t_.begin());
+  return (a_[i] - a_[i - 1]) / (t_[i] - t_[i - 1]);
+}
+
 double Accelerogram::next_sample_after(double t) const {
   if (uniform_) {
     const double u = t * inv_dt_;
     if (u < 0.0) return 0.0;
+    const double last = double(a_.size() - 1);
+    if (!(u < last)) return INFINITY;
     double i = std::floor(u) + 1.0;
-    // Rounding: the sample time computed from i must lie strictly after t.
-    while (dt_ * i <= t) i += 1.0;
-    if (i > double(a_.size() - 1)) return INFINITY;
+    // Rounding: the sample time computed from i must lie strictly after t (i < 2^25 here, so
+    // each increment moves it).
+    for (int k = 0; k < 4 && dt_ * i <= t; ++k) i += 1.0;
+    if (i > last) return INFINITY;
     return dt_ * i;
   }
   const auto it = std::upper_bound(t_.begin(), t_.end(), t);
@@ -231,6 +253,10 @@ Accelerogram parse_record_csv(const std::string& text, const std::string& source
 }
 
 Accelerogram load_accelerogram(const std::string& path, const std::string& field) {
+  // A FIFO or a device would block the read or never end: only regular files are records.
+  struct stat st;
+  if (::stat(path.c_str(), &st) != 0) throw std::invalid_argument(field + ": cannot read '" + path + "'");
+  if (!S_ISREG(st.st_mode)) throw std::invalid_argument(field + ": '" + path + "' is not a regular file");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw std::invalid_argument(field + ": cannot read '" + path + "'");
   // Bounded read: 20 M samples of ~16 characters at most.

@@ -18,6 +18,8 @@ class Accelerogram {
   Accelerogram(std::vector<double> t, std::vector<double> a, std::string source);
 
   double at(double t) const;  // linear interpolation, 0 outside the record
+  // Slope of the segment that starts at or before t and ends after it (0 outside the record).
+  double slope(double t) const;
   // First sample time strictly after t (infinity past the last sample).
   double next_sample_after(double t) const;
 
@@ -42,6 +44,10 @@ class Accelerogram {
 
 // Largest record accepted (samples): a guard against reading a runaway file into memory.
 inline constexpr std::size_t kMaxRecordSamples = 20'000'000;
+// Sample spacing accepted (s): strong-motion instruments sample at 50-1000 Hz; 1 MHz and one
+// sample per 1000 s are far outside, and every sample is a breakpoint the integrator stops at.
+inline constexpr double kMinRecordDt = 1e-6, kMaxRecordDt = 1e3;
+inline constexpr double kMaxRecordDuration = 1e7;
 
 // PEER NGA .AT2: 4 header lines, the 4th giving NPTS and DT ("NPTS=  7807, DT=   .00500 SEC",
 // "3930   0.00500   NPTS, DT", ...), then NPTS free-format values in g.

@@ -25,6 +25,29 @@ double GroundComponent::next_break(double t) const {
   return b;
 }
 
+double GroundComponent::rate(double t) const {
+  if (t < t_start || t >= t_stop()) return 0.0;
+  const double s = t - t_start;
+  double r = 0.0;
+  if (amplitude != 0.0) {
+    if (has_pulse()) {
+      r += amplitude * pulse_rate(pulse, s, duration);
+    } else {
+      const double w = 2.0 * M_PI * frequency;
+      r += amplitude * w * std::cos(w * s + phase);
+    }
+  }
+  if (record) r += scale * record_time_unit * record->slope(s * record_time_unit);
+  return r;
+}
+
+double GroundComponent::curvature_bound() const {
+  if (amplitude == 0.0) return 0.0;
+  if (has_pulse()) return std::fabs(amplitude) * pulse_curvature_bound(pulse, duration);
+  const double w = 2.0 * M_PI * frequency;
+  return std::fabs(amplitude) * w * w;
+}
+
 void validate(const GroundMotion& g) {
   const GroundComponent* c[2] = {&g.horizontal, &g.vertical};
   const char* name[2] = {"ground.horizontal", "ground.vertical"};

@@ -58,12 +58,22 @@ struct GroundComponent {
     return a;
   }
 
+  // Time derivative of at() (the right derivative at a breakpoint).
+  double rate(double t) const;
+  // A bound on |d^2 at / dt^2| between breakpoints (records are linear there).
+  double curvature_bound() const;
+
   // The first breakpoint strictly after t (infinity if none).
   double next_break(double t) const;
   // Linear between consecutive breakpoints (constant and record terms only): then any function
   // a - |b| of the input with a, b linear in it is concave between breakpoints, and its minimum
   // over such an interval lies at an end.
   bool piecewise_linear() const { return amplitude == 0.0; }
+  // Its shortest smooth time scale (a harmonic's period, a pulse's duration; infinity if none).
+  double time_scale() const {
+    if (amplitude == 0.0) return std::numeric_limits<double>::infinity();
+    return has_pulse() ? duration : 1.0 / frequency;
+  }
 };
 
 struct GroundMotion {
@@ -77,36 +87,6 @@ struct GroundMotion {
   double av(double t) const { return vertical.at(t); }
 };
 
-// The breakpoints (from t = 0 on) at which keep(tb) fails, each with the breakpoint before it.
-// For a piecewise-linear input and a keep() that tests concave functions of the input (the rest
-// conditions of a block), a failure can only start in an interval ending at such a breakpoint,
-// so a mode with a constant state need not stop at the others: next(t) is the breakpoint before
-// the first failure after t (or that failure itself when no breakpoint lies between). Built once
-// per model, O(breakpoints).
-class FailingBreaks {
- public:
-  FailingBreaks() = default;
-  template <class Keep>
-  FailingBreaks(const GroundMotion& g, Keep&& keep) {
-    double prev = 0.0;
-    for (double tb = g.next_break(0.0); std::isfinite(tb); tb = g.next_break(tb)) {
-      if (!keep(tb)) {
-        fail_.push_back(tb);
-        prev_.push_back(prev);
-      }
-      prev = tb;
-    }
-  }
-  double next(double t) const {
-    const auto it = std::upper_bound(fail_.begin(), fail_.end(), t);
-    if (it == fail_.end()) return std::numeric_limits<double>::infinity();
-    const double p = prev_[std::size_t(it - fail_.begin())];
-    return p > t ? p : *it;
-  }
-
- private:
-  std::vector<double> fail_, prev_;
-};
 
 // Checks every field (names them as ground.horizontal.<field> or ground.vertical.<field>).
 void validate(const GroundMotion& g);

@@ -26,5 +26,9 @@ const char* pulse_names();
 double pulse_support(PulseShape p);
 // Unit pulse value at time s since the start.
 double pulse_value(PulseShape p, double s, double t_p);
+// Its time derivative (zero outside the support; the right derivative at its ends).
+double pulse_rate(PulseShape p, double s, double t_p);
+// A bound on |d^2 pulse / ds^2| over the support (max over the shape, times 1/t_p^2).
+double pulse_curvature_bound(PulseShape p, double t_p);
 
 }  // namespace blockdyn

@@ -97,6 +97,15 @@ json to_json(const RigidEventRecord& e) {
     j["vw_before"] = e.vw_before;
     j["vw_after"] = e.vw_after;
   }
+  if (e.kind == RigidEventKind::AmbiguousOnset) {
+    // The chosen mechanism first, then the others consistent at the same instant.
+    json names = json::array({to_string(e.to)});
+    for (Mechanism m : kMechanisms)
+      if (m != e.to && (e.mechanisms & mechanism_bit(m))) names.push_back(to_string(m));
+    j["mechanisms"] = names;
+    j["chosen"] = to_string(e.to);
+    j["rule"] = "static friction holds where it can, then the most closed contacts";
+  }
   if (e.kind == RigidEventKind::Impact || e.kind == RigidEventKind::Mode) {
     j["from"] = to_string(e.from);
     j["to"] = to_string(e.to);
@@ -208,6 +217,7 @@ json rigid_result_json(const RigidBlockParams& p, const GroundMotion& g, const R
   j["first_beyond_alpha_time"] = opt(r.first_beyond_alpha_time);
   j["impacts"] = r.impacts;
   j["mode_changes"] = r.mode_changes;
+  j["ambiguous_onsets"] = r.event_counts[int(RigidEventKind::AmbiguousOnset)];
   const double e_final = r.kinetic_final + r.potential_final;
   j["energy"] = {{"initial", r.energy_initial},
                  {"kinetic_final", r.kinetic_final},

@@ -27,6 +27,17 @@ class RigidRecorder final : public Observer<Model> {
   void on_start(const Model& m, double t, const Mode& md, const State& z) override {
     track(t, z[kTh]);
     moved(t, Mechanism::Rest, m.mechanism(md));
+    if (const unsigned other = m.alternatives(md); other != 0) {
+      RigidEventRecord r;
+      r.t = t;
+      r.kind = RigidEventKind::AmbiguousOnset;
+      r.from = r.to = m.mechanism(md);
+      r.state = m.pose(md, z);
+      r.pivot = m.pivot(md);
+      r.slip = m.slip(md);
+      r.mechanisms = other | mechanism_bit(r.to);
+      add(r);
+    }
   }
 
   bool on_segment(const Model& m, const Segment& seg, double t0, double t1, const Mode& md) override {
@@ -79,6 +90,11 @@ class RigidRecorder final : public Observer<Model> {
       ++res_.mode_changes;
       add(record(m, e, RigidEventKind::Mode, from, to));
       moved(e.t, from, to);
+    }
+    if (const unsigned other = m.alternatives(e.to); other != 0 && !e.stop) {
+      RigidEventRecord r = record(m, e, RigidEventKind::AmbiguousOnset, from, to);
+      r.mechanisms = other | mechanism_bit(to);
+      add(r);
     }
     return true;
   }

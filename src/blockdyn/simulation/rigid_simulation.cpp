@@ -117,12 +117,10 @@ RigidResult simulate_housner(const BlockShape& shape, std::optional<double> rest
                              const RigidInitial& init, const RigidRunOptions& opt, Observer<HousnerBlock>* extra,
                              RigidEventSink* events) {
   validate(shape);
-  if (restitution)
-    require(std::isfinite(*restitution) && *restitution >= 0.0 && *restitution <= 1.0, "restitution", "in [0, 1]",
-            *restitution);
+  const double e = housner_coefficient(shape, restitution);
   validate(g);
   validate(opt);
-  const HousnerBlock m(shape, restitution.value_or(shape.housner_restitution()), g);
+  const HousnerBlock m(shape, e, g);
   const HousnerBlock::State z = housner_initial_state(m, init);
   return run_rigid_family(m, m.initial_mode(opt.t_start, z), z, opt, extra, events, "housner");
 }

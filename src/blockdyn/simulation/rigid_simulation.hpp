@@ -40,9 +40,10 @@ struct RigidEventRecord {
   int pivot = 0, slip = 0;             // the new mode's corner in contact (rock, slide-rock) and slip sign
   double vw_before = 0, vw_after = 0;  // impact: theta' before and after
   std::array<double, 6> state{};       // x, y, w, vx, vy, vw after the event
+  unsigned mechanisms = 0;             // ambiguous_onset: the consistent mechanisms (mechanism_bit)
 };
 
-inline constexpr int kNumRigidEventKinds = int(RigidEventKind::WZero) + 1;
+inline constexpr int kNumRigidEventKinds = int(RigidEventKind::AmbiguousOnset) + 1;
 
 // Receives each event record as it is made (e.g. to stream a JSON event list), whether or not
 // the result keeps the list (RigidRunOptions::record_events).

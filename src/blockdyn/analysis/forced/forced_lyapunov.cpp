@@ -175,8 +175,7 @@ ForcedLyapunovOutcome housner_lyapunov(const BlockShape& shape, std::optional<do
                                        const ForcedLyapunovOptions& o) {
   validate(shape);
   validate(g);
-  const double e = restitution.value_or(shape.housner_restitution());
-  if (!(e >= 0 && e <= 1)) throw std::invalid_argument("restitution must be in [0, 1]");
+  const double e = housner_coefficient(shape, restitution);
   const HousnerBlock m(shape, e, g);
   const HousnerBlock::State z = housner_initial_state(m, init);
   EventReading<HousnerBlock> read{

@@ -17,6 +17,7 @@ double RockingForcing::e() const { return restitution >= 0 ? restitution : shape
 void validate(const RockingForcing& f) {
   validate(f.shape);
   if (!(f.restitution < 0 || f.restitution <= 1)) throw std::invalid_argument("restitution must be in [0, 1]");
+  if (f.restitution < 0) housner_coefficient(f.shape, std::nullopt);  // Housner's own must be >= 0
   if (!(f.ks > 0 && f.ks <= kMaxGroundAcceleration)) throw std::invalid_argument("ks must be in (0, 1000] (g)");
   if (!(f.omega > 0 && f.omega * f.p() / (2 * M_PI) <= kMaxGroundFrequency))
     throw std::invalid_argument("omega must be > 0 (and Omega / 2 pi <= 1e4 Hz)");

@@ -5,6 +5,7 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <cstdint>
 #include <charconv>
 #include <cstdio>
 #include <cstring>
@@ -43,6 +44,24 @@ std::size_t field_count(const std::string& line) {
   return n;
 }
 
+// Each journal line is a row followed by ",@" and the 16 hex digits of a checksum of the
+// definition's fingerprint and the row: a row altered after it was written (a cell edited,
+// truncated, a line from another file) is never copied into the final CSV.
+constexpr const char* kChecksumMark = ",@";
+constexpr std::size_t kChecksumDigits = 16;
+
+std::string row_checksum(const std::string& fingerprint, const std::string& row) {
+  std::uint64_t h = 14695981039346656037ull;  // FNV-1a 64
+  for (const std::string* s : {&fingerprint, &row})
+    for (unsigned char c : *s) {
+      h ^= c;
+      h *= 1099511628211ull;
+    }
+  char buf[kChecksumDigits + 1];
+  std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(h));
+  return buf;
+}
+
 }  // namespace
 
 std::size_t row_index(const std::string& row) {
@@ -55,7 +74,7 @@ std::size_t row_index(const std::string& row) {
 }
 
 std::string SweepJournal::first_line(const std::string& fingerprint, std::size_t points) {
-  return "# blockdyn sweep journal v1 fingerprint=" + fingerprint + " points=" + std::to_string(points) + "\n";
+  return "# blockdyn sweep journal v2 fingerprint=" + fingerprint + " points=" + std::to_string(points) + "\n";
 }
 
 SweepJournal::SweepJournal(std::string path, std::string fingerprint, std::string header, std::size_t points,
@@ -83,6 +102,7 @@ void SweepJournal::load() {
   ss << in.rdbuf();
   const std::string text = ss.str();
   const std::string expect = first_line(fingerprint_, rows_.size());
+  std::size_t line_no = 2;
   auto fail = [&](const std::string& why) {
     throw std::invalid_argument("journal '" + path_ + "' " + why +
                                 "; use --overwrite to discard it, or a different output path");
@@ -100,7 +120,16 @@ void SweepJournal::load() {
   while (pos < text.size()) {
     const std::size_t nl = text.find('\n', pos);
     if (nl == std::string::npos) break;  // partial row written when the sweep was killed
-    std::string row = text.substr(pos, nl + 1 - pos);
+    const std::string line = text.substr(pos, nl - pos);
+    ++line_no;
+    // A line whose checksum does not match is not this sweep's row as written (a cell edited,
+    // a line from another file): never copied into the CSV.
+    const std::size_t mark = line.rfind(kChecksumMark);
+    std::string row = mark == std::string::npos ? std::string() : line.substr(0, mark) + "\n";
+    if (mark == std::string::npos || line.size() - mark != 2 + kChecksumDigits ||
+        line.compare(mark + 2, kChecksumDigits, row_checksum(fingerprint_, row)) != 0)
+      fail("is corrupt: line " + std::to_string(line_no) +
+           " fails its checksum (altered after it was written; delete that line to compute its point again)");
     std::size_t idx = 0;
     try {
       idx = row_index(row);
@@ -137,7 +166,7 @@ void SweepJournal::append(std::size_t index, const std::string& row) {
   if (row.empty() || row.back() != '\n' || row_index(row) != index)
     throw std::logic_error("sweep row does not match its index");
   if (!rows_[index].empty()) return;  // already recorded (identical by construction)
-  write_all(fd_, row, path_);
+  write_all(fd_, row.substr(0, row.size() - 1) + kChecksumMark + row_checksum(fingerprint_, row) + "\n", path_);
   rows_[index] = row;
   ++done_;
 }

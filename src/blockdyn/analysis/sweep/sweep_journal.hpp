@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Crash-safe record of finished sweep rows: `<csv>.journal` holds a first line tying it to the
-// definition, the CSV header, then one row per finished point in completion order. Each row is
+// definition, the CSV header, then one row per finished point in completion order, each with a
+// checksum (a journal with a row that does not match it is refused as corrupt). Each row is
 // appended with a single write() (no user-space buffer), so a killed sweep loses only the points
 // in flight. The final CSV (header + rows sorted by index) is written atomically at the end, so
 // its bytes do not depend on the order points finished in, on threads, ranks or interruptions.

@@ -10,6 +10,12 @@ namespace blockdyn {
 
 namespace {
 
+// Blocks below a millimetre are grains, not blocks: their contact and rocking time scales
+// (sqrt(m / k) falls with the size) make a run of seconds cost billions of steps.
+constexpr double kMinBlockSize = 1e-3;
+constexpr const char* kMinBlockSizeWhy =
+    " (smaller blocks are grains: their contact time scale makes a run of seconds take billions of steps)";
+
 std::string num(double v) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "%.6g", v);
@@ -105,8 +111,8 @@ void turn_about(AssemblyBlock& k, const Vec2& pivot, double theta) {
 Assembly make_preset(const std::string& name, const PresetOptions& o) {
   if (!(o.slenderness >= 0.1 && o.slenderness <= 100))
     throw std::invalid_argument("slenderness = " + num(o.slenderness) + " must be in [0.1, 100]");
-  if (!(o.block_width > 0 && o.block_width <= 100))
-    throw std::invalid_argument("block-width = " + num(o.block_width) + " must be in (0, 100] m");
+  if (!(o.block_width >= kMinBlockSize && o.block_width <= 100))
+    throw std::invalid_argument("block-width = " + num(o.block_width) + " must be in [1e-3, 100] m" + kMinBlockSizeWhy);
   if (!(o.thickness > 0 && o.thickness <= 100))
     throw std::invalid_argument("thickness = " + num(o.thickness) + " must be in (0, 100] m");
   if (!(o.density > 0 && o.density <= 1e5))
@@ -219,9 +225,10 @@ void validate(const Assembly& a) {
   for (int i = 0; i < nb; ++i) {
     const AssemblyBlock& k = a.blocks[i];
     const std::string w = "block " + std::to_string(i);
-    if (!(k.width > 0 && k.width <= 1e3)) throw std::invalid_argument(w + ".width = " + num(k.width) + " must be in (0, 1000] m");
-    if (!(k.height > 0 && k.height <= 1e3))
-      throw std::invalid_argument(w + ".height = " + num(k.height) + " must be in (0, 1000] m");
+    if (!(k.width >= kMinBlockSize && k.width <= 1e3))
+      throw std::invalid_argument(w + ".width = " + num(k.width) + " must be in [1e-3, 1000] m" + kMinBlockSizeWhy);
+    if (!(k.height >= kMinBlockSize && k.height <= 1e3))
+      throw std::invalid_argument(w + ".height = " + num(k.height) + " must be in [1e-3, 1000] m" + kMinBlockSizeWhy);
     if (!(k.mass > 0 && k.mass <= 1e12)) throw std::invalid_argument(w + ".mass = " + num(k.mass) + " must be in (0, 1e12] kg");
     for (double v : {k.x, k.y, k.theta, k.vx, k.vy, k.omega})
       if (!(std::isfinite(v) && std::fabs(v) <= 1e6)) throw std::invalid_argument(w + ": initial pose and rates must be finite");

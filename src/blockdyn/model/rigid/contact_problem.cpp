@@ -130,7 +130,7 @@ Selection select_contacts(const ContactProblem& p, const SelectionHints& h, doub
   // Candidate closed sets, most contacts first.
   const bool sets[4][2] = {{true, true}, {true, false}, {false, true}, {false, false}};
   const Tangential tangs[3] = {Tangential::Stick, Tangential::SlipPos, Tangential::SlipNeg};
-  std::array<ContactSolution, 12> found;
+  std::array<ContactSolution, 12>& found = sel.consistent;
   std::array<int, 12> rank{};
   int nf = 0;
   for (const auto& cl : sets) {

@@ -61,6 +61,7 @@ bool consistent(const ContactProblem& p, const ContactSolution& s, double tol_fo
 struct Selection {
   std::optional<ContactSolution> chosen;
   int consistent_count = 0;     // candidates satisfying every condition
+  std::array<ContactSolution, 12> consistent{};  // the first consistent_count of them
   bool painleve = false;        // no consistent candidate, or the chosen slip system is not definite
 };
 

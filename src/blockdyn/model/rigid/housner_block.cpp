@@ -2,9 +2,26 @@
 #include "blockdyn/model/rigid/housner_block.hpp"
 
 #include <cmath>
+#include <stdexcept>
 #include <string>
 
 namespace blockdyn {
+
+double housner_coefficient(const BlockShape& shape, std::optional<double> restitution) {
+  if (restitution) {
+    if (!(std::isfinite(*restitution) && *restitution >= 0.0 && *restitution <= 1.0))
+      throw std::invalid_argument("restitution = " + std::to_string(*restitution) + " is out of range: must be in [0, 1]");
+    return *restitution;
+  }
+  const double e = shape.housner_restitution();
+  if (!(e >= 0.0))
+    throw std::invalid_argument(
+        "restitution: Housner's 1 - 1.5 sin^2(alpha) = " + std::to_string(e) + " is negative for this block (b/h = " +
+        std::to_string(shape.width / shape.height) +
+        " > sqrt(2)): it would bounce back onto the same corner; give --restitution in [0, 1], or use --model rigid "
+        "(impacts by the impact law, --impact)");
+  return e;
+}
 
 HousnerBlock::HousnerBlock(const BlockShape& shape, double restitution, const GroundMotion& g)
     : shape_(shape),
@@ -17,8 +34,7 @@ HousnerBlock::HousnerBlock(const BlockShape& shape, double restitution, const Gr
       io_(shape.inertia_corner()),
       ta_(std::tan(shape.alpha())),
       wscale_(shape.mass * shape.g * shape.half_diagonal()) {
-  if (forced_ && ground_.piecewise_linear())
-    rest_breaks_ = FailingBreaks(ground_, [&](double tb) { return rest_holds(tb); });
+  if (forced_) rest_exit_ = RestExit(ground_, ta_);
 }
 
 double HousnerBlock::angular_acceleration(double t, const Mode& m, const State& z) const {
@@ -44,7 +60,10 @@ void HousnerBlock::rhs(double t, const Mode& m, const State& z, State& dz) const
 
 double HousnerBlock::next_breakpoint(double t, const Mode& m) const {
   if (!forced_) return INFINITY;
-  if (m.mech == Mechanism::Rest && ground_.piecewise_linear()) return rest_breaks_.next(t);
+  // At rest the state is constant: the step ends where rest fails (at the breakpoint the
+  // transition re-selects the mode), found on the input itself, never by the event scan of a step
+  // over which nothing else changes and that may grow over a whole window of failure.
+  if (m.mech == Mechanism::Rest) return rest_exit_.checkpoint(t);
   return ground_.next_break(t);
 }
 

@@ -13,11 +13,17 @@
 #include <string>
 
 #include "blockdyn/excitation/ground_motion.hpp"
+#include "blockdyn/excitation/rest_exit.hpp"
 #include "blockdyn/integrate/hybrid_integrator.hpp"
 #include "blockdyn/model/rigid/mechanism.hpp"
 #include "blockdyn/model/rigid/rigid_params.hpp"
 
 namespace blockdyn {
+
+// The rocking restitution of a run: the given one (in [0, 1]) or Housner's 1 - 1.5 sin^2(alpha),
+// which is negative for b/h > sqrt(2) (the block would bounce back onto the same corner): then
+// std::invalid_argument naming the restitution and the alternatives.
+double housner_coefficient(const BlockShape& shape, std::optional<double> restitution);
 
 struct HousnerMode {
   Mechanism mech = Mechanism::Rest;  // Rest or Rock
@@ -56,8 +62,7 @@ class HousnerBlock {
   std::optional<Transition<Mode>> resolve_chatter(double, const Mode&, const State&) const { return std::nullopt; }
   double step_hint(const Mode&) const { return 0.1 / p_; }
   State abs_tol_scale() const { return {1.0, p_, wscale_, wscale_}; }
-  // At rest the state is constant: with a piecewise-linear input only the breakpoint before the
-  // first one at which rest fails matters (the rest conditions are concave in the input).
+  // At rest: where rest fails (RestExit), else the input's breakpoints.
   double next_breakpoint(double t, const Mode& m) const;
 
   Mode initial_mode(double t, const State& z) const;
@@ -77,6 +82,7 @@ class HousnerBlock {
   Mechanism mechanism(const Mode& m) const { return m.mech; }
   int pivot(const Mode& m) const { return m.mech == Mechanism::Rock ? m.side : 0; }
   int slip(const Mode&) const { return 0; }
+  unsigned alternatives(const Mode&) const { return 0; }  // rocking is its only motion
   // The corner that hits the ground at an impact event (the one opposite the pivot).
   int impact_corner(const Mode& from, int) const { return -from.side; }
   // Centre (x, y), theta and their rates (the base centre stands at x = 0).
@@ -102,7 +108,7 @@ class HousnerBlock {
   GroundMotion ground_;
   bool forced_;
   double alpha_, R_, p_, io_, ta_, wscale_;
-  FailingBreaks rest_breaks_;
+  RestExit rest_exit_;
 };
 
 }  // namespace blockdyn

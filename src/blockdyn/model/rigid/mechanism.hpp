@@ -26,7 +26,9 @@ enum class RigidEventKind : int {
   Invalid,      // the state leaves the model (e.g. the ground pulls away faster than gravity)
   Painleve,     // no or several consistent mechanisms (Painleve's paradox): reported, the run stops
   GroundBreak,  // a breakpoint of the ground motion (not reported)
-  WZero         // theta passes 0 without an impact (flight)
+  WZero,        // theta passes 0 without an impact (flight)
+  AmbiguousOnset  // a switch at which more than one mechanism is consistent (reported; the
+                  // rule's choice is taken: docs/rigid-ground.md)
 };
 
 inline const char* to_string(RigidEventKind k) {
@@ -40,9 +42,15 @@ inline const char* to_string(RigidEventKind k) {
     case RigidEventKind::Painleve: return "painleve";
     case RigidEventKind::GroundBreak: return "ground_break";
     case RigidEventKind::WZero: return "w_zero";
+    case RigidEventKind::AmbiguousOnset: return "ambiguous_onset";
   }
   return "?";
 }
+
+// A set of mechanisms as bits.
+inline constexpr unsigned mechanism_bit(Mechanism m) { return 1u << unsigned(m); }
+inline constexpr Mechanism kMechanisms[] = {Mechanism::Rest, Mechanism::Slide, Mechanism::Rock, Mechanism::SlideRock,
+                                            Mechanism::Flight};
 
 // Name of a base corner: side +1 is the left corner A, -1 the right corner B.
 inline const char* corner_name(int side) { return side > 0 ? "A" : "B"; }

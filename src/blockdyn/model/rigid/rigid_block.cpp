@@ -19,7 +19,8 @@ RigidBlock::RigidBlock(const RigidBlockParams& p, const GroundMotion& g)
       hh_(0.5 * p.shape.height),
       alpha_(p.shape.alpha()),
       p_(p.shape.p()),
-      R_(p.shape.half_diagonal()) {
+      R_(p.shape.half_diagonal()),
+      tan_alpha_(p.shape.width / p.shape.height) {
   // Switching tolerances, relative to the block's own scales (far above rounding, far below
   // anything physical): lengths h, speeds sqrt(g h), forces m g, accelerations g.
   const double h = p.shape.height;
@@ -30,14 +31,7 @@ RigidBlock::RigidBlock(const RigidBlockParams& p, const GroundMotion& g)
   // A corner on the ground whose normal velocity would lift it by less than 1e-12 h (below the
   // floating-point resolution of the gap next to the centre height) is in contact.
   v_close_ = std::sqrt(2.0 * g_ * 1e-12 * h);
-  if (forced_ && ground_.piecewise_linear()) {
-    const double mu_s = par_.interface.mu_s;
-    rest_breaks_ = FailingBreaks(ground_, [&](double tb) {
-      const double N = gv(tb), T = gh(tb);  // rest reactions per unit mass
-      const double NA = 0.5 * (N + hh_ / bh_ * T), NB = 0.5 * (N - hh_ / bh_ * T);
-      return NA >= 0.0 && NB >= 0.0 && mu_s * N - std::fabs(T) >= 0.0;
-    });
-  }
+  if (forced_) rest_exit_ = RestExit(ground_, std::fmin(tan_alpha_, par_.interface.mu_s));
 }
 
 RigidBlock::State RigidBlock::abs_tol_scale() const {
@@ -109,7 +103,8 @@ RigidReactions RigidBlock::reactions(double t, const Mode& md, const State& z) c
 
 double RigidBlock::next_breakpoint(double t, const Mode& md) const {
   if (!forced_) return INFINITY;
-  if (md.mech == Mechanism::Rest && ground_.piecewise_linear()) return rest_breaks_.next(t);
+  // At rest the state is constant: the step ends where rest fails, found on the input itself.
+  if (md.mech == Mechanism::Rest) return rest_exit_.checkpoint(t);
   return ground_.next_break(t);
 }
 
@@ -266,12 +261,53 @@ Transition<RigidMode> RigidBlock::reselect(double t, const Mode& from, State& z,
   const Selection sel = select_contacts(cp, h, tol_f_, tol_a_);
   if (sel.painleve) return Transition<Mode>{from, true, int(RigidEventKind::Painleve)};
   Transition<Mode> tr{mode_of(*sel.chosen, sides, z, from), false, kind};
+  tr.next.alternatives = alternatives_of(select_contacts(cp, SelectionHints{}, tol_f_, tol_a_), sides, z, from, tr.next);
   // Closing a contact removes the (sub-resolution) velocity it still had: book the change of
   // kinetic energy with the impacts so that the energy balance stays closed.
   const double ke0 = kinetic_energy(z);
   complete(tr.next, z);
   z[kWorkImpact] += kinetic_energy(z) - ke0;
   return tr;
+}
+
+unsigned RigidBlock::alternatives_of(const Selection& sel, const int sides[2], const State& z, const Mode& from,
+                                     const Mode& chosen) const {
+  // The mechanism left is consistent only to tolerance at its own switch: it is no candidate.
+  auto left = [&](const ContactSolution& c) {
+    const Mode m = mode_of(c, sides, z, chosen);
+    return m.mech == from.mech && m.side == from.side && m.slip == from.slip;
+  };
+  unsigned bits = 0;
+  for (int i = 0; i < sel.consistent_count; ++i) {
+    const ContactSolution& c = sel.consistent[std::size_t(i)];
+    if (left(c)) continue;
+    // Slip where the same contacts could stick is no alternative: static friction holds.
+    bool stick_too = false;
+    for (int k = 0; k < sel.consistent_count && c.tang != Tangential::Stick; ++k) {
+      const ContactSolution& o = sel.consistent[std::size_t(k)];
+      stick_too |= o.tang == Tangential::Stick && o.closed[0] == c.closed[0] && o.closed[1] == c.closed[1] && !left(o);
+    }
+    if (stick_too) continue;
+    const Mechanism m = mode_of(c, sides, z, chosen).mech;
+    if (m != chosen.mech) bits |= mechanism_bit(m);
+  }
+  return bits;
+}
+
+Transition<RigidMode> RigidBlock::leave_rest_at(double t, const Mode& md, State& z) const {
+  // The same comparisons as the search (first_rest_failure), in units of g: the conditions hold
+  // at every point before the checkpoint and fail at it, or it is only the end of a look-ahead.
+  const double a_h = forced_ ? ground_.ah(t) : 0.0, gvn = 1.0 + (forced_ ? ground_.av(t) : 0.0);
+  const bool rock = !(tan_alpha_ * gvn - std::fabs(a_h) >= 0.0);
+  const bool slide = !(par_.interface.mu_s * gvn - std::fabs(a_h) >= 0.0);
+  const bool lift = !(gvn > 0.0);
+  if (!rock && !slide && !lift) return Transition<Mode>{md, false, int(RigidEventKind::GroundBreak)};
+  SelectionHints h;
+  // a_H > 0 pushes the block towards -x in the ground's frame: B (right) unloads first.
+  h.must_open[0] = lift || (rock && a_h < 0.0);
+  h.must_open[1] = lift || (rock && a_h > 0.0);
+  h.no_stick = slide;
+  return reselect(t, md, z, h, int(RigidEventKind::Mode));
 }
 
 double RigidBlock::horizon(double t, double e) const {
@@ -317,11 +353,15 @@ Transition<RigidMode> RigidBlock::impact(double t, const Mode& from, State& z, i
   return reselect(t, from, z, SelectionHints{}, int(RigidEventKind::Impact));
 }
 
-Transition<RigidMode> RigidBlock::transition(double t, const Mode& md, State& z, int event) const {
+Transition<RigidMode> RigidBlock::transition(double t, const Mode& current, State& z, int event) const {
+  // The alternatives belong to the switch that chose the current mode, not to the next one.
+  Mode md = current;
+  md.alternatives = 0;
   SelectionHints h;
   const int kind = int(RigidEventKind::Mode);
   switch (event) {
     case kBreakpoint: {
+      if (md.mech == Mechanism::Rest) return leave_rest_at(t, md, z);
       // The mode stays unless the input's jump here violates one of its conditions; then it is
       // re-selected as at the event that condition would have fired.
       std::array<double, kNumEvents> g;

@@ -13,6 +13,7 @@
 #include <string>
 
 #include "blockdyn/excitation/ground_motion.hpp"
+#include "blockdyn/excitation/rest_exit.hpp"
 #include "blockdyn/integrate/hybrid_integrator.hpp"
 #include "blockdyn/model/common/block_kinematics.hpp"
 #include "blockdyn/model/rigid/contact_problem.hpp"
@@ -27,6 +28,9 @@ struct RigidMode {
   int slip = 0;          // slide, slide-rock: sign of the contact's tangential velocity
   double anchor = 0.0;   // rest: x of the centre; rock: x of the pivot corner
   bool beyond = false;   // |theta| > alpha
+  // At the switch into this mode: the other mechanisms that were consistent too (mechanism_bit;
+  // 0 almost always). Not a stick-or-slip choice on one contact set (static friction holds).
+  unsigned alternatives = 0;
 };
 
 // Contact forces of the current mechanism (N), per base corner.
@@ -63,9 +67,9 @@ class RigidBlock {
   std::optional<Transition<Mode>> resolve_chatter(double, const Mode&, const State&) const { return std::nullopt; }
   double step_hint(const Mode&) const { return 0.1 / p_; }
   State abs_tol_scale() const;
-  // At rest the state is constant: with a piecewise-linear input only the breakpoint before the
-  // first one at which rest fails matters (its conditions are concave in the input).
+  // At rest: where rest fails (RestExit), else the input's breakpoints.
   double next_breakpoint(double t, const Mode& m) const;
+  unsigned alternatives(const Mode& m) const { return m.alternatives; }
 
   RigidReactions reactions(double t, const Mode& m, const State& z) const;
   // The mechanism a state starts in (nullopt: Painleve) and why a state is outside the model.
@@ -116,13 +120,20 @@ class RigidBlock {
   // Time below which the remaining impacts of an accumulating sequence are ended (see HousnerBlock).
   double horizon(double t, double e) const;
   Mode mode_of(const ContactSolution& s, const int sides[2], const State& z, const Mode& from) const;
+  // Other mechanisms consistent at a switch (see RigidMode::alternatives): those of the contact
+  // problem without the event's hints, less the one left and the one chosen.
+  unsigned alternatives_of(const Selection& all, const int sides[2], const State& z, const Mode& from,
+                           const Mode& chosen) const;
+  // At a checkpoint of rest (RestExit::checkpoint): the transition, by the test the search used.
+  Transition<Mode> leave_rest_at(double t, const Mode& md, State& z) const;
 
   RigidBlockParams par_;
   GroundMotion ground_;
   bool forced_;
   double m_, I_, g_, bh_, hh_, alpha_, p_, R_;
   double tol_gap_, tol_v_, tol_f_, tol_a_, v_close_;
-  FailingBreaks rest_breaks_;
+  double tan_alpha_;  // b / h: rest fails by rocking where |a_H| > tan(alpha) (1 + a_V)
+  RestExit rest_exit_;  // the smaller resistance, rocking or sliding, fails first
 };
 
 }  // namespace blockdyn

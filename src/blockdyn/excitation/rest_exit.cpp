@@ -1,0 +1,132 @@
+// SPDX-License-Identifier: Apache-2.0
+#include "blockdyn/excitation/rest_exit.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace blockdyn {
+
+namespace {
+
+// One condition f(t) = c (1 + a_V) - sigma a_H (sigma = +-1), or 1 + a_V (sigma = 0), that must
+// stay >= 0 (> 0 for the second): its value and rate, and a bound on its curvature.
+struct RestCondition {
+  const GroundMotion& g;
+  double c;
+  int sigma;
+  double value(double t) const { return sigma == 0 ? 1.0 + g.av(t) : c * (1.0 + g.av(t)) - sigma * g.ah(t); }
+  bool fails(double t) const {
+    const double v = value(t);
+    return sigma == 0 ? !(v > 0.0) : !(v >= 0.0);
+  }
+  double rate(double t) const {
+    return sigma == 0 ? g.vertical.rate(t) : c * g.vertical.rate(t) - sigma * g.horizontal.rate(t);
+  }
+  double curvature() const {
+    return sigma == 0 ? g.vertical.curvature_bound()
+                      : c * g.vertical.curvature_bound() + g.horizontal.curvature_bound();
+  }
+};
+
+// The first failure of f in [a, b) (an interval free of breakpoints), or infinity.
+double first_failure_on_piece(const RestCondition& f, double a, double b) {
+  const double M = f.curvature();
+  double t = a;
+  // Each iteration either moves at least a few ulps or ends; the count bounds a pathological input.
+  for (int it = 0; it < 100000; ++it) {
+    if (f.fails(t)) return t;
+    const double v = f.value(t), d = f.rate(t);
+    // Smallest s > 0 at which v + d s - M s^2 / 2 (a lower bound of f) may reach zero.
+    double s;
+    if (M > 0.0) {
+      const double q = std::sqrt(d * d + 2.0 * M * v);
+      s = d <= 0.0 ? 2.0 * v / (q - d) : (d + q) / M;
+    } else {
+      s = d < 0.0 ? v / -d : INFINITY;
+    }
+    if (!(s == s)) s = 0.0;  // NaN (non-finite input): probe pointwise below
+    const double tiny = 64.0 * std::numeric_limits<double>::epsilon() * std::fmax(std::fabs(t), 1e-6);
+    if (s > tiny) {
+      if (!(t + s < b)) return INFINITY;
+      t += s;
+      continue;
+    }
+    // Within rounding of a crossing (or a tangency): probe just ahead.
+    const double tp = t + tiny;
+    if (!(tp < b)) return INFINITY;
+    if (f.fails(tp)) {
+      double lo = t, hi = tp;  // holds at lo, fails at hi: bisect to adjacent doubles
+      while (true) {
+        const double mid = lo + 0.5 * (hi - lo);
+        if (!(mid > lo) || !(mid < hi)) break;
+        (f.fails(mid) ? hi : lo) = mid;
+      }
+      return hi;
+    }
+    t = tp;
+  }
+  return t;  // not reached for a finite input; a safe answer: stop here and let the model decide
+}
+
+}  // namespace
+
+double first_rest_failure(const GroundMotion& g, double c, double t0, double t1) {
+  double t = t0;
+  while (t < t1) {
+    const double b = std::fmin(g.next_break(t), t1);
+    double first = INFINITY;
+    for (int sigma : {1, -1, 0}) {
+      if (sigma != 0 && g.horizontal.is_zero() && g.vertical.is_zero()) continue;
+      first = std::fmin(first, first_failure_on_piece(RestCondition{g, c, sigma}, t, b));
+    }
+    if (first < b) return first;
+    if (b >= t1) break;
+    // At the breakpoint itself (a jump of the input) the next piece's first value decides.
+    t = b;
+  }
+  return INFINITY;
+}
+
+RestExit::RestExit(const GroundMotion& g, double c)
+    : g_(g), active_(true), c_(c), piecewise_linear_(g.piecewise_linear()) {
+  if (!piecewise_linear_) return;
+  auto holds = [&](double t) {
+    const double gv = 1.0 + g.av(t), a = std::fabs(g.ah(t));
+    return gv > 0.0 && c * gv - a >= 0.0;
+  };
+  // Records are continuous at their samples; the input jumps only at window ends.
+  auto window_end = [&](double t) {
+    for (const GroundComponent* k : {&g.horizontal, &g.vertical})
+      if (!k->is_zero() && (t == k->t_start || t == k->t_stop())) return true;
+    return false;
+  };
+  double prev = 0.0;
+  for (double tb = g.next_break(0.0); std::isfinite(tb); tb = g.next_break(tb)) {
+    if (!holds(tb) || (window_end(tb) && !holds(std::nextafter(tb, -INFINITY)))) {
+      fail_.push_back(tb);
+      before_.push_back(prev);
+    }
+    prev = tb;
+  }
+}
+
+double RestExit::checkpoint(double t) const {
+  if (!active_) return INFINITY;
+  if (!piecewise_linear_) {
+    const double span = kRestLookahead * std::fmin(g_.horizontal.time_scale(), g_.vertical.time_scale());
+    const double t1 = t + span;
+    return std::fmin(first_rest_failure(g_, c_, t, t1), t1);
+  }
+  // Rest holds on every piece before the one that ends at the next failing breakpoint.
+  // (From t = 0 to the first breakpoint and after the last one the input is linear too: rest
+  // holds there if it holds at their ends.)
+  const auto it = std::upper_bound(fail_.begin(), fail_.end(), t);
+  if (it == fail_.end()) return INFINITY;
+  const double tb = *it;
+  const double from = std::fmax(t, before_[std::size_t(it - fail_.begin())]);
+  // A failure seen only in the left limit at tb (a jump back to rest) leaves tb as the checkpoint.
+  return std::fmin(first_rest_failure(g_, c_, from, tb), tb);
+}
+
+}  // namespace blockdyn
