@@ -21,6 +21,11 @@ struct UsageError : std::invalid_argument {
 
 // Whether the user gave option `name` (flags override scenario/definition files only then).
 inline bool given(const CLI::App& app, const std::string& name) { return app.count(name) > 0; }
+// Flags that only another family reads: an error names the first one given ("--x " + why).
+inline void refuse(const CLI::App& s, const std::vector<std::string>& flags, const std::string& why) {
+  for (const auto& fl : flags)
+    if (given(s, fl)) throw UsageError(fl + " " + why);
+}
 
 // --r --mu --k bound to p (defaults kept unless given).
 void add_block_options(CLI::App& app, BlockParams& p);

@@ -44,11 +44,6 @@ void write_history(const std::string& path, const LyapunovResult& r) {
 }
 
 
-// Flags that only one family reads: an error names the first one given for the other.
-void refuse(const CLI::App& s, const std::vector<std::string>& flags, const std::string& why) {
-  for (const auto& fl : flags)
-    if (given(s, fl)) throw UsageError(fl + " " + why);
-}
 
 void run_forced(const CLI::App& s, LyapunovFlags& f) {
   refuse(s, {"--r", "--mu", "--k", "--ic", "--energy", "--energy-of", "--vy-sign", "--w0-alpha", "--d0"},

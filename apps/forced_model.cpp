@@ -69,15 +69,37 @@ SurvivalRun with_cycle(const std::function<SurvivalOutcome(const GroundMotion&, 
 
 }  // namespace
 
+namespace {
+
+// Flags of another family are refused, not ignored; a value given is checked, never read as
+// "not given" (the defaults are marked by not giving the flag).
+void check_family_flags(const CLI::App& s, const ForcedModelFlags& f) {
+  const std::vector<std::string> assembly_only = {"--preset",      "--contact", "--slenderness", "--block-width",
+                                                  "--drums",       "--phi-s",   "--phi-l",       "--columns-rock-only"};
+  if (f.model == "housner" || f.model == "rigid") refuse(s, assembly_only, "applies to --model assembly only");
+  if (f.model == "housner") refuse(s, {"--mu-s", "--mu-k", "--impact"}, "applies to --model rigid only");
+  if (f.model == "assembly")
+    refuse(s, {"--width", "--height", "--mass", "--g", "--mu-s", "--mu-k", "--impact"},
+           "applies to --model housner|rigid only (an assembly's blocks and friction come from --preset and "
+           "--phi-s/--phi-l)");
+  if (given(s, "--mu-k") && !(std::isfinite(f.mu_k) && f.mu_k >= 0.0))
+    throw UsageError("mu-k = " + std::to_string(f.mu_k) + " is out of range: must be finite and >= 0");
+  if (given(s, "--restitution") && !(std::isfinite(f.restitution) && f.restitution >= 0.0 && f.restitution <= 1.0))
+    throw UsageError("restitution = " + std::to_string(f.restitution) + " is out of range: must be in [0, 1]");
+}
+
+}  // namespace
+
 ForcedModel build_forced_model(const CLI::App& s, const ForcedModelFlags& f) {
   ForcedModel fm;
+  check_family_flags(s, f);
   if (f.model == "housner" || f.model == "rigid") {
     if (!given(s, "--width") || !given(s, "--height")) throw UsageError("--width and --height are needed for --model " + f.model);
     RigidBlockParams rp;
     rp.shape = {f.width, f.height, f.mass, f.g};
-    rp.interface = {f.mu_s, f.mu_k < 0 ? f.mu_s : f.mu_k};
+    rp.interface = {f.mu_s, given(s, "--mu-k") ? f.mu_k : f.mu_s};
     rp.impact = f.impact == "newton" ? ImpactLaw::Newton : ImpactLaw::Housner;
-    if (f.restitution >= 0) rp.restitution = f.restitution;
+    if (given(s, "--restitution")) rp.restitution = f.restitution;
     try {
       validate(rp);
       if (f.model == "housner") housner_coefficient(rp.shape, rp.restitution);
@@ -133,8 +155,8 @@ ForcedModel build_forced_model(const CLI::App& s, const ForcedModelFlags& f) {
   for (ContactLaw* l : {&po.ground_law, &po.block_law}) {
     const double phi = l == &po.ground_law ? f.phi_s : f.phi_l;
     l->mu_s = l->mu_k = phi >= 90 ? kNoSlipFriction : std::tan(phi * M_PI / 180);
-    if (po.rigid_contacts) l->restitution = f.restitution >= 0 ? f.restitution : 0.0;
-    else if (f.restitution >= 0) l->restitution = f.restitution;
+    if (po.rigid_contacts) l->restitution = given(s, "--restitution") ? f.restitution : 0.0;
+    else if (given(s, "--restitution")) l->restitution = f.restitution;
   }
   Assembly a;
   try {

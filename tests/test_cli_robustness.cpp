@@ -268,3 +268,47 @@ TEST(CliRobustness, RecordsAndBlocksOutsideTheirRangeAreUsageErrors) {
                 .code,
             0);
 }
+
+// Issue 26 item 10 (first part): an output path that exists and is not a regular file is written
+// into, never replaced by a regular file (a symlink to /dev/null stays one, /dev/null stays a
+// device; a FIFO's reader receives the JSON); flags of another family are refused, not ignored;
+// a negative or NaN --mu-k / --restitution is an error, not "not given".
+TEST(CliRobustness, NonRegularOutputsAreWrittenIntoAndForeignFlagsRefused) {
+  TmpDir d("nonregular");
+  fs::create_symlink("/dev/null", d.path + "/null.json");
+  const CliResult r = run_cli({"assembly", "--preset", "block", "--t-end", "0.05", "--json-out", "null.json"}, d.path);
+  EXPECT_EQ(r.code, 0) << r.err;
+  EXPECT_TRUE(fs::is_symlink(d.path + "/null.json"));
+  EXPECT_TRUE(fs::is_character_file("/dev/null"));
+  ASSERT_EQ(::mkfifo((d.path + "/pipe.json").c_str(), 0600), 0);
+  const std::string cmd = "cd " + d.path + " && (cat pipe.json > got.json &) && " + BLOCKDYN_CLI +
+                          " simulate --model housner --width 0.3 --height 1.5 --w0 0.1 --t-end 0.5 --json-out "
+                          "pipe.json >/dev/null 2>&1; sleep 0.2";
+  EXPECT_EQ(std::system(cmd.c_str()), 0);
+  EXPECT_TRUE(fs::is_fifo(d.path + "/pipe.json"));
+  EXPECT_NE(sweep_test::slurp(d.path + "/got.json").find("\"model\": \"housner\""), std::string::npos);
+  const std::vector<std::string> rigid = {"--model", "rigid", "--width", "0.3", "--height", "1.5", "--beta", "2",
+                                          "--omega", "5"};
+  auto cycles = [&](std::vector<std::string> tail) {
+    std::vector<std::string> a = {"cycles"};
+    a.insert(a.end(), tail.begin(), tail.end());
+    return a;
+  };
+  auto rigid_with = [&](std::vector<std::string> extra) {
+    std::vector<std::string> a = rigid;
+    a.insert(a.end(), extra.begin(), extra.end());
+    return cycles(a);
+  };
+  const std::vector<Case> cases = {
+      {cycles({"--model", "assembly", "--preset", "block", "--beta", "2", "--omega", "5", "--g", "nan"}), "--g"},
+      {cycles({"--model", "assembly", "--preset", "block", "--beta", "2", "--omega", "5", "--mu-s", "0.3"}), "--mu-s"},
+      {cycles({"--model", "housner", "--width", "0.3", "--height", "1.5", "--preset", "block", "--beta", "2",
+               "--omega", "5"}),
+       "--preset"},
+      {rigid_with({"--mu-k", "-1"}), "mu-k"},
+      {rigid_with({"--mu-k", "nan"}), "mu-k"},
+      {rigid_with({"--restitution", "-0.5"}), "restitution"},
+      {rigid_with({"--restitution", "nan"}), "restitution"},
+  };
+  for (const Case& c : cases) expect_usage_error(c, d.path);
+}

@@ -61,15 +61,18 @@ void install_signal_cleanup() {
 AtomicFile::AtomicFile(std::string path)
     : path_(std::move(path)), tmp_(path_ + ".tmp." + std::to_string(::getpid())), guard_(tmp_) {
   struct stat st {};
-  if (::stat(path_.c_str(), &st) == 0 && S_ISDIR(st.st_mode))
-    throw std::invalid_argument("output '" + path_ + "' is a directory");
-  out_.open(tmp_, std::ios::out | std::ios::trunc);
+  const bool exists = ::stat(path_.c_str(), &st) == 0;
+  if (exists && S_ISDIR(st.st_mode)) throw std::invalid_argument("output '" + path_ + "' is a directory");
+  // A device, a FIFO or a socket (/dev/null, /dev/stdout, a process substitution) is written
+  // into: renaming a temporary onto it would replace it with a regular file.
+  direct_ = exists && !S_ISREG(st.st_mode);
+  out_.open(direct_ ? path_ : tmp_, std::ios::out | std::ios::trunc);
   if (!out_) throw std::invalid_argument("cannot open '" + path_ + "' for writing: " + reason());
   out_.precision(17);
 }
 
 AtomicFile::~AtomicFile() {
-  if (!committed_) {
+  if (!committed_ && !direct_) {
     out_.close();
     std::remove(tmp_.c_str());
   }
@@ -79,7 +82,7 @@ void AtomicFile::commit() {
   out_.flush();
   if (!out_) throw std::runtime_error("write to '" + path_ + "' failed");
   out_.close();
-  if (std::rename(tmp_.c_str(), path_.c_str()) != 0)
+  if (!direct_ && std::rename(tmp_.c_str(), path_.c_str()) != 0)
     throw std::runtime_error("cannot rename '" + tmp_ + "' to '" + path_ + "': " + reason());
   committed_ = true;
 }

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Write-to-temporary-then-rename: a reader never sees a partial file, and a failed run leaves
-// no output behind.
+// no output behind. A target that exists and is not a regular file (a device such as /dev/null,
+// a FIFO, /dev/stdout) is written into instead, never replaced.
 #include <fstream>
 #include <string>
 
@@ -40,6 +41,7 @@ class AtomicFile {
   std::ofstream out_;
   RemoveOnSignal guard_;
   bool committed_ = false;
+  bool direct_ = false;  // the target is not a regular file: written in place
 };
 
 // Convenience: write a whole string atomically.
