@@ -4,6 +4,9 @@
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
+#include <cctype>
+#include <filesystem>
+#include <utility>
 #include <iostream>
 #include <stdexcept>
 
@@ -25,6 +28,53 @@ void reject_empty_values(CLI::App& app) {
   for (CLI::App* sub : app.get_subcommands({})) reject_empty_values(*sub);
 }
 
+// Lower-case extension with its dot ("" if none).
+std::string extension_of(const std::string& path) {
+  const auto slash = path.find_last_of('/'), dot = path.find_last_of('.');
+  if (dot == std::string::npos || (slash != std::string::npos && dot < slash)) return "";
+  std::string e = path.substr(dot);
+  for (char& c : e) c = char(std::tolower(static_cast<unsigned char>(c)));
+  return e;
+}
+
+// Every output a command was given, checked before it runs (a figure's format found unwritable
+// after an hour's run, or two outputs overwriting each other, is a usage error, not a loss): no
+// two outputs name the same file, figures have a format matplotlib writes, animations are
+// .gif or .mp4.
+void check_outputs(CLI::App& sub) {
+  static const char* const kOutputs[] = {"--out",  "--output",   "--json-out",  "--csv",        "--trajectory", "--trace",
+                                         "--twin-csv", "--plot", "--plot-map", "--animate"};
+  static const char* const kFigures[] = {".png", ".pdf", ".svg", ".jpg", ".jpeg", ".tif", ".tiff", ".webp", ".eps", ".ps"};
+  std::vector<std::pair<std::string, std::string>> seen;  // (absolute path, flag)
+  for (const char* name : kOutputs) {
+    const CLI::Option* o = sub.get_option_no_throw(name);
+    if (!o || o->count() == 0) continue;
+    const std::string value = o->as<std::string>();
+    if (value.empty() || value == "-") continue;
+    const std::string flag(name), field = flag.substr(2);
+    if (flag == "--plot" || flag == "--plot-map") {
+      const std::string e = extension_of(value);
+      if (std::find(std::begin(kFigures), std::end(kFigures), e) == std::end(kFigures))
+        throw UsageError(field + " = '" + value + "': a figure must end in .png, .pdf, .svg, .jpg, .tif, .webp or .eps");
+    }
+    if (flag == "--animate" && extension_of(value) != ".gif" && extension_of(value) != ".mp4")
+      throw UsageError("animate = '" + value + "' must end in .gif or .mp4");
+    std::error_code ec;
+    const std::string key = std::filesystem::weakly_canonical(std::filesystem::absolute(value, ec), ec).string();
+    for (const auto& [path, other] : seen)
+      if (path == key)
+        throw UsageError(field + " = '" + value + "' is also given as " + other + ": each output needs its own file");
+    seen.emplace_back(key, flag);
+  }
+}
+
+void check_outputs_before_running(CLI::App& app) {
+  for (CLI::App* sub : app.get_subcommands({})) {
+    sub->parse_complete_callback([sub] { check_outputs(*sub); });
+    check_outputs_before_running(*sub);
+  }
+}
+
 }  // namespace
 
 CliOutcome run_cli(const std::vector<std::string>& args) {
@@ -39,6 +89,7 @@ CliOutcome run_cli(const std::vector<std::string>& args) {
     if (c.mpi == MpiUse::Refuses) refusing_mpi.push_back(app.get_subcommands({}).back()->get_name());
   }
   reject_empty_values(app);
+  check_outputs_before_running(app);
   // The subcommand names the schema of its JSON outputs.
   current_command().clear();
   for (const auto& a : args)

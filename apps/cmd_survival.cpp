@@ -4,6 +4,7 @@
 // (analysis/forced/survival_map.hpp), for a block on rigid ground or an assembly preset. The
 // points run on the sweep runner (threads, MPI, journal, resume, progress); --refine adds points
 // near class changes (analysis/sweep/refinement_plan.hpp).
+#include <cmath>
 #include <cstdio>
 #include <memory>
 
@@ -49,6 +50,12 @@ void run(const CLI::App& s, const SurvivalFlags& f) {
   require_writable("plot", f.plot);
   require_writable("json-out", f.json_out);
   const ForcedModel fm = build_forced_model(s, f.m);
+  // The longest run the periods give (at the lowest frequency) within the runs' range, before
+  // any file is made.
+  if (o.periods > 0 && !(o.periods * 2 * M_PI / (o.omega_min * fm.p) <= 1e5))
+    throw UsageError("periods = " + std::to_string(o.periods) + " gives runs of " +
+                     std::to_string(o.periods * 2 * M_PI / (o.omega_min * fm.p)) +
+                     " s at omega-min: at most 1e5 s (lower --periods or raise --omega-min)");
 
   using json = nlohmann::ordered_json;
   json options = {{"excitation", o.excitation}, {"phase", o.phase}, {"t_end", o.periods > 0 ? json(nullptr) : json(o.t_end)},

@@ -312,3 +312,29 @@ TEST(CliRobustness, NonRegularOutputsAreWrittenIntoAndForeignFlagsRefused) {
   };
   for (const Case& c : cases) expect_usage_error(c, d.path);
 }
+
+// Issue 26 item 10: every output checked before the run (a figure format matplotlib cannot write,
+// two outputs on one file) and a derived run length of 0: exit 2, no file left behind.
+TEST(CliRobustness, OutputsAreCheckedBeforeTheRun) {
+  TmpDir d("outputs");
+  const std::vector<std::string> housner = {"--model", "housner", "--width", "0.3", "--height", "1.5"};
+  auto cmd = [&](std::vector<std::string> head, std::vector<std::string> tail) {
+    head.insert(head.end(), housner.begin(), housner.end());
+    head.insert(head.end(), tail.begin(), tail.end());
+    return head;
+  };
+  const std::vector<Case> cases = {
+      {cmd({"cycles"}, {"--beta", "2", "--omega", "5", "--out", "same.csv", "--trace", "same.csv"}), "same.csv"},
+      {cmd({"impact-map"}, {"--beta", "2", "--omega", "5", "--out", "x.csv", "--json-out", "x.csv"}), "x.csv"},
+      {cmd({"impact-map"}, {"--beta", "2", "--omega", "5", "--out", "x.csv", "--json-out", "./x.csv"}), "x.csv"},
+      {cmd({"simulate"}, {"--w0", "0.1", "--t-end", "1", "--trajectory", "t.csv", "--plot", "F.gif"}), "F.gif"},
+      {cmd({"simulate"}, {"--w0", "0.1", "--t-end", "1", "--trajectory", "t.csv", "--plot", "F.txt"}), "F.txt"},
+      {cmd({"simulate"}, {"--w0", "0.1", "--t-end", "1", "--animate", "F.png"}), "F.png"},
+      {cmd({"survival"}, {"--beta-points", "2", "--omega-points", "2", "--periods", "4.9e-324", "--out", "s.csv"}),
+       "periods"},
+      {cmd({"survival"}, {"--beta-points", "2", "--omega-points", "2", "--periods", "1e5", "--omega-min", "1e-3",
+                          "--out", "s.csv"}),
+       "periods"},
+  };
+  for (const Case& c : cases) expect_usage_error(c, d.path);
+}

@@ -20,7 +20,11 @@ void validate(const SurvivalOptions& o) {
   if (!(o.beta_points >= 1 && o.omega_points >= 1 && double(o.beta_points) * o.omega_points <= 1e7))
     throw std::invalid_argument("beta-points, omega-points: at least 1 each, at most 1e7 points");
   if (!(o.t_end > 0 && o.t_end <= 1e5)) throw std::invalid_argument("t-end must be in (0, 1e5] s");
-  if (!(o.periods >= 0 && o.periods <= 1e5)) throw std::invalid_argument("periods must be in [0, 1e5]");
+  // A run shorter than a hundredth of a forcing period observes nothing (4.9e-324 periods gave
+  // every point a t-end of 0).
+  if (!(o.periods == 0 || (o.periods >= 1e-2 && o.periods <= 1e5)))
+    throw std::invalid_argument("periods = " + std::to_string(o.periods) +
+                                " is out of range: must be in [0.01, 1e5] forcing periods (or 0: use t-end)");
   if (!(std::isfinite(o.phase))) throw std::invalid_argument("phase must be finite");
 }
 
