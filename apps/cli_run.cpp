@@ -39,8 +39,8 @@ std::string extension_of(const std::string& path) {
 
 // Every output a command was given, checked before it runs (a figure's format found unwritable
 // after an hour's run, or two outputs overwriting each other, is a usage error, not a loss): no
-// two outputs name the same file, figures have a format matplotlib writes, animations are
-// .gif or .mp4.
+// two outputs name the same file, each can be written (its directory exists and is writable),
+// figures have a format matplotlib writes, animations are .gif or .mp4.
 void check_outputs(CLI::App& sub) {
   static const char* const kOutputs[] = {"--out",  "--output",   "--json-out",  "--csv",        "--trajectory", "--trace",
                                          "--twin-csv", "--plot", "--plot-map", "--animate"};
@@ -59,6 +59,7 @@ void check_outputs(CLI::App& sub) {
     }
     if (flag == "--animate" && extension_of(value) != ".gif" && extension_of(value) != ".mp4")
       throw UsageError("animate = '" + value + "' must end in .gif or .mp4");
+    require_writable(field, value);  // not a directory, in a directory we may write in
     std::error_code ec;
     const std::string key = std::filesystem::weakly_canonical(std::filesystem::absolute(value, ec), ec).string();
     for (const auto& [path, other] : seen)

@@ -109,12 +109,16 @@ def stem(out):
 
 
 def save(fig, out, dpi=110, svg_dpi=None):
-    """Write `fig` to `out` (raster, `dpi`) and to the SVG with the same stem, then close it."""
-    fig.savefig(out, dpi=dpi)
+    """Write `fig` to `out` (raster, `dpi`) and to the SVG with the same stem, then close it.
+
+    The canvas is fitted to what is drawn (a tight bounding box): a legend placed beside the axes
+    is not cut off at the figure's edge."""
+    whole = {"bbox_inches": "tight", "pad_inches": 0.05}
+    fig.savefig(out, dpi=dpi, **whole)
     if svg_dpi is None:
-        fig.savefig(stem(out) + ".svg")
+        fig.savefig(stem(out) + ".svg", **whole)
     else:
-        fig.savefig(stem(out) + ".svg", dpi=svg_dpi)
+        fig.savefig(stem(out) + ".svg", dpi=svg_dpi, **whole)
     plt.close(fig)
 
 

@@ -54,6 +54,13 @@ void expect_usage_error(const Case& c, const std::string& dir) {
   EXPECT_TRUE(std::includes(before.begin(), before.end(), after.begin(), after.end())) << line << ": left a file";
 }
 
+// A command on the Housner block b = 0.3 m, h = 1.5 m: head, the model flags, tail.
+std::vector<std::string> housner_cmd(std::vector<std::string> head, const std::vector<std::string>& tail) {
+  for (const char* a : {"--model", "housner", "--width", "0.3", "--height", "1.5"}) head.emplace_back(a);
+  head.insert(head.end(), tail.begin(), tail.end());
+  return head;
+}
+
 }  // namespace
 
 TEST(CliRobustness, HostileCommandLinesAreUsageErrors) {
@@ -239,17 +246,11 @@ TEST(CliRobustness, RecordsAndBlocksOutsideTheirRangeAreUsageErrors) {
   std::ofstream(d.path + "/tiny.AT2") << "T\nD\nU\nNPTS= 2, DT= 1e-200\n0.5 0.5\n";
   std::ofstream(d.path + "/tiny.csv") << "t,a\n0,0.5\n1e-300,0.5\n2e-300,0.5\n";
   ASSERT_EQ(::mkfifo((d.path + "/fifo.AT2").c_str(), 0600), 0);
-  const std::vector<std::string> housner = {"--model", "housner", "--width", "0.3", "--height", "1.5"};
-  auto with_h = [&](std::vector<std::string> head, std::vector<std::string> tail) {
-    head.insert(head.end(), housner.begin(), housner.end());
-    head.insert(head.end(), tail.begin(), tail.end());
-    return head;
-  };
   const std::vector<Case> cases = {
-      {with_h({"simulate"}, {"--ground-h-record", "tiny.AT2"}), "dt = "},
-      {with_h({"simulate"}, {"--ground-h-record", "tiny.csv"}), "time step"},
-      {with_h({"lyapunov"}, {"--ground-h-record", "tiny.AT2"}), "dt = "},
-      {with_h({"simulate"}, {"--ground-h-record", "fifo.AT2"}), "not a regular file"},
+      {housner_cmd({"simulate"}, {"--ground-h-record", "tiny.AT2"}), "dt = "},
+      {housner_cmd({"simulate"}, {"--ground-h-record", "tiny.csv"}), "time step"},
+      {housner_cmd({"lyapunov"}, {"--ground-h-record", "tiny.AT2"}), "dt = "},
+      {housner_cmd({"simulate"}, {"--ground-h-record", "fifo.AT2"}), "not a regular file"},
       {{"simulate", "--model", "housner", "--width", "1.6", "--height", "1", "--w0", "0.1"}, "restitution"},
       {{"cycles", "--model", "housner", "--width", "1.6", "--height", "1", "--beta", "2", "--omega", "5"},
        "restitution"},
@@ -317,24 +318,31 @@ TEST(CliRobustness, NonRegularOutputsAreWrittenIntoAndForeignFlagsRefused) {
 // two outputs on one file) and a derived run length of 0: exit 2, no file left behind.
 TEST(CliRobustness, OutputsAreCheckedBeforeTheRun) {
   TmpDir d("outputs");
-  const std::vector<std::string> housner = {"--model", "housner", "--width", "0.3", "--height", "1.5"};
-  auto cmd = [&](std::vector<std::string> head, std::vector<std::string> tail) {
-    head.insert(head.end(), housner.begin(), housner.end());
-    head.insert(head.end(), tail.begin(), tail.end());
-    return head;
-  };
   const std::vector<Case> cases = {
-      {cmd({"cycles"}, {"--beta", "2", "--omega", "5", "--out", "same.csv", "--trace", "same.csv"}), "same.csv"},
-      {cmd({"impact-map"}, {"--beta", "2", "--omega", "5", "--out", "x.csv", "--json-out", "x.csv"}), "x.csv"},
-      {cmd({"impact-map"}, {"--beta", "2", "--omega", "5", "--out", "x.csv", "--json-out", "./x.csv"}), "x.csv"},
-      {cmd({"simulate"}, {"--w0", "0.1", "--t-end", "1", "--trajectory", "t.csv", "--plot", "F.gif"}), "F.gif"},
-      {cmd({"simulate"}, {"--w0", "0.1", "--t-end", "1", "--trajectory", "t.csv", "--plot", "F.txt"}), "F.txt"},
-      {cmd({"simulate"}, {"--w0", "0.1", "--t-end", "1", "--animate", "F.png"}), "F.png"},
-      {cmd({"survival"}, {"--beta-points", "2", "--omega-points", "2", "--periods", "4.9e-324", "--out", "s.csv"}),
+      {housner_cmd({"cycles"}, {"--beta", "2", "--omega", "5", "--out", "same.csv", "--trace", "same.csv"}), "same.csv"},
+      {housner_cmd({"impact-map"}, {"--beta", "2", "--omega", "5", "--out", "x.csv", "--json-out", "x.csv"}), "x.csv"},
+      {housner_cmd({"impact-map"}, {"--beta", "2", "--omega", "5", "--out", "x.csv", "--json-out", "./x.csv"}), "x.csv"},
+      {housner_cmd({"simulate"}, {"--w0", "0.1", "--t-end", "1", "--trajectory", "t.csv", "--plot", "F.gif"}), "F.gif"},
+      {housner_cmd({"simulate"}, {"--w0", "0.1", "--t-end", "1", "--trajectory", "t.csv", "--plot", "F.txt"}), "F.txt"},
+      {housner_cmd({"simulate"}, {"--w0", "0.1", "--t-end", "1", "--animate", "F.png"}), "F.png"},
+      {housner_cmd({"survival"}, {"--beta-points", "2", "--omega-points", "2", "--periods", "4.9e-324", "--out", "s.csv"}),
        "periods"},
-      {cmd({"survival"}, {"--beta-points", "2", "--omega-points", "2", "--periods", "1e5", "--omega-min", "1e-3",
+      {housner_cmd({"survival"}, {"--beta-points", "2", "--omega-points", "2", "--periods", "1e5", "--omega-min", "1e-3",
                           "--out", "s.csv"}),
        "periods"},
+  };
+  for (const Case& c : cases) expect_usage_error(c, d.path);
+}
+
+// An output in a directory that does not exist is refused before any run, for every command
+// (checked once for all of them).
+TEST(CliRobustness, OutputDirectoriesAreCheckedBeforeTheRun) {
+  TmpDir d("outdirs");
+  const std::vector<Case> cases = {
+      {housner_cmd({"cycles"}, {"--beta", "2", "--omega", "5", "--out", "nodir/c.csv"}), "nodir"},
+      {housner_cmd({"impact-map"}, {"--beta", "2", "--omega", "5", "--json-out", "nodir/i.json"}), "nodir"},
+      {housner_cmd({"survival"}, {"--beta-points", "2", "--omega-points", "2", "--plot", "nodir/s.png"}), "nodir"},
+      {{"assembly", "--preset", "block", "--t-end", "0.05", "--animate", "nodir/a.gif"}, "nodir"},
   };
   for (const Case& c : cases) expect_usage_error(c, d.path);
 }

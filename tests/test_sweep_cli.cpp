@@ -79,6 +79,11 @@ void start_and_kill(const std::vector<std::string>& args, const std::string& dir
 
 }  // namespace
 
+// Two ranks as root on a 2-core machine.
+const std::string kMpirun2 =
+    "OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1 "
+    "mpirun -np 2 --oversubscribe --allow-run-as-root";
+
 TEST(SweepCli, RowsAppearBeforeTheEnd) {
   const sweep_test::TmpDir tmp("sweep-incr");
   const std::string& dir = tmp.path;
@@ -122,9 +127,7 @@ TEST(SweepCli, KilledSweepResumesToIdenticalBytes) {
 
 TEST(SweepCli, MpiTwoRanksMatchOneProcessAndResume) {
   if (std::system("command -v mpirun >/dev/null 2>&1") != 0) GTEST_SKIP() << "mpirun not found";
-  const std::string mpirun =
-      "OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1 "
-      "mpirun -np 2 --oversubscribe --allow-run-as-root";
+  const std::string mpirun = kMpirun2;
   const sweep_test::TmpDir tmp("sweep-mpi");
   const std::string& dir = tmp.path;
   const CliResult one = run_cli(with(long_sweep("one.csv", "1"), {"--quiet"}), dir);
@@ -226,9 +229,7 @@ TEST(SweepCli, TomlDefinitionDryRunAndPlots) {
 // MPI; none runs every point on every rank.
 TEST(SweepCli, MpiEveryCommandDistributesOrRefuses) {
   if (std::system("command -v mpirun >/dev/null 2>&1") != 0) GTEST_SKIP() << "mpirun not found";
-  const std::string mpirun =
-      "OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1 "
-      "mpirun -np 2 --oversubscribe --allow-run-as-root";
+  const std::string mpirun = kMpirun2;
   const sweep_test::TmpDir tmp("mpi-commands");
   const std::string& dir = tmp.path;
   const std::vector<std::string> map = {"map", "--k", "1e2:1e6:5", "--inv-r", "2:6:3", "--t-end", "3",
