@@ -292,3 +292,20 @@ TEST(SweepRun, AlteredJournalCellsAreRefused) {
   EXPECT_EQ(run_sweep(ev, o).resumed, 1u);
   EXPECT_NE(slurp(dir + "/s.csv").find(row), std::string::npos);
 }
+
+// A journal of the format before row checksums is named as such, not as another definition.
+TEST(SweepRun, JournalOfTheEarlierFormatIsNamed) {
+  const sweep_test::TmpDir tmp("sweep-v1");
+  const SweepEvaluator ev(small_spec(tmp.path + "/s.csv"));
+  std::ofstream(tmp.path + "/s.csv.journal") << "# blockdyn sweep journal v1 fingerprint=" << ev.fingerprint()
+                                             << " points=" << ev.size() << "\n"
+                                             << ev.header();
+  SweepRunOptions o = quiet(1);
+  o.resume = true;
+  try {
+    run_sweep(ev, o);
+    FAIL() << "expected an error";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("format v1"), std::string::npos) << e.what();
+  }
+}

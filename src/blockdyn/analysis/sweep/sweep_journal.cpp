@@ -108,6 +108,8 @@ void SweepJournal::load() {
                                 "; use --overwrite to discard it, or a different output path");
   };
   if (text.compare(0, expect.size(), expect) != 0) {
+    if (text.rfind("# blockdyn sweep journal v1 ", 0) == 0)
+      fail("was written by an earlier blockdyn (journal format v1, rows without checksums)");
     if (text.rfind("# blockdyn sweep journal", 0) == 0)
       fail("was written for a different sweep definition (its first line: '" +
            text.substr(0, text.find('\n')) + "', expected fingerprint " + fingerprint_ + ")");
