@@ -6,6 +6,7 @@
 #include <iostream>
 #include <memory>
 
+#include "blockdyn/io/csv_table.hpp"
 #include "blockdyn/io/assembly_file.hpp"
 #include "blockdyn/io/assembly_json.hpp"
 #include "blockdyn/io/json_event_spool.hpp"
@@ -170,8 +171,10 @@ void run(const CLI::App& s, const AssemblyFlags& f) {
   }
   o.record_events = false;
   AssemblyResult r;
+  std::optional<CsvTable> table;
+  if (target.file) table.emplace(target.file->stream());
   try {
-    r = simulate_assembly(a, g, o, target.file ? &target.file->stream() : nullptr);
+    r = simulate_assembly(a, g, o, table ? &*table : nullptr);
   } catch (const std::invalid_argument& e) {
     throw UsageError(e.what());
   }

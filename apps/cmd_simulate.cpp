@@ -9,9 +9,10 @@
 
 #include "blockdyn/io/atomic_file.hpp"
 #include "blockdyn/io/json_io.hpp"
-#include "blockdyn/io/rigid_trajectory_csv.hpp"
+#include "blockdyn/io/csv_table.hpp"
 #include "blockdyn/io/scenario.hpp"
-#include "blockdyn/io/trajectory_csv.hpp"
+#include "blockdyn/simulation/rigid_trajectory.hpp"
+#include "blockdyn/simulation/winkler_trajectory.hpp"
 #include "cli_common.hpp"
 #include "cli_registry.hpp"
 #include "ground_flags.hpp"
@@ -260,8 +261,12 @@ void run_winkler(const SimulateFlags& f, Scenario sc) {
   std::optional<UnitScales> scales;
   if (sc.units == "physical") scales = scales_of(*sc.physical);
   TrajectoryTarget target(sc.trajectory, sc.plot.empty() ? f.animate : sc.plot);
-  std::unique_ptr<TrajectoryCsvSink> sink;
-  if (target.file) sink = std::make_unique<TrajectoryCsvSink>(target.file->stream(), sc.output_interval, scales);
+  std::optional<CsvTable> table;
+  std::unique_ptr<WinklerTrajectory> sink;
+  if (target.file) {
+    table.emplace(target.file->stream());
+    sink = std::make_unique<WinklerTrajectory>(*table, sc.output_interval, scales);
+  }
   // Events are counted in the result and, for the JSON summary, streamed to a spool: the run holds
   // O(1) memory whatever its length.
   std::unique_ptr<JsonEventSpool> spool;
@@ -309,8 +314,12 @@ void run_rigid_family(const SimulateFlags& f, const Scenario& sc, Simulate&& sim
   o.integrator = sc.options.integrator;
   o.record_events = false;  // counted; streamed to the spool for the JSON summary
   TrajectoryTarget target(sc.trajectory, sc.plot.empty() ? f.animate : sc.plot);
-  std::unique_ptr<RigidTrajectoryCsv<Model>> csv;
-  if (target.file) csv = std::make_unique<RigidTrajectoryCsv<Model>>(target.file->stream(), sc.output_interval);
+  std::optional<CsvTable> table;
+  std::unique_ptr<RigidTrajectory<Model>> csv;
+  if (target.file) {
+    table.emplace(target.file->stream());
+    csv = std::make_unique<RigidTrajectory<Model>>(*table, sc.output_interval);
+  }
   std::unique_ptr<JsonEventSpool> spool;
   std::unique_ptr<RigidEventSpool> spool_sink;
   if (wants_json(f)) {

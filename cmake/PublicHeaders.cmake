@@ -12,8 +12,10 @@ set(BLOCKDYN_PUBLIC_ENTRY_HEADERS
   excitation/ground_motion.hpp
   io/json_io.hpp
   io/scenario.hpp
-  io/trajectory_csv.hpp
-  io/rigid_trajectory_csv.hpp
+  io/csv_table.hpp
+  simulation/winkler_trajectory.hpp
+  simulation/assembly_simulation.hpp
+  simulation/rigid_trajectory.hpp
   analysis/sweep/sweep_runner.hpp
   analysis/sweep/sweep_evaluator.hpp
   analysis/sweep/rigid_sweep.hpp

@@ -11,6 +11,7 @@
 #include <sstream>
 #include <string>
 
+#include "blockdyn/io/csv_table.hpp"
 #include "blockdyn/model/assembly/assembly_model.hpp"
 #include "blockdyn/model/assembly/assembly_params.hpp"
 #include "blockdyn/simulation/assembly_simulation.hpp"
@@ -185,7 +186,8 @@ TEST(AssemblyRocking, ImpactLossTendsToHousnersWithAPlasticContact) {
     AssemblyRunOptions opt = run_to(0.6, 1e-10, 1e-13);
     opt.output_interval = 2e-5;
     std::stringstream csv;
-    simulate_assembly(a, {}, opt, &csv);
+    CsvTable table(csv);
+    simulate_assembly(a, {}, opt, &table);
     const double ratio = largest_negative_rotation(csv) / ref;
     if (e == 0.05) {
       EXPECT_NEAR(ratio, 1.0, 1e-2);
@@ -460,7 +462,8 @@ TEST(AssemblyRigidLaw, PlasticImpactGivesHousnersRestitution) {
   AssemblyRunOptions opt = rigid_run(0.5, 1e-5);  // before the next return to upright
   opt.output_interval = 1e-4;
   std::stringstream csv;
-  const AssemblyResult r = simulate_assembly(a, {}, opt, &csv);
+  CsvTable table(csv);
+  const AssemblyResult r = simulate_assembly(a, {}, opt, &table);
   EXPECT_EQ(r.impacts, 1);
   EXPECT_NEAR(largest_negative_rotation(csv) / ref, 1.0, 2e-3);
 }

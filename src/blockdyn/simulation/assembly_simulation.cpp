@@ -6,7 +6,7 @@
 #include <memory>
 #include <stdexcept>
 
-#include "blockdyn/io/output_clock.hpp"
+#include "blockdyn/simulation/output_clock.hpp"
 #include "blockdyn/model/assembly/assembly_model.hpp"
 #include "blockdyn/model/assembly/moreau_jean.hpp"
 #include "blockdyn/simulation/observer.hpp"
@@ -126,9 +126,30 @@ class AssemblyRecorder final : public Observer<Model<Cap>> {
   bool started_ = false;
 };
 
-// Trajectory CSV: one row per output instant (dense output) and one per event.
+// The assembly's trajectory columns (both contact laws): per block its pose and velocity, the
+// ground acceleration, per contact end its point, forces and state, the energy terms.
+std::vector<std::string> assembly_columns(int blocks, int interfaces) {
+  std::vector<std::string> n{"t", "event"};
+  for (int b = 0; b < blocks; ++b)
+    for (const char* c : {"x", "y", "theta", "vx", "vy", "omega"}) n.push_back(std::string(c) + '_' + std::to_string(b));
+  n.emplace_back("a_h");
+  n.emplace_back("a_v");
+  for (int p = 0; p < 2 * interfaces; ++p)
+    for (const char* c : {"px", "py", "fn", "ft", "state"})
+      n.push_back(std::string(c) + '_' + std::to_string(p / 2) + '_' + std::to_string(p % 2));
+  for (const char* c : {"E_kin", "E_grav", "E_spring_n", "E_spring_t", "E_total", "W_ground", "W_normal", "W_friction",
+                        "W_switch", "energy_balance"})
+    n.emplace_back(c);
+  return n;
+}
+
+// Contact end states as table texts: open, stick (K), slip +, slip -.
+const char* const kEndState[] = {"O", "K", "P", "N"};
+const char* end_state_text(char c) { return c == 'K' ? "K" : c == 'P' ? "P" : c == 'N' ? "N" : "O"; }
+
+// The trajectory table: one row per output instant (dense output) and one per event.
 template <int Cap>
-class AssemblyCsv final : public Observer<Model<Cap>> {
+class AssemblyTrajectory final : public Observer<Model<Cap>> {
  public:
   using M = Model<Cap>;
   using typename Observer<M>::Mode;
@@ -136,16 +157,12 @@ class AssemblyCsv final : public Observer<Model<Cap>> {
   using typename Observer<M>::Event;
   using typename Observer<M>::Segment;
 
-  AssemblyCsv(std::ostream& out, double interval) : out_(out), interval_(interval) {}
+  AssemblyTrajectory(TrajectoryTable& out, double interval) : out_(out), interval_(interval) {}
 
   void on_start(const M& m, double t, const Mode& md, const State& z) override {
-    out_ << "t,event";
-    for (int b = 0; b < m.blocks(); ++b)
-      for (const char* c : {"x", "y", "theta", "vx", "vy", "omega"}) out_ << ',' << c << '_' << b;
-    out_ << ",a_h,a_v";
-    for (int p = 0; p < 2 * m.interfaces(); ++p)
-      for (const char* c : {"px", "py", "fn", "ft", "state"}) out_ << ',' << c << '_' << p / 2 << '_' << p % 2;
-    out_ << ",E_kin,E_grav,E_spring_n,E_spring_t,E_total,W_ground,W_normal,W_friction,W_switch,energy_balance\n";
+    const auto names = assembly_columns(m.blocks(), m.interfaces());
+    cells_.resize(names.size());
+    out_.columns(names);
     e0_ = m.energy(md, z) - m.work(z);
     row(m, t, md, z, "start");
     clock_.start(t, interval_);
@@ -167,38 +184,32 @@ class AssemblyCsv final : public Observer<Model<Cap>> {
 
  private:
   void row(const M& m, double t, const Mode& md, const State& z, const char* ev) {
-    char buf[64];
-    auto put = [&](double v) {
-      const int n = std::snprintf(buf, sizeof buf, ",%.17g", v);
-      out_.write(buf, n);
-    };
-    std::snprintf(buf, sizeof buf, "%.17g,%s", t, ev);
-    out_ << buf;
+    RowBuffer& c = cells_;
+    c.clear();
+    c.number(t);
+    c.text(ev);
     for (int b = 0; b < m.blocks(); ++b) {
-      for (int k = 0; k < 3; ++k) put(z[M::ix(b) + k]);
-      for (int k = 0; k < 3; ++k) put(z[M::iv(b) + k]);
+      for (int k = 0; k < 3; ++k) c.number(z[M::ix(b) + k]);
+      for (int k = 0; k < 3; ++k) c.number(z[M::iv(b) + k]);
     }
     const auto a = m.ground_acceleration(t);
-    put(a[0]);
-    put(a[1]);
-    static const char* kState = "OKPN";  // open, stick (K), slip +, slip -
+    c.number(a[0]);
+    c.number(a[1]);
     for (int p = 0; p < 2 * m.interfaces(); ++p) {
       const auto f = m.point_force(md, z, p);
-      put(f.c.P.x);
-      put(f.c.P.y);
-      put(f.fn);
-      put(f.ft);
-      out_ << ',' << kState[int(md.point[p])];
+      for (double v : {f.c.P.x, f.c.P.y, f.fn, f.ft}) c.number(v);
+      c.text(kEndState[int(md.point[p])]);
     }
     const auto e = m.energy_terms(md, z);
     for (double v : {e.kinetic, e.gravity, e.normal_spring, e.tangential_spring, e.total(), z[M::kWGround],
                      z[M::kWNormal], z[M::kWFriction], z[M::kWSwitch], e.total() - m.work(z) - e0_})
-      put(v);
-    out_ << '\n';
+      c.number(v);
+    c.write_to(out_);
   }
-  std::ostream& out_;
+  TrajectoryTable& out_;
   double interval_;
   OutputClock clock_;
+  RowBuffer cells_;
   double e0_ = 0;
 };
 
@@ -264,7 +275,7 @@ AssemblyEnergy energy_of(const Model<Cap>& m, const typename Model<Cap>::Mode& m
 }
 
 template <int Cap>
-AssemblyResult run(const Assembly& a, const GroundMotion& g, const AssemblyRunOptions& o, std::ostream* csv_out,
+AssemblyResult run(const Assembly& a, const GroundMotion& g, const AssemblyRunOptions& o, TrajectoryTable* csv_out,
                    RunProbe* probe) {
   using M = Model<Cap>;
   // Passages through theta = 0 and contact-end switches count beyond the integration error.
@@ -278,11 +289,11 @@ AssemblyResult run(const Assembly& a, const GroundMotion& g, const AssemblyRunOp
   r.energy_initial = energy_of(m, md, z);
   AssemblyRecorder<Cap> rec(r, o);
   EnergyBalance<M> balance;
-  std::unique_ptr<AssemblyCsv<Cap>> csv;
+  std::unique_ptr<AssemblyTrajectory<Cap>> csv;
   FanOut<M> fan;
   fan.add(&rec).add(&balance);
   if (csv_out) {
-    csv = std::make_unique<AssemblyCsv<Cap>>(*csv_out, o.output_interval);
+    csv = std::make_unique<AssemblyTrajectory<Cap>>(*csv_out, o.output_interval);
     fan.add(csv.get());
   }
   std::unique_ptr<AssemblyProbe<Cap>> probe_obs;
@@ -331,7 +342,7 @@ AssemblyResult run(const Assembly& a, const GroundMotion& g, const AssemblyRunOp
 // between consecutive steps: contact ends opening and closing (an impact when the end
 // approached), stick and slip, passages of theta through 0 and the collapse criteria, the
 // crossings of theta interpolated linearly within the step.
-AssemblyResult run_rigid(const Assembly& a, const GroundMotion& g, const AssemblyRunOptions& o, std::ostream* csv,
+AssemblyResult run_rigid(const Assembly& a, const GroundMotion& g, const AssemblyRunOptions& o, TrajectoryTable* csv,
                          RunProbe* probe) {
   MoreauJeanOptions mo;
   mo.h = o.step;
@@ -394,43 +405,34 @@ AssemblyResult run_rigid(const Assembly& a, const GroundMotion& g, const Assembl
     }
     step_events.clear();
   };
+  RowBuffer cells;
   auto write_row = [&](double t, const char* ev) {
     if (!csv) return;
-    char buf[64];
-    auto put = [&](double x) {
-      const int k = std::snprintf(buf, sizeof buf, ",%.17g", x);
-      csv->write(buf, k);
-    };
-    std::snprintf(buf, sizeof buf, "%.17g,%s", t, ev);
-    *csv << buf;
+    cells.clear();
+    cells.number(t);
+    cells.text(ev);
     for (int b = 0; b < nb; ++b) {
-      for (int k = 0; k < 3; ++k) put(q[3 * b + k]);
-      for (int k = 0; k < 3; ++k) put(v[3 * b + k]);
+      for (int k = 0; k < 3; ++k) cells.number(q[3 * b + k]);
+      for (int k = 0; k < 3; ++k) cells.number(v[3 * b + k]);
     }
     const auto acc = mj.ground_acceleration(t);
-    put(acc[0]);
-    put(acc[1]);
+    cells.number(acc[0]);
+    cells.number(acc[1]);
     for (int p = 0; p < np; ++p) {
       const auto& e = mj.ends()[p];
-      put(e.c.P.x);
-      put(e.c.P.y);
-      put(e.pn / o.step);  // the step's mean contact force
-      put(e.pt / o.step);
-      *csv << ',' << state[p];
+      // The step's mean contact forces.
+      for (double x : {e.c.P.x, e.c.P.y, e.pn / o.step, e.pt / o.step}) cells.number(x);
+      cells.text(end_state_text(state[p]));
     }
     const double ek = mj.kinetic_energy(v), eg = mj.gravity_energy(q);
     for (double x : {ek, eg, 0.0, 0.0, ek + eg, w_ground, w_normal, w_tangent, 0.0, ek + eg - e0 - w_ground - w_normal - w_tangent})
-      put(x);
-    *csv << '\n';
+      cells.number(x);
+    cells.write_to(*csv);
   };
   if (csv) {
-    *csv << "t,event";
-    for (int b = 0; b < nb; ++b)
-      for (const char* c : {"x", "y", "theta", "vx", "vy", "omega"}) *csv << ',' << c << '_' << b;
-    *csv << ",a_h,a_v";
-    for (int p = 0; p < np; ++p)
-      for (const char* c : {"px", "py", "fn", "ft", "state"}) *csv << ',' << c << '_' << p / 2 << '_' << p % 2;
-    *csv << ",E_kin,E_grav,E_spring_n,E_spring_t,E_total,W_ground,W_normal,W_friction,W_switch,energy_balance\n";
+    const auto names = assembly_columns(nb, ni);
+    cells.resize(names.size());
+    csv->columns(names);
     write_row(0.0, "start");
   }
   // The probe's states between step ends: linear in time (the scheme is first order).
@@ -613,7 +615,7 @@ AssemblyResult run_rigid(const Assembly& a, const GroundMotion& g, const Assembl
 }  // namespace
 
 AssemblyResult simulate_assembly(const Assembly& a, const GroundMotion& g, const AssemblyRunOptions& o,
-                                 std::ostream* trajectory, RunProbe* probe) {
+                                 TrajectoryTable* trajectory, RunProbe* probe) {
   validate(a);
   validate(o);
   if (probe && a.blocks.size() > std::size_t(RunProbe::kMaxBlocks))

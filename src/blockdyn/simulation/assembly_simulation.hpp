@@ -18,6 +18,7 @@
 #include "blockdyn/integrate/hybrid_integrator.hpp"
 #include "blockdyn/model/assembly/assembly_params.hpp"
 #include "blockdyn/simulation/run_probe.hpp"
+#include "blockdyn/simulation/trajectory_table.hpp"
 
 namespace blockdyn {
 
@@ -87,10 +88,10 @@ struct AssemblyResult {
   long direct_solves = 0, gauss_seidel_solves = 0, gauss_seidel_sweeps = 0;
 };
 
-// One run. `trajectory` (optional) receives the CSV; `probe` (optional) the samples, passages of
+// One run. `trajectory` (optional) receives the trajectory table; `probe` (optional) the samples, passages of
 // the rotations through 0 and contact closings/openings under each block (run_probe.hpp). Throws
 // std::invalid_argument on bad input.
 AssemblyResult simulate_assembly(const Assembly& a, const GroundMotion& g, const AssemblyRunOptions& o,
-                                 std::ostream* trajectory = nullptr, RunProbe* probe = nullptr);
+                                 TrajectoryTable* trajectory = nullptr, RunProbe* probe = nullptr);
 
 }  // namespace blockdyn

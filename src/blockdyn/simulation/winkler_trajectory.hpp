@@ -1,34 +1,34 @@
 // SPDX-License-Identifier: Apache-2.0
 #pragma once
-// Streams a trajectory to CSV: one row per output instant (fixed interval, from the dense
-// output) plus one row per event, with mode, reactions and energy components.
-#include <ostream>
+// The Winkler block's trajectory table: one row per output instant (fixed interval, from the
+// dense output) plus one row per event, with mode, reactions and energy components; with unit
+// scales also the physical columns.
 #include <optional>
 
-#include "blockdyn/io/output_clock.hpp"
+#include "blockdyn/simulation/output_clock.hpp"
 #include "blockdyn/simulation/simulate.hpp"
+#include "blockdyn/simulation/trajectory_table.hpp"
 #include "blockdyn/units/physical_units.hpp"
 
 namespace blockdyn {
 
-class TrajectoryCsvSink : public SimulationSink {
+class WinklerTrajectory : public SimulationSink {
  public:
   // interval <= 0: only step ends and events. scales: physical columns appended if given.
-  TrajectoryCsvSink(std::ostream& out, double interval, std::optional<UnitScales> scales = std::nullopt);
+  WinklerTrajectory(TrajectoryTable& out, double interval, std::optional<UnitScales> scales = std::nullopt);
 
   void on_start(const WinklerBlock& m, double t, const BlockMode& mode, const BlockStateVec& z) override;
   void on_segment(const WinklerBlock& m, const DenseSegment<kStateDim>& seg, double t0, double t1,
                   const BlockMode& mode) override;
   void on_event(const WinklerBlock& m, const EventRecord& e) override;
-  long rows() const { return rows_; }
 
  private:
   void row(const WinklerBlock& m, double t, const BlockMode& mode, const BlockStateVec& z, const char* event);
-  std::ostream& out_;
+  TrajectoryTable& out_;
   double interval_;
   std::optional<UnitScales> scales_;
   OutputClock clock_;
-  long rows_ = 0;
+  RowBuffer cells_;
 };
 
 }  // namespace blockdyn
