@@ -6,6 +6,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstring>
@@ -22,6 +23,18 @@ namespace blockdyn::cli {
 std::vector<CommandEntry>& command_registry() {
   static std::vector<CommandEntry> r;
   return r;
+}
+
+Settings settings_of(const CLI::App& app, const std::vector<std::string>& exclude) {
+  Settings s;
+  for (const CLI::Option* o : app.get_options()) {
+    if (o->count() == 0) continue;
+    const std::string name = o->get_lnames().empty() ? o->get_name() : o->get_lnames().front();
+    if (std::find(exclude.begin(), exclude.end(), "--" + name) != exclude.end()) continue;
+    if (o->results().empty()) s.add(name, "true");
+    for (const std::string& v : o->results()) s.add(name, v);
+  }
+  return s;
 }
 
 void add_block_options(CLI::App& app, BlockParams& p) {

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "blockdyn/api/settings.hpp"
 #include "blockdyn/io/json_event_spool.hpp"
 #include "blockdyn/integrate/hybrid_integrator.hpp"
 #include "blockdyn/model/winkler/winkler_params.hpp"
@@ -26,6 +27,10 @@ inline void refuse(const CLI::App& s, const std::vector<std::string>& flags, con
   for (const auto& fl : flags)
     if (given(s, fl)) throw UsageError(fl + " " + why);
 }
+
+// The options given on the command line, as the library's Settings (names without dashes), less
+// the ones in `exclude` (the command's own output flags, e.g. "--plot").
+Settings settings_of(const CLI::App& app, const std::vector<std::string>& exclude = {});
 
 // --r --mu --k bound to p (defaults kept unless given).
 void add_block_options(CLI::App& app, BlockParams& p);

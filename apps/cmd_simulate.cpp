@@ -7,12 +7,10 @@
 #include <memory>
 #include <unistd.h>
 
-#include "blockdyn/io/atomic_file.hpp"
-#include "blockdyn/io/json_io.hpp"
+#include "blockdyn/api/scenario_settings.hpp"
+#include "blockdyn/api/simulate_run.hpp"
 #include "blockdyn/io/csv_table.hpp"
-#include "blockdyn/io/scenario.hpp"
-#include "blockdyn/simulation/rigid_trajectory.hpp"
-#include "blockdyn/simulation/winkler_trajectory.hpp"
+#include "blockdyn/io/json_io.hpp"
 #include "cli_common.hpp"
 #include "cli_registry.hpp"
 #include "ground_flags.hpp"
@@ -46,17 +44,16 @@ struct PhysFlag {
   double PhysicalBlock::*plain;
   std::optional<double> PhysicalBlock::*opt;
   const char* help;
-  bool winkler_only;
 };
 const PhysFlag kPhysFlags[] = {
-    {"--height", &PhysicalBlock::height, nullptr, "block height [m] (physical block; housner/rigid: required)", false},
-    {"--width", &PhysicalBlock::width, nullptr, "block width [m] (physical block; housner/rigid: required)", false},
-    {"--g", &PhysicalBlock::g, nullptr, "gravity [m/s^2] (default 9.81)", false},
-    {"--mass", nullptr, &PhysicalBlock::mass, "block mass [kg] (housner/rigid: default 1)", false},
-    {"--density", nullptr, &PhysicalBlock::density, "density [kg/m^3] (with --thickness, instead of --mass)", false},
-    {"--thickness", nullptr, &PhysicalBlock::thickness, "out-of-plane depth [m]", false},
-    {"--subgrade-modulus", nullptr, &PhysicalBlock::subgrade_modulus, "winkler: modulus [N/m^3] (with --thickness)", true},
-    {"--line-stiffness", nullptr, &PhysicalBlock::line_stiffness, "winkler: stiffness per unit length and depth [N/m^2]", true},
+    {"--height", &PhysicalBlock::height, nullptr, "block height [m] (physical block; housner/rigid: required)"},
+    {"--width", &PhysicalBlock::width, nullptr, "block width [m] (physical block; housner/rigid: required)"},
+    {"--g", &PhysicalBlock::g, nullptr, "gravity [m/s^2] (default 9.81)"},
+    {"--mass", nullptr, &PhysicalBlock::mass, "block mass [kg] (housner/rigid: default 1)"},
+    {"--density", nullptr, &PhysicalBlock::density, "density [kg/m^3] (with --thickness, instead of --mass)"},
+    {"--thickness", nullptr, &PhysicalBlock::thickness, "out-of-plane depth [m]"},
+    {"--subgrade-modulus", nullptr, &PhysicalBlock::subgrade_modulus, "winkler: modulus [N/m^3] (with --thickness)"},
+    {"--line-stiffness", nullptr, &PhysicalBlock::line_stiffness, "winkler: stiffness per unit length and depth [N/m^2]"},
 };
 
 void add_physical_flags(CLI::App& s, SimulateFlags& f) {
@@ -69,295 +66,50 @@ void add_physical_flags(CLI::App& s, SimulateFlags& f) {
   }
 }
 
-// Applies the physical-block flags on top of the scenario's [physical] block (if any).
-void apply_physical_flags(const CLI::App& s, const SimulateFlags& f, Scenario& sc) {
-  const bool rigid = is_rigid_family(sc.model);
-  bool any = false;
-  for (const PhysFlag& pf : kPhysFlags) {
-    if (!given(s, pf.name)) continue;
-    if (rigid && pf.winkler_only) throw UsageError(std::string(pf.name) + " belongs to the winkler model (--model winkler)");
-    any = true;
-  }
-  if (!any) return;
-  if (!rigid && (given(s, "--r") || given(s, "--k")))
-    throw UsageError("--r/--k and a physical block (--height, --width, ...) both given: use one");
-  PhysicalBlock pb = sc.physical.value_or(PhysicalBlock{});
-  if (!rigid) pb.mu = given(s, "--mu") ? f.p.mu : (sc.physical ? pb.mu : sc.params.mu);
-  for (const PhysFlag& pf : kPhysFlags) {
-    if (!given(s, pf.name)) continue;
-    if (pf.plain)
-      pb.*pf.plain = f.phys.*pf.plain;
-    else
-      pb.*pf.opt = f.phys.*pf.opt;
-  }
-  sc.physical = pb;
-  if (!rigid) {
-    sc.params = to_nondimensional(pb);
-    if (!given(s, "--units")) sc.units = "physical";
-  }
-}
-
-// Flags that belong to one family only: a clear error instead of a silently ignored option.
-void check_family_flags(const CLI::App& s, const Scenario& sc) {
-  const bool rigid = is_rigid_family(sc.model);
-  const char* winkler_only[] = {"--r", "--k", "--mu", "--ic", "--units"};
-  const char* rigid_only[] = {"--restitution", "--mu-s", "--mu-k", "--impact"};
-  const char* rigid3_only[] = {"--mu-s", "--mu-k", "--impact", "--x0", "--y0", "--vx0", "--vy0"};
-  if (rigid) {
-    for (const char* n : winkler_only)
-      if (given(s, n)) throw UsageError(std::string(n) + " belongs to the winkler model, not to --model " + sc.model);
-  } else {
-    for (const char* n : rigid_only)
-      if (given(s, n)) throw UsageError(std::string(n) + " belongs to --model housner|rigid, not to winkler");
-  }
-  if (sc.model == "housner")
-    for (const char* n : rigid3_only)
-      if (given(s, n)) throw UsageError(std::string(n) + " belongs to --model rigid (housner has one degree of freedom)");
-}
-
+// The model's options go to the library as Settings (scenario_from: one validation for the command
+// line and Python); the output flags stay here.
 Scenario build_scenario(const CLI::App& s, const SimulateFlags& f) {
-  Scenario sc = f.scenario_file.empty() ? Scenario{} : load_scenario(f.scenario_file);
-  if (given(s, "--model")) sc.model = f.model;
-  check_family_flags(s, sc);
-  if (given(s, "--r")) sc.params.r = f.p.r;
-  if (given(s, "--mu")) sc.params.mu = f.p.mu;
-  if (given(s, "--k")) sc.params.k = f.p.k;
-  if (given(s, "--rtol")) sc.options.integrator.rtol = f.integ.rtol;
-  if (given(s, "--atol")) sc.options.integrator.atol = f.integ.atol;
-  if (given(s, "--method")) sc.options.integrator.method = f.integ.method;
-  if (given(s, "--t-end")) sc.options.t_end = f.t_end;
-  if (given(s, "--output-interval")) sc.output_interval = f.output_interval;
-  if (given(s, "--ic")) sc.initial.set = f.ic;
-  if (given(s, "--w0")) sc.initial.w0 = f.w0;
-  if (given(s, "--x0")) sc.initial.x0 = f.x0;
-  if (given(s, "--y0")) sc.initial.y0 = f.y0;
-  if (given(s, "--vx0")) sc.initial.vx0 = f.vx0;
-  if (given(s, "--vy0")) sc.initial.vy0 = f.vy0;
-  if (given(s, "--vw0")) sc.initial.vw0 = f.vw0;
+  Settings settings = settings_of(s, {"--trajectory", "--plot", "--animate", "--animate-frames", "--json", "--json-out",
+                                      "--quiet", "--timing", "--timing-repeat", "--max-output-rows"});
+  Scenario sc = scenario_from(settings);
   if (given(s, "--trajectory")) sc.trajectory = f.trajectory;
   if (given(s, "--plot")) sc.plot = f.plot;
-  if (given(s, "--units")) sc.units = f.units;
-  if (given(s, "--restitution")) sc.restitution = f.restitution;
-  if (given(s, "--mu-s")) {
-    sc.interface.mu_s = f.mu_s;
-    if (!given(s, "--mu-k")) sc.interface.mu_k = f.mu_s;
-  }
-  if (given(s, "--mu-k")) sc.interface.mu_k = f.mu_k;
-  if (given(s, "--impact")) sc.impact = *impact_law_from_string(f.impact);
-  apply_ground_flags(s, f.ground, sc.ground);
-  apply_physical_flags(s, f, sc);
-  validate(sc.ground);
-  validate(sc.options);
-  require_range("output-interval", sc.output_interval, 0.0, 1e300);
   require_writable("plot", sc.plot);
   require_animation(f.animate, f.animate_frames);
   require_writable("trajectory", sc.trajectory);
   require_writable("json-out", f.json_out);
-  if (!sc.trajectory.empty() || !sc.plot.empty() || !f.animate.empty())
-    require_sample_count("output-interval", sc.output_interval, sc.options.t_end - sc.options.t_start, f.max_output_rows);
-  if (!is_rigid_family(sc.model)) {
-    validate(sc.params);
-    if (sc.units != "nondim" && sc.units != "physical")
-      throw UsageError("units = '" + sc.units + "' is not one of: nondim, physical");
-    if (sc.units == "physical" && !sc.physical)
-      throw UsageError("units = physical needs a physical block (--height --width ... or [physical] in the scenario)");
-  }
   return sc;
 }
 
-// Streams the Winkler run's events to the JSON spool and forwards everything to the trajectory
-// sink (if any): the event list is never held in memory.
-class EventSpoolSink final : public SimulationSink {
- public:
-  EventSpoolSink(SimulationSink* next, JsonEventSpool* spool) : next_(next), spool_(spool) {}
-  void on_start(const WinklerBlock& m, double t, const BlockMode& md, const BlockStateVec& z) override {
-    if (next_) next_->on_start(m, t, md, z);
-  }
-  void on_segment(const WinklerBlock& m, const DenseSegment<kStateDim>& s, double t0, double t1,
-                  const BlockMode& md) override {
-    if (next_) next_->on_segment(m, s, t0, t1, md);
-  }
-  void on_event(const WinklerBlock& m, const EventRecord& e) override {
-    if (spool_) spool_->add(to_json(e));
-    if (next_) next_->on_event(m, e);
-  }
-  bool keep_going() const override { return !next_ || next_->keep_going(); }
-  bool needs_dense() const override { return next_ && next_->needs_dense(); }
-
- private:
-  SimulationSink* next_;
-  JsonEventSpool* spool_;
-};
-
-// The rigid family's events to the JSON spool.
-class RigidEventSpool final : public RigidEventSink {
- public:
-  explicit RigidEventSpool(JsonEventSpool& spool) : spool_(spool) {}
-  void on_event(const RigidEventRecord& e) override { spool_.add(to_json(e)); }
-
- private:
-  JsonEventSpool& spool_;
-};
-
-long total_events(const SimulationResult& r) {
-  long n = 0;
-  for (long c : r.event_counts) n += c;
-  return n;
-}
-
-// seconds: the time scale of a physical block (times printed in s), 0 for non-dimensional runs.
-void print_summary(const SimulationResult& r, double seconds) {
-  const double ts = seconds > 0 ? seconds : 1.0;
-  const char* unit = seconds > 0 ? " s" : "";
-  std::printf("status: %s at t = %.10g%s\n", to_string(r.status), r.t_final * ts, unit);
-  std::printf("ihor: %ld, first flight: %s%s\n", r.ihor,
-              r.first_flight_time ? std::to_string(*r.first_flight_time * ts).c_str() : "none",
-              r.first_flight_time ? unit : "");
-  std::printf("events: %ld, steps: %ld, rhs evaluations: %ld\n", total_events(r), r.stats.accepted,
-              r.stats.rhs_evals);
-  std::printf("energy: E0 = %.10g, max |E - E0| = %.3g, max |balance error| = %.3g, friction work = %.6g\n",
-              r.initial_energy.total(), r.max_abs_energy_change, r.max_abs_energy_error, r.work_friction());
-}
-
-void print_summary(const RigidResult& r, double alpha) {
-  std::printf("model: %s, status: %s at t = %.10g s, final mechanism: %s\n", r.model.c_str(), to_string(r.status),
-              r.t_final, to_string(r.final_mode));
-  if (!r.note.empty()) std::printf("note: %s\n", r.note.c_str());
-  std::printf("max |w| = %.6g rad (%.4g alpha) at t = %.6g s, impacts: %ld, mechanism changes: %ld\n",
-              r.max_abs_rotation, r.max_abs_rotation / alpha, r.t_max_abs_rotation, r.impacts, r.mode_changes);
-  std::printf("steps: %ld, rhs evaluations: %ld, max |energy balance error| = %.3g J\n", r.stats.accepted,
-              r.stats.rhs_evals, r.max_abs_energy_error);
-}
-
-
-// --timing-repeat: the run repeated in-process (no outputs), the least CPU time kept: the
-// integration with warm caches and code pages, as a benchmark wants it.
-RunTiming fastest(const RunTiming& a, const RunTiming& b) { return b.cpu_s < a.cpu_s ? b : a; }
-
 bool wants_json(const SimulateFlags& f) { return f.json || !f.json_out.empty(); }
-
-// The JSON summary (only when asked for), its event list from the spool.
-void emit(nlohmann::ordered_json j, const SimulateFlags& f, const JsonEventSpool& events, const RunTiming& timing) {
-  if (f.timing) j["timing"] = to_json(timing);
-  if (!f.json_out.empty()) emit_json(j, f.json_out, events);
-  if (f.json) emit_json(j, "-", events);
-}
-
-void print_timing(const SimulateFlags& f, const RunTiming& t) {
-  if (f.timing && !f.json && !f.quiet)
-    std::printf("integration: %.6g s CPU, %.6g s wall\n", t.cpu_s, t.wall_s);
-}
-
-void run_winkler(const SimulateFlags& f, Scenario sc) {
-  // With a physical block every time is in seconds and every frequency in Hz.
-  if (sc.physical) {
-    const double tau = scales_of(*sc.physical).time;
-    sc.options.t_end /= tau;
-    sc.options.t_start /= tau;
-    sc.output_interval /= tau;
-    sc.ground = in_time_unit(sc.ground, tau);
-  }
-  const BlockStateVec z0 = initial_state(sc);
-  std::optional<UnitScales> scales;
-  if (sc.units == "physical") scales = scales_of(*sc.physical);
-  TrajectoryTarget target(sc.trajectory, sc.plot.empty() ? f.animate : sc.plot);
-  std::optional<CsvTable> table;
-  std::unique_ptr<WinklerTrajectory> sink;
-  if (target.file) {
-    table.emplace(target.file->stream());
-    sink = std::make_unique<WinklerTrajectory>(*table, sc.output_interval, scales);
-  }
-  // Events are counted in the result and, for the JSON summary, streamed to a spool: the run holds
-  // O(1) memory whatever its length.
-  std::unique_ptr<JsonEventSpool> spool;
-  if (wants_json(f)) spool = std::make_unique<JsonEventSpool>();
-  sc.options.record_events = false;
-  EventSpoolSink tee(sink.get(), spool.get());
-  SimulationResult r = simulate(sc.params, sc.ground, z0, sc.options, (sink || spool) ? &tee : nullptr);
-  for (int i = 1; i < f.timing_repeat; ++i) r.timing = fastest(r.timing, simulate(sc.params, sc.ground, z0, sc.options).timing);
-  char title[256];
-  std::snprintf(title, sizeof title, "winkler block r = %.4g, mu = %.4g, k = %.4g: %s at t = %.6g", sc.params.r,
-                sc.params.mu, sc.params.k, to_string(r.status), r.t_final);
-  target.figures_and_clean(
-      {{"plot_trajectory.py", sc.plot, {"--alpha", std::to_string(sc.params.alpha()), "--title", title}},
-       {"animate_block.py", f.animate,
-        {"--model", "winkler", "--width", std::to_string(sc.params.r), "--height", "1", "--frames",
-         std::to_string(f.animate_frames), "--title", title}}});
-  if (spool) emit(result_json(sc.params, sc.ground, sc.options, r, sc.physical ? &*sc.physical : nullptr), f, *spool, r.timing);
-  if (!f.json && !f.quiet) print_summary(r, sc.physical ? scales_of(*sc.physical).time : 0.0);
-  print_timing(f, r.timing);
-}
-
-std::string block_title(const std::string& model, const RigidBlockParams& p) {
-  char buf[256];
-  if (model == "housner")
-    std::snprintf(buf, sizeof buf, "housner block %.4g m x %.4g m, e = %.4g", p.shape.width, p.shape.height, p.e());
-  else
-    std::snprintf(buf, sizeof buf, "rigid block %.4g m x %.4g m, mu_s %.3g, mu_k %.3g, %s impacts (e = %.3g)",
-                  p.shape.width, p.shape.height, p.interface.mu_s, p.interface.mu_k, to_string(p.impact), p.e());
-  return buf;
-}
-
-template <class Model, class Simulate>
-void run_rigid_family(const SimulateFlags& f, const Scenario& sc, Simulate&& sim) {
-  const RigidBlockParams p = rigid_params(sc);
-  RigidInitial init;
-  init.w0 = sc.initial.w0.value_or(0.0);
-  init.vw0 = sc.initial.vw0.value_or(0.0);
-  init.x0 = sc.initial.x0;
-  init.y0 = sc.initial.y0;
-  init.vx0 = sc.initial.vx0;
-  init.vy0 = sc.initial.vy0;
-  RigidRunOptions o;
-  o.t_start = sc.options.t_start;
-  o.t_end = sc.options.t_end;
-  o.integrator = sc.options.integrator;
-  o.record_events = false;  // counted; streamed to the spool for the JSON summary
-  TrajectoryTarget target(sc.trajectory, sc.plot.empty() ? f.animate : sc.plot);
-  std::optional<CsvTable> table;
-  std::unique_ptr<RigidTrajectory<Model>> csv;
-  if (target.file) {
-    table.emplace(target.file->stream());
-    csv = std::make_unique<RigidTrajectory<Model>>(*table, sc.output_interval);
-  }
-  std::unique_ptr<JsonEventSpool> spool;
-  std::unique_ptr<RigidEventSpool> spool_sink;
-  if (wants_json(f)) {
-    spool = std::make_unique<JsonEventSpool>();
-    spool_sink = std::make_unique<RigidEventSpool>(*spool);
-  }
-  RigidResult r = sim(p, sc.ground, init, o, csv.get(), spool_sink.get());
-  for (int i = 1; i < f.timing_repeat; ++i) r.timing = fastest(r.timing, sim(p, sc.ground, init, o, nullptr, nullptr).timing);
-  target.figures_and_clean(
-      {{"plot_rigid.py", sc.plot,
-        {"--alpha", std::to_string(p.shape.alpha()), "--model", sc.model, "--status", to_string(r.status), "--title",
-         block_title(sc.model, p)}},
-       {"animate_block.py", f.animate,
-        {"--model", sc.model, "--width", std::to_string(p.shape.width), "--height", std::to_string(p.shape.height),
-         "--frames", std::to_string(f.animate_frames), "--title",
-         block_title(sc.model, p) + ": " + to_string(r.status)}}});
-  if (spool) emit(rigid_result_json(p, sc.ground, o, r), f, *spool, r.timing);
-  if (!f.json && !f.quiet) print_summary(r, p.shape.alpha());
-  print_timing(f, r.timing);
-}
 
 void run(const CLI::App& s, const SimulateFlags& f) {
   const Scenario sc = build_scenario(s, f);
-  if (sc.model == "housner") {
-    run_rigid_family<HousnerBlock>(f, sc, [](const RigidBlockParams& p, const GroundMotion& g, const RigidInitial& in,
-                                             const RigidRunOptions& o, Observer<HousnerBlock>* obs,
-                                             RigidEventSink* events) {
-      return simulate_housner(p.shape, p.restitution, g, in, o, obs, events);
-    });
-  } else if (sc.model == "rigid") {
-    run_rigid_family<RigidBlock>(f, sc, [](const RigidBlockParams& p, const GroundMotion& g, const RigidInitial& in,
-                                           const RigidRunOptions& o, Observer<RigidBlock>* obs,
-                                           RigidEventSink* events) {
-      return simulate_rigid(p, g, in, o, obs, events);
-    });
-  } else {
-    run_winkler(f, sc);
+  TrajectoryTarget target(sc.trajectory, sc.plot.empty() ? f.animate : sc.plot);
+  std::optional<CsvTable> table;
+  if (target.file) table.emplace(target.file->stream());
+  // Events go to a spool of the JSON summary as the run makes them: O(1) memory whatever its length.
+  std::unique_ptr<JsonEventSpool> spool;
+  if (wants_json(f)) spool = std::make_unique<JsonEventSpool>();
+  SimulateOutputs out;
+  out.trajectory = table ? &*table : nullptr;
+  out.max_output_rows = f.max_output_rows;
+  if (spool) out.on_event = [&spool](const nlohmann::ordered_json& e) { spool->add(e); };
+  out.timing_repeat = f.timing_repeat;
+  const SimulateReport rep = run_scenario(sc, out);
+  std::vector<std::string> animate_args = rep.figure.animate_args;
+  animate_args.insert(animate_args.end(), {"--frames", std::to_string(f.animate_frames)});
+  target.figures_and_clean({{rep.figure.plot_script, sc.plot, rep.figure.plot_args},
+                            {"animate_block.py", f.animate, animate_args}});
+  if (spool) {
+    nlohmann::ordered_json j = rep.summary;
+    if (f.timing) j["timing"] = to_json(rep.timing);
+    if (!f.json_out.empty()) emit_json(j, f.json_out, *spool);
+    if (f.json) emit_json(j, "-", *spool);
   }
+  if (!f.json && !f.quiet) std::fputs(rep.text.c_str(), stdout);
+  if (f.timing && !f.json && !f.quiet)
+    std::printf("integration: %.6g s CPU, %.6g s wall\n", rep.timing.cpu_s, rep.timing.wall_s);
 }
 
 void add(CLI::App& app) {

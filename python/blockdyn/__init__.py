@@ -12,9 +12,11 @@
 
 Options are the command line's, with dashes written as underscores (`t_end` for `--t-end`,
 `ground_h_amplitude` for `--ground-h-amplitude`); True gives a flag, None or False leaves an
-option out, a list repeats it. The same code runs as for the `blockdyn` program, in this process
-and without the GIL, so results are identical to the command line's to the last digit. Invalid
-input raises ValueError with the program's message (naming the field); other failures RuntimeError.
+option out, a list repeats it; a record is a file or arrays, `ground_h_record=(t, a)` (s, g).
+`simulate`, `simulate_many` and `Simulator` call the library from memory (no files, no command
+line); the other functions run the program's code in this process. Either way the GIL is released
+and results are identical to the command line's to the last digit. Invalid input raises
+ValueError with the program's message (naming the field); other failures RuntimeError.
 """
 import csv
 import json
@@ -26,7 +28,7 @@ import numpy as np
 from . import _core
 
 __version__ = _core.__version__
-__all__ = ["simulate", "assembly", "spectrum", "survival", "response_curve", "cycles", "impact_map", "sweep", "map", "run",
+__all__ = ["simulate", "simulate_many", "Simulator", "assembly", "spectrum", "survival", "response_curve", "cycles", "impact_map", "sweep", "map", "run",
            "Simulation", "Assembly", "lyapunov", "chaos_map", "periodic_orbits", "__version__"]
 
 # Where the plot scripts are once installed (share/blockdyn/python beside lib/python3/...).
@@ -93,10 +95,11 @@ class Simulation:
     def __init__(self, data, summary):
         self.data = data
         self.summary = summary
-        self.t = data["t"]
-        self.state = np.column_stack([data[c] for c in STATE_COLUMNS])
-        self.mode = data["mode"]
-        self.event = data["event"]
+        empty = np.zeros(0)
+        self.t = data.get("t", empty)
+        self.state = (np.column_stack([data[c] for c in STATE_COLUMNS]) if data else np.zeros((0, len(STATE_COLUMNS))))
+        self.mode = data.get("mode", empty)
+        self.event = data.get("event", empty)
         self.events = summary.get("events", [])
 
     def __getitem__(self, column):
@@ -124,9 +127,90 @@ def _with_trajectory(command, positional, options):
         return _read_csv(traj), summary
 
 
+# Options that make files (figures): such a run goes through the command line's writers.
+_FILE_OPTIONS = ("plot", "animate", "animate_frames")
+
+
+def _is_samples(value):
+    return isinstance(value, (tuple, list)) and len(value) == 2 and not isinstance(value[0], (str, bytes))
+
+
+def _options(options):
+    """The keyword options as the library's (name, value) list: numbers written exactly (repr),
+    a record given as (t, a) arrays passed as samples."""
+    out = []
+    for key, value in options.items():
+        if value is None or value is False:
+            continue
+        name = key.replace("_", "-")
+        if name.endswith("-record") and _is_samples(value):
+            t, a = (np.asarray(v, dtype=float).ravel().tolist() for v in value)
+            out.append((name, (t, a)))
+        elif value is True:
+            out.append((name, "true"))
+        elif isinstance(value, (list, tuple)):
+            out += [(name, _number(v)) for v in value]
+        else:
+            out.append((name, _number(value)))
+    return out
+
+
+def _columns(cols):
+    """Text columns as object arrays; a text column with every cell empty reads as NaN numbers, as
+    from the CSV."""
+    data = {}
+    for name, col in cols.items():
+        if isinstance(col, list):
+            data[name] = (np.full(len(col), np.nan) if all(c == "" for c in col)
+                          else np.array(col, dtype=object))
+        else:
+            data[name] = col
+    return data
+
+
+def _prepared(scenario, options):
+    for reserved in ("trajectory", "json", "json_out"):
+        if reserved in options:
+            raise ValueError(f"{reserved}: set by blockdyn.simulate itself")
+    opts = dict(options)
+    if scenario is not None:
+        opts["scenario"] = os.fspath(scenario)
+    return _core.Prepared(_options(opts))
+
+
+def _simulation(result):
+    cols, summary = result
+    return Simulation(_columns(cols), json.loads(summary))
+
+
+class Simulator:
+    """A block's run prepared once (options parsed and validated, a record read once), run as often
+    as wanted: `Simulator(model="housner", width=0.3, height=1.5, w0=0.1).run()`."""
+
+    def __init__(self, scenario=None, **options):
+        self._prepared = _prepared(scenario, options)
+
+    def run(self, trajectory=True):
+        """A Simulation (without the trajectory table when trajectory=False: the summary only)."""
+        return _simulation(_core.simulate(self._prepared, trajectory))
+
+
 def simulate(scenario=None, **options):
-    """Runs `blockdyn simulate` (optionally from a TOML scenario) and returns a Simulation."""
-    return Simulation(*_with_trajectory("simulate", scenario, options))
+    """Runs one block (the options of `blockdyn simulate`, optionally a TOML scenario) and returns a
+    Simulation, from memory. A record may be a file or arrays: ground_h_record=(t, a), t in s, a in g."""
+    if any(options.get(k) for k in _FILE_OPTIONS):
+        return Simulation(*_with_trajectory("simulate", scenario, options))
+    return _simulation(_core.simulate(_prepared(scenario, options), True))
+
+
+def simulate_many(runs, threads=1, trajectory=True):
+    """Runs a list of option dicts (each as for simulate) on `threads` threads without the GIL; the
+    list of Simulations equals that of serial calls, bit for bit."""
+    prepared = []
+    for options in runs:
+        o = dict(options)
+        prepared.append(_prepared(o.pop("scenario", None), o))
+    return [_simulation(r) for r in _core.simulate_many(prepared, int(threads), trajectory)]
 
 
 class Assembly:

@@ -1,21 +1,154 @@
 // SPDX-License-Identifier: Apache-2.0
-// blockdyn._core: the command line, run in process without the GIL (blockdyn/__init__.py builds
-// the arguments from keyword options and reads the outputs back as NumPy arrays).
+// blockdyn._core: the library for Python. Runs are made from memory: options go to the library as
+// Settings (the same vocabulary and validation as the command line), results come back as NumPy
+// columns and the JSON summary's text, and the integration runs without the GIL. The commands
+// not yet exposed as library calls run through the command line in process (run_cli).
+#include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <algorithm>
+#include <exception>
+#include <memory>
 #include <string>
+#include <thread>
+#include <utility>
+#include <variant>
 #include <vector>
 
+#include "blockdyn/api/scenario_settings.hpp"
+#include "blockdyn/api/simulate_run.hpp"
+#include "blockdyn/io/json_io.hpp"
 #include "blockdyn/version.hpp"
 #include "cli_run.hpp"
 
 namespace py = pybind11;
+using namespace blockdyn;
+
+namespace {
+
+using Samples = std::pair<std::vector<double>, std::vector<double>>;
+using OptionValue = std::variant<std::string, Samples>;
+using OptionList = std::vector<std::pair<std::string, OptionValue>>;
+
+// Options the Python functions may pass besides the model's (they change nothing in the run).
+const std::vector<std::string> kQuietOptions{"quiet", "max-output-rows"};
+
+Settings settings_of(const OptionList& options) {
+  Settings s;
+  for (const auto& [name, value] : options) {
+    if (const auto* text = std::get_if<std::string>(&value)) {
+      s.add(name, *text);
+    } else {
+      const auto& [t, a] = std::get<Samples>(value);
+      const std::string field = "--" + Settings::canonical(name);
+      if (t.size() != a.size())
+        throw std::invalid_argument(field + ": times and accelerations differ in length (" + std::to_string(t.size()) +
+                                    " and " + std::to_string(a.size()) + ")");
+      s.add_record(name, std::make_shared<const Accelerogram>(t, a, field + " (arrays)"));
+      s.add(name, "(arrays)");
+    }
+  }
+  return s;
+}
+
+// One run prepared from its options (parsed and validated while the GIL is held).
+struct Prepared {
+  Scenario scenario;
+  double max_rows = 1e7;
+};
+
+Prepared prepare(const OptionList& options) {
+  const Settings s = settings_of(options);
+  std::vector<std::string> known = scenario_option_names();
+  known.insert(known.end(), kQuietOptions.begin(), kQuietOptions.end());
+  s.require_known(known, "blockdyn.simulate");
+  Prepared p{scenario_from(s), s.number("max-output-rows", 1e7)};
+  if (is_rigid_family(p.scenario.model)) (void)rigid_params(p.scenario);  // invalid parameters raise here
+  return p;
+}
+
+struct Outcome {
+  ColumnTable table;
+  nlohmann::ordered_json events = nlohmann::ordered_json::array();
+  SimulateReport report;
+};
+
+void execute(const Prepared& p, bool trajectory, Outcome& o) {
+  SimulateOutputs out;
+  out.trajectory = trajectory ? &o.table : nullptr;
+  out.max_output_rows = p.max_rows;
+  out.on_event = [&o](const nlohmann::ordered_json& e) { o.events.push_back(e); };
+  o.report = run_scenario(p.scenario, out);
+}
+
+// (columns {name: array or list of str}, summary JSON text): the summary exactly as
+// `blockdyn simulate --json` prints it.
+py::tuple to_python(Outcome& o) {
+  nlohmann::ordered_json doc;
+  doc["schema"] = schema_name("simulate", "summary");
+  for (auto it = o.report.summary.begin(); it != o.report.summary.end(); ++it) doc[it.key()] = it.value();
+  doc["events"] = std::move(o.events);
+  py::dict cols;
+  for (const ColumnTable::Column& c : o.table.data()) {
+    if (c.is_text)
+      cols[py::str(c.name)] = py::cast(c.texts);
+    else
+      cols[py::str(c.name)] = py::array_t<double>(py::ssize_t(c.numbers.size()), c.numbers.data());
+  }
+  return py::make_tuple(cols, dump_json(doc));
+}
+
+}  // namespace
 
 PYBIND11_MODULE(_core, m) {
-  m.doc() = "blockdyn's command line, in process (use the functions of the blockdyn package)";
+  m.doc() = "blockdyn's library for Python (use the functions of the blockdyn package)";
   m.attr("__version__") = blockdyn::kVersion;
   m.attr("git_describe") = blockdyn::kGitDescribe;
+  py::class_<Prepared>(m, "Prepared", "a run's options, parsed and validated once (blockdyn.Simulator)")
+      .def(py::init(&prepare), py::arg("options"));
+  m.def(
+      "simulate",
+      [](const Prepared& p, bool trajectory) {
+        Outcome o;
+        {
+          py::gil_scoped_release release;
+          execute(p, trajectory, o);
+        }
+        return to_python(o);
+      },
+      py::arg("prepared"), py::arg("trajectory") = true,
+      "Runs one block; returns ({column: array}, summary JSON text).");
+  m.def(
+      "simulate_many",
+      [](const std::vector<Prepared>& runs, int threads, bool trajectory) {
+        std::vector<Outcome> outs(runs.size());
+        std::vector<std::exception_ptr> errors(runs.size());
+        {
+          py::gil_scoped_release release;
+          const std::size_t n = std::max<std::size_t>(1, std::min<std::size_t>(std::size_t(std::max(threads, 1)), runs.size()));
+          std::vector<std::thread> pool;
+          for (std::size_t w = 0; w < n; ++w)
+            pool.emplace_back([&, w] {
+              for (std::size_t i = w; i < runs.size(); i += n) {
+                try {
+                  execute(runs[i], trajectory, outs[i]);
+                } catch (...) {
+                  errors[i] = std::current_exception();
+                }
+              }
+            });
+          for (auto& t : pool) t.join();
+        }
+        py::list result;
+        for (std::size_t i = 0; i < runs.size(); ++i) {
+          if (errors[i]) std::rethrow_exception(errors[i]);
+          result.append(to_python(outs[i]));
+        }
+        return result;
+      },
+      py::arg("runs"), py::arg("threads") = 1, py::arg("trajectory") = true,
+      "Runs many blocks on `threads` threads (each run on one thread: the results are those of serial calls).");
   m.def(
       "run_cli",
       [](const std::vector<std::string>& args) {

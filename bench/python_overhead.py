@@ -1,0 +1,42 @@
+# SPDX-License-Identifier: Apache-2.0
+"""Per-call cost of `blockdyn.simulate` from Python against the integration alone (issue 26: at
+most 0.5 ms of overhead for a 0.1 s Housner run). Run with the build's package:
+    PYTHONPATH=build/python /usr/bin/python3 bench/python_overhead.py build/blockdyn
+Prints the medians of the library call, of a prepared Simulator's run, of the command-line path
+(the earlier implementation: in-process command line, temporary CSV and JSON) and the integration."""
+import json
+import subprocess
+import sys
+import time
+
+import blockdyn
+
+OPTS = dict(model="housner", width=0.3, height=1.5, w0=0.1, t_end=0.1)
+
+
+def median(f, n):
+    ts = []
+    for _ in range(n):
+        t0 = time.perf_counter()
+        f()
+        ts.append(time.perf_counter() - t0)
+    ts.sort()
+    return ts[len(ts) // 2]
+
+
+def main():
+    program = sys.argv[1] if len(sys.argv) > 1 else "blockdyn"
+    library = median(lambda: blockdyn.simulate(**OPTS), 500)
+    sim = blockdyn.Simulator(**OPTS)
+    prepared = median(sim.run, 500)
+    via_cli = median(lambda: blockdyn.Simulation(*blockdyn._with_trajectory("simulate", None, OPTS)), 100)
+    args = [program, "simulate", "--model", "housner", "--width", "0.3", "--height", "1.5", "--w0", "0.1",
+            "--t-end", "0.1", "--json", "--timing", "--timing-repeat", "200"]
+    integration = json.loads(subprocess.run(args, capture_output=True, text=True, check=True).stdout)["timing"]
+    print(json.dumps({"simulate_ms": library * 1e3, "simulator_run_ms": prepared * 1e3,
+                      "command_line_path_ms": via_cli * 1e3,
+                      "integration_ms": integration["integration_cpu_s"] * 1e3}, indent=2))
+
+
+if __name__ == "__main__":
+    main()

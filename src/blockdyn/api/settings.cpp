@@ -1,0 +1,100 @@
+// SPDX-License-Identifier: Apache-2.0
+#include "blockdyn/api/settings.hpp"
+
+#include <cerrno>
+#include <cstdlib>
+#include <stdexcept>
+
+namespace blockdyn {
+
+std::string Settings::canonical(std::string_view name) {
+  std::string s(name);
+  while (!s.empty() && s.front() == '-') s.erase(s.begin());
+  for (char& c : s)
+    if (c == '_') c = '-';
+  return s;
+}
+
+void Settings::add(std::string_view name, std::string value) { entries_[canonical(name)].values.push_back(std::move(value)); }
+
+void Settings::add_record(std::string_view name, std::shared_ptr<const Accelerogram> record) {
+  entries_[canonical(name)].record = std::move(record);
+}
+
+const Settings::Entry* Settings::find(std::string_view name) const {
+  const auto it = entries_.find(name);
+  return it == entries_.end() ? nullptr : &it->second;
+}
+
+bool Settings::has(std::string_view name) const { return find(name) != nullptr; }
+
+namespace {
+std::invalid_argument bad(std::string_view name, const std::string& value, const char* what) {
+  return std::invalid_argument("--" + std::string(name) + " = '" + value + "' is not " + what);
+}
+}  // namespace
+
+std::optional<double> Settings::number(std::string_view name) const {
+  const Entry* e = find(name);
+  if (!e || e->values.empty()) return std::nullopt;
+  const std::string& v = e->values.back();
+  char* end = nullptr;
+  errno = 0;
+  const double x = std::strtod(v.c_str(), &end);
+  if (v.empty() || end != v.c_str() + v.size()) throw bad(name, v, "a number");
+  return x;
+}
+
+double Settings::number(std::string_view name, double fallback) const { return number(name).value_or(fallback); }
+
+long Settings::integer(std::string_view name, long fallback) const {
+  const Entry* e = find(name);
+  if (!e || e->values.empty()) return fallback;
+  const std::string& v = e->values.back();
+  char* end = nullptr;
+  errno = 0;
+  const long x = std::strtol(v.c_str(), &end, 10);
+  if (v.empty() || end != v.c_str() + v.size() || errno == ERANGE) throw bad(name, v, "an integer");
+  return x;
+}
+
+std::string Settings::text(std::string_view name, const std::string& fallback) const {
+  const Entry* e = find(name);
+  return e && !e->values.empty() ? e->values.back() : fallback;
+}
+
+bool Settings::flag(std::string_view name) const {
+  const Entry* e = find(name);
+  if (!e) return false;
+  if (e->values.empty()) return true;
+  const std::string& v = e->values.back();
+  if (v == "true" || v == "1" || v == "True") return true;
+  if (v == "false" || v == "0" || v == "False") return false;
+  throw bad(name, v, "true or false");
+}
+
+std::vector<std::string> Settings::values(std::string_view name) const {
+  const Entry* e = find(name);
+  return e ? e->values : std::vector<std::string>{};
+}
+
+std::shared_ptr<const Accelerogram> Settings::record(std::string_view name) const {
+  const Entry* e = find(name);
+  return e ? e->record : nullptr;
+}
+
+std::vector<std::string> Settings::names() const {
+  std::vector<std::string> n;
+  for (const auto& [k, v] : entries_) n.push_back(k);
+  return n;
+}
+
+void Settings::require_known(const std::vector<std::string>& known, const std::string& what) const {
+  for (const auto& [k, v] : entries_) {
+    bool ok = false;
+    for (const std::string& n : known) ok = ok || n == k;
+    if (!ok) throw std::invalid_argument("--" + k + ": not an option of " + what);
+  }
+}
+
+}  // namespace blockdyn

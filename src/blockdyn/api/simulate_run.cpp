@@ -1,0 +1,234 @@
+// SPDX-License-Identifier: Apache-2.0
+#include "blockdyn/api/simulate_run.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+#include <stdexcept>
+
+#include "blockdyn/io/json_io.hpp"
+#include "blockdyn/simulation/rigid_simulation.hpp"
+#include "blockdyn/simulation/rigid_trajectory.hpp"
+#include "blockdyn/simulation/simulate.hpp"
+#include "blockdyn/simulation/winkler_trajectory.hpp"
+
+namespace blockdyn {
+namespace {
+
+RunTiming fastest(const RunTiming& a, const RunTiming& b) { return b.cpu_s < a.cpu_s ? b : a; }
+
+// The figure scripts' numbers, as the command line always wrote them (std::to_string).
+std::string arg(double v) { return std::to_string(v); }
+
+void require_rows(double interval, double span, double max_rows) {
+  if (!(interval > 0.0) || !std::isfinite(span)) return;
+  const double n = span / interval;
+  if (n > max_rows) {
+    std::ostringstream os;
+    os << "output-interval = " << interval << " gives " << n << " samples over " << span << ": at most " << max_rows
+       << " allowed (give a larger output-interval)";
+    throw std::invalid_argument(os.str());
+  }
+}
+
+// Streams the Winkler run's events and forwards everything to the trajectory (if any).
+class WinklerEventTee final : public SimulationSink {
+ public:
+  WinklerEventTee(SimulationSink* next, const std::function<void(const nlohmann::ordered_json&)>& on_event)
+      : next_(next), on_event_(on_event) {}
+  void on_start(const WinklerBlock& m, double t, const BlockMode& md, const BlockStateVec& z) override {
+    if (next_) next_->on_start(m, t, md, z);
+  }
+  void on_segment(const WinklerBlock& m, const DenseSegment<kStateDim>& s, double t0, double t1,
+                  const BlockMode& md) override {
+    if (next_) next_->on_segment(m, s, t0, t1, md);
+  }
+  void on_event(const WinklerBlock& m, const EventRecord& e) override {
+    if (on_event_) on_event_(to_json(e));
+    if (next_) next_->on_event(m, e);
+  }
+  bool keep_going() const override { return !next_ || next_->keep_going(); }
+  bool needs_dense() const override { return next_ && next_->needs_dense(); }
+
+ private:
+  SimulationSink* next_;
+  const std::function<void(const nlohmann::ordered_json&)>& on_event_;
+};
+
+class RigidEventTee final : public RigidEventSink {
+ public:
+  explicit RigidEventTee(const std::function<void(const nlohmann::ordered_json&)>& f) : f_(f) {}
+  void on_event(const RigidEventRecord& e) override { f_(to_json(e)); }
+
+ private:
+  const std::function<void(const nlohmann::ordered_json&)>& f_;
+};
+
+long total_events(const SimulationResult& r) {
+  long n = 0;
+  for (long c : r.event_counts) n += c;
+  return n;
+}
+
+std::string winkler_text(const SimulationResult& r, double seconds) {
+  const double ts = seconds > 0 ? seconds : 1.0;
+  const char* unit = seconds > 0 ? " s" : "";
+  char buf[1024];
+  std::string s;
+  std::snprintf(buf, sizeof buf, "status: %s at t = %.10g%s\n", to_string(r.status), r.t_final * ts, unit);
+  s += buf;
+  std::snprintf(buf, sizeof buf, "ihor: %ld, first flight: %s%s\n", r.ihor,
+                r.first_flight_time ? std::to_string(*r.first_flight_time * ts).c_str() : "none",
+                r.first_flight_time ? unit : "");
+  s += buf;
+  std::snprintf(buf, sizeof buf, "events: %ld, steps: %ld, rhs evaluations: %ld\n", total_events(r), r.stats.accepted,
+                r.stats.rhs_evals);
+  s += buf;
+  std::snprintf(buf, sizeof buf,
+                "energy: E0 = %.10g, max |E - E0| = %.3g, max |balance error| = %.3g, friction work = %.6g\n",
+                r.initial_energy.total(), r.max_abs_energy_change, r.max_abs_energy_error, r.work_friction());
+  return s + buf;
+}
+
+std::string rigid_text(const RigidResult& r, double alpha) {
+  char buf[1024];
+  std::string s;
+  std::snprintf(buf, sizeof buf, "model: %s, status: %s at t = %.10g s, final mechanism: %s\n", r.model.c_str(),
+                to_string(r.status), r.t_final, to_string(r.final_mode));
+  s += buf;
+  if (!r.note.empty()) s += "note: " + r.note + "\n";
+  std::snprintf(buf, sizeof buf, "max |w| = %.6g rad (%.4g alpha) at t = %.6g s, impacts: %ld, mechanism changes: %ld\n",
+                r.max_abs_rotation, r.max_abs_rotation / alpha, r.t_max_abs_rotation, r.impacts, r.mode_changes);
+  s += buf;
+  std::snprintf(buf, sizeof buf, "steps: %ld, rhs evaluations: %ld, max |energy balance error| = %.3g J\n",
+                r.stats.accepted, r.stats.rhs_evals, r.max_abs_energy_error);
+  return s + buf;
+}
+
+SimulateReport run_winkler(const Scenario& given, const SimulateOutputs& out) {
+  Scenario sc = given;
+  // With a physical block every time is in seconds and every frequency in Hz.
+  if (sc.physical) {
+    const double tau = scales_of(*sc.physical).time;
+    sc.options.t_end /= tau;
+    sc.options.t_start /= tau;
+    sc.output_interval /= tau;
+    sc.ground = in_time_unit(sc.ground, tau);
+  }
+  const BlockStateVec z0 = initial_state(sc);
+  std::optional<UnitScales> scales;
+  if (sc.units == "physical") scales = scales_of(*sc.physical);
+  std::optional<WinklerTrajectory> rows;
+  if (out.trajectory) {
+    require_rows(sc.output_interval, sc.options.t_end - sc.options.t_start, out.max_output_rows);
+    rows.emplace(*out.trajectory, sc.output_interval, scales);
+  }
+  sc.options.record_events = false;  // counted in the result, streamed to on_event
+  WinklerEventTee tee(rows ? &*rows : nullptr, out.on_event);
+  SimulationResult r = simulate(sc.params, sc.ground, z0, sc.options, (rows || out.on_event) ? &tee : nullptr);
+  for (int i = 1; i < out.timing_repeat; ++i)
+    r.timing = fastest(r.timing, simulate(sc.params, sc.ground, z0, sc.options).timing);
+  SimulateReport rep;
+  rep.summary = result_json(sc.params, sc.ground, sc.options, r, sc.physical ? &*sc.physical : nullptr);
+  rep.text = winkler_text(r, sc.physical ? scales_of(*sc.physical).time : 0.0);
+  rep.timing = r.timing;
+  char title[256];
+  std::snprintf(title, sizeof title, "winkler block r = %.4g, mu = %.4g, k = %.4g: %s at t = %.6g", sc.params.r,
+                sc.params.mu, sc.params.k, to_string(r.status), r.t_final);
+  rep.figure.plot_script = "plot_trajectory.py";
+  rep.figure.plot_args = {"--alpha", arg(sc.params.alpha()), "--title", title};
+  rep.figure.animate_args = {"--model", "winkler", "--width", arg(sc.params.r), "--height", "1", "--title", title};
+  return rep;
+}
+
+std::string block_title(const std::string& model, const RigidBlockParams& p) {
+  char buf[256];
+  if (model == "housner")
+    std::snprintf(buf, sizeof buf, "housner block %.4g m x %.4g m, e = %.4g", p.shape.width, p.shape.height, p.e());
+  else
+    std::snprintf(buf, sizeof buf, "rigid block %.4g m x %.4g m, mu_s %.3g, mu_k %.3g, %s impacts (e = %.3g)",
+                  p.shape.width, p.shape.height, p.interface.mu_s, p.interface.mu_k, to_string(p.impact), p.e());
+  return buf;
+}
+
+template <class Model, class Simulate>
+SimulateReport run_rigid_family(const Scenario& sc, const SimulateOutputs& out, Simulate&& sim) {
+  const RigidBlockParams p = rigid_params(sc);
+  RigidInitial init;
+  init.w0 = sc.initial.w0.value_or(0.0);
+  init.vw0 = sc.initial.vw0.value_or(0.0);
+  init.x0 = sc.initial.x0;
+  init.y0 = sc.initial.y0;
+  init.vx0 = sc.initial.vx0;
+  init.vy0 = sc.initial.vy0;
+  RigidRunOptions o;
+  o.t_start = sc.options.t_start;
+  o.t_end = sc.options.t_end;
+  o.integrator = sc.options.integrator;
+  o.record_events = false;  // counted in the result, streamed to on_event
+  std::optional<RigidTrajectory<Model>> rows;
+  if (out.trajectory) {
+    require_rows(sc.output_interval, o.t_end - o.t_start, out.max_output_rows);
+    rows.emplace(*out.trajectory, sc.output_interval);
+  }
+  std::optional<RigidEventTee> events;
+  if (out.on_event) events.emplace(out.on_event);
+  RigidResult r = sim(p, sc.ground, init, o, rows ? &*rows : nullptr, events ? &*events : nullptr);
+  for (int i = 1; i < out.timing_repeat; ++i)
+    r.timing = fastest(r.timing, sim(p, sc.ground, init, o, nullptr, nullptr).timing);
+  SimulateReport rep;
+  rep.summary = rigid_result_json(p, sc.ground, o, r);
+  rep.text = rigid_text(r, p.shape.alpha());
+  rep.timing = r.timing;
+  const std::string title = block_title(sc.model, p);
+  rep.figure.plot_script = "plot_rigid.py";
+  rep.figure.plot_args = {"--alpha", arg(p.shape.alpha()), "--model", sc.model, "--status", to_string(r.status),
+                          "--title", title};
+  rep.figure.animate_args = {"--model", sc.model, "--width", arg(p.shape.width), "--height", arg(p.shape.height),
+                             "--title", title + ": " + to_string(r.status)};
+  return rep;
+}
+
+SimulateReport run_housner(const Scenario& sc, const SimulateOutputs& out) {
+  return run_rigid_family<HousnerBlock>(sc, out, [](const RigidBlockParams& p, const GroundMotion& g,
+                                                    const RigidInitial& in, const RigidRunOptions& o,
+                                                    Observer<HousnerBlock>* obs, RigidEventSink* ev) {
+    return simulate_housner(p.shape, p.restitution, g, in, o, obs, ev);
+  });
+}
+
+SimulateReport run_rigid(const Scenario& sc, const SimulateOutputs& out) {
+  return run_rigid_family<RigidBlock>(sc, out, [](const RigidBlockParams& p, const GroundMotion& g,
+                                                  const RigidInitial& in, const RigidRunOptions& o,
+                                                  Observer<RigidBlock>* obs, RigidEventSink* ev) {
+    return simulate_rigid(p, g, in, o, obs, ev);
+  });
+}
+
+}  // namespace
+
+const std::vector<SimulateFamily>& simulate_families() {
+  static const std::vector<SimulateFamily> families{
+      {"winkler", "block on a Winkler foundation (non-dimensional unless a physical block is given)", run_winkler},
+      {"housner", "1-DOF rocking on rigid ground", run_housner},
+      {"rigid", "3-DOF on rigid ground, five mechanisms", run_rigid},
+  };
+  return families;
+}
+
+const SimulateFamily& simulate_family(const std::string& name) {
+  std::string names;
+  for (const SimulateFamily& f : simulate_families()) {
+    if (name == f.name) return f;
+    names += (names.empty() ? "" : ", ") + std::string(f.name);
+  }
+  throw std::invalid_argument("model = '" + name + "' is not one of: " + names);
+}
+
+SimulateReport run_scenario(const Scenario& sc, const SimulateOutputs& out) {
+  if (out.timing_repeat < 1 || out.timing_repeat > 1000)
+    throw std::invalid_argument("timing-repeat = " + std::to_string(out.timing_repeat) + " is out of range: [1, 1000]");
+  return simulate_family(sc.model).run(sc, out);
+}
+
+}  // namespace blockdyn

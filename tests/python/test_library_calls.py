@@ -1,0 +1,76 @@
+# SPDX-License-Identifier: Apache-2.0
+"""The Python module on the library (issue 26): runs from memory, records as arrays, prepared runs
+repeated, many runs on threads, each equal to the single call to the last bit."""
+import numpy as np
+import pytest
+
+import blockdyn
+
+
+
+def synthetic_record():
+    """A 12 s record (s, g): two tones under a smooth envelope, sampled at 100 Hz."""
+    t = np.arange(0, 12.0, 0.01)
+    env = np.sin(np.pi * t / 12.0) ** 2
+    return t, 0.35 * env * (np.sin(2 * np.pi * 1.3 * t) + 0.5 * np.sin(2 * np.pi * 3.1 * t + 0.4))
+
+
+def assert_same(a, b):
+    assert a.summary == b.summary
+    assert list(a.data) == list(b.data)
+    for k in a.data:
+        if a.data[k].dtype == object:
+            assert list(a.data[k]) == list(b.data[k])
+        else:
+            np.testing.assert_array_equal(a.data[k], b.data[k])
+
+
+def test_record_as_arrays_equals_the_record_file(tmp_path):
+    t, a = synthetic_record()
+    path = tmp_path / "record.csv"
+    path.write_text("t,a\n" + "".join(f"{ti!r},{ai!r}\n" for ti, ai in zip(t, a)))
+    opts = dict(model="rigid", width=0.3, height=1.2, mu_s=0.3, mu_k=0.25, ground_h_scale=1.5, t_end=12)
+    from_file = blockdyn.simulate(ground_h_record=str(path), **opts)
+    from_arrays = blockdyn.simulate(ground_h_record=(t, a), **opts)
+    from_lists = blockdyn.simulate(ground_h_record=(t.tolist(), a.tolist()), **opts)
+    assert from_file.summary["impacts"] > 0  # the record moves the block
+    for r in (from_arrays, from_lists):
+        np.testing.assert_array_equal(r.state, from_file.state)
+        assert r.events == from_file.events
+        assert r.summary["status"] == from_file.summary["status"]
+    with pytest.raises(ValueError, match="ground-v-record"):
+        blockdyn.simulate(model="housner", width=0.3, height=1.5, ground_v_record=([0, 0.01, 0.02], [0, 0.1]))
+    with pytest.raises(ValueError, match="increasing"):
+        blockdyn.simulate(model="housner", width=0.3, height=1.5, ground_h_record=([0, 0.02, 0.01], [0, 0.1, 0]))
+
+
+def test_prepared_runs_repeat_bit_for_bit():
+    sim = blockdyn.Simulator(model="housner", width=0.3, height=1.5, ground_h_amplitude=0.3,
+                             ground_h_frequency=1.5, t_end=6)
+    first, second = sim.run(), sim.run()
+    assert_same(first, second)
+    assert_same(first, blockdyn.simulate(model="housner", width=0.3, height=1.5, ground_h_amplitude=0.3,
+                                         ground_h_frequency=1.5, t_end=6))
+    summary_only = sim.run(trajectory=False)
+    assert summary_only.summary == first.summary and len(summary_only.t) == 0
+
+
+def test_simulate_many_on_threads_equals_serial_calls():
+    runs = [dict(model="rigid", width=0.3, height=1.2, mu_s=0.4, ground_h_amplitude=0.2 + 0.05 * i,
+                 ground_h_frequency=2.0, t_end=5) for i in range(6)]
+    runs.append(dict(r=0.2, mu=0.3, k=1e4, ic="ic1", t_end=3))
+    serial = [blockdyn.simulate(**o) for o in runs]
+    for threads in (1, 3):
+        for a, b in zip(blockdyn.simulate_many(runs, threads=threads), serial):
+            assert_same(a, b)
+    with pytest.raises(ValueError, match="mu-k"):
+        blockdyn.simulate_many([runs[0], dict(model="rigid", width=0.3, height=1, mu_s=0.2, mu_k=0.5)], threads=2)
+
+
+def test_unknown_and_misplaced_options_are_refused():
+    with pytest.raises(ValueError, match="no-such-option"):
+        blockdyn.simulate(model="housner", width=0.3, height=1.5, no_such_option=1)
+    with pytest.raises(ValueError, match="--mu-s belongs to --model rigid"):
+        blockdyn.simulate(model="housner", width=0.3, height=1.5, mu_s=0.5)
+    with pytest.raises(ValueError, match="t-end"):
+        blockdyn.simulate(model="housner", width=0.3, height=1.5, t_end="soon")
