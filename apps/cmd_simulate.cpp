@@ -1,20 +1,19 @@
 // SPDX-License-Identifier: Apache-2.0
-// `blockdyn simulate`: one run of any model family (winkler, housner, rigid) from flags or a TOML
-// scenario; JSON summary, CSV trajectory, plot.
+// `blockdyn simulate`: one run of any registered model family (winkler, housner, rigid, assembly)
+// from flags or a TOML scenario; the library prepares and runs it, the outputs are written here.
 #include <cmath>
 #include <cstdio>
 #include <iostream>
 #include <memory>
 #include <unistd.h>
 
-#include "blockdyn/api/scenario_settings.hpp"
 #include "blockdyn/api/simulate_run.hpp"
-#include "blockdyn/io/csv_table.hpp"
-#include "blockdyn/io/json_io.hpp"
+#include "blockdyn/units/physical_units.hpp"
 #include "cli_common.hpp"
 #include "cli_registry.hpp"
+#include "assembly_flags.hpp"
 #include "ground_flags.hpp"
-#include "trajectory_target.hpp"
+#include "simulate_output.hpp"
 
 namespace blockdyn::cli {
 namespace {
@@ -26,16 +25,14 @@ struct SimulateFlags {
   IntegratorOptions integ;
   std::string ic = "ic1";
   double w0 = 0, x0 = 0, y0 = 0, vx0 = 0, vy0 = 0, vw0 = 0;
-  double t_end = 10, output_interval = 0.01;
-  std::string trajectory, plot, json_out, units = "nondim", animate;
-  int animate_frames = 120;
-  bool json = false, quiet = false, timing = false;
-  int timing_repeat = 1;
-  double max_output_rows = 1e7;
+  double t_end = 10;
+  std::string units = "nondim";
   GroundFlags ground;
   PhysicalBlock phys;  // --height --width ... (physical input)
   double restitution = 0, mu_s = 0.7, mu_k = 0.7;
   std::string impact = "housner";
+  AssemblyFlags assembly;
+  SimulateOutputFlags out;
 };
 
 // Physical-block flags: name, field, help.
@@ -66,61 +63,28 @@ void add_physical_flags(CLI::App& s, SimulateFlags& f) {
   }
 }
 
-// The model's options go to the library as Settings (scenario_from: one validation for the command
-// line and Python); the output flags stay here.
-Scenario build_scenario(const CLI::App& s, const SimulateFlags& f) {
-  Settings settings = settings_of(s, {"--trajectory", "--plot", "--animate", "--animate-frames", "--json", "--json-out",
-                                      "--quiet", "--timing", "--timing-repeat", "--max-output-rows"});
-  Scenario sc = scenario_from(settings);
-  if (given(s, "--trajectory")) sc.trajectory = f.trajectory;
-  if (given(s, "--plot")) sc.plot = f.plot;
-  require_writable("plot", sc.plot);
-  require_animation(f.animate, f.animate_frames);
-  require_writable("trajectory", sc.trajectory);
-  require_writable("json-out", f.json_out);
-  return sc;
-}
-
-bool wants_json(const SimulateFlags& f) { return f.json || !f.json_out.empty(); }
-
+// The model's options go to the library as Settings (one vocabulary and validation for the
+// command line and Python); the family named by --model reads them.
 void run(const CLI::App& s, const SimulateFlags& f) {
-  const Scenario sc = build_scenario(s, f);
-  TrajectoryTarget target(sc.trajectory, sc.plot.empty() ? f.animate : sc.plot);
-  std::optional<CsvTable> table;
-  if (target.file) table.emplace(target.file->stream());
-  // Events go to a spool of the JSON summary as the run makes them: O(1) memory whatever its length.
-  std::unique_ptr<JsonEventSpool> spool;
-  if (wants_json(f)) spool = std::make_unique<JsonEventSpool>();
-  SimulateOutputs out;
-  out.trajectory = table ? &*table : nullptr;
-  out.max_output_rows = f.max_output_rows;
-  if (spool) out.on_event = [&spool](const nlohmann::ordered_json& e) { spool->add(e); };
-  out.timing_repeat = f.timing_repeat;
-  const SimulateReport rep = run_scenario(sc, out);
-  std::vector<std::string> animate_args = rep.figure.animate_args;
-  animate_args.insert(animate_args.end(), {"--frames", std::to_string(f.animate_frames)});
-  target.figures_and_clean({{rep.figure.plot_script, sc.plot, rep.figure.plot_args},
-                            {"animate_block.py", f.animate, animate_args}});
-  if (spool) {
-    nlohmann::ordered_json j = rep.summary;
-    if (f.timing) j["timing"] = to_json(rep.timing);
-    if (!f.json_out.empty()) emit_json(j, f.json_out, *spool);
-    if (f.json) emit_json(j, "-", *spool);
-  }
-  if (!f.json && !f.quiet) std::fputs(rep.text.c_str(), stdout);
-  if (f.timing && !f.json && !f.quiet)
-    std::printf("integration: %.6g s CPU, %.6g s wall\n", rep.timing.cpu_s, rep.timing.wall_s);
+  const auto prepared = prepare_run(settings_of(s, simulate_output_flag_names()));
+  const auto [trajectory, plot] = prepared->scenario_outputs();
+  run_and_write(prepared, f.out, given(s, "--trajectory") || trajectory.empty() ? f.out.trajectory : trajectory,
+                given(s, "--plot") || plot.empty() ? f.out.plot : plot);
 }
 
 void add(CLI::App& app) {
   auto f = std::make_shared<SimulateFlags>();
-  CLI::App* s = app.add_subcommand("simulate",
-                                   "integrate one block (winkler, housner or rigid model) from flags or a TOML scenario");
+  CLI::App* s = app.add_subcommand(
+      "simulate", "integrate one block (winkler, housner or rigid model) from flags or a TOML scenario, or a block "
+                  "assembly (--model assembly, the options of `blockdyn assembly`)");
   s->add_option("scenario", f->scenario_file, "TOML scenario file (flags given as well override it)");
-  s->add_option("--model", f->model,
-                "model family: winkler (block on a Winkler foundation, non-dimensional unless a physical block is "
-                "given), housner (1-DOF rocking on rigid ground), rigid (3-DOF, five mechanisms); default winkler")
-      ->check(CLI::IsMember({"winkler", "housner", "rigid"}));
+  std::string models;
+  std::vector<std::string> names;
+  for (const SimulateFamily& fam : simulate_families()) {
+    models += (models.empty() ? "" : ", ") + std::string(fam.name) + " (" + fam.description + ")";
+    names.emplace_back(fam.name);
+  }
+  s->add_option("--model", f->model, "model family: " + models + "; default winkler")->check(CLI::IsMember(names));
   add_block_options(*s, f->p);
   add_tolerance_options(*s, f->integ);
   s->add_option("--ic", f->ic, "winkler: initial conditions ic1 (tilted, at rest), ic2 (upright, impulse), custom")
@@ -139,27 +103,13 @@ void add(CLI::App& app) {
   s->add_option("--impact", f->impact, "rigid: impact law housner (default) or newton")
       ->check(CLI::IsMember({"housner", "newton"}));
   s->add_option("--t-end", f->t_end,
-                "final time: seconds with a physical block and for housner/rigid, else non-dimensional (default 10)");
-  s->add_option("--output-interval", f->output_interval, "trajectory output interval (0: every step; default 0.01)");
-  s->add_option("--max-output-rows", f->max_output_rows,
-                "refuse a trajectory of more rows than this at the output interval (default 1e7, ~4 GB)");
-  s->add_option("--trajectory", f->trajectory, "write the trajectory CSV here");
-  s->add_option("--plot", f->plot, "write a plot of the motion (PNG; an SVG is written beside it)");
-  s->add_option("--animate", f->animate, "write an animation of the motion: F.gif (Pillow) or F.mp4 (ffmpeg)");
-  s->add_option("--animate-frames", f->animate_frames, "frames of the animation, uniform in time (default 120)");
+                "final time: seconds with a physical block and for housner/rigid/assembly, else non-dimensional "
+                "(default 10)");
   s->add_option("--units", f->units, "winkler: nondim, or physical (needs a physical block: flags or [physical])");
-  s->add_flag("--json", f->json, "print the JSON summary on stdout");
-  s->add_option("--json-out", f->json_out, "also write the JSON summary to this file");
-  s->add_flag("--quiet", f->quiet, "no text summary on stdout");
-  s->add_flag("--timing", f->timing,
-              "report the integration's wall and CPU time (JSON: timing.integration_wall_s, integration_cpu_s; "
-              "not reproducible, so off by default)");
-  s->add_option("--timing-repeat", f->timing_repeat,
-                "with --timing: repeat the integration this many times in-process and report the least CPU time "
-                "(a warm measurement for benchmarks; default 1)")
-      ->check(CLI::Range(1, 1000));
+  add_simulate_output_flags(*s, f->out, 0.01);
   add_ground_flags(*s, f->ground);
   add_physical_flags(*s, *f);
+  add_assembly_options(*s, f->assembly);  // --model assembly (the options `blockdyn assembly` has)
   s->callback([s, f] { run(*s, *f); });
 }
 

@@ -168,19 +168,26 @@ def _columns(cols):
     return data
 
 
-def _prepared(scenario, options):
+def _prepared(scenario, options, command="simulate"):
     for reserved in ("trajectory", "json", "json_out"):
         if reserved in options:
-            raise ValueError(f"{reserved}: set by blockdyn.simulate itself")
+            raise ValueError(f"{reserved}: set by blockdyn.{command} itself")
     opts = dict(options)
     if scenario is not None:
         opts["scenario"] = os.fspath(scenario)
-    return _core.Prepared(_options(opts))
+    if command == "assembly":
+        opts["model"] = "assembly"
+    return _core.Prepared(_options(opts), command)
 
 
 def _simulation(result):
+    """A Simulation, or an Assembly for the assembly family."""
     cols, summary = result
-    return Simulation(_columns(cols), json.loads(summary))
+    return _simulation_of(_columns(cols), json.loads(summary))
+
+
+def _simulation_of(data, summary):
+    return Assembly(data, summary) if "blocks" in summary and "theta_0" in data else Simulation(data, summary)
 
 
 class Simulator:
@@ -197,9 +204,10 @@ class Simulator:
 
 def simulate(scenario=None, **options):
     """Runs one block (the options of `blockdyn simulate`, optionally a TOML scenario) and returns a
-    Simulation, from memory. A record may be a file or arrays: ground_h_record=(t, a), t in s, a in g."""
+    Simulation (an Assembly with model="assembly"), from memory. A record may be a file or arrays:
+    ground_h_record=(t, a), t in s, a in g."""
     if any(options.get(k) for k in _FILE_OPTIONS):
-        return Simulation(*_with_trajectory("simulate", scenario, options))
+        return _simulation_of(*_with_trajectory("simulate", scenario, options))
     return _simulation(_core.simulate(_prepared(scenario, options), True))
 
 
@@ -236,9 +244,12 @@ class Assembly:
 
 
 def assembly(file=None, **options):
-    """Runs `blockdyn assembly` (a preset, e.g. preset="trilith", or an assembly TOML file) and
-    returns an Assembly with NumPy arrays."""
-    return Assembly(*_with_trajectory("assembly", file, options))
+    """Runs a block assembly (a preset, e.g. preset="trilith", or an assembly TOML file; the options
+    of `blockdyn assembly`) and returns an Assembly with NumPy arrays, from memory."""
+    if any(options.get(k) for k in _FILE_OPTIONS):
+        return Assembly(*_with_trajectory("assembly", file, options))
+    cols, summary = _core.simulate(_prepared(file, options, "assembly"), True)
+    return Assembly(_columns(cols), json.loads(summary))
 
 
 def _json_command(command, options):

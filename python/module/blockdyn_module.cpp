@@ -16,7 +16,6 @@
 #include <variant>
 #include <vector>
 
-#include "blockdyn/api/scenario_settings.hpp"
 #include "blockdyn/api/simulate_run.hpp"
 #include "blockdyn/io/json_io.hpp"
 #include "blockdyn/version.hpp"
@@ -54,18 +53,20 @@ Settings settings_of(const OptionList& options) {
 
 // One run prepared from its options (parsed and validated while the GIL is held).
 struct Prepared {
-  Scenario scenario;
+  std::shared_ptr<const PreparedRun> run;
   double max_rows = 1e7;
+  std::string command;  // names the summary's schema, as the command line's
 };
 
-Prepared prepare(const OptionList& options) {
-  const Settings s = settings_of(options);
-  std::vector<std::string> known = scenario_option_names();
-  known.insert(known.end(), kQuietOptions.begin(), kQuietOptions.end());
-  s.require_known(known, "blockdyn.simulate");
-  Prepared p{scenario_from(s), s.number("max-output-rows", 1e7)};
-  if (is_rigid_family(p.scenario.model)) (void)rigid_params(p.scenario);  // invalid parameters raise here
-  return p;
+Prepared prepare(const OptionList& options, const std::string& command) {
+  Settings model;
+  const Settings all = settings_of(options);
+  for (const std::string& n : all.names()) {
+    if (std::find(kQuietOptions.begin(), kQuietOptions.end(), n) != kQuietOptions.end()) continue;
+    if (auto r = all.record(n)) model.add_record(n, r);
+    for (const std::string& v : all.values(n)) model.add(n, v);
+  }
+  return Prepared{prepare_run(model), all.number("max-output-rows", 1e7), command};
 }
 
 struct Outcome {
@@ -79,14 +80,14 @@ void execute(const Prepared& p, bool trajectory, Outcome& o) {
   out.trajectory = trajectory ? &o.table : nullptr;
   out.max_output_rows = p.max_rows;
   out.on_event = [&o](const nlohmann::ordered_json& e) { o.events.push_back(e); };
-  o.report = run_scenario(p.scenario, out);
+  o.report = p.run->run(out);
 }
 
 // (columns {name: array or list of str}, summary JSON text): the summary exactly as
 // `blockdyn simulate --json` prints it.
-py::tuple to_python(Outcome& o) {
+py::tuple to_python(const Prepared& p, Outcome& o) {
   nlohmann::ordered_json doc;
-  doc["schema"] = schema_name("simulate", "summary");
+  doc["schema"] = schema_name(p.command, "summary");
   for (auto it = o.report.summary.begin(); it != o.report.summary.end(); ++it) doc[it.key()] = it.value();
   doc["events"] = std::move(o.events);
   py::dict cols;
@@ -106,7 +107,7 @@ PYBIND11_MODULE(_core, m) {
   m.attr("__version__") = blockdyn::kVersion;
   m.attr("git_describe") = blockdyn::kGitDescribe;
   py::class_<Prepared>(m, "Prepared", "a run's options, parsed and validated once (blockdyn.Simulator)")
-      .def(py::init(&prepare), py::arg("options"));
+      .def(py::init(&prepare), py::arg("options"), py::arg("command") = "simulate");
   m.def(
       "simulate",
       [](const Prepared& p, bool trajectory) {
@@ -115,7 +116,7 @@ PYBIND11_MODULE(_core, m) {
           py::gil_scoped_release release;
           execute(p, trajectory, o);
         }
-        return to_python(o);
+        return to_python(p, o);
       },
       py::arg("prepared"), py::arg("trajectory") = true,
       "Runs one block; returns ({column: array}, summary JSON text).");
@@ -143,7 +144,7 @@ PYBIND11_MODULE(_core, m) {
         py::list result;
         for (std::size_t i = 0; i < runs.size(); ++i) {
           if (errors[i]) std::rethrow_exception(errors[i]);
-          result.append(to_python(outs[i]));
+          result.append(to_python(runs[i], outs[i]));
         }
         return result;
       },

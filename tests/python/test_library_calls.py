@@ -1,6 +1,8 @@
 # SPDX-License-Identifier: Apache-2.0
 """The Python module on the library (issue 26): runs from memory, records as arrays, prepared runs
 repeated, many runs on threads, each equal to the single call to the last bit."""
+import os
+
 import numpy as np
 import pytest
 
@@ -74,3 +76,34 @@ def test_unknown_and_misplaced_options_are_refused():
         blockdyn.simulate(model="housner", width=0.3, height=1.5, mu_s=0.5)
     with pytest.raises(ValueError, match="t-end"):
         blockdyn.simulate(model="housner", width=0.3, height=1.5, t_end="soon")
+
+
+def test_assembly_from_memory_equals_the_command_line(tmp_path):
+    import csv
+    import json
+    import subprocess
+    cli = os.environ["BLOCKDYN_CLI"]
+    args = ["--preset", "trilith", "--contact", "rigid", "--ground-h-amplitude", "0.3", "--ground-h-frequency", "2",
+            "--t-end", "1.5"]
+    traj = tmp_path / "a.csv"
+    out = subprocess.run([cli, "simulate", "--model", "assembly", *args, "--trajectory", str(traj), "--json"],
+                         capture_output=True, text=True, check=True).stdout
+    summary = json.loads(out)
+    with open(traj, newline="") as f:
+        rows = list(csv.reader(f))
+    a = blockdyn.assembly(preset="trilith", contact="rigid", ground_h_amplitude=0.3, ground_h_frequency=2, t_end=1.5)
+    s = blockdyn.simulate(model="assembly", preset="trilith", contact="rigid", ground_h_amplitude=0.3,
+                          ground_h_frequency=2, t_end=1.5)
+    assert a.summary["schema"].startswith("blockdyn.assembly.summary/")
+    assert summary["schema"].startswith("blockdyn.simulate.summary/")
+    for r in (a.summary, s.summary):
+        assert {k: v for k, v in r.items() if k != "schema"} == {k: v for k, v in summary.items() if k != "schema"}
+    assert summary["impacts"] > 0 and list(a.data) == rows[0]
+    for i, name in enumerate(rows[0]):
+        col = [row[i] for row in rows[1:]]
+        if a.data[name].dtype == object:
+            assert list(a.data[name]) == col
+        else:
+            np.testing.assert_array_equal(a.data[name], np.array([float(c) for c in col]))
+    with pytest.raises(ValueError, match="--tilt: not an option of --model housner"):
+        blockdyn.simulate(model="housner", width=0.3, height=1.5, tilt=0.1)

@@ -6,6 +6,9 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "blockdyn/api/assembly_settings.hpp"
+#include "blockdyn/api/scenario_settings.hpp"
+#include "blockdyn/io/assembly_json.hpp"
 #include "blockdyn/io/json_io.hpp"
 #include "blockdyn/simulation/rigid_simulation.hpp"
 #include "blockdyn/simulation/rigid_trajectory.hpp"
@@ -205,13 +208,107 @@ SimulateReport run_rigid(const Scenario& sc, const SimulateOutputs& out) {
   });
 }
 
+// The block families' runs by model name (one Scenario type for the three).
+SimulateReport run_block(const Scenario& sc, const SimulateOutputs& out) {
+  if (sc.model == "housner") return run_housner(sc, out);
+  if (sc.model == "rigid") return run_rigid(sc, out);
+  return run_winkler(sc, out);
+}
+
+class PreparedBlock final : public PreparedRun {
+ public:
+  explicit PreparedBlock(Scenario sc) : sc_(std::move(sc)) {}
+  SimulateReport run(const SimulateOutputs& out) const override { return run_scenario(sc_, out); }
+  std::pair<std::string, std::string> scenario_outputs() const override { return {sc_.trajectory, sc_.plot}; }
+
+ private:
+  Scenario sc_;
+};
+
+std::unique_ptr<PreparedRun> prepare_block(const Settings& s) {
+  Scenario sc = scenario_from(s);
+  if (is_rigid_family(sc.model)) (void)rigid_params(sc);  // invalid parameters fail here, not when run
+  return std::make_unique<PreparedBlock>(std::move(sc));
+}
+
+std::string assembly_text(const AssemblyResult& r) {
+  char buf[512];
+  std::string s;
+  std::snprintf(buf, sizeof buf, "status: %s, motion: %s", r.status.c_str(), r.motion.c_str());
+  s += buf;
+  if (r.collapse_mode) {
+    std::snprintf(buf, sizeof buf, ", collapse mode %d at t* = %.9g s (block %d)", *r.collapse_mode, *r.t_failure,
+                  r.failed_block);
+    s += buf;
+  }
+  std::snprintf(buf, sizeof buf, ", t_final = %.9g s\n", r.t_final);
+  s += buf;
+  for (std::size_t b = 0; b < r.blocks.size(); ++b) {
+    std::snprintf(buf, sizeof buf, "block %zu (%s): max |theta| = %.6g rad, max sliding = %.6g m\n", b,
+                  r.blocks[b].name.c_str(), r.blocks[b].max_abs_rotation, r.blocks[b].max_abs_sliding);
+    s += buf;
+  }
+  std::snprintf(buf, sizeof buf, "events: %ld, steps: %ld, rhs evaluations: %ld\n", r.events_total, r.steps, r.rhs_evals);
+  s += buf;
+  std::snprintf(buf, sizeof buf,
+                "energy: E0 = %.9g J, max |balance error| = %.3g J, friction work = %.6g J, damping work = %.6g J\n",
+                r.energy_initial.total, r.max_abs_energy_error, r.work_friction, r.work_normal);
+  s += buf;
+  if (!r.note.empty()) s += "note: " + r.note + "\n";
+  return s;
+}
+
+class PreparedAssembly final : public PreparedRun {
+ public:
+  explicit PreparedAssembly(AssemblySetup s) : s_(std::move(s)) {}
+  SimulateReport run(const SimulateOutputs& out) const override {
+    AssemblyRunOptions o = s_.run;
+    if (out.trajectory) require_rows(o.output_interval, o.t_end, out.max_output_rows);
+    o.record_events = false;  // counted in the result, streamed to on_event
+    if (out.on_event) o.on_event = [&out](const AssemblyEventRecord& e) { out.on_event(to_json(e)); };
+    const Assembly& a = s_.assembly;
+    const RunClock clock;
+    const AssemblyResult r = simulate_assembly(a, s_.ground, o, out.trajectory);
+    SimulateReport rep;
+    rep.timing = clock.elapsed();  // with the trajectory's rows, if any
+    rep.summary = assembly_result_json(a, s_.ground, o, r);
+    rep.text = assembly_text(r);
+    char title[256];
+    std::snprintf(title, sizeof title, "%s (%zu blocks): %s, %s%s at t = %.6g s", a.preset.c_str(), a.blocks.size(),
+                  r.status.c_str(), r.motion.c_str(),
+                  r.collapse_mode ? (" mode " + std::to_string(*r.collapse_mode)).c_str() : "", r.t_final);
+    std::string sizes;
+    for (const AssemblyBlock& b : a.blocks) {
+      char buf[64];
+      std::snprintf(buf, sizeof buf, "%s%.17g,%.17g", sizes.empty() ? "" : ",", b.width, b.height);
+      sizes += buf;
+    }
+    rep.figure.plot_script = "plot_assembly.py";
+    rep.figure.plot_args = {"--title", title};
+    rep.figure.animate_args = {"--title", title, "--sizes", sizes};
+    rep.figure.animate_script = "animate_assembly.py";
+    return rep;
+  }
+
+ private:
+  AssemblySetup s_;
+};
+
+std::unique_ptr<PreparedRun> prepare_assembly(const Settings& s) {
+  return std::make_unique<PreparedAssembly>(assembly_from(s));
+}
+
 }  // namespace
 
 const std::vector<SimulateFamily>& simulate_families() {
+  // One row per family: a new family is its folder (model, run) plus a row here.
   static const std::vector<SimulateFamily> families{
-      {"winkler", "block on a Winkler foundation (non-dimensional unless a physical block is given)", run_winkler},
-      {"housner", "1-DOF rocking on rigid ground", run_housner},
-      {"rigid", "3-DOF on rigid ground, five mechanisms", run_rigid},
+      {"winkler", "block on a Winkler foundation (non-dimensional unless a physical block is given)",
+       scenario_option_names, prepare_block},
+      {"housner", "1-DOF rocking on rigid ground", scenario_option_names, prepare_block},
+      {"rigid", "3-DOF on rigid ground, five mechanisms", scenario_option_names, prepare_block},
+      {"assembly", "block assemblies (preset or TOML file) with deformable or rigid contacts", assembly_option_names,
+       prepare_assembly},
   };
   return families;
 }
@@ -222,13 +319,20 @@ const SimulateFamily& simulate_family(const std::string& name) {
     if (name == f.name) return f;
     names += (names.empty() ? "" : ", ") + std::string(f.name);
   }
-  throw std::invalid_argument("model = '" + name + "' is not one of: " + names);
+  throw std::invalid_argument("--model = '" + name + "' is not one of: " + names);
+}
+
+std::unique_ptr<PreparedRun> prepare_run(const Settings& s) {
+  const std::string model = s.text("model");
+  const SimulateFamily& f = simulate_family(model.empty() ? "winkler" : model);
+  s.require_known(f.options(), "--model " + std::string(f.name));
+  return f.prepare(s);
 }
 
 SimulateReport run_scenario(const Scenario& sc, const SimulateOutputs& out) {
   if (out.timing_repeat < 1 || out.timing_repeat > 1000)
     throw std::invalid_argument("timing-repeat = " + std::to_string(out.timing_repeat) + " is out of range: [1, 1000]");
-  return simulate_family(sc.model).run(sc, out);
+  return run_block(sc, out);
 }
 
 }  // namespace blockdyn

@@ -5,11 +5,14 @@
 // module and any C++ caller run a block through here; a family is one row of the registry
 // (simulate_families()) with its run function.
 #include <functional>
+#include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
+#include "blockdyn/api/settings.hpp"
 #include "blockdyn/io/scenario.hpp"
 #include "blockdyn/simulation/run_clock.hpp"
 #include "blockdyn/simulation/trajectory_table.hpp"
@@ -26,7 +29,7 @@ struct SimulateOutputs {
 
 // What a figure of the run needs (the plot and animation scripts' arguments).
 struct SimulateFigure {
-  std::string plot_script;
+  std::string plot_script, animate_script = "animate_block.py";
   std::vector<std::string> plot_args, animate_args;
 };
 
@@ -37,17 +40,31 @@ struct SimulateReport {
   RunTiming timing;
 };
 
+// A run whose options are parsed and validated, ready to run as often as wanted.
+class PreparedRun {
+ public:
+  virtual ~PreparedRun() = default;
+  // Throws std::invalid_argument on bad input (before running).
+  virtual SimulateReport run(const SimulateOutputs& out) const = 0;
+  // The trajectory and figure paths a scenario file names ([output]), if any.
+  virtual std::pair<std::string, std::string> scenario_outputs() const { return {}; }
+};
+
 struct SimulateFamily {
   const char* name;         // the --model value
   const char* description;  // for --help
-  SimulateReport (*run)(const Scenario&, const SimulateOutputs&);
+  const std::vector<std::string>& (*options)();                 // the options it reads
+  std::unique_ptr<PreparedRun> (*prepare)(const Settings&);     // throws std::invalid_argument
 };
 
-// Every family a Scenario may name, in the order --help lists them.
+// Every registered family, in the order --help lists them.
 const std::vector<SimulateFamily>& simulate_families();
 // The family named; throws std::invalid_argument listing the names.
 const SimulateFamily& simulate_family(const std::string& name);
-// Runs the scenario with its family. Throws std::invalid_argument on bad input (before running).
+// The run the Settings describe: the family named by `model` (without it, a scenario file's model,
+// else winkler). Throws std::invalid_argument naming the option at fault.
+std::unique_ptr<PreparedRun> prepare_run(const Settings& s);
+// A block's run from a Scenario (winkler, housner, rigid).
 SimulateReport run_scenario(const Scenario& sc, const SimulateOutputs& out);
 
 }  // namespace blockdyn

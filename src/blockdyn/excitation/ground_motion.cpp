@@ -4,7 +4,7 @@
 #include <cmath>
 #include <string>
 
-#include "blockdyn/model/common/checks.hpp"
+#include "blockdyn/base/checks.hpp"
 
 namespace blockdyn {
 

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "blockdyn/model/common/checks.hpp"
+#include "blockdyn/base/checks.hpp"
 #include "blockdyn/simulation/rigid_recorder.hpp"
 #include "blockdyn/simulation/run.hpp"
 

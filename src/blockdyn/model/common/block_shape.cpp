@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "blockdyn/model/common/block_shape.hpp"
 
-#include "blockdyn/model/common/checks.hpp"
+#include "blockdyn/base/checks.hpp"
 
 namespace blockdyn {
 

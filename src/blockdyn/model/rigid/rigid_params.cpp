@@ -3,7 +3,7 @@
 
 #include <cmath>
 
-#include "blockdyn/model/common/checks.hpp"
+#include "blockdyn/base/checks.hpp"
 
 namespace blockdyn {
 

@@ -1,0 +1,195 @@
+// SPDX-License-Identifier: Apache-2.0
+#include "blockdyn/api/assembly_settings.hpp"
+
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+#include "blockdyn/api/ground_settings.hpp"
+#include "blockdyn/io/assembly_file.hpp"
+
+namespace blockdyn {
+namespace {
+
+using Invalid = std::invalid_argument;
+
+void require_range(const std::string& field, double v, double lo, double hi, bool lo_incl = true, bool hi_incl = true) {
+  const bool ok = std::isfinite(v) && (lo_incl ? v >= lo : v > lo) && (hi_incl ? v <= hi : v < hi);
+  if (!ok) {
+    std::ostringstream os;
+    os << field << " = " << v << " is out of range: must be finite and in " << (lo_incl ? "[" : "(") << lo << ", " << hi
+       << (hi_incl ? "]" : ")");
+    throw Invalid(os.str());
+  }
+}
+
+// The option values with the command line's defaults.
+struct Values {
+  std::string file, preset, contact;
+  double phi_s, phi_l, tilt, k_normal, k_tangential, restitution, collapse_rotation, min_bearing, g;
+  std::optional<double> phi_s_kinetic, phi_l_kinetic;
+  bool rigid;
+};
+
+Values values_of(const Settings& s) {
+  Values v;
+  v.file = s.text("file", s.text("scenario"));
+  v.preset = s.text("preset");
+  v.contact = s.text("contact", "deformable");
+  if (v.contact != "deformable" && v.contact != "rigid")
+    throw Invalid("--contact = '" + v.contact + "' is not one of: deformable, rigid");
+  if (!v.preset.empty() && v.preset != "block" && v.preset != "trilith" && v.preset != "column")
+    throw Invalid("--preset = '" + v.preset + "' is not one of: block, trilith, column");
+  v.rigid = v.contact == "rigid";
+  v.phi_s = s.number("phi-s", 90);
+  v.phi_l = s.number("phi-l", 90);
+  v.phi_s_kinetic = s.number("phi-s-kinetic");
+  v.phi_l_kinetic = s.number("phi-l-kinetic");
+  v.tilt = s.number("tilt", 0);
+  v.k_normal = s.number("normal-stiffness", 1e7);
+  v.k_tangential = s.number("tangential-stiffness", -1);
+  // The rigid law's Newton restitution defaults to 0 (a plastic contact, as Housner's block).
+  v.restitution = s.number("restitution", v.rigid ? 0.0 : 0.5);
+  v.collapse_rotation = s.number("collapse-rotation", 1.0);
+  v.min_bearing = s.number("min-bearing", 0.0);
+  v.g = s.number("g", 9.81);
+  return v;
+}
+
+void check_values(const Settings& s, const Values& v) {
+  if (v.file.empty() == v.preset.empty())
+    throw Invalid(v.file.empty() ? "give --preset block|trilith|column or an assembly FILE.toml"
+                                 : "give either --preset or an assembly file, not both");
+  require_range("phi-s", v.phi_s, 0, 90);
+  require_range("phi-l", v.phi_l, 0, 90);
+  // The kinetic angles lie between 0 and the static ones (the file's, or the options').
+  if (v.phi_s_kinetic) require_range("phi-s-kinetic", *v.phi_s_kinetic, 0, v.file.empty() || s.has("phi-s") ? v.phi_s : 90);
+  if (v.phi_l_kinetic) require_range("phi-l-kinetic", *v.phi_l_kinetic, 0, v.file.empty() || s.has("phi-l") ? v.phi_l : 90);
+  require_range("tilt", v.tilt, -1.5, 1.5, false, false);
+  require_range("normal-stiffness", v.k_normal, 1, 1e13);
+  if (s.has("tangential-stiffness")) require_range("tangential-stiffness", v.k_tangential, 1, 1e13);
+  require_range("restitution", v.restitution, v.rigid ? 0.0 : 1e-3, 1);
+  if (v.rigid)
+    for (const char* n : {"normal-stiffness", "tangential-stiffness", "rtol", "atol", "method"})
+      if (s.has(n)) throw Invalid(std::string("--") + n + " belongs to --contact deformable (the rigid law has --step)");
+  if (!v.rigid && s.has("step")) throw Invalid("--step belongs to --contact rigid");
+  require_range("collapse-rotation", v.collapse_rotation, 0, 10, false);
+  require_range("min-bearing", v.min_bearing, 0, 1e3);
+  require_range("g", v.g, 0, 1e3, false);
+}
+
+ContactLaw preset_law(const Values& v, double phi, const char* field) {
+  ContactLaw l;
+  l.k_normal = v.k_normal;
+  l.k_tangential = v.k_tangential;
+  l.restitution = v.restitution;
+  l.mu_s = l.mu_k = friction_of_angle(phi, field);
+  return l;
+}
+
+void set_kinetic(ContactLaw& l, const std::optional<double>& phi_kinetic, const char* field) {
+  if (phi_kinetic) l.mu_k = friction_of_angle(*phi_kinetic, field);
+}
+
+Assembly from_file(const Settings& s, const Values& v) {
+  for (const char* n : {"slenderness", "drums", "block-width", "thickness", "density", "lintel-length", "overhang", "tilt"})
+    if (s.has(n)) throw Invalid(std::string("--") + n + " belongs to --preset (an assembly file gives its blocks)");
+  Assembly a = read_assembly_file(v.file);
+  // Options given override the file's contact laws.
+  for (AssemblyInterface& i : a.interfaces) {
+    ContactLaw& l = i.law;
+    if (s.has("normal-stiffness")) l.k_normal = v.k_normal;
+    if (s.has("tangential-stiffness")) l.k_tangential = v.k_tangential;
+    if (s.has("restitution")) l.restitution = v.restitution;
+    const bool ground = i.lower < 0;
+    if (ground && s.has("phi-s")) l.mu_s = l.mu_k = friction_of_angle(v.phi_s, "phi-s");
+    if (!ground && s.has("phi-l")) l.mu_s = l.mu_k = friction_of_angle(v.phi_l, "phi-l");
+    set_kinetic(l, ground ? v.phi_s_kinetic : v.phi_l_kinetic, ground ? "phi-s-kinetic" : "phi-l-kinetic");
+  }
+  if (s.has("g")) a.g = v.g;
+  a.contact = v.contact;
+  return a;
+}
+
+Assembly from_preset(const Settings& s, const Values& v) {
+  PresetOptions o;
+  o.slenderness = s.number("slenderness", o.slenderness);
+  o.drums = int(s.integer("drums", o.drums));
+  o.block_width = s.number("block-width", o.block_width);
+  o.thickness = s.number("thickness", o.thickness);
+  o.density = s.number("density", o.density);
+  o.lintel_length = s.number("lintel-length", o.lintel_length);
+  o.overhang = s.number("overhang", o.overhang);
+  o.tilt = v.tilt;
+  o.ground_law = preset_law(v, v.phi_s, "phi-s");
+  o.block_law = preset_law(v, v.phi_l, "phi-l");
+  set_kinetic(o.ground_law, v.phi_s_kinetic, "phi-s-kinetic");
+  set_kinetic(o.block_law, v.phi_l_kinetic, "phi-l-kinetic");
+  o.rigid_contacts = v.rigid;
+  if (s.has("drums") && v.preset != "column") throw Invalid("--drums belongs to --preset column");
+  for (const char* n : {"lintel-length", "overhang"})
+    if (s.has(n) && v.preset != "trilith") throw Invalid(std::string("--") + n + " belongs to --preset trilith");
+  Assembly a = make_preset(v.preset, o);
+  a.g = v.g;
+  return a;
+}
+
+void check_run(const AssemblyRunOptions& o) {
+  require_range("t-end", o.t_end, 0, 1e7, false);
+  require_range("step", o.step, 1e-7, 1e-2);
+  require_range("rtol", o.integrator.rtol, 1e-14, 1e-2);
+  require_range("atol", o.integrator.atol, 1e-16, 1e-2);
+  require_range("output-interval", o.output_interval, 0, 1e7);
+}
+
+}  // namespace
+
+const std::vector<std::string>& assembly_option_names() {
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> n{"model", "file", "scenario", "preset", "contact", "slenderness", "drums", "block-width",
+                               "thickness", "density", "lintel-length", "overhang", "phi-s", "phi-l", "phi-s-kinetic",
+                               "phi-l-kinetic", "tilt", "normal-stiffness", "tangential-stiffness", "restitution",
+                               "collapse-rotation", "min-bearing", "g", "step", "columns-rock-only", "t-end", "rtol",
+                               "atol", "method", "output-interval"};
+    for (const std::string& g : ground_option_names()) n.push_back(g);
+    return n;
+  }();
+  return names;
+}
+
+AssemblySetup assembly_from(const Settings& s) {
+  const Values v = values_of(s);
+  check_values(s, v);
+  AssemblySetup setup;
+  Assembly& a = setup.assembly;
+  a = v.file.empty() ? from_preset(s, v) : from_file(s, v);
+  if (s.flag("columns-rock-only")) {
+    if (!v.rigid) throw Invalid("--columns-rock-only (seed 001's 5-DOF restriction) needs --contact rigid");
+    // No sliding and plastic impacts on the ground: the blocks standing on it only rock.
+    a.rock_only_on_ground = true;
+    for (AssemblyInterface& i : a.interfaces)
+      if (i.lower < 0) {
+        i.law.mu_s = i.law.mu_k = kNoSlip;
+        i.law.restitution = 0.0;
+      }
+  }
+  if (s.has("collapse-rotation") || v.file.empty()) a.collapse_rotation = v.collapse_rotation;
+  if (s.has("min-bearing") || v.file.empty()) a.min_bearing = v.min_bearing;
+  validate(a);
+  apply_ground_settings(s, setup.ground);
+  AssemblyRunOptions& o = setup.run;
+  o.t_end = s.number("t-end", o.t_end);
+  o.step = s.number("step", o.step);
+  o.integrator.rtol = s.number("rtol", o.integrator.rtol);
+  o.integrator.atol = s.number("atol", o.integrator.atol);
+  if (s.has("method")) {
+    const auto m = method_from_string(s.text("method"));
+    if (!m) throw Invalid("--method = '" + s.text("method") + "' is not one of: auto, dopri5, dop853");
+    o.integrator.method = *m;
+  }
+  o.output_interval = s.number("output-interval", o.output_interval);
+  check_run(o);
+  return setup;
+}
+
+}  // namespace blockdyn
