@@ -27,8 +27,6 @@ struct ChaosMapFlags {
   bool json = false, quiet = false;
 };
 
-const char* kMotions[] = {"rest", "superstable", "periodic", "neutral", "chaotic", "collapse", "failed"};
-
 void run(const CLI::App& s, const ChaosMapFlags& f) {
   ChaosMapOptions o = f.o;
   require_range("threads", o.grid.threads, 0, 1024);
@@ -53,7 +51,7 @@ void run(const CLI::App& s, const ChaosMapFlags& f) {
   require_writable("out", f.out);
   require_writable("plot", f.plot);
   require_writable("json-out", f.json_out);
-  const ForcedModel fm = build_forced_model(s, f.m);
+  const ForcedModel fm = build_forced_model(s);
   if (fm.description.contains("contact") && fm.description["contact"] == "rigid")
     throw UsageError("--contact rigid: no Lyapunov exponent (Moreau-Jean time-stepping); use --contact deformable");
   const auto lyap = fm.lyapunov;
@@ -66,7 +64,6 @@ void run(const CLI::App& s, const ChaosMapFlags& f) {
   bar.finish();
 
   using json = nlohmann::ordered_json;
-  auto num = [](double v) { return std::isfinite(v) ? json(v) : json(nullptr); };
   json j;
   j["run"] = run_info();
   j["model"] = fm.description;
@@ -82,46 +79,10 @@ void run(const CLI::App& s, const ChaosMapFlags& f) {
                   {"method", "variational equation with saltation matrices, Benettin renormalisation"},
                   {"failure", fm.overturn_rule}};
   j["integrator"] = to_json(o.integrator);
-  json arr = json::array();
-  std::map<std::string, long> counts;
-  for (const char* m : kMotions) counts[m] = 0;
-  for (const ChaosPoint& p : pts) {
-    json x;
-    x["beta"] = p.beta;
-    x["omega"] = p.omega;
-    x["motion"] = p.motion;
-    x["exponent"] = num(p.exponent);
-    x["exponent_nondim"] = num(p.exponent_nondim);
-    x["exponent_second_half"] = num(p.exponent_second_half);
-    x["status"] = p.status;
-    x["impacts"] = p.impacts;
-    x["collapse_mode"] = p.collapse_mode ? json(*p.collapse_mode) : json(nullptr);
-    x["t_failure"] = p.t_failure ? json(*p.t_failure) : json(nullptr);
-    arr.push_back(x);
-    ++counts[p.motion];
-  }
-  json c;
-  for (const char* m : kMotions) c[m] = counts[m];
-  j["counts"] = c;
-  j["points"] = arr;
+  j["counts"] = chaos_counts_json(pts);
+  j["points"] = chaos_points_json(pts);
   TrajectoryTarget table(f.out, f.plot);
-  if (table.file) {
-    std::ostream& os = table.file->stream();
-    os << "beta,omega,motion,exponent,exponent_nondim,exponent_second_half,status,impacts,collapse_mode,t_failure\n";
-    char buf[512];
-    for (const ChaosPoint& p : pts) {
-      std::snprintf(buf, sizeof buf, "%.17g,%.17g,%s,%.17g,%.17g,%.17g,%s,%ld,", p.beta, p.omega, p.motion.c_str(),
-                    p.exponent, p.exponent_nondim, p.exponent_second_half, p.status.c_str(), p.impacts);
-      os << buf;
-      if (p.collapse_mode) os << *p.collapse_mode;
-      os << ',';
-      if (p.t_failure) {
-        std::snprintf(buf, sizeof buf, "%.17g", *p.t_failure);
-        os << buf;
-      }
-      os << '\n';
-    }
-  }
+  if (table.file) write_chaos_csv(table.file->stream(), pts);
   const std::string title = f.m.model + (f.m.preset.empty() ? "" : " " + f.m.preset) + ": largest Lyapunov exponent";
   table.figures_and_clean(
       {{"plot_chaos_map.py", f.plot, {"--title", title, "--threshold", std::to_string(o.threshold)}}});
@@ -129,7 +90,7 @@ void run(const CLI::App& s, const ChaosMapFlags& f) {
   if (f.json) emit_json(j, "-");
   if (!f.json && !f.quiet) {
     std::printf("%zu points:", pts.size());
-    for (const char* m : kMotions) std::printf(" %ld %s", counts[m], m);
+    for (const std::string& m : chaos_motions()) std::printf(" %ld %s", j["counts"][m].get<long>(), m.c_str());
     std::printf("\n");
   }
 }

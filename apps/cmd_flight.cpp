@@ -126,6 +126,46 @@ struct BoundaryFlags {
   OutputFlags out;
 };
 
+// The first-impact criteria of k_high (--high-criterion; default both for ic1, else ihor2).
+std::vector<FirstImpact> high_criteria(const std::string& flag, const IcChoice& ic) {
+  const std::string high = flag.empty() ? (ic.is_ic1() ? "both" : "ihor2") : flag;
+  if (high == "both") {
+    if (!ic.is_ic1()) throw UsageError("high-criterion = both needs ic1 (w_negative applies to ic1 only)");
+    return {FirstImpact::WNegative, FirstImpact::IhorBelow2};
+  }
+  if (high == "w_negative" || high == "ihor2") {
+    const FirstImpact c = parse_first_impact(high);
+    if (c == FirstImpact::WNegative && !ic.is_ic1())
+      throw UsageError("high-criterion = w_negative applies to ic1 only; use ihor2 for " + ic.name());
+    return {c};
+  }
+  if (high != "none") throw UsageError("high-criterion = '" + high + "' is not one of: w_negative, ihor2, both, none");
+  return {};
+}
+
+struct BoundaryRow {
+  BoundaryResult kmin;
+  std::vector<CurvePoint> crit, hi;
+};
+
+void print_boundaries(const std::vector<double>& rs, const std::vector<BoundaryRow>& rows, const std::vector<long>& ns,
+                      const std::vector<FirstImpact>& crits) {
+  std::printf("%-10s %-14s", "r", "k_min");
+  for (long n : ns) std::printf(" %-14s", ("k_crit_" + std::to_string(n)).c_str());
+  for (auto c : crits) std::printf(" %-14s", (std::string("k_high_") + to_string(c)).c_str());
+  std::printf("\n");
+  auto show = [](const BoundaryResult& b) {
+    std::printf(" %-14s", b.found() ? num(b.value).substr(0, 12).c_str() : to_string(b.status));
+  };
+  for (std::size_t i = 0; i < rs.size(); ++i) {
+    std::printf("%-10.4g", rs[i]);
+    show(rows[i].kmin);
+    for (const auto& c : rows[i].crit) show(c.result);
+    for (const auto& c : rows[i].hi) show(c.result);
+    std::printf("\n");
+  }
+}
+
 void run_boundary(const BoundaryFlags& f) {
   require_range("mu", f.mu, 0.0, kMuMax);
   check_r_range(f.r_min, f.r_max);
@@ -143,26 +183,11 @@ void run_boundary(const BoundaryFlags& f) {
     if (n != std::floor(n)) throw UsageError("n = " + num(n) + " must be an integer >= 1");
     ns.push_back(long(n));
   }
-  std::string high = f.high.empty() ? (ic.is_ic1() ? "both" : "ihor2") : f.high;
-  std::vector<FirstImpact> crits;
-  if (high == "both") {
-    if (!ic.is_ic1()) throw UsageError("high-criterion = both needs ic1 (w_negative applies to ic1 only)");
-    crits = {FirstImpact::WNegative, FirstImpact::IhorBelow2};
-  } else if (high == "w_negative" || high == "ihor2") {
-    crits = {parse_first_impact(high)};
-    if (crits[0] == FirstImpact::WNegative && !ic.is_ic1())
-      throw UsageError("high-criterion = w_negative applies to ic1 only; use ihor2 for " + ic.name());
-  } else if (high != "none") {
-    throw UsageError("high-criterion = '" + high + "' is not one of: w_negative, ihor2, both, none");
-  }
+  const std::vector<FirstImpact> crits = high_criteria(f.high, ic);
   const auto rs = f.points == 1 ? std::vector<double>{f.r_min} : log_grid(f.r_min, f.r_max, f.points);
 
-  struct Row {
-    BoundaryResult kmin;
-    std::vector<CurvePoint> crit, hi;
-  };
-  const auto rows = parallel_map<Row>(rs.size(), f.out.threads, [&](std::size_t i) {
-    Row row;
+  const auto rows = parallel_map<BoundaryRow>(rs.size(), f.out.threads, [&](std::size_t i) {
+    BoundaryRow row;
     row.kmin = k_min(rs[i], f.mu, ic);
     for (long n : ns) row.crit.push_back(k_critical(rs[i], f.mu, ic, n, f.run, f.search));
     for (auto c : crits) row.hi.push_back(k_high(rs[i], f.mu, ic, c, f.run, f.search));
@@ -177,7 +202,7 @@ void run_boundary(const BoundaryFlags& f) {
   for (auto c : crits) t.columns.push_back(std::string("k_high_") + to_string(c) + "_status");
   json points = json::array();
   for (std::size_t i = 0; i < rs.size(); ++i) {
-    const Row& row = rows[i];
+    const BoundaryRow& row = rows[i];
     std::vector<std::string> cells{num(rs[i]), num(cell(row.kmin))};
     for (const auto& c : row.crit) cells.push_back(num(cell(c.result)));
     for (const auto& c : row.hi) cells.push_back(num(cell(c.result)));
@@ -216,22 +241,7 @@ void run_boundary(const BoundaryFlags& f) {
   json summary = meta;
   summary["points"] = points;
   finish(f.out, csv_target(f.out, "flight-boundary"), t, meta, "plot_flight.py", {"boundary"}, summary);
-  if (f.out.json_out != "-") {
-    std::printf("%-10s %-14s", "r", "k_min");
-    for (long n : ns) std::printf(" %-14s", ("k_crit_" + std::to_string(n)).c_str());
-    for (auto c : crits) std::printf(" %-14s", (std::string("k_high_") + to_string(c)).c_str());
-    std::printf("\n");
-    auto show = [](const BoundaryResult& b) {
-      std::printf(" %-14s", b.found() ? num(b.value).substr(0, 12).c_str() : to_string(b.status));
-    };
-    for (std::size_t i = 0; i < rs.size(); ++i) {
-      std::printf("%-10.4g", rs[i]);
-      show(rows[i].kmin);
-      for (const auto& c : rows[i].crit) show(c.result);
-      for (const auto& c : rows[i].hi) show(c.result);
-      std::printf("\n");
-    }
-  }
+  if (f.out.json_out != "-") print_boundaries(rs, rows, ns, crits);
 }
 
 void add_boundary(CLI::App& app) {

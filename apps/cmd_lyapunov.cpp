@@ -8,6 +8,7 @@
 #include <iomanip>
 #include <memory>
 
+#include "blockdyn/analysis/forced/forced_lyapunov_report.hpp"
 #include "blockdyn/analysis/forced/forced_lyapunov.hpp"
 #include "blockdyn/analysis/forced/survival_map.hpp"
 #include "blockdyn/analysis/winkler/lyapunov_block.hpp"
@@ -53,7 +54,7 @@ void run_forced(const CLI::App& s, LyapunovFlags& f) {
   require_writable("json-out", f.json_out);
   require_writable("csv", f.csv);
   require_writable("twin-csv", f.twin_csv);
-  const ForcedModel fm = build_forced_model(s, f.fm);
+  const ForcedModel fm = build_forced_model(s);
   if (fm.description.contains("contact") && fm.description["contact"] == "rigid")
     throw UsageError("--contact rigid: no Lyapunov exponent (Moreau-Jean time-stepping has no event-located orbit "
                      "to linearise); use --contact deformable");
@@ -112,67 +113,16 @@ void run_forced(const CLI::App& s, LyapunovFlags& f) {
   }
   if (!f.twin_csv.empty()) {
     AtomicFile tf(f.twin_csv);
-    auto& os = tf.stream();
-    os << "t,separation,predicted\n" << std::setprecision(17);
-    for (const auto& x : r.twin) {
-      const double pred = std::isfinite(tl.exponent) && !r.twin.empty()
-                              ? r.twin.front().separation * std::exp(tl.exponent * (x.t - r.twin.front().t))
-                              : NAN;
-      os << x.t << ',' << x.separation << ',' << pred << '\n';
-    }
+    write_twin_csv(tf.stream(), r);
     tf.commit();
   }
-  using json = nlohmann::ordered_json;
-  auto num = [](double v) { return std::isfinite(v) ? json(v) : json(nullptr); };
-  json j;
-  j["run_info"] = run_info();
-  j["model"] = fm.description;
-  j["alpha"] = fm.alpha;
-  j["p"] = fm.p;
-  j["ground"] = to_json(g);
-  if (seed_form) j["excitation"] = {{"form", "a_H = beta alpha g cos(omega p t + phase)"}, {"beta", f.beta}, {"omega", f.omega}, {"phase", f.phase}};
-  j["integrator"] = to_json(o.integrator);
-  j["options"] = {{"method", "tangent"}, {"t_end", o.t_end}, {"t_transient", o.t_transient}, {"interval", o.interval},
-                  {"twin_d0", o.twin_d0}, {"metric", r.metric}};
-  j["exponent"] = num(tl.exponent);
-  j["exponent_nondim"] = num(tl.exponent / fm.p);
-  j["exponent_second_half"] = num(r.exponent_second_half);
-  j["status"] = to_string(tl.status);
-  j["superstable"] = tl.status == TangentStatus::Superstable;
-  j["note"] = tl.note;
-  j["t_tangent"] = num(tl.t_tangent);
-  j["t_final"] = tl.t_final;
-  j["renormalisations"] = tl.renormalisations;
-  j["impacts"] = r.impacts;
-  j["collapse_mode"] = r.collapse_mode ? json(*r.collapse_mode) : json(nullptr);
-  j["t_failure"] = r.t_failure ? json(*r.t_failure) : json(nullptr);
-  j["saltation"] = {{"events", tl.stats.saltations}, {"one_sided", tl.stats.one_sided}, {"unmatched", tl.stats.unmatched},
-                    {"grazing", tl.stats.grazing}, {"max_gain", tl.stats.max_gain}};
-  json h = json::array();
-  const std::size_t n = tl.history.size(), stride = std::max<std::size_t>(1, n / 20);
-  for (std::size_t i = stride - 1; i < n; i += stride) h.push_back({{"t", tl.history[i].t}, {"estimate", tl.history[i].estimate}});
-  j["history_coarse"] = h;
-  if (!r.twin.empty()) {
-    // Sensitive dependence: when the two orbits' separation first exceeds 1e-3 (metric units),
-    // against the time the exponent predicts for that growth.
-    json tw;
-    tw["d0"] = o.twin_d0;
-    tw["t_start"] = r.twin.front().t;
-    tw["separation_final"] = r.twin.back().separation;
-    tw["max_separation"] = 0.0;
-    double mx = 0;
-    json t_sep = nullptr;
-    for (const auto& x : r.twin) {
-      mx = std::fmax(mx, x.separation);
-      if (t_sep.is_null() && x.separation > 1e-3) t_sep = x.t - r.twin.front().t;
-    }
-    tw["max_separation"] = mx;
-    tw["time_to_1e-3"] = t_sep;
-    tw["predicted_time_to_1e-3"] =
-        tl.exponent > 0 ? json(std::log(1e-3 / o.twin_d0) / tl.exponent) : json(nullptr);
-    tw["note"] = r.twin_note;
-    j["sensitivity"] = tw;
-  }
+  const nlohmann::ordered_json excitation =
+      seed_form ? nlohmann::ordered_json{{"form", "a_H = beta alpha g cos(omega p t + phase)"},
+                                         {"beta", f.beta},
+                                         {"omega", f.omega},
+                                         {"phase", f.phase}}
+                : nlohmann::ordered_json(nullptr);
+  const auto j = forced_lyapunov_summary(fm, g, excitation, o, r);
   if (!emit_summary(j, f.json, f.json_out)) {
     std::printf("largest Lyapunov exponent: %.6g 1/s = %.6g p (%s, tangent + saltation, t = %.6g, %ld renormalisations, %ld impacts)\n",
                 tl.exponent, tl.exponent / fm.p, to_string(tl.status), tl.t_final, tl.renormalisations, r.impacts);

@@ -7,12 +7,10 @@
 #include <cstdio>
 #include <fstream>
 #include <memory>
+#include <optional>
 #include <sstream>
 
-#include "blockdyn/analysis/forced/housner_periodic_orbits.hpp"
-#include "blockdyn/analysis/forced/linear_rocking_orbits.hpp"
-#include "blockdyn/analysis/forced/orbit_continuation.hpp"
-#include "blockdyn/analysis/forced/orbit_region_map.hpp"
+#include "blockdyn/analysis/forced/periodic_orbit_study.hpp"
 #include "blockdyn/io/atomic_file.hpp"
 #include "blockdyn/io/json_io.hpp"
 #include "blockdyn/io/progress.hpp"
@@ -42,33 +40,28 @@ struct OrbitFlags {
   bool json_flag = false, quiet = false;
 };
 
-json cx(const std::complex<double>& z) { return json::array({z.real(), z.imag()}); }
-json num(double v) { return std::isfinite(v) ? json(v) : json(nullptr); }
-
-json orbit_json(const PeriodicOrbit& o, const RockingForcing& f) {
-  json j;
-  j["phase"] = o.phase;
-  j["velocity"] = o.velocity;
-  j["velocity_si"] = o.velocity * f.alpha() * f.p();
-  j["period"] = o.period;
-  j["max_abs_rotation"] = o.max_abs_rotation;
-  j["max_abs_rotation_over_alpha"] = o.max_abs_rotation / f.alpha();
-  j["multipliers"] = {cx(o.multipliers[0]), cx(o.multipliers[1])};
-  j["multipliers_fd"] = {cx(o.multipliers_fd[0]), cx(o.multipliers_fd[1])};
-  j["stable"] = o.stable;
-  j["lyapunov_exponent"] = o.lyapunov_exponent;
-  j["iterations"] = o.iterations;
-  j["residual"] = o.residual;
-  json imp = json::array();
-  for (const auto& i : o.impacts)
-    imp.push_back({{"t", i.t}, {"phase", i.phase}, {"rate_before", i.rate_before}, {"rate_after", i.rate_after}});
-  j["impacts"] = imp;
-  return j;
+// Appends the members of `part` to `j`, in order.
+void merge(json& j, const json& part) {
+  for (auto it = part.begin(); it != part.end(); ++it) j[it.key()] = it.value();
 }
 
-void run(const CLI::App& s, const OrbitFlags& f) {
-  if (!given(s, "--width") || !given(s, "--height")) throw UsageError("--width and --height are needed");
+void emit(const json& j, const OrbitFlags& f) {
+  if (!f.json_out.empty()) emit_json(j, f.json_out);
+  if (f.json_flag) emit_json(j, "-");
+}
+
+struct Study {
   RockingForcing rf;
+  OrbitType type;
+  ShootingOptions so;
+  std::optional<std::array<double, 2>> guess;
+  std::string title;
+};
+
+Study parse_study(const CLI::App& s, const OrbitFlags& f) {
+  if (!given(s, "--width") || !given(s, "--height")) throw UsageError("--width and --height are needed");
+  Study st;
+  RockingForcing& rf = st.rf;
   rf.shape = BlockShape{f.width, f.height, 1.0, f.g};
   rf.restitution = f.restitution;
   try {
@@ -86,7 +79,7 @@ void run(const CLI::App& s, const OrbitFlags& f) {
   require_range("omega", f.omega, 0, 1e4, false);
   rf.omega = f.omega;
   if (f.cycle.size() != 2) throw UsageError("--cycle must be m,n (two integers)");
-  OrbitType type{f.cycle[0], f.cycle[1], !f.asymmetric && f.cycle[0] % 2 == 1 && f.cycle[1] % 2 == 1};
+  st.type = OrbitType{f.cycle[0], f.cycle[1], !f.asymmetric && f.cycle[0] % 2 == 1 && f.cycle[1] % 2 == 1};
   require_range("cycle m", f.cycle[0], 1, 50);
   require_range("cycle n", f.cycle[1], 1, 50);
   require_range("rtol", f.integ.rtol, 0, 1e-3, false);
@@ -94,188 +87,118 @@ void run(const CLI::App& s, const OrbitFlags& f) {
   const bool guess_given = given(s, "--guess-phase") || given(s, "--guess-velocity");
   if (guess_given && !(given(s, "--guess-phase") && given(s, "--guess-velocity")))
     throw UsageError("--guess-phase and --guess-velocity go together");
-  if (guess_given) require_range("guess-velocity", f.guess_velocity, 0, 1e3, false);
+  if (guess_given) {
+    require_range("guess-velocity", f.guess_velocity, 0, 1e3, false);
+    st.guess = std::array<double, 2>{f.guess_phase, f.guess_velocity};
+  }
   if (f.region && !f.cont.empty()) throw UsageError("give --region or --continue, not both");
   require_writable("out", f.out);
   require_writable("plot", f.plot);
   require_writable("json-out", f.json_out);
-  ShootingOptions so;
-  so.integrator = f.integ;
+  st.so.integrator = f.integ;
+  const OrbitType& type = st.type;
+  st.title = "housner b/h=" + std::to_string(f.width / f.height).substr(0, 5) + " e=" + std::to_string(rf.e()).substr(0, 5) +
+             " (" + std::to_string(type.m) + "," + std::to_string(type.n) + ")" + (type.symmetric ? " symmetric" : "");
+  return st;
+}
 
-  json j;
-  j["run"] = run_info();
-  j["model"] = {{"model", "housner"},    {"width", f.width}, {"height", f.height}, {"g", f.g},
-                {"restitution", rf.e()}, {"alpha", alpha},   {"p", rf.p()}};
-  j["forcing"] =
-      "a_H = K_s g sin(Omega t + phi), Omega = omega p; phase = Omega t + phi mod 2 pi at an impact onto "
-      "theta > 0, velocity = theta'/(alpha p) right after it";
-  j["convention"] = {
-      {"cycle", {type.m, type.n}},
-      {"seed_002", "(m, n): 2m impacts per n forcing periods"},
-      {"seed_001", {{"n", type.n}, {"k", 2 * type.m}, {"meaning", "k impacts per period 2 pi n / omega"}}},
-      {"symmetric", type.symmetric}};
-  j["integrator"] = to_json(f.integ);
-  const std::string title_base = "housner b/h=" + std::to_string(f.width / f.height).substr(0, 5) +
-                                 " e=" + std::to_string(rf.e()).substr(0, 5) + " (" + std::to_string(type.m) + "," +
-                                 std::to_string(type.n) + ")" + (type.symmetric ? " symmetric" : "");
+// The figures' closed-form overlay: alpha, e, n, whether the linear fold applies (and the point).
+std::string linear_overlay(const Study& st, bool with_point) {
+  std::ostringstream extra;
+  extra << st.rf.alpha() << ',' << st.rf.e() << ',' << st.type.n << ',' << (st.type.symmetric && st.type.m == 1 ? 1 : 0);
+  if (with_point) extra << ',' << st.rf.ks << ',' << st.rf.omega;
+  return extra.str();
+}
 
-  if (f.region) {
-    OrbitRegionOptions ro = f.reg;
-    if (given(s, "--beta-min") || given(s, "--beta-max")) {
-      if (given(s, "--ks-min") || given(s, "--ks-max"))
-        throw UsageError("give --ks-min/max or --beta-min/max, not both");
-      ro.ks_min = f.beta_min * alpha;
-      ro.ks_max = f.beta_max * alpha;
-    }
-    ro.shooting = so;
-    require_range("threads", ro.threads, 0, 1024);
-    try {
-      validate(ro);
-    } catch (const std::invalid_argument& e) {
-      throw UsageError(e.what());
-    }
-    const std::size_t n = std::size_t(ro.ks_points) * ro.omega_points;
-    Progress bar("periodic-orbits", n, 0, f.quiet ? ProgressMode::None : parse_progress_mode(f.progress));
-    std::size_t shown = 0;
-    const auto pts = orbit_region_map(rf, type, ro, [&](std::size_t d) {
-      for (; shown < d; ++shown) bar.advance();
-    });
-    bar.finish();
-    json arr = json::array();
-    long exist = 0, stable = 0;
-    for (const auto& p : pts) {
-      arr.push_back({{"ks", p.ks},
-                     {"beta", p.ks / alpha},
-                     {"omega", p.omega},
-                     {"orbits", p.orbits},
-                     {"stable", p.stable},
-                     {"phase", num(p.phase)},
-                     {"velocity", num(p.velocity)},
-                     {"max_multiplier", num(p.max_multiplier)},
-                     {"linear_orbits", p.linear_orbits < 0 ? json(nullptr) : json(p.linear_orbits)},
-                     {"linear_stable", p.linear_stable < 0 ? json(nullptr) : json(p.linear_stable)}});
-      exist += p.orbits > 0;
-      stable += p.stable > 0;
-    }
-    j["mode"] = "region";
-    j["points"] = arr;
-    j["counts"] = {{"points", pts.size()}, {"with_orbits", exist}, {"with_stable_orbits", stable}};
-    if (type.symmetric && type.m == 1) {
-      json fold = json::array();
-      for (int k = 0; k <= 200; ++k) {
-        const double w = ro.omega_min + (ro.omega_max - ro.omega_min) * k / 200.0;
-        fold.push_back({{"omega", w}, {"ks", alpha * linear_symmetric_fold_beta(w, rf.e(), type.n)}});
-      }
-      j["linear_fold"] = fold;
-    }
-    TrajectoryTarget table(f.out, f.plot);
-    if (table.file) {
-      std::ostream& os = table.file->stream();
-      os << "ks,beta,omega,orbits,stable,phase,velocity,max_multiplier,linear_orbits,linear_stable\n";
-      char buf[512];
-      for (const auto& p : pts) {
-        std::snprintf(buf, sizeof buf, "%.17g,%.17g,%.17g,%d,%d,%.17g,%.17g,%.17g,%d,%d\n", p.ks, p.ks / alpha, p.omega,
-                      p.orbits, p.stable, p.phase, p.velocity, p.max_multiplier, p.linear_orbits, p.linear_stable);
-        os << buf;
-      }
-    }
-    std::ostringstream extra;
-    extra << alpha << ',' << rf.e() << ',' << type.n << ',' << (type.symmetric && type.m == 1 ? 1 : 0);
-    table.figures_and_clean(
-        {{"plot_periodic_orbits.py", f.plot, {"--kind", "region", "--title", title_base, "--linear", extra.str()}}});
-    if (!f.json_out.empty()) emit_json(j, f.json_out);
-    if (f.json_flag) emit_json(j, "-");
-    if (!f.json_flag && !f.quiet)
-      std::printf("%zu points: %ld with orbits, %ld with a stable orbit\n", pts.size(), exist, stable);
-    return;
+void run_region(const CLI::App& s, const OrbitFlags& f, const Study& st, json j) {
+  OrbitRegionOptions ro = f.reg;
+  if (given(s, "--beta-min") || given(s, "--beta-max")) {
+    if (given(s, "--ks-min") || given(s, "--ks-max")) throw UsageError("give --ks-min/max or --beta-min/max, not both");
+    ro.ks_min = f.beta_min * st.rf.alpha();
+    ro.ks_max = f.beta_max * st.rf.alpha();
   }
-
-  // Orbits at the point (from the guess, or from the closed form / runs from rest).
-  std::vector<std::array<double, 2>> guesses;
-  if (guess_given)
-    guesses.push_back({f.guess_phase, f.guess_velocity});
-  else
-    guesses = orbit_guesses(rf, type);
-  const auto orbits = find_periodic_orbits(rf, type, guesses, so);
-  j["ks"] = rf.ks;
-  j["beta"] = rf.ks / alpha;
-  j["omega"] = rf.omega;
-  j["guesses"] = guesses.size();
-  json oj = json::array();
-  for (const auto& o : orbits) oj.push_back(orbit_json(o, rf));
-  j["orbits"] = oj;
-  if (type.symmetric && type.m == 1) {
-    json lj = json::array();
-    for (const auto& l : linear_symmetric_orbits(rf.ks / alpha, rf.omega, rf.e(), type.n))
-      lj.push_back({{"phase", l.phase},
-                    {"velocity", l.velocity},
-                    {"valid", l.valid},
-                    {"multipliers", {cx(l.multipliers[0]), cx(l.multipliers[1])}}});
-    j["linear_theory"] = lj;
-    j["linear_fold_ks"] = alpha * linear_symmetric_fold_beta(rf.omega, rf.e(), type.n);
+  ro.shooting = st.so;
+  require_range("threads", ro.threads, 0, 1024);
+  try {
+    validate(ro);
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(e.what());
   }
+  const std::size_t n = std::size_t(ro.ks_points) * ro.omega_points;
+  Progress bar("periodic-orbits", n, 0, f.quiet ? ProgressMode::None : parse_progress_mode(f.progress));
+  std::size_t shown = 0;
+  const OrbitRegion r = orbit_region(st.rf, st.type, ro, [&](std::size_t d) {
+    for (; shown < d; ++shown) bar.advance();
+  });
+  bar.finish();
+  j["mode"] = "region";
+  merge(j, r.summary);
+  TrajectoryTarget table(f.out, f.plot);
+  if (table.file) write_region_csv(table.file->stream(), st.rf, r.points);
+  table.figures_and_clean({{"plot_periodic_orbits.py",
+                            f.plot,
+                            {"--kind", "region", "--title", st.title, "--linear", linear_overlay(st, false)}}});
+  emit(j, f);
+  if (!f.json_flag && !f.quiet)
+    std::printf("%zu points: %ld with orbits, %ld with a stable orbit\n", r.points.size(), r.with_orbits,
+                r.with_stable_orbits);
+}
 
-  if (f.cont.empty()) {
-    j["mode"] = "orbits";
-    TrajectoryTarget table(f.out, "");
-    if (table.file) {
-      std::ostream& os = table.file->stream();
-      os << "orbit,phase,velocity,velocity_si,period,max_abs_rotation,mu1_re,mu1_im,mu2_re,mu2_im,stable,lyapunov_"
-            "exponent\n";
-      char buf[512];
-      for (std::size_t k = 0; k < orbits.size(); ++k) {
-        const auto& o = orbits[k];
-        std::snprintf(buf, sizeof buf, "%zu,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%d,%.17g\n", k,
-                      o.phase, o.velocity, o.velocity * alpha * rf.p(), o.period, o.max_abs_rotation,
-                      o.multipliers[0].real(), o.multipliers[0].imag(), o.multipliers[1].real(),
-                      o.multipliers[1].imag(), int(o.stable), o.lyapunov_exponent);
-        os << buf;
-      }
-      table.figures_and_clean({});
-    }
-    if (!f.plot.empty()) {
-      // The orbits' trajectories over one period, for the figure.
-      const std::string tmp = "/tmp/blockdyn-orbits-" + std::to_string(::getpid()) + ".csv";
-      RemoveOnSignal cleanup(tmp);
-      {
-        AtomicFile tf(tmp);
-        auto& os = tf.stream();
-        os << "orbit,stable,t,theta,rate\n";
-        char buf[256];
-        for (std::size_t k = 0; k < orbits.size(); ++k) {
-          const OrbitSamples sm = orbit_trajectory(rf, orbits[k]);
-          for (std::size_t i = 0; i < sm.t.size(); ++i) {
-            std::snprintf(buf, sizeof buf, "%zu,%d,%.17g,%.17g,%.17g\n", k, int(orbits[k].stable), sm.t[i], sm.theta[i],
-                          sm.rate[i]);
-            os << buf;
-          }
-        }
-        tf.commit();
-      }
-      char title[256];
-      std::snprintf(title, sizeof title, "%s, K_s=%.4g g, omega=%.4g", title_base.c_str(), rf.ks, rf.omega);
-      try {
-        run_python("plot_periodic_orbits.py", {tmp, f.plot, "--kind", "orbits", "--title", title});
-      } catch (...) {
-        std::remove(tmp.c_str());
-        throw;
-      }
-      std::remove(tmp.c_str());
-    }
-    if (!f.json_out.empty()) emit_json(j, f.json_out);
-    if (f.json_flag) emit_json(j, "-");
-    if (!f.json_flag && !f.quiet) {
-      std::printf("%zu orbit(s) of type (%d,%d)%s at K_s = %g g (beta = %g), omega = %g:\n", orbits.size(), type.m,
-                  type.n, type.symmetric ? " symmetric" : "", rf.ks, rf.ks / alpha, rf.omega);
-      for (const auto& o : orbits)
-        std::printf("  phase %.6f  velocity %.6f  |mu| %.4g %.4g  %s  max|theta|/alpha %.4g\n", o.phase, o.velocity,
-                    std::abs(o.multipliers[0]), std::abs(o.multipliers[1]), o.stable ? "stable" : "unstable",
-                    o.max_abs_rotation / alpha);
-    }
-    return;
+void plot_orbits(const OrbitFlags& f, const Study& st, const std::vector<PeriodicOrbit>& orbits) {
+  // The orbits' trajectories over one period, for the figure.
+  const std::string tmp = "/tmp/blockdyn-orbits-" + std::to_string(::getpid()) + ".csv";
+  RemoveOnSignal cleanup(tmp);
+  {
+    AtomicFile tf(tmp);
+    write_orbit_trajectories_csv(tf.stream(), st.rf, orbits);
+    tf.commit();
   }
+  char title[256];
+  std::snprintf(title, sizeof title, "%s, K_s=%.4g g, omega=%.4g", st.title.c_str(), st.rf.ks, st.rf.omega);
+  try {
+    run_python("plot_periodic_orbits.py", {tmp, f.plot, "--kind", "orbits", "--title", title});
+  } catch (...) {
+    std::remove(tmp.c_str());
+    throw;
+  }
+  std::remove(tmp.c_str());
+}
 
-  // Continuation of every orbit found, both ways.
+void run_orbits(const OrbitFlags& f, const Study& st, const std::vector<PeriodicOrbit>& orbits, json j) {
+  j["mode"] = "orbits";
+  TrajectoryTarget table(f.out, "");
+  if (table.file) {
+    write_orbits_csv(table.file->stream(), st.rf, orbits);
+    table.figures_and_clean({});
+  }
+  if (!f.plot.empty()) plot_orbits(f, st, orbits);
+  emit(j, f);
+  if (!f.json_flag && !f.quiet) {
+    const double alpha = st.rf.alpha();
+    std::printf("%zu orbit(s) of type (%d,%d)%s at K_s = %g g (beta = %g), omega = %g:\n", orbits.size(), st.type.m,
+                st.type.n, st.type.symmetric ? " symmetric" : "", st.rf.ks, st.rf.ks / alpha, st.rf.omega);
+    for (const auto& o : orbits)
+      std::printf("  phase %.6f  velocity %.6f  |mu| %.4g %.4g  %s  max|theta|/alpha %.4g\n", o.phase, o.velocity,
+                  std::abs(o.multipliers[0]), std::abs(o.multipliers[1]), o.stable ? "stable" : "unstable",
+                  o.max_abs_rotation / alpha);
+  }
+}
+
+void print_branches(const json& bj, int count, std::size_t orbits) {
+  std::printf("%d branch(es) from %zu orbit(s):\n", count, orbits);
+  for (const auto& b : bj) {
+    std::printf("  branch %d (direction %+d): %zu points, end: %s\n", b["branch"].get<int>(), b["direction"].get<int>(),
+                b["points"].size(), b["end"].get<std::string>().c_str());
+    for (const auto& p : b["points"])
+      if (!p["event"].get<std::string>().empty())
+        std::printf("    %s at K_s = %.6g g (beta %.6g), omega = %.6g, velocity %.6g\n",
+                    p["event"].get<std::string>().c_str(), p["ks"].get<double>(), p["beta"].get<double>(),
+                    p["omega"].get<double>(), p["velocity"].get<double>());
+  }
+}
+
+void run_continuation(const CLI::App& s, const OrbitFlags& f, const Study& st, const std::vector<PeriodicOrbit>& orbits,
+                      json j) {
   ContinuationOptions co;
   co.parameter = f.cont;
   co.min = f.cont_min;
@@ -286,7 +209,7 @@ void run(const CLI::App& s, const OrbitFlags& f) {
   co.ds_max = std::fmax(co.ds, co.ds_max);
   co.ds_min = std::fmin(co.ds_min, co.ds);
   co.max_points = f.max_points;
-  co.shooting = so;
+  co.shooting = st.so;
   try {
     validate(co);
   } catch (const std::invalid_argument& e) {
@@ -295,76 +218,27 @@ void run(const CLI::App& s, const OrbitFlags& f) {
   if (orbits.empty())
     throw std::runtime_error("no orbit found at the start point to continue (give --guess-phase/--guess-velocity)");
   j["mode"] = "continue";
-  j["continuation"] = {{"parameter", co.parameter},
-                       {"min", co.min},
-                       {"max", co.max},
-                       {"ds", co.ds},
-                       {"max_points", co.max_points},
-                       {"multipliers", "eigenvalues of the shooting Jacobian"}};
-  json bj = json::array();
-  struct Row {
-    int branch;
-    BranchPoint p;
-  };
-  std::vector<Row> rows;
-  int bi = 0;
-  for (const auto& o : orbits) {
-    for (int dir : {-1, 1}) {
-      co.direction = dir;
-      const Branch b = continue_orbit(rf, type, o.phase, o.velocity, co);
-      json pts = json::array();
-      for (const auto& p : b.points) {
-        pts.push_back({{"ks", p.ks},
-                       {"beta", p.ks / alpha},
-                       {"omega", p.omega},
-                       {"phase", p.phase},
-                       {"velocity", p.velocity},
-                       {"multipliers", {cx(p.multipliers[0]), cx(p.multipliers[1])}},
-                       {"stable", p.stable},
-                       {"event", p.event}});
-        rows.push_back({bi, p});
-      }
-      bj.push_back(
-          {{"branch", bi}, {"from_orbit", &o - orbits.data()}, {"direction", dir}, {"end", b.end}, {"points", pts}});
-      ++bi;
-    }
-  }
-  j["branches"] = bj;
+  const OrbitBranches b = continue_orbits(st.rf, st.type, orbits, co);
+  merge(j, b.summary);
   TrajectoryTarget table(f.out, f.plot);
-  if (table.file) {
-    std::ostream& os = table.file->stream();
-    os << "branch,ks,beta,omega,phase,velocity,mu1_abs,mu2_abs,mu1_re,mu1_im,mu2_re,mu2_im,stable,event\n";
-    char buf[512];
-    for (const Row& r : rows) {
-      const BranchPoint& p = r.p;
-      std::snprintf(buf, sizeof buf, "%d,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%d,%s\n",
-                    r.branch, p.ks, p.ks / alpha, p.omega, p.phase, p.velocity, std::abs(p.multipliers[0]),
-                    std::abs(p.multipliers[1]), p.multipliers[0].real(), p.multipliers[0].imag(),
-                    p.multipliers[1].real(), p.multipliers[1].imag(), int(p.stable), p.event.c_str());
-      os << buf;
-    }
-  }
-  std::ostringstream extra;
-  extra << alpha << ',' << rf.e() << ',' << type.n << ',' << (type.symmetric && type.m == 1 ? 1 : 0) << ',' << rf.ks
-        << ',' << rf.omega;
-  table.figures_and_clean(
-      {{"plot_periodic_orbits.py",
-        f.plot,
-        {"--kind", "branches", "--parameter", co.parameter, "--title", title_base, "--linear", extra.str()}}});
-  if (!f.json_out.empty()) emit_json(j, f.json_out);
-  if (f.json_flag) emit_json(j, "-");
-  if (!f.json_flag && !f.quiet) {
-    std::printf("%d branch(es) from %zu orbit(s):\n", bi, orbits.size());
-    for (const auto& b : bj) {
-      std::printf("  branch %d (direction %+d): %zu points, end: %s\n", b["branch"].get<int>(),
-                  b["direction"].get<int>(), b["points"].size(), b["end"].get<std::string>().c_str());
-      for (const auto& p : b["points"])
-        if (!p["event"].get<std::string>().empty())
-          std::printf("    %s at K_s = %.6g g (beta %.6g), omega = %.6g, velocity %.6g\n",
-                      p["event"].get<std::string>().c_str(), p["ks"].get<double>(), p["beta"].get<double>(),
-                      p["omega"].get<double>(), p["velocity"].get<double>());
-    }
-  }
+  if (table.file) write_branches_csv(table.file->stream(), st.rf, b.rows);
+  table.figures_and_clean({{"plot_periodic_orbits.py",
+                            f.plot,
+                            {"--kind", "branches", "--parameter", co.parameter, "--title", st.title, "--linear",
+                             linear_overlay(st, true)}}});
+  emit(j, f);
+  if (!f.json_flag && !f.quiet) print_branches(b.summary["branches"], b.count, orbits.size());
+}
+
+void run(const CLI::App& s, const OrbitFlags& f) {
+  const Study st = parse_study(s, f);
+  json j = orbit_study_header(st.rf, st.type, st.so);
+  if (f.region) return run_region(s, f, st, std::move(j));
+  // Orbits at the point (from the guess, or from the closed form / runs from rest).
+  const OrbitsAtPoint at = orbits_at_point(st.rf, st.type, st.so, st.guess);
+  merge(j, at.summary);
+  if (f.cont.empty()) return run_orbits(f, st, at.orbits, std::move(j));
+  run_continuation(s, f, st, at.orbits, std::move(j));
 }
 
 void add(CLI::App& app) {

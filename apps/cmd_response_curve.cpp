@@ -44,6 +44,19 @@ std::vector<double> phi_axis(const CLI::App& s, const std::string& name, const s
   }
 }
 
+void plot_curve(const CurveFlags& f, const SurvivalOptions& o, const std::string& csv, const std::vector<double>& phi_s,
+                const std::vector<double>& phi_l, bool versus_phi) {
+  const bool assembly = f.m.model == "assembly";
+  std::string title = f.m.model + (f.m.preset.empty() ? "" : " " + f.m.preset) + ", " + o.excitation +
+                      (versus_phi ? ", omega = " + short_number(o.omega_min) : "");
+  if (assembly) {
+    title += ", " + f.m.contact + " law" + (f.m.columns_rock_only ? " (columns only rock)" : "");
+    if (phi_s.size() == 1) title += ", phi_s = " + short_number(phi_s[0]);
+    if (phi_l.size() == 1) title += ", phi_l = " + short_number(phi_l[0]);
+  }
+  run_python("plot_response_curve.py", {csv, f.plot, "--title", title, "--x", versus_phi ? "phi_l" : "omega"});
+}
+
 void run(const CLI::App& s, const CurveFlags& f) {
   SurvivalOptions o = f.o;
   if (o.betas.empty()) throw UsageError("--betas B1,B2,... is needed (the amplitudes, in units of alpha g)");
@@ -75,12 +88,15 @@ void run(const CLI::App& s, const CurveFlags& f) {
   require_writable("json-out", f.json_out);
   // One model per friction pair (phi_s outer), built before any point runs.
   std::vector<ForcedModel> models;
+  const Settings given_flags = settings_of(s);
   for (double ps : phi_s)
     for (double pl : phi_l) {
-      ForcedModelFlags mf = f.m;
-      mf.phi_s = ps;
-      mf.phi_l = pl;
-      models.push_back(build_forced_model(s, mf));
+      Settings m = given_flags;
+      if (f.m.model == "assembly") {
+        m.set("phi-s", Settings::exact(ps));
+        m.set("phi-l", Settings::exact(pl));
+      }
+      models.push_back(build_forced_model(m));
     }
   const ForcedModel& fm = models.front();
   const bool assembly = f.m.model == "assembly";
@@ -135,33 +151,8 @@ void run(const CLI::App& s, const CurveFlags& f) {
                "friction angles in deg";
   j["options"] = options;
   j["tolerances"] = fm.tolerances;
-  json arr = json::array();
-  const std::size_t c_ps = t.column("phi_s"), c_pl = t.column("phi_l");
-  for (const TableRow& r : t.rows) {
-    const SurvivalPoint p = survival_point_from(t, r);
-    json x = {{"beta", p.beta},
-              {"omega", p.omega},
-              {"theta_max_over_alpha", cell_double(r.cells[t.column("theta_max_over_alpha")])},
-              {"max_sliding_over_b", cell_double(r.cells[t.column("max_sliding_over_b")])},
-              {"motion", p.motion},
-              {"t_failure", p.t_failure ? json(*p.t_failure) : json(nullptr)}};
-    if (assembly) {
-      x["phi_s"] = cell_double(r.cells[c_ps]);
-      x["phi_l"] = cell_double(r.cells[c_pl]);
-    }
-    arr.push_back(x);
-  }
-  j["points"] = arr;
-  if (!f.plot.empty()) {
-    std::string title = f.m.model + (f.m.preset.empty() ? "" : " " + f.m.preset) + ", " + o.excitation +
-                        (versus_phi ? ", omega = " + short_number(o.omega_min) : "");
-    if (assembly) {
-      title += ", " + f.m.contact + " law" + (f.m.columns_rock_only ? " (columns only rock)" : "");
-      if (phi_s.size() == 1) title += ", phi_s = " + short_number(phi_s[0]);
-      if (phi_l.size() == 1) title += ", phi_l = " + short_number(phi_l[0]);
-    }
-    run_python("plot_response_curve.py", {out.csv(), f.plot, "--title", title, "--x", versus_phi ? "phi_l" : "omega"});
-  }
+  j["points"] = response_curve_points(t, assembly);
+  if (!f.plot.empty()) plot_curve(f, o, out.csv(), phi_s, phi_l, versus_phi);
   if (!f.json_out.empty()) emit_json(j, f.json_out);
   if (f.json) emit_json(j, "-");
   if (!f.json && !f.quiet) std::printf("%zu points %s\n", t.rows.size(), grid_run_note(res).c_str());

@@ -75,7 +75,7 @@ void run(const CLI::App& s, const SpectrumFlags& f) {
   require_writable("plot", f.plot);
   require_writable("plot-map", f.plot_map);
   require_writable("json-out", f.json_out);
-  const ForcedModel fm = build_forced_model(s, f.m);
+  const ForcedModel fm = build_forced_model(s);
   const double alpha = fm.alpha, p = fm.p;
   const double t_after = f.t_after;
   const PulseShape pulse = *shape;

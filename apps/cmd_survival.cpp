@@ -49,7 +49,7 @@ void run(const CLI::App& s, const SurvivalFlags& f) {
   const GridOutput out("--out", f.out, "survival", f.g, f.json_out);
   require_writable("plot", f.plot);
   require_writable("json-out", f.json_out);
-  const ForcedModel fm = build_forced_model(s, f.m);
+  const ForcedModel fm = build_forced_model(s);
   // The longest run the periods give (at the lowest frequency) within the runs' range, before
   // any file is made.
   if (o.periods > 0 && !(o.periods * 2 * M_PI / (o.omega_min * fm.p) <= 1e5))
@@ -98,26 +98,10 @@ void run(const CLI::App& s, const SurvivalFlags& f) {
   j["units"] = "a_H = beta alpha g cos(omega p t + phase); t in s";
   j["options"] = options;
   j["tolerances"] = fm.tolerances;
-  json arr = json::array();
-  std::array<long, 4> counts{};
-  const std::size_t level_col = t.column("level");
-  for (const TableRow& r : t.rows) {
-    const SurvivalPoint p = survival_point_from(t, r);
-    json x;
-    x["beta"] = p.beta;
-    x["omega"] = p.omega;
-    x["motion"] = p.motion;
-    x["collapse_mode"] = p.collapse_mode ? json(*p.collapse_mode) : json(nullptr);
-    x["t_failure"] = p.t_failure ? json(*p.t_failure) : json(nullptr);
-    x["t_star_class"] = p.t_star_class.empty() ? json(nullptr) : json(p.t_star_class);
-    x["max_abs_rotation"] = p.max_abs_rotation;
-    x["cycle"] = p.cycle.empty() ? json(nullptr) : json(p.cycle);
-    if (f.refine > 0) x["level"] = cell_integer(r.cells[level_col]);
-    arr.push_back(x);
-    ++counts[p.motion == "rest" ? 0 : p.motion == "stable" ? 1 : p.motion == "collapse" ? 2 : 3];
-  }
-  j["counts"] = {{"rest", counts[0]}, {"stable", counts[1]}, {"collapse", counts[2]}, {"invalid", counts[3]}};
-  j["points"] = arr;
+  const SurvivalPoints sp = survival_points(t, f.refine > 0);
+  const auto& counts = sp.counts;
+  j["counts"] = sp.counts_json();
+  j["points"] = sp.points;
   if (!f.plot.empty()) {
     std::string title = f.m.model + (f.m.preset.empty() ? "" : " " + f.m.preset) + ", " + o.excitation;
     if (f.m.model == "assembly")

@@ -39,7 +39,7 @@ HarmonicSetup setup_harmonic(const CLI::App& s, const HarmonicRunFlags& f) {
     require_range("periods", f.periods, 0, 1e6, false);
   require_range("trace-per-period", f.trace_per_period, 1, 4096);
   HarmonicSetup h;
-  h.fm = build_forced_model(s, f.m);
+  h.fm = build_forced_model(s);
   require_range("block", f.block, 0, double(h.fm.block_names.size()) - 1);
   h.block = f.block;
   h.beta = f.beta;

@@ -2,6 +2,7 @@
 #include "blockdyn/api/settings.hpp"
 
 #include <cerrno>
+#include <cstdio>
 #include <cstdlib>
 #include <stdexcept>
 
@@ -15,7 +16,18 @@ std::string Settings::canonical(std::string_view name) {
   return s;
 }
 
+std::string Settings::exact(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.17g", v);
+  return buf;
+}
+
 void Settings::add(std::string_view name, std::string value) { entries_[canonical(name)].values.push_back(std::move(value)); }
+
+void Settings::set(std::string_view name, std::string value) {
+  Entry& e = entries_[canonical(name)];
+  e.values.assign(1, std::move(value));
+}
 
 void Settings::add_record(std::string_view name, std::shared_ptr<const Accelerogram> record) {
   entries_[canonical(name)].record = std::move(record);

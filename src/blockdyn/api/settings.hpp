@@ -20,6 +20,8 @@ class Settings {
  public:
   // Appends a value to option `name` (a repeated option keeps every value in order).
   void add(std::string_view name, std::string value);
+  // Replaces every value of option `name` by this one.
+  void set(std::string_view name, std::string value);
   // A record given as samples (t in s, a in g) instead of a file.
   void add_record(std::string_view name, std::shared_ptr<const Accelerogram> record);
 
@@ -39,6 +41,8 @@ class Settings {
   // Throws std::invalid_argument naming the first option that is not in `known`.
   void require_known(const std::vector<std::string>& known, const std::string& what) const;
 
+  // A number as a value that reads back to the same double (17 significant digits).
+  static std::string exact(double v);
   // "t_end" -> "t-end": Python's keyword names to the command line's.
   static std::string canonical(std::string_view name);
 

@@ -8,7 +8,8 @@
 
 #include "blockdyn/simulation/output_clock.hpp"
 #include "blockdyn/model/assembly/assembly_model.hpp"
-#include "blockdyn/model/assembly/moreau_jean.hpp"
+#include "blockdyn/simulation/assembly_columns.hpp"
+#include "blockdyn/simulation/moreau_jean_run.hpp"
 #include "blockdyn/simulation/observer.hpp"
 #include "blockdyn/simulation/run.hpp"
 
@@ -126,26 +127,8 @@ class AssemblyRecorder final : public Observer<Model<Cap>> {
   bool started_ = false;
 };
 
-// The assembly's trajectory columns (both contact laws): per block its pose and velocity, the
-// ground acceleration, per contact end its point, forces and state, the energy terms.
-std::vector<std::string> assembly_columns(int blocks, int interfaces) {
-  std::vector<std::string> n{"t", "event"};
-  for (int b = 0; b < blocks; ++b)
-    for (const char* c : {"x", "y", "theta", "vx", "vy", "omega"}) n.push_back(std::string(c) + '_' + std::to_string(b));
-  n.emplace_back("a_h");
-  n.emplace_back("a_v");
-  for (int p = 0; p < 2 * interfaces; ++p)
-    for (const char* c : {"px", "py", "fn", "ft", "state"})
-      n.push_back(std::string(c) + '_' + std::to_string(p / 2) + '_' + std::to_string(p % 2));
-  for (const char* c : {"E_kin", "E_grav", "E_spring_n", "E_spring_t", "E_total", "W_ground", "W_normal", "W_friction",
-                        "W_switch", "energy_balance"})
-    n.emplace_back(c);
-  return n;
-}
-
 // Contact end states as table texts: open, stick (K), slip +, slip -.
 const char* const kEndState[] = {"O", "K", "P", "N"};
-const char* end_state_text(char c) { return c == 'K' ? "K" : c == 'P' ? "P" : c == 'N' ? "N" : "O"; }
 
 // The trajectory table: one row per output instant (dense output) and one per event.
 template <int Cap>
@@ -338,280 +321,6 @@ AssemblyResult run(const Assembly& a, const GroundMotion& g, const AssemblyRunOp
 }
 
 
-// The rigid law: Moreau-Jean time-stepping (model/assembly/moreau_jean.hpp). Events are found
-// between consecutive steps: contact ends opening and closing (an impact when the end
-// approached), stick and slip, passages of theta through 0 and the collapse criteria, the
-// crossings of theta interpolated linearly within the step.
-AssemblyResult run_rigid(const Assembly& a, const GroundMotion& g, const AssemblyRunOptions& o, TrajectoryTable* csv,
-                         RunProbe* probe) {
-  MoreauJeanOptions mo;
-  mo.h = o.step;
-  MoreauJean mj(a, g, mo);
-  const int nb = mj.blocks(), ni = mj.interfaces(), np = 2 * ni;
-  AssemblyResult r;
-  r.damping.assign(ni, 0.0);
-  r.blocks.resize(nb);
-  r.interfaces.resize(ni);
-  std::vector<double> q(3 * nb), v(3 * nb), theta_prev(nb), s0(ni), overlaps(ni), base(ni);
-  std::vector<int> side(nb, 1);
-  // A passage through theta = 0 counts once theta is this far on the other side (rounding).
-  constexpr double kBand = 1e-12;
-  for (int b = 0; b < nb; ++b) {
-    const AssemblyBlock& k = a.blocks[b];
-    q[3 * b] = k.x, q[3 * b + 1] = k.y, q[3 * b + 2] = k.theta;
-    v[3 * b] = k.vx, v[3 * b + 1] = k.vy, v[3 * b + 2] = k.omega;
-    r.blocks[b].name = k.name;
-    r.blocks[b].rotation_limit = mj.rotation_limit(b);
-    r.blocks[b].max_abs_rotation = std::fabs(k.theta);
-    side[b] = k.theta < 0 ? -1 : 1;
-  }
-  mj.measure_interfaces(q, overlaps, s0);
-  for (int i = 0; i < ni; ++i) {
-    r.interfaces[i].lower = a.interfaces[i].lower;
-    r.interfaces[i].upper = a.interfaces[i].upper;
-  }
-  // Contact end states: 'O' open, 'K' stick, 'P'/'N' slip.
-  std::vector<char> state(np, 'O'), next(np, 'O');
-  const double e0 = mj.kinetic_energy(v) + mj.gravity_energy(q);
-  r.energy_initial.kinetic = mj.kinetic_energy(v);
-  r.energy_initial.total = e0;
-  double w_ground = 0, w_normal = 0, w_tangent = 0, max_err = 0, max_change = 0;
-  std::vector<AssemblyEventRecord> step_events;
-  step_events.reserve(4 * std::size_t(np + nb) + 4);
-  auto add_event = [&](double t, int kind_code, const char* kind, int block, int iface, int end, int mode) {
-    ++r.events_total;
-    if (kind_code >= 0) ++r.event_counts[kind_code];
-    if (!o.record_events && !o.on_event) return;
-    AssemblyEventRecord e;
-    e.t = t;
-    e.kind = kind;
-    e.block = block;
-    e.interface = iface;
-    e.end = end;
-    e.collapse_mode = mode;
-    if (block >= 0) e.pose = {q[3 * block], q[3 * block + 1], q[3 * block + 2]};
-    step_events.push_back(e);
-  };
-  // A step's contact events carry the step's end time, its passages and failures the time
-  // interpolated inside it: passed on in time order at the end of each step.
-  // (A stable insertion sort of the few events of a step: std::stable_sort would allocate.)
-  auto flush_step_events = [&] {
-    for (std::size_t i = 1; i < step_events.size(); ++i)
-      for (std::size_t j = i; j > 0 && step_events[j].t < step_events[j - 1].t; --j)
-        std::swap(step_events[j], step_events[j - 1]);
-    for (const AssemblyEventRecord& e : step_events) {
-      if (o.on_event) o.on_event(e);
-      if (o.record_events && long(r.events.size()) < o.max_events) r.events.push_back(e);
-    }
-    step_events.clear();
-  };
-  RowBuffer cells;
-  auto write_row = [&](double t, const char* ev) {
-    if (!csv) return;
-    cells.clear();
-    cells.number(t);
-    cells.text(ev);
-    for (int b = 0; b < nb; ++b) {
-      for (int k = 0; k < 3; ++k) cells.number(q[3 * b + k]);
-      for (int k = 0; k < 3; ++k) cells.number(v[3 * b + k]);
-    }
-    const auto acc = mj.ground_acceleration(t);
-    cells.number(acc[0]);
-    cells.number(acc[1]);
-    for (int p = 0; p < np; ++p) {
-      const auto& e = mj.ends()[p];
-      // The step's mean contact forces.
-      for (double x : {e.c.P.x, e.c.P.y, e.pn / o.step, e.pt / o.step}) cells.number(x);
-      cells.text(end_state_text(state[p]));
-    }
-    const double ek = mj.kinetic_energy(v), eg = mj.gravity_energy(q);
-    for (double x : {ek, eg, 0.0, 0.0, ek + eg, w_ground, w_normal, w_tangent, 0.0, ek + eg - e0 - w_ground - w_normal - w_tangent})
-      cells.number(x);
-    cells.write_to(*csv);
-  };
-  if (csv) {
-    const auto names = assembly_columns(nb, ni);
-    cells.resize(names.size());
-    csv->columns(names);
-    write_row(0.0, "start");
-  }
-  // The probe's states between step ends: linear in time (the scheme is first order).
-  std::vector<double> q_prev, v_prev;
-  auto probe_states = [&](double tau, double t_lo, RunProbe::BlockState* s) {
-    const double w = o.step > 0 ? std::clamp((tau - t_lo) / o.step, 0.0, 1.0) : 1.0;
-    for (int b = 0; b < nb; ++b)
-      for (int k = 0; k < 3; ++k) {
-        s[b][k] = q_prev[3 * b + k] + w * (q[3 * b + k] - q_prev[3 * b + k]);
-        s[b][3 + k] = v_prev[3 * b + k] + w * (v[3 * b + k] - v_prev[3 * b + k]);
-      }
-  };
-  auto probe_event = [&](double te, int b, ProbeEvent::Kind kind, double w_before, double w_after, int end = -1) {
-    ProbeEvent pe;
-    pe.t = te;
-    pe.block = b;
-    pe.kind = kind;
-    pe.side = end < 0 ? 0 : end == 0 ? -1 : 1;
-    pe.theta = q[3 * b + 2];
-    pe.omega_before = w_before;
-    pe.omega_after = w_after;
-    probe->event(pe);
-  };
-  if (probe) {
-    q_prev = q;
-    v_prev = v;
-    probe->advance(0.0, nb, [&](double tau, RunProbe::BlockState* s) { probe_states(tau, 0.0, s); });
-  }
-  const long steps = long(std::ceil(o.t_end / o.step - 1e-9));
-  long next_out = 1;
-  double t = 0;
-  // An end closes with an impact when it approaches faster than one step of free fall.
-  const double v_tol = a.g * o.step;
-  for (long k = 0; k < steps; ++k) {
-    flush_step_events();
-    for (int b = 0; b < nb; ++b) theta_prev[b] = q[3 * b + 2];
-    if (probe) {
-      q_prev = q;
-      v_prev = v;
-    }
-    if (!mj.step(t, q, v)) {
-      r.status = "invalid";
-      r.note = "the contact problem (LCP) has no solution at t = " + std::to_string(t) + " s";
-      add_event(t, kAsmInvalid, "invalid", -1, -1, -1, 0);
-      break;
-    }
-    const double t1 = (k + 1) * o.step;
-    for (int p = 0; p < np; ++p) {
-      const auto& e = mj.ends()[p];
-      // An end is closed while it touches (active), whether or not this step needed an impulse.
-      next[p] = !e.active ? 'O' : !e.slipping ? 'K' : (e.slip > 0 ? 'P' : 'N');
-      const int blk = a.interfaces[p / 2].upper;
-      if (k == 0) {
-        // The contacts the assembly starts on are not events; a slip from the start is.
-        if (next[p] == 'P' || next[p] == 'N') {
-          add_event(t1, kAsmSlip, "slip", blk, p / 2, p % 2, 0);
-          ++r.interfaces[p / 2].slips;
-        }
-      } else if (next[p] != 'O' && state[p] == 'O') {
-        const bool impact = e.un_before < -v_tol;
-        add_event(t1, impact ? kAsmImpact : kAsmClose, impact ? "impact" : "close", blk, p / 2, p % 2, 0);
-        if (impact) ++r.impacts;
-        if (probe) probe_event(t1, blk, ProbeEvent::Close, v_prev[3 * blk + 2], v[3 * blk + 2], p % 2);
-      } else if (next[p] == 'O' && state[p] != 'O') {
-        add_event(t1, kAsmOpen, "open", blk, p / 2, p % 2, 0);
-        ++r.interfaces[p / 2].opens;
-        if (probe) probe_event(t1, blk, ProbeEvent::Open, v_prev[3 * blk + 2], v[3 * blk + 2], p % 2);
-      } else if ((next[p] == 'P' || next[p] == 'N') && state[p] == 'K') {
-        add_event(t1, kAsmSlip, "slip", blk, p / 2, p % 2, 0);
-        ++r.interfaces[p / 2].slips;
-      } else if (next[p] == 'K' && (state[p] == 'P' || state[p] == 'N')) {
-        add_event(t1, kAsmStick, "stick", blk, p / 2, p % 2, 0);
-      }
-      state[p] = next[p];
-    }
-    w_ground += mj.work_ground;
-    w_normal += mj.work_normal;
-    w_tangent += mj.work_tangential;
-    const double ek = mj.kinetic_energy(v), eg = mj.gravity_energy(q);
-    max_err = std::fmax(max_err, std::fabs(ek + eg - e0 - w_ground - w_normal - w_tangent));
-    max_change = std::fmax(max_change, std::fabs(ek + eg - e0));
-    bool stop = false;
-    if (a.rock_only_on_ground)
-      for (int i = 0; i < ni && !stop; ++i)
-        if (a.interfaces[i].lower < 0 && state[2 * i] == 'O' && state[2 * i + 1] == 'O') {
-          r.status = "invalid";
-          r.note = "block " + std::to_string(a.interfaces[i].upper) + " left the ground at t = " + std::to_string(t1) +
-                   " s: outside seed 001's 5-DOF restriction (blocks on the ground only rock)";
-          add_event(t1, kAsmInvalid, "invalid", a.interfaces[i].upper, i, -1, 0);
-          stop = true;
-        }
-    for (int b = 0; b < nb && !stop; ++b) {
-      const double th0 = theta_prev[b], th1 = q[3 * b + 2];
-      if (side[b] * th1 < -kBand) {
-        const double tc = t + o.step * (th0 / (th0 - th1));  // linear within the step
-        add_event(std::clamp(tc, t, t1), kAsmWZero, "w_zero", b, -1, -1, 0);
-        if (probe) probe_event(std::clamp(tc, t, t1), b, ProbeEvent::Passage, v_prev[3 * b + 2], v[3 * b + 2]);
-        side[b] = -side[b];
-      }
-      if (std::fabs(th1) > r.blocks[b].max_abs_rotation) {
-        r.blocks[b].max_abs_rotation = std::fabs(th1);
-        r.blocks[b].t_max_abs_rotation = t1;
-      }
-      const double lim = r.blocks[b].rotation_limit;
-      if (std::fabs(th1) >= lim) {
-        const double s = th1 > 0 ? 1.0 : -1.0;
-        const double tf = t + o.step * (lim - s * th0) / (s * th1 - s * th0);
-        add_event(tf, kAsmCollapse1, "failure", b, -1, -1, 1);
-        r.collapse_mode = 1;
-        r.t_failure = tf;
-        r.failed_block = b;
-        stop = true;
-      }
-    }
-    mj.measure_interfaces(q, overlaps, base);
-    for (int i = 0; i < ni && !stop; ++i) {
-      if (a.interfaces[i].lower < 0) continue;
-      if (overlaps[i] <= a.min_bearing) {
-        add_event(t1, kAsmCollapse2, "failure", a.interfaces[i].upper, i, -1, 2);
-        r.collapse_mode = 2;
-        r.t_failure = t1;
-        r.failed_block = a.interfaces[i].upper;
-        r.failed_interface = i;
-        stop = true;
-      }
-    }
-    for (int i = 0; i < ni; ++i)
-      r.interfaces[i].max_abs_sliding = std::fmax(r.interfaces[i].max_abs_sliding, std::fabs(base[i] - s0[i]));
-    if (probe) probe->advance(t1, nb, [&](double tau, RunProbe::BlockState* s) { probe_states(tau, t, s); });
-    t = t1;
-    if (csv) {
-      while (o.output_interval > 0 && next_out * o.output_interval <= t + 1e-12 * o.step) {
-        write_row(t, "");
-        ++next_out;
-      }
-      if (o.output_interval <= 0) write_row(t, "");
-    }
-    if (stop) {
-      if (r.status != "invalid") r.status = "collapsed";
-      break;
-    }
-  }
-  flush_step_events();
-  r.t_final = t;
-  if (probe) probe->finish(t);
-  r.steps = long(std::lround(t / o.step));
-  r.direct_solves = mj.solve_stats().direct;
-  r.gauss_seidel_solves = mj.solve_stats().gauss_seidel;
-  r.gauss_seidel_sweeps = mj.solve_stats().sweeps;
-  r.rhs_evals = r.steps;
-  for (int b = 0; b < nb; ++b) {
-    for (int k = 0; k < 3; ++k) {
-      r.blocks[b].final_state[k] = q[3 * b + k];
-      r.blocks[b].final_state[3 + k] = v[3 * b + k];
-    }
-    for (int i = 0; i < ni; ++i)
-      if (a.interfaces[i].upper == b)
-        r.blocks[b].max_abs_sliding = std::fmax(r.blocks[b].max_abs_sliding, r.interfaces[i].max_abs_sliding);
-  }
-  for (int i = 0; i < ni; ++i) r.interfaces[i].final_overlap = mj.overlap_of(q, i);
-  r.energy_final.kinetic = mj.kinetic_energy(v);
-  r.energy_final.gravity = mj.gravity_energy(q);
-  r.energy_final.total = r.energy_final.kinetic + r.energy_final.gravity;
-  r.work_ground = w_ground;
-  r.work_normal = w_normal;
-  r.work_friction = w_tangent;
-  r.max_abs_energy_error = max_err;
-  r.max_abs_energy_change = max_change;
-  r.integrator_status = r.status == "invalid" ? "lcp_failure" : r.status == "collapsed" ? "model_stop" : "t_end";
-  if (r.collapse_mode)
-    r.motion = "collapse";
-  else if (r.event_counts[kAsmOpen] > 0 || r.event_counts[kAsmSlip] > 0 || r.event_counts[kAsmClose] > 0 ||
-           r.event_counts[kAsmImpact] > 0)
-    r.motion = "stable";
-  else
-    r.motion = "rest";
-  return r;
-}
-
 }  // namespace
 
 AssemblyResult simulate_assembly(const Assembly& a, const GroundMotion& g, const AssemblyRunOptions& o,
@@ -620,7 +329,7 @@ AssemblyResult simulate_assembly(const Assembly& a, const GroundMotion& g, const
   validate(o);
   if (probe && a.blocks.size() > std::size_t(RunProbe::kMaxBlocks))
     throw std::invalid_argument("a probed run takes at most " + std::to_string(RunProbe::kMaxBlocks) + " blocks");
-  if (a.contact == "rigid") return run_rigid(a, g, o, trajectory, probe);
+  if (a.contact == "rigid") return run_moreau_jean(a, g, o, trajectory, probe);
   const int n = int(a.blocks.size());
   if (n == 1 && a.interfaces.size() <= 2) return run<1>(a, g, o, trajectory, probe);
   if (n <= 3 && a.interfaces.size() <= 4) return run<3>(a, g, o, trajectory, probe);

@@ -81,13 +81,102 @@ struct NoWatch {
   void on_event(const E&) {}
 };
 
+namespace detail {
+
+// The orbit's observer: passes events to the watch, counts them, remembers a stopping event's
+// kind and, when asked (until_moving), stops at the first mode that moves.
+template <class VM, class Traits, class Watch>
+struct TangentObserver {
+  using Mode = typename VM::Mode;
+  Watch& w;
+  bool until_moving;
+  bool moved = false;
+  int stop_kind = 0;
+  long events = 0;
+  bool on_step(const DenseSegment<VM::kDim>&, double, double, const Mode&) { return true; }
+  bool on_event(const EventInfo<Mode, VM::kDim>& e) {
+    w.on_event(e);
+    ++events;
+    if (e.stop) {
+      stop_kind = e.kind;
+      return true;
+    }
+    if (until_moving && Traits::moving(e.to)) {
+      moved = true;
+      return false;
+    }
+    return true;
+  }
+};
+
+template <class Obs>
+void mark_stopped(TangentLyapunovResult& res, RunStatus st, const Obs& ob, double t) {
+  res.run_status = st;
+  res.t_final = t;
+  res.stop_kind = ob.stop_kind;
+  res.status = st == RunStatus::ModelStop ? TangentStatus::Stopped : TangentStatus::Failed;
+  res.note = std::string("the orbit stopped: ") + to_string(st);
+}
+
+// The transient: the orbit alone (tangent zero: the integrator carries it at no cost to
+// accuracy) to t_measure, then on to the first motion. False when the run ends there (res says
+// why).
+template <class VM, class Traits, class Watch, class M>
+bool tangent_transient(const M& m, typename M::Mode& md, typename VM::State& Z, double& t,
+                       const TangentLyapunovOptions& o, Watch& watch, TangentLyapunovResult& res) {
+  using Obs = TangentObserver<VM, Traits, Watch>;
+  const VM transient(m);
+  HybridIntegrator<VM> integ(transient, o.integrator);
+  Obs ob{watch, false, false, 0, 0};
+  if (o.t_measure > t) {
+    const RunStatus st = integ.run(t, o.t_measure, md, Z, ob);
+    if (st != RunStatus::ReachedEnd) {
+      mark_stopped(res, st, ob, t);
+      res.exponent = NAN;
+      return false;
+    }
+  }
+  if (!Traits::moving(md)) {
+    Obs mv{watch, true, false, 0, 0};
+    const RunStatus st = integ.run(t, o.t_end, md, Z, mv);
+    if (st == RunStatus::ReachedEnd) {
+      res.status = TangentStatus::NeverMoved;
+      res.t_final = t;
+      res.note = "the orbit never left rest after t_measure";
+      return false;
+    }
+    if (st != RunStatus::ObserverStop) {
+      mark_stopped(res, st, mv, t);
+      return false;
+    }
+  }
+  return true;
+}
+
+// The start direction: every metric component one scale unit, projected by complete() and
+// normalised. False when the mode admits no perturbation in it.
+template <class VM>
+bool start_tangent(const VM& vm, const typename VM::Mode& md, typename VM::State& Z,
+                   const std::array<bool, VM::N>& metric) {
+  typename VM::Base v{};
+  for (std::size_t i = 0; i < VM::N; ++i) v[i] = metric[i] ? vm.scale()[i] : 0.0;
+  VM::set_tangent(Z, 0, v);
+  vm.complete(md, Z);
+  const double n = vm.norm(VM::tangent(Z, 0));
+  if (!(n > 0.0) || !std::isfinite(n)) return false;
+  for (std::size_t i = 0; i < VM::N; ++i) v[i] = VM::tangent(Z, 0)[i] / n;
+  VM::set_tangent(Z, 0, v);
+  return true;
+}
+
+}  // namespace detail
+
 // Watch: receives every EventInfo of the orbit (of the variational model: e.z holds the tangents
 // after the base state) from t_start on.
 template <HybridModel M, class Traits = TangentTraits<M>, class Watch = NoWatch>
 TangentLyapunovResult tangent_lyapunov(const M& m, typename M::Mode md, Vec<M::kDim> z, const TangentLyapunovOptions& o,
                                        Watch& watch) {
   using VM = VariationalModel<M, 1, Traits>;
-  using Mode = typename M::Mode;
   if (!(o.t_end > o.t_start) || !(o.t_measure >= o.t_start) || !(o.interval > 0) ||
       (o.t_end - o.t_start) / o.interval > 1e7)
     throw std::invalid_argument(
@@ -98,85 +187,18 @@ TangentLyapunovResult tangent_lyapunov(const M& m, typename M::Mode md, Vec<M::k
   typename VM::State Z{};
   VM::set_base(Z, z);
   double t = o.t_start;
-
-  struct Obs {
-    Watch& w;
-    bool until_moving;
-    bool moved = false;
-    int stop_kind = 0;
-    long events = 0;
-    bool on_step(const DenseSegment<VM::kDim>&, double, double, const Mode&) { return true; }
-    bool on_event(const EventInfo<Mode, VM::kDim>& e) {
-      w.on_event(e);
-      ++events;
-      if (e.stop) {
-        stop_kind = e.kind;
-        return true;
-      }
-      if (until_moving && Traits::moving(e.to)) {
-        moved = true;
-        return false;
-      }
-      return true;
-    }
-  };
-  auto stopped = [&](RunStatus st, const Obs& ob) {
-    res.run_status = st;
-    res.t_final = t;
-    res.stop_kind = ob.stop_kind;
-    res.status = st == RunStatus::ModelStop ? TangentStatus::Stopped : TangentStatus::Failed;
-    res.note = std::string("the orbit stopped: ") + to_string(st);
-  };
-  {
-    // The transient: the orbit alone (tangent zero: the integrator carries it at no cost to
-    // accuracy), then on to the first motion.
-    const VM transient(m);
-    HybridIntegrator<VM> integ(transient, o.integrator);
-    Obs ob{watch, false, false, 0, 0};
-    if (o.t_measure > t) {
-      const RunStatus st = integ.run(t, o.t_measure, md, Z, ob);
-      if (st != RunStatus::ReachedEnd) {
-        stopped(st, ob);
-        res.exponent = NAN;
-        return res;
-      }
-    }
-    if (!Traits::moving(md)) {
-      Obs mv{watch, true, false, 0, 0};
-      const RunStatus st = integ.run(t, o.t_end, md, Z, mv);
-      if (st == RunStatus::ReachedEnd) {
-        res.status = TangentStatus::NeverMoved;
-        res.t_final = t;
-        res.note = "the orbit never left rest after t_measure";
-        return res;
-      }
-      if (st != RunStatus::ObserverStop) {
-        stopped(st, mv);
-        return res;
-      }
-    }
-  }
-  // The start direction: every metric component one scale unit, projected by complete().
+  if (!detail::tangent_transient<VM, Traits>(m, md, Z, t, o, watch, res)) return res;
   const auto metric = Traits::metric(m);
-  {
-    typename VM::Base v{};
-    for (std::size_t i = 0; i < VM::N; ++i) v[i] = metric[i] ? vm.scale()[i] : 0.0;
-    VM::set_tangent(Z, 0, v);
-    vm.complete(md, Z);
-    const double n = vm.norm(VM::tangent(Z, 0));
-    if (!(n > 0.0) || !std::isfinite(n)) {
-      res.status = TangentStatus::Failed;
-      res.note = "the mode admits no perturbation in the start direction";
-      res.t_final = t;
-      return res;
-    }
-    for (std::size_t i = 0; i < VM::N; ++i) v[i] = VM::tangent(Z, 0)[i] / n;
-    VM::set_tangent(Z, 0, v);
+  if (!detail::start_tangent(vm, md, Z, metric)) {
+    res.status = TangentStatus::Failed;
+    res.note = "the mode admits no perturbation in the start direction";
+    res.t_final = t;
+    return res;
   }
   res.t_tangent = t;
   res.history.reserve(std::size_t(std::fmin(1e6, (o.t_end - t) / o.interval + 2)));
   HybridIntegrator<VM> integ(vm, o.integrator);
-  Obs ob{watch, false, false, 0, 0};
+  detail::TangentObserver<VM, Traits, Watch> ob{watch, false, false, 0, 0};
   while (t < o.t_end) {
     const double target = std::fmin(t + o.interval, o.t_end);
     const RunStatus st = integ.run(t, target, md, Z, ob);
@@ -204,7 +226,7 @@ TangentLyapunovResult tangent_lyapunov(const M& m, typename M::Mode md, Vec<M::k
       res.history.push_back({t, std::log(d), res.exponent});
     }
     if (st != RunStatus::ReachedEnd) {
-      stopped(st, ob);
+      detail::mark_stopped(res, st, ob, t);
       return res;
     }
     // Components outside the metric (accumulated works, a neutral translation) never feed back;

@@ -2,6 +2,7 @@
 #include "blockdyn/analysis/forced/chaos_map.hpp"
 
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
 
 
@@ -74,6 +75,59 @@ std::vector<ChaosPoint> chaos_map(const ForcedLyapunovRun& run, const ChaosMapOp
       o.grid, [&](std::size_t k, double beta, double omega) { pts[k] = chaos_point(run, o, beta, omega, alpha, p); },
       progress);
   return pts;
+}
+
+const std::vector<std::string>& chaos_motions() {
+  static const std::vector<std::string> m{"rest", "superstable", "periodic", "neutral", "chaotic", "collapse", "failed"};
+  return m;
+}
+
+nlohmann::ordered_json chaos_points_json(const std::vector<ChaosPoint>& pts) {
+  using json = nlohmann::ordered_json;
+  auto num = [](double v) { return std::isfinite(v) ? json(v) : json(nullptr); };
+  json arr = json::array();
+  for (const ChaosPoint& p : pts) {
+    json x;
+    x["beta"] = p.beta;
+    x["omega"] = p.omega;
+    x["motion"] = p.motion;
+    x["exponent"] = num(p.exponent);
+    x["exponent_nondim"] = num(p.exponent_nondim);
+    x["exponent_second_half"] = num(p.exponent_second_half);
+    x["status"] = p.status;
+    x["impacts"] = p.impacts;
+    x["collapse_mode"] = p.collapse_mode ? json(*p.collapse_mode) : json(nullptr);
+    x["t_failure"] = p.t_failure ? json(*p.t_failure) : json(nullptr);
+    arr.push_back(x);
+  }
+  return arr;
+}
+
+nlohmann::ordered_json chaos_counts_json(const std::vector<ChaosPoint>& pts) {
+  nlohmann::ordered_json c;
+  for (const std::string& m : chaos_motions()) {
+    long n = 0;
+    for (const ChaosPoint& p : pts) n += p.motion == m;
+    c[m] = n;
+  }
+  return c;
+}
+
+void write_chaos_csv(std::ostream& os, const std::vector<ChaosPoint>& pts) {
+  os << "beta,omega,motion,exponent,exponent_nondim,exponent_second_half,status,impacts,collapse_mode,t_failure\n";
+  char buf[512];
+  for (const ChaosPoint& p : pts) {
+    std::snprintf(buf, sizeof buf, "%.17g,%.17g,%s,%.17g,%.17g,%.17g,%s,%ld,", p.beta, p.omega, p.motion.c_str(),
+                  p.exponent, p.exponent_nondim, p.exponent_second_half, p.status.c_str(), p.impacts);
+    os << buf;
+    if (p.collapse_mode) os << *p.collapse_mode;
+    os << ',';
+    if (p.t_failure) {
+      std::snprintf(buf, sizeof buf, "%.17g", *p.t_failure);
+      os << buf;
+    }
+    os << '\n';
+  }
 }
 
 }  // namespace blockdyn

@@ -14,6 +14,9 @@
 // may call it for any point in any order; chaos_map() runs the grid on threads, each point at
 // its own index, so the map is identical for any thread count.
 #include <functional>
+#include <ostream>
+
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
 #include <vector>
@@ -55,5 +58,14 @@ ChaosPoint chaos_point(const ForcedLyapunovRun& run, const ChaosMapOptions& o, d
 // Points in row-major order: beta outer, omega inner.
 std::vector<ChaosPoint> chaos_map(const ForcedLyapunovRun& run, const ChaosMapOptions& o, double alpha, double p,
                                   const std::function<void(std::size_t)>& progress = {});
+
+// The motions a point may have, in the order counts and summaries list them.
+const std::vector<std::string>& chaos_motions();
+// The points as the summary's "points" list, and their count per motion (every motion listed).
+nlohmann::ordered_json chaos_points_json(const std::vector<ChaosPoint>& pts);
+nlohmann::ordered_json chaos_counts_json(const std::vector<ChaosPoint>& pts);
+// CSV: beta, omega, motion, exponent, exponent_nondim, exponent_second_half, status, impacts,
+// collapse_mode, t_failure (empty cells where none).
+void write_chaos_csv(std::ostream& os, const std::vector<ChaosPoint>& pts);
 
 }  // namespace blockdyn

@@ -51,14 +51,10 @@ long count_in(const std::vector<double>& t, double a, double b) {
   return long(std::lower_bound(t.begin(), t.end(), b) - std::lower_bound(t.begin(), t.end(), a));
 }
 
-}  // namespace
-
-CycleReport detect_cycles(const StrobeSeries& s, const std::vector<double>& impacts, const CycleOptions& o,
-                          std::optional<double> t_failure) {
-  validate(o);
-  if (s.omega.size() != s.theta.size()) throw std::invalid_argument("strobe series: theta and omega differ in length");
-  CycleReport rep;
-  rep.options = o;
+// The label of every window of W periods from the transient on: periodic (the smallest period n
+// at which theta and omega return within the tolerance, with c impacts per cycle), no-impacts, or
+// non-periodic.
+std::vector<WindowLabel> window_labels(const StrobeSeries& s, const std::vector<double>& impacts, const CycleOptions& o) {
   const long K = long(s.theta.size());
   const int W = o.window;
   auto tk = [&](long k) { return s.t0 + double(k) * s.period; };
@@ -71,7 +67,6 @@ CycleReport detect_cycles(const StrobeSeries& s, const std::vector<double>& impa
     return m;
   };
   auto rel = [](double d, double scale) { return d == 0 ? 0.0 : scale > 0 ? d / scale : INFINITY; };
-
   std::vector<WindowLabel> lab;
   const long first = o.transient, last = K - 1 - W;  // window starts
   for (long k = first; k <= last; ++k) {
@@ -97,9 +92,16 @@ CycleReport detect_cycles(const StrobeSeries& s, const std::vector<double>& impa
     }
     lab.push_back(L);
   }
-  rep.windows = long(lab.size());
+  return lab;
+}
 
-  // Runs of equal labels (periodic or no-impacts) -> intervals; later runs win overlaps.
+// Runs of equal labels (periodic or no-impacts) -> intervals; later runs win overlaps; a cycle
+// shown for less than two of its orbits (a piece left between overlapping windows of other
+// labels) is not a cycle.
+std::vector<CycleSegment> labelled_segments(const StrobeSeries& s, const std::vector<WindowLabel>& lab,
+                                            const CycleOptions& o) {
+  auto tk = [&](long k) { return s.t0 + double(k) * s.period; };
+  const long first = o.transient;
   std::vector<CycleSegment> segs;
   for (std::size_t i = 0; i < lab.size();) {
     std::size_t j = i;
@@ -111,7 +113,7 @@ CycleReport detect_cycles(const StrobeSeries& s, const std::vector<double>& impa
       c.impacts_per_cycle = lab[i].c;
       c.n = lab[i].n;
       c.t_start = tk(first + long(i));
-      c.t_end = tk(first + long(j) + W);
+      c.t_end = tk(first + long(j) + o.window);
       c.return_distance = d;
       while (!segs.empty() && segs.back().t_end > c.t_start) {
         if (segs.back().t_start >= c.t_start)
@@ -128,34 +130,44 @@ CycleReport detect_cycles(const StrobeSeries& s, const std::vector<double>& impa
     }
     i = j + 1;
   }
-  // A cycle shown for less than two of its orbits (a piece left between overlapping windows of
-  // other labels) is not a cycle: its time is non-periodic.
   std::erase_if(segs, [&](const CycleSegment& c) {
     return c.type == "periodic" && c.t_end - c.t_start < (2 * c.n - 0.5) * s.period;
   });
-  // Gaps: non-periodic.
-  if (!lab.empty()) {
-    const double t_lo = tk(first), t_hi = tk(K - 1);
-    double t = t_lo;
-    for (const CycleSegment& c : segs) {
-      if (c.t_start > t) {
-        CycleSegment g;
-        g.type = "non-periodic";
-        g.t_start = t;
-        g.t_end = c.t_start;
-        rep.segments.push_back(g);
-      }
-      rep.segments.push_back(c);
-      t = c.t_end;
-    }
-    if (t < t_hi) {
-      CycleSegment g;
-      g.type = "non-periodic";
-      g.t_start = t;
-      g.t_end = t_hi;
-      rep.segments.push_back(g);
-    }
+  return segs;
+}
+
+// The segments with the gaps between them (non-periodic) from t_lo to t_hi.
+void fill_gaps(const std::vector<CycleSegment>& segs, double t_lo, double t_hi, std::vector<CycleSegment>& out) {
+  auto gap = [&](double a, double b) {
+    CycleSegment g;
+    g.type = "non-periodic";
+    g.t_start = a;
+    g.t_end = b;
+    out.push_back(g);
+  };
+  double t = t_lo;
+  for (const CycleSegment& c : segs) {
+    if (c.t_start > t) gap(t, c.t_start);
+    out.push_back(c);
+    t = c.t_end;
   }
+  if (t < t_hi) gap(t, t_hi);
+}
+
+}  // namespace
+
+CycleReport detect_cycles(const StrobeSeries& s, const std::vector<double>& impacts, const CycleOptions& o,
+                          std::optional<double> t_failure) {
+  validate(o);
+  if (s.omega.size() != s.theta.size()) throw std::invalid_argument("strobe series: theta and omega differ in length");
+  CycleReport rep;
+  rep.options = o;
+  const std::vector<WindowLabel> lab = window_labels(s, impacts, o);
+  rep.windows = long(lab.size());
+  const std::vector<CycleSegment> segs = labelled_segments(s, lab, o);
+  if (!lab.empty())
+    fill_gaps(segs, s.t0 + double(o.transient) * s.period, s.t0 + double(long(s.theta.size()) - 1) * s.period,
+              rep.segments);
   for (CycleSegment& c : rep.segments) c.impacts = count_in(impacts, c.t_start, c.t_end);
   // Dominant label by total duration (the first in time on a tie).
   std::map<std::string, double> total;

@@ -105,6 +105,59 @@ Stability stability_of(const std::array<double, 6>& J, bool symmetric) {
   return s;
 }
 
+// The step from y along the tangent t: predictor, then Newton on the orbit condition and the
+// pseudo-arclength constraint; the step length adapts to the corrector's iterations (halved when
+// it fails). False when it fails at the smallest step (why: the last failed pass).
+bool next_point(const Problem& pb, const Vec3& y, const Vec3& t, double& ds, Vec3& yn, std::array<double, 6>& Jn,
+                std::string& why) {
+  const ContinuationOptions& o = pb.opt;
+  std::array<double, 2> r{};
+  bool ok = false;
+  while (!ok && ds >= o.ds_min) {
+    const Vec3 yp{y[0] + ds * t[0], y[1] + ds * t[1], y[2] + ds * t[2]};
+    yn = yp;
+    int it = 0;
+    for (; it < 10; ++it) {
+      if (!pb.F(yn, r, &why) || !pb.DF(yn, Jn)) break;
+      const double g = t[0] * (yn[0] - yp[0]) + t[1] * (yn[1] - yp[1]) + t[2] * (yn[2] - yp[2]);
+      if (std::hypot(r[0], r[1]) < o.shooting.tol && std::fabs(g) < o.shooting.tol) {
+        ok = true;
+        break;
+      }
+      const std::array<double, 9> M{Jn[0], Jn[1], Jn[2], Jn[3], Jn[4], Jn[5], t[0], t[1], t[2]};
+      Vec3 dx;
+      if (!solve3(M, {-r[0], -r[1], -g}, dx)) break;
+      for (int k = 0; k < 3; ++k) yn[k] += dx[k];
+    }
+    if (ok && it > 4) ds = std::fmax(o.ds_min, 0.7 * ds);
+    if (!ok)
+      ds *= 0.5;
+    else if (it <= 2)
+      ds = std::fmin(o.ds_max, 1.5 * ds);
+  }
+  return ok;
+}
+
+// The bifurcations between two consecutive points ("fold", "multiplier_+1", "flip" or
+// "symmetry_breaking", joined by '+'). A determinant also changes sign through a pole next to
+// grazing (the map's derivative is unbounded there): only crossings between moderate multipliers
+// are bifurcations.
+std::string bifurcations(const Stability& st, const Stability& prev, bool fold, bool symmetric) {
+  std::string ev;
+  auto add = [&](const char* e) {
+    if (!ev.empty()) ev += '+';
+    ev += e;
+  };
+  auto moderate = [](const Stability& x) { return std::abs(x.mu[0]) < 1e4 && std::abs(x.mu[1]) < 1e4; };
+  const bool regular = moderate(st) && moderate(prev);
+  if (fold)
+    add("fold");
+  else if (regular && st.det_minus * prev.det_minus < 0)
+    add("multiplier_+1");
+  if (regular && st.det_plus * prev.det_plus < 0) add(symmetric ? "symmetry_breaking" : "flip");
+  return ev;
+}
+
 }  // namespace
 
 Branch continue_orbit(const RockingForcing& f, const OrbitType& type, double psi, double u,
@@ -144,32 +197,10 @@ Branch continue_orbit(const RockingForcing& f, const OrbitType& type, double psi
   Stability prev = stability_of(J, type.symmetric);
   double ds = o.ds, s = 0;
   while (int(br.points.size()) < o.max_points) {
-    bool ok = false;
     Vec3 yn{};
     std::array<double, 6> Jn{};
     std::string why;
-    while (!ok && ds >= o.ds_min) {
-      const Vec3 yp{y[0] + ds * t[0], y[1] + ds * t[1], y[2] + ds * t[2]};
-      yn = yp;
-      int it = 0;
-      for (; it < 10; ++it) {
-        if (!pb.F(yn, r, &why) || !pb.DF(yn, Jn)) break;
-        const double g = t[0] * (yn[0] - yp[0]) + t[1] * (yn[1] - yp[1]) + t[2] * (yn[2] - yp[2]);
-        if (std::hypot(r[0], r[1]) < o.shooting.tol && std::fabs(g) < o.shooting.tol) {
-          ok = true;
-          break;
-        }
-        const std::array<double, 9> M{Jn[0], Jn[1], Jn[2], Jn[3], Jn[4], Jn[5], t[0], t[1], t[2]};
-        Vec3 dx;
-        if (!solve3(M, {-r[0], -r[1], -g}, dx)) break;
-        for (int k = 0; k < 3; ++k) yn[k] += dx[k];
-      }
-      if (ok && it > 4) ds = std::fmax(o.ds_min, 0.7 * ds);
-      if (!ok)
-        ds *= 0.5;
-      else if (it <= 2)
-        ds = std::fmin(o.ds_max, 1.5 * ds);
-    }
+    const bool ok = next_point(pb, y, t, ds, yn, Jn, why);
     if (!ok) {
       br.end =
           "the corrector failed at the smallest step: the orbit ends as this impact sequence (grazing, an "
@@ -183,21 +214,7 @@ Branch continue_orbit(const RockingForcing& f, const OrbitType& type, double psi
     s += std::sqrt((yn[0] - y[0]) * (yn[0] - y[0]) + (yn[1] - y[1]) * (yn[1] - y[1]) + (yn[2] - y[2]) * (yn[2] - y[2]));
     BranchPoint p = make_point(yn, Jn, s);
     const Stability st = stability_of(Jn, type.symmetric);
-    std::string ev;
-    auto add = [&](const char* e) {
-      if (!ev.empty()) ev += '+';
-      ev += e;
-    };
-    // A determinant also changes sign through a pole next to grazing (the map's derivative is
-    // unbounded there): only crossings between moderate multipliers are bifurcations.
-    auto moderate = [](const Stability& x) { return std::abs(x.mu[0]) < 1e4 && std::abs(x.mu[1]) < 1e4; };
-    const bool regular = moderate(st) && moderate(prev);
-    if (tn[2] * t[2] < 0)
-      add("fold");
-    else if (regular && st.det_minus * prev.det_minus < 0)
-      add("multiplier_+1");
-    if (regular && st.det_plus * prev.det_plus < 0) add(type.symmetric ? "symmetry_breaking" : "flip");
-    p.event = ev;
+    p.event = bifurcations(st, prev, tn[2] * t[2] < 0, type.symmetric);
     br.points.push_back(p);
     prev = st;
     y = yn;

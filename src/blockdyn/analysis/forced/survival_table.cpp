@@ -38,4 +38,51 @@ SurvivalPoint survival_point_from(const Table& t, const TableRow& r) {
   return p;
 }
 
+nlohmann::ordered_json SurvivalPoints::counts_json() const {
+  return {{"rest", counts[0]}, {"stable", counts[1]}, {"collapse", counts[2]}, {"invalid", counts[3]}};
+}
+
+SurvivalPoints survival_points(const Table& t, bool with_level) {
+  using json = nlohmann::ordered_json;
+  SurvivalPoints out;
+  const std::size_t level_col = with_level ? t.column("level") : 0;
+  for (const TableRow& r : t.rows) {
+    const SurvivalPoint p = survival_point_from(t, r);
+    json x;
+    x["beta"] = p.beta;
+    x["omega"] = p.omega;
+    x["motion"] = p.motion;
+    x["collapse_mode"] = p.collapse_mode ? json(*p.collapse_mode) : json(nullptr);
+    x["t_failure"] = p.t_failure ? json(*p.t_failure) : json(nullptr);
+    x["t_star_class"] = p.t_star_class.empty() ? json(nullptr) : json(p.t_star_class);
+    x["max_abs_rotation"] = p.max_abs_rotation;
+    x["cycle"] = p.cycle.empty() ? json(nullptr) : json(p.cycle);
+    if (with_level) x["level"] = cell_integer(r.cells[level_col]);
+    out.points.push_back(x);
+    ++out.counts[p.motion == "rest" ? 0 : p.motion == "stable" ? 1 : p.motion == "collapse" ? 2 : 3];
+  }
+  return out;
+}
+
+nlohmann::ordered_json response_curve_points(const Table& t, bool with_friction) {
+  using json = nlohmann::ordered_json;
+  json arr = json::array();
+  const std::size_t c_theta = t.column("theta_max_over_alpha"), c_slide = t.column("max_sliding_over_b");
+  for (const TableRow& r : t.rows) {
+    const SurvivalPoint p = survival_point_from(t, r);
+    json x = {{"beta", p.beta},
+              {"omega", p.omega},
+              {"theta_max_over_alpha", cell_double(r.cells[c_theta])},
+              {"max_sliding_over_b", cell_double(r.cells[c_slide])},
+              {"motion", p.motion},
+              {"t_failure", p.t_failure ? json(*p.t_failure) : json(nullptr)}};
+    if (with_friction) {
+      x["phi_s"] = cell_double(r.cells[t.column("phi_s")]);
+      x["phi_l"] = cell_double(r.cells[t.column("phi_l")]);
+    }
+    arr.push_back(x);
+  }
+  return arr;
+}
+
 }  // namespace blockdyn

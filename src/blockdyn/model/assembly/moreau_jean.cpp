@@ -255,10 +255,36 @@ void MoreauJean::velocity_change(int nc, std::vector<double>& dv) const {
 
 bool MoreauJean::step(double t, std::vector<double>& q, std::vector<double>& v) {
   const double h = o_.h;
-  const int n = 3 * nb_, np = 2 * ni_;
+  const int n = 3 * nb_;
+  const auto a = ground_acceleration(t + 0.5 * h);
+  free_motion(q, v, a);
+  bool same_ends = true;
+  const int nc = assemble_ends(v, same_ends);
+  delassus(nc);
+  ++stats_.steps;
+  sweeps_ = 0;
+  if (nc > 0) {
+    double v_scale = asm_.g * h;
+    for (int i = 0; i < nc; ++i) v_scale = std::max({v_scale, std::fabs(bn_[i]), std::fabs(bt_[i])});
+    slip_velocity_ = kSlipVelocity * v_scale;
+    if (!solve(nc, v_scale, same_ends)) return false;
+  } else {
+    ++stats_.empty;
+  }
+  conclude(nc, v, a);
+  for (int k = 0; k < n; ++k) {
+    q[k] = qm_[k] + 0.5 * h * vnew_[k];
+    v[k] = vnew_[k];
+  }
+  return true;
+}
+
+void MoreauJean::free_motion(const std::vector<double>& q, const std::vector<double>& v,
+                             const std::array<double, 2>& a) {
+  const double h = o_.h;
+  const int n = 3 * nb_;
   for (int k = 0; k < n; ++k) qm_[k] = q[k] + 0.5 * h * v[k];
   // Free motion: gravity and the ground's inertial forces at the midpoint in time.
-  const auto a = ground_acceleration(t + 0.5 * h);
   for (int b = 0; b < nb_; ++b) {
     vfree_[3 * b] = v[3 * b] - h * asm_.g * a[0];
     vfree_[3 * b + 1] = v[3 * b + 1] - h * asm_.g * (1.0 + a[1]);
@@ -266,18 +292,22 @@ bool MoreauJean::step(double t, std::vector<double>& q, std::vector<double>& v) 
   }
   // Poses and faces at the midpoint positions: one sincos per block.
   for (int b = 0; b < nb_; ++b) poses_[b] = pose(qm_, v, b);
-  const BodyPose ground{};
-  auto pose_of = [&](int b) -> const BodyPose& { return b < 0 ? ground : poses_[b]; };
   for (int i = 0; i < ni_; ++i) {
     const AssemblyInterface& f = asm_.interfaces[i];
     upper_face_[i] = base_face(poses_[f.upper], asm_.blocks[f.upper].width, asm_.blocks[f.upper].height);
     lower_face_[i] = f.lower < 0 ? ground_face()
                                  : top_face(poses_[f.lower], asm_.blocks[f.lower].width, asm_.blocks[f.lower].height);
   }
+}
+
+int MoreauJean::assemble_ends(const std::vector<double>& v, bool& same_ends) {
+  const double h = o_.h;
+  const int np = 2 * ni_;
+  const BodyPose ground{};
+  auto pose_of = [&](int b) -> const BodyPose& { return b < 0 ? ground : poses_[b]; };
   // Active contact ends and their Jacobian rows (normal, tangent) of the relative velocity of the
   // upper block's side against the lower's, per block.
   int nc = 0;
-  bool same_ends = true;
   for (int p = 0; p < np; ++p) {
     const AssemblyInterface& f = asm_.interfaces[p / 2];
     const Face& uf = upper_face_[p / 2];
@@ -331,6 +361,10 @@ bool MoreauJean::step(double t, std::vector<double>& q, std::vector<double>& v) 
     pt_[i] = e.pt_prev;
     cls_[i] = was_slip > 0 ? kSlipPos : was_slip < 0 ? kSlipNeg : (was_pushing || bn_[i] < 0.0) ? kStick : kSeparate;
   }
+  return nc;
+}
+
+void MoreauJean::delassus(int nc) {
   // The Delassus matrix W = H M^-1 H^T in closed form: 2 x 2 blocks of the ends sharing a block.
   const std::size_t S = std::size_t(m_cap_);
   double diag_max = 0;
@@ -359,16 +393,11 @@ bool MoreauJean::step(double t, std::vector<double>& q, std::vector<double>& v) 
   // An optional compliance on the Delassus diagonal (0 by default).
   if (o_.regularisation > 0)
     for (int k = 0; k < 2 * nc; ++k) W_[std::size_t(k) * (S + 1)] += o_.regularisation * diag_max;
-  ++stats_.steps;
-  sweeps_ = 0;
-  if (nc > 0) {
-    double v_scale = asm_.g * h;
-    for (int i = 0; i < nc; ++i) v_scale = std::max({v_scale, std::fabs(bn_[i]), std::fabs(bt_[i])});
-    slip_velocity_ = kSlipVelocity * v_scale;
-    if (!solve(nc, v_scale, same_ends)) return false;
-  } else {
-    ++stats_.empty;
-  }
+}
+
+void MoreauJean::conclude(int nc, const std::vector<double>& v, const std::array<double, 2>& a) {
+  const double h = o_.h;
+  const int n = 3 * nb_;
   // v+ = v_free + M^-1 H^T P.
   velocity_change(nc, dv_);
   for (int k = 0; k < n; ++k) vnew_[k] = vfree_[k] + dv_[k];
@@ -401,11 +430,6 @@ bool MoreauJean::step(double t, std::vector<double>& q, std::vector<double>& v) 
   for (int b = 0; b < nb_; ++b)
     work_ground -= asm_.blocks[b].mass * asm_.g * h *
                    (a[0] * 0.5 * (v[3 * b] + vnew_[3 * b]) + a[1] * 0.5 * (v[3 * b + 1] + vnew_[3 * b + 1]));
-  for (int k = 0; k < n; ++k) {
-    q[k] = qm_[k] + 0.5 * h * vnew_[k];
-    v[k] = vnew_[k];
-  }
-  return true;
 }
 
 bool MoreauJean::solve(int nc, double v_scale, bool same_ends) {

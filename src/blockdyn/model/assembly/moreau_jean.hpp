@@ -100,6 +100,13 @@ class MoreauJean {
   // The contact problem of the nc active ends (W_, bn_, bt_, mu_*): impulses into pn_, pt_ and
   // the classes into cls_. False when Gauss-Seidel does not converge.
   bool solve(int nc, double v_scale, bool same_ends);
+  // The steps of step(): the free velocities and the faces at the midpoint; the active ends with
+  // their Jacobian rows and right-hand sides (returns their count; same_ends: no end opened or
+  // closed); the Delassus matrix; the new velocities, impulses, end states and works.
+  void free_motion(const std::vector<double>& q, const std::vector<double>& v, const std::array<double, 2>& a);
+  int assemble_ends(const std::vector<double>& v, bool& same_ends);
+  void delassus(int nc);
+  void conclude(int nc, const std::vector<double>& v, const std::array<double, 2>& a);
   bool solve_coulomb(int nc, double v_scale);
   enum DirectOutcome { kSolved, kDegenerate, kFailed };
   DirectOutcome solve_direct(int nc, double v_scale);

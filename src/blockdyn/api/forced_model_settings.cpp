@@ -1,0 +1,116 @@
+// SPDX-License-Identifier: Apache-2.0
+#include "blockdyn/api/forced_model_settings.hpp"
+
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+#include "blockdyn/model/rigid/rigid_params.hpp"
+
+namespace blockdyn {
+namespace {
+
+using Invalid = std::invalid_argument;
+
+void refuse(const Settings& s, const std::vector<std::string>& names, const std::string& why) {
+  for (const std::string& n : names)
+    if (s.has(n)) throw Invalid("--" + n + " " + why);
+}
+
+void check_family(const Settings& s, const std::string& model) {
+  if (model == "housner" || model == "rigid")
+    refuse(s, {"preset", "contact", "slenderness", "block-width", "drums", "phi-s", "phi-l", "columns-rock-only"},
+           "applies to --model assembly only");
+  if (model == "housner") refuse(s, {"mu-s", "mu-k", "impact"}, "applies to --model rigid only");
+  if (model == "assembly")
+    refuse(s, {"width", "height", "mass", "g", "mu-s", "mu-k", "impact"},
+           "applies to --model housner|rigid only (an assembly's blocks and friction come from --preset and "
+           "--phi-s/--phi-l)");
+  if (auto mu_k = s.number("mu-k"); mu_k && !(std::isfinite(*mu_k) && *mu_k >= 0.0))
+    throw Invalid("mu-k = " + std::to_string(*mu_k) + " is out of range: must be finite and >= 0");
+  if (auto e = s.number("restitution"); e && !(std::isfinite(*e) && *e >= 0.0 && *e <= 1.0))
+    throw Invalid("restitution = " + std::to_string(*e) + " is out of range: must be in [0, 1]");
+}
+
+void require_angle(const std::string& field, double v) {
+  if (!(std::isfinite(v) && v >= 0 && v <= 90)) {
+    std::ostringstream os;
+    os << field << " = " << v << " is out of range: must be finite and in [0, 90]";
+    throw Invalid(os.str());
+  }
+}
+
+ForcedModel block_model(const Settings& s, const std::string& model) {
+  if (!s.has("width") || !s.has("height")) throw Invalid("--width and --height are needed for --model " + model);
+  RigidBlockParams rp;
+  rp.shape = {*s.number("width"), *s.number("height"), s.number("mass", 1.0), s.number("g", 9.81)};
+  const double mu_s = s.number("mu-s", 0.7);
+  rp.interface = {mu_s, s.number("mu-k", mu_s)};
+  const std::string impact = s.text("impact", "housner");
+  if (impact != "housner" && impact != "newton") throw Invalid("--impact = '" + impact + "' is not one of: housner, newton");
+  rp.impact = impact == "newton" ? ImpactLaw::Newton : ImpactLaw::Housner;
+  if (auto e = s.number("restitution")) rp.restitution = *e;
+  return forced_block_model(rp, model == "housner");
+}
+
+ForcedModel assembly_model(const Settings& s) {
+  const std::string preset = s.text("preset");
+  if (preset.empty()) throw Invalid("--model assembly needs --preset block|trilith|column");
+  if (preset != "block" && preset != "trilith" && preset != "column")
+    throw Invalid("--preset = '" + preset + "' is not one of: block, trilith, column");
+  const std::string contact = s.text("contact", "deformable");
+  if (contact != "deformable" && contact != "rigid")
+    throw Invalid("--contact = '" + contact + "' is not one of: deformable, rigid");
+  PresetOptions po;
+  po.slenderness = s.number("slenderness", po.slenderness);
+  po.block_width = s.number("block-width", po.block_width);
+  po.drums = int(s.integer("drums", po.drums));
+  po.rigid_contacts = contact == "rigid";
+  const double phi_s = s.number("phi-s", 90), phi_l = s.number("phi-l", 90);
+  require_angle("phi-s", phi_s);
+  require_angle("phi-l", phi_l);
+  const std::optional<double> e = s.number("restitution");
+  for (ContactLaw* l : {&po.ground_law, &po.block_law}) {
+    const double phi = l == &po.ground_law ? phi_s : phi_l;
+    l->mu_s = l->mu_k = phi >= 90 ? kNoSlipFriction : std::tan(phi * M_PI / 180);
+    if (po.rigid_contacts)
+      l->restitution = e.value_or(0.0);
+    else if (e)
+      l->restitution = *e;
+  }
+  Assembly a = make_preset(preset, po);
+  const bool rock_only = s.flag("columns-rock-only");
+  if (rock_only) {
+    if (!po.rigid_contacts) throw Invalid("--columns-rock-only (seed 001's 5-DOF restriction) needs --contact rigid");
+    // As `blockdyn assembly --columns-rock-only`: no sliding and plastic impacts on the ground.
+    a.rock_only_on_ground = true;
+    for (AssemblyInterface& i : a.interfaces)
+      if (i.lower < 0) {
+        i.law.mu_s = i.law.mu_k = kNoSlipFriction;
+        i.law.restitution = 0.0;
+      }
+  }
+  nlohmann::ordered_json description = {{"model", "assembly"}, {"preset", preset},          {"contact", a.contact},
+                                         {"blocks", a.blocks.size()}, {"phi_s", phi_s},      {"phi_l", phi_l},
+                                         {"slenderness", po.slenderness}, {"columns_rock_only", rock_only}};
+  return forced_assembly_model(a, std::move(description));
+}
+
+}  // namespace
+
+const std::vector<std::string>& forced_model_option_names() {
+  static const std::vector<std::string> n{"model",   "width",  "height",  "mass",        "g",           "mu-s",
+                                          "mu-k",    "impact", "restitution", "preset", "contact", "slenderness",
+                                          "block-width", "drums", "phi-s", "phi-l", "columns-rock-only"};
+  return n;
+}
+
+ForcedModel forced_model_from(const Settings& s) {
+  const std::string model = s.text("model", "housner");
+  if (model != "housner" && model != "rigid" && model != "assembly")
+    throw Invalid("--model = '" + model + "' is not one of: housner, rigid, assembly");
+  check_family(s, model);
+  return model == "assembly" ? assembly_model(s) : block_model(s, model);
+}
+
+}  // namespace blockdyn

@@ -1,0 +1,19 @@
+// SPDX-License-Identifier: Apache-2.0
+#pragma once
+// The model of the forced analyses from Settings: --model housner|rigid (--width --height --mass
+// --g --mu-s --mu-k --impact --restitution) or --model assembly (--preset --contact --slenderness
+// --block-width --drums --phi-s --phi-l --columns-rock-only --restitution). Options of the other
+// family are refused; a value given is checked, never read as "not given".
+#include <string>
+#include <vector>
+
+#include "blockdyn/analysis/forced/forced_model.hpp"
+#include "blockdyn/api/settings.hpp"
+
+namespace blockdyn {
+
+const std::vector<std::string>& forced_model_option_names();
+// Throws std::invalid_argument naming the option.
+ForcedModel forced_model_from(const Settings& s);
+
+}  // namespace blockdyn
