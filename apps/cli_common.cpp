@@ -15,6 +15,7 @@
 #include <iostream>
 #include <sstream>
 
+#include "blockdyn/base/range_check.hpp"
 #include "blockdyn/io/atomic_file.hpp"
 #include "blockdyn/io/json_io.hpp"
 
@@ -155,23 +156,19 @@ void require_writable(const std::string& field, const std::string& path) {
 }
 
 void require_sample_count(const std::string& field, double interval, double span, double max_samples) {
-  if (!(interval > 0.0) || !std::isfinite(span)) return;
-  const double n = span / interval;
-  if (n > max_samples) {
-    std::ostringstream os;
-    os << field << " = " << interval << " gives " << n << " samples over " << span << ": at most " << max_samples
-       << " allowed (give a larger " << field << ")";
-    throw UsageError(os.str());
+  try {
+    blockdyn::require_sample_count(field, interval, span, max_samples);
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(e.what());
   }
+}
 }
 
 void require_range(const std::string& field, double v, double lo, double hi, bool lo_incl, bool hi_incl) {
-  const bool ok = std::isfinite(v) && (lo_incl ? v >= lo : v > lo) && (hi_incl ? v <= hi : v < hi);
-  if (!ok) {
-    std::ostringstream os;
-    os << field << " = " << v << " is out of range: must be finite and in " << (lo_incl ? "[" : "(")
-       << lo << ", " << hi << (hi_incl ? "]" : ")");
-    throw UsageError(os.str());
+  try {
+    require_in_range(field, v, lo, hi, lo_incl, hi_incl);
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(e.what());
   }
 }
 

@@ -2,22 +2,12 @@
 """Figure of an assembly run: each block's rotation and horizontal displacement, the contact
 forces per interface, the ground acceleration and the energy balance.
 Usage: plot_assembly.py TRAJECTORY.csv OUT.png [--title T]"""
-import argparse
-
-import matplotlib
-
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
-
 from assembly_csv import load  # noqa: E402
-from plotkit import save  # noqa: E402
+from plotkit import save, figure_parser, plt  # noqa: E402
 
 
 def main():
-    ap = argparse.ArgumentParser()
-    ap.add_argument("csv")
-    ap.add_argument("out")
-    ap.add_argument("--title", default="")
+    ap = figure_parser()
     a = ap.parse_args()
     c, nb, npts = load(a.csv)
     t = c["t"]

@@ -3,23 +3,15 @@
 white: blue attracting orbits, red chaos) where the motion lasted, collapse points as black
 crosses, rest as grey dots, superstable (came to rest: exponent -infinity) as blue squares.
 Usage: plot_chaos_map.py POINTS.csv OUT.png [--title T] [--threshold X]"""
-import argparse
 import csv
 
-import matplotlib
-
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 from matplotlib.colors import TwoSlopeNorm  # noqa: E402
-from plotkit import save  # noqa: E402
+from plotkit import save, figure_parser, plt  # noqa: E402
 
 
 def main():
-    ap = argparse.ArgumentParser()
-    ap.add_argument("csv")
-    ap.add_argument("out")
-    ap.add_argument("--title", default="")
+    ap = figure_parser()
     ap.add_argument("--threshold", type=float, default=0.01)
     a = ap.parse_args()
     with open(a.csv, newline="") as f:

@@ -2,21 +2,13 @@
 """theta_MAX / alpha versus omega (or versus the friction angle phi_l with --x phi_l), one curve
 per beta (and per phi_s when it varies), collapsed points marked, and the largest slip between
 blocks over b when any. Usage: plot_response_curve.py POINTS.csv OUT.png [--title T] [--x omega|phi_l]"""
-import argparse
 import csv
 
-import matplotlib
-
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
-from plotkit import save  # noqa: E402
+from plotkit import save, figure_parser, plt  # noqa: E402
 
 
 def main():
-    ap = argparse.ArgumentParser()
-    ap.add_argument("csv")
-    ap.add_argument("out")
-    ap.add_argument("--title", default="")
+    ap = figure_parser()
     ap.add_argument("--x", default="omega", choices=["omega", "phi_l"])
     a = ap.parse_args()
     with open(a.csv, newline="") as f:

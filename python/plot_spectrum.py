@@ -4,21 +4,13 @@ linearised closed form for a rectangular pulse when present; with --map AMIN AMA
 overturn / survive picture of the scan over (duration, amplitude) instead (the scan's amplitudes
 are geometric from AMIN to AMAX, one per character of the `scan` column).
 Usage: plot_spectrum.py SPECTRUM.csv OUT.png [--title T] [--map AMIN AMAX]"""
-import argparse
 import csv
 
-import matplotlib
-
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
-from plotkit import save  # noqa: E402
+from plotkit import save, figure_parser, plt  # noqa: E402
 
 
 def main():
-    ap = argparse.ArgumentParser()
-    ap.add_argument("csv")
-    ap.add_argument("out")
-    ap.add_argument("--title", default="")
+    ap = figure_parser()
     ap.add_argument("--map", nargs=2, type=float, metavar=("AMIN", "AMAX"))
     a = ap.parse_args()
     with open(a.csv, newline="") as f:

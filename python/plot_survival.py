@@ -5,23 +5,15 @@ long), filled for mode 2 and hollow for mode 1; stable points as small grey dots
 crosses. With --refined DW DB (a map refined near class changes; DW, DB the coarse steps in omega
 and beta) every point is drawn as a tile of its level's cell size, coarse tiles first, so the
 fine boundary shows. Usage: plot_survival.py POINTS.csv OUT.png [--title T] [--refined DW DB]"""
-import argparse
 import csv
 
-import matplotlib
-
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
-from plotkit import save  # noqa: E402
+from plotkit import save, figure_parser, plt  # noqa: E402
 
 MARKERS = {"short": "^", "medium": "D", "long": "s", "very long": "o"}
 
 
 def main():
-    ap = argparse.ArgumentParser()
-    ap.add_argument("csv")
-    ap.add_argument("out")
-    ap.add_argument("--title", default="")
+    ap = figure_parser()
     ap.add_argument("--refined", nargs=2, type=float, metavar=("DW", "DB"))
     a = ap.parse_args()
     with open(a.csv, newline="") as f:

@@ -15,10 +15,21 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402,F401
 import numpy as np  # noqa: E402
 
-__all__ = ["plt", "np", "read_rows", "load_meta", "load_table", "load_columns", "load_named", "col",
+__all__ = ["plt", "np", "figure_parser", "read_rows", "load_meta", "load_table", "load_columns", "load_named", "col",
            "save", "stem", "split_args", "run_in_out", "run_modes", "t_end", "run_title", "k_scan_figure",
            "finish_k_scan", "log_axes", "read_table", "Cli", "legend_outside",
            "legend_below"]
+
+
+def figure_parser():
+    """The arguments every figure script takes: the table it draws (CSV), the figure (OUT.png) and
+    --title; a script adds its own."""
+    import argparse
+    ap = argparse.ArgumentParser()
+    ap.add_argument("csv")
+    ap.add_argument("out")
+    ap.add_argument("--title", default="")
+    return ap
 
 
 # ----------------------------------------------------------------------------- loading

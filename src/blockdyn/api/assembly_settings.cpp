@@ -2,26 +2,16 @@
 #include "blockdyn/api/assembly_settings.hpp"
 
 #include <cmath>
-#include <sstream>
 #include <stdexcept>
 
 #include "blockdyn/api/ground_settings.hpp"
+#include "blockdyn/base/range_check.hpp"
 #include "blockdyn/io/assembly_file.hpp"
 
 namespace blockdyn {
 namespace {
 
 using Invalid = std::invalid_argument;
-
-void require_range(const std::string& field, double v, double lo, double hi, bool lo_incl = true, bool hi_incl = true) {
-  const bool ok = std::isfinite(v) && (lo_incl ? v >= lo : v > lo) && (hi_incl ? v <= hi : v < hi);
-  if (!ok) {
-    std::ostringstream os;
-    os << field << " = " << v << " is out of range: must be finite and in " << (lo_incl ? "[" : "(") << lo << ", " << hi
-       << (hi_incl ? "]" : ")");
-    throw Invalid(os.str());
-  }
-}
 
 // The option values with the command line's defaults.
 struct Values {
@@ -60,22 +50,22 @@ void check_values(const Settings& s, const Values& v) {
   if (v.file.empty() == v.preset.empty())
     throw Invalid(v.file.empty() ? "give --preset block|trilith|column or an assembly FILE.toml"
                                  : "give either --preset or an assembly file, not both");
-  require_range("phi-s", v.phi_s, 0, 90);
-  require_range("phi-l", v.phi_l, 0, 90);
+  require_in_range("phi-s", v.phi_s, 0, 90);
+  require_in_range("phi-l", v.phi_l, 0, 90);
   // The kinetic angles lie between 0 and the static ones (the file's, or the options').
-  if (v.phi_s_kinetic) require_range("phi-s-kinetic", *v.phi_s_kinetic, 0, v.file.empty() || s.has("phi-s") ? v.phi_s : 90);
-  if (v.phi_l_kinetic) require_range("phi-l-kinetic", *v.phi_l_kinetic, 0, v.file.empty() || s.has("phi-l") ? v.phi_l : 90);
-  require_range("tilt", v.tilt, -1.5, 1.5, false, false);
-  require_range("normal-stiffness", v.k_normal, 1, 1e13);
-  if (s.has("tangential-stiffness")) require_range("tangential-stiffness", v.k_tangential, 1, 1e13);
-  require_range("restitution", v.restitution, v.rigid ? 0.0 : 1e-3, 1);
+  if (v.phi_s_kinetic) require_in_range("phi-s-kinetic", *v.phi_s_kinetic, 0, v.file.empty() || s.has("phi-s") ? v.phi_s : 90);
+  if (v.phi_l_kinetic) require_in_range("phi-l-kinetic", *v.phi_l_kinetic, 0, v.file.empty() || s.has("phi-l") ? v.phi_l : 90);
+  require_in_range("tilt", v.tilt, -1.5, 1.5, false, false);
+  require_in_range("normal-stiffness", v.k_normal, 1, 1e13);
+  if (s.has("tangential-stiffness")) require_in_range("tangential-stiffness", v.k_tangential, 1, 1e13);
+  require_in_range("restitution", v.restitution, v.rigid ? 0.0 : 1e-3, 1);
   if (v.rigid)
     for (const char* n : {"normal-stiffness", "tangential-stiffness", "rtol", "atol", "method"})
       if (s.has(n)) throw Invalid(std::string("--") + n + " belongs to --contact deformable (the rigid law has --step)");
   if (!v.rigid && s.has("step")) throw Invalid("--step belongs to --contact rigid");
-  require_range("collapse-rotation", v.collapse_rotation, 0, 10, false);
-  require_range("min-bearing", v.min_bearing, 0, 1e3);
-  require_range("g", v.g, 0, 1e3, false);
+  require_in_range("collapse-rotation", v.collapse_rotation, 0, 10, false);
+  require_in_range("min-bearing", v.min_bearing, 0, 1e3);
+  require_in_range("g", v.g, 0, 1e3, false);
 }
 
 ContactLaw preset_law(const Values& v, double phi, const char* field) {
@@ -135,11 +125,11 @@ Assembly from_preset(const Settings& s, const Values& v) {
 }
 
 void check_run(const AssemblyRunOptions& o) {
-  require_range("t-end", o.t_end, 0, 1e7, false);
-  require_range("step", o.step, 1e-7, 1e-2);
-  require_range("rtol", o.integrator.rtol, 1e-14, 1e-2);
-  require_range("atol", o.integrator.atol, 1e-16, 1e-2);
-  require_range("output-interval", o.output_interval, 0, 1e7);
+  require_in_range("t-end", o.t_end, 0, 1e7, false);
+  require_in_range("step", o.step, 1e-7, 1e-2);
+  require_in_range("rtol", o.integrator.rtol, 1e-14, 1e-2);
+  require_in_range("atol", o.integrator.atol, 1e-16, 1e-2);
+  require_in_range("output-interval", o.output_interval, 0, 1e7);
 }
 
 }  // namespace

@@ -2,9 +2,9 @@
 #include "blockdyn/api/forced_model_settings.hpp"
 
 #include <cmath>
-#include <sstream>
 #include <stdexcept>
 
+#include "blockdyn/base/range_check.hpp"
 #include "blockdyn/model/rigid/rigid_params.hpp"
 
 namespace blockdyn {
@@ -30,14 +30,6 @@ void check_family(const Settings& s, const std::string& model) {
     throw Invalid("mu-k = " + std::to_string(*mu_k) + " is out of range: must be finite and >= 0");
   if (auto e = s.number("restitution"); e && !(std::isfinite(*e) && *e >= 0.0 && *e <= 1.0))
     throw Invalid("restitution = " + std::to_string(*e) + " is out of range: must be in [0, 1]");
-}
-
-void require_angle(const std::string& field, double v) {
-  if (!(std::isfinite(v) && v >= 0 && v <= 90)) {
-    std::ostringstream os;
-    os << field << " = " << v << " is out of range: must be finite and in [0, 90]";
-    throw Invalid(os.str());
-  }
 }
 
 ForcedModel block_model(const Settings& s, const std::string& model) {
@@ -67,8 +59,8 @@ ForcedModel assembly_model(const Settings& s) {
   po.drums = int(s.integer("drums", po.drums));
   po.rigid_contacts = contact == "rigid";
   const double phi_s = s.number("phi-s", 90), phi_l = s.number("phi-l", 90);
-  require_angle("phi-s", phi_s);
-  require_angle("phi-l", phi_l);
+  require_in_range("phi-s", phi_s, 0, 90);
+  require_in_range("phi-l", phi_l, 0, 90);
   const std::optional<double> e = s.number("restitution");
   for (ContactLaw* l : {&po.ground_law, &po.block_law}) {
     const double phi = l == &po.ground_law ? phi_s : phi_l;

@@ -2,10 +2,10 @@
 #include "blockdyn/api/scenario_settings.hpp"
 
 #include <cmath>
-#include <sstream>
 #include <stdexcept>
 
 #include "blockdyn/api/ground_settings.hpp"
+#include "blockdyn/base/range_check.hpp"
 #include "blockdyn/model/rigid/rigid_params.hpp"
 
 namespace blockdyn {
@@ -30,14 +30,6 @@ const PhysOption kPhysOptions[] = {
     {"subgrade-modulus", nullptr, &PhysicalBlock::subgrade_modulus, true},
     {"line-stiffness", nullptr, &PhysicalBlock::line_stiffness, true},
 };
-
-void require_range(const std::string& field, double v, double lo, double hi) {
-  if (!(std::isfinite(v) && v >= lo && v <= hi)) {
-    std::ostringstream os;
-    os << field << " = " << v << " is out of range: must be finite and in [" << lo << ", " << hi << "]";
-    throw Invalid(os.str());
-  }
-}
 
 // Options that belong to one family only: a clear error instead of a silently ignored option.
 void check_family_options(const Settings& s, const std::string& model) {
@@ -150,7 +142,7 @@ Scenario scenario_from(const Settings& s) {
   apply_physical(s, sc);
   validate(sc.ground);
   validate(sc.options);
-  require_range("output-interval", sc.output_interval, 0.0, 1e300);
+  require_in_range("output-interval", sc.output_interval, 0.0, 1e300);
   if (!is_rigid_family(sc.model)) {
     validate(sc.params);
     if (sc.units != "nondim" && sc.units != "physical")

@@ -3,11 +3,11 @@
 
 #include <cmath>
 #include <cstdio>
-#include <sstream>
 #include <stdexcept>
 
 #include "blockdyn/api/assembly_settings.hpp"
 #include "blockdyn/api/scenario_settings.hpp"
+#include "blockdyn/base/range_check.hpp"
 #include "blockdyn/io/assembly_json.hpp"
 #include "blockdyn/io/json_io.hpp"
 #include "blockdyn/simulation/rigid_simulation.hpp"
@@ -24,14 +24,7 @@ RunTiming fastest(const RunTiming& a, const RunTiming& b) { return b.cpu_s < a.c
 std::string arg(double v) { return std::to_string(v); }
 
 void require_rows(double interval, double span, double max_rows) {
-  if (!(interval > 0.0) || !std::isfinite(span)) return;
-  const double n = span / interval;
-  if (n > max_rows) {
-    std::ostringstream os;
-    os << "output-interval = " << interval << " gives " << n << " samples over " << span << ": at most " << max_rows
-       << " allowed (give a larger output-interval)";
-    throw std::invalid_argument(os.str());
-  }
+  require_sample_count("output-interval", interval, span, max_rows);
 }
 
 // Streams the Winkler run's events and forwards everything to the trajectory (if any).

@@ -285,59 +285,27 @@ class HybridIntegrator {
       double h_new = next_step_size(err, h, err_old);
       if (to_break || last) h_new = std::fmax(h_new, std::fmin(h_wanted, opt_.h_max));
       if (!hit) {
-        if (!dense_done) {
-          using Ensure = decltype(ensure_dense);
-          seg.set_refine([](void* e) { (*static_cast<Ensure*>(e))(); }, &ensure_dense);
-        }
-        seg.end_state = &y_end;
-        const bool go = obs.on_step(seg, t, t_next, mode);
-        seg.set_refine(nullptr, nullptr);
-        seg.end_state = nullptr;
-        if (!go) return RunStatus::ObserverStop;
+        if (!observe_step(obs, seg, t, t_next, mode, y_end, dense_done ? nullptr : &ensure_dense))
+          return RunStatus::ObserverStop;
         t = t_next;
         z = y_end;
         k1 = k7;
-        g_start_ = g_end_;
-        gd_start_ = gd_end_;
-        gd_err_start_ = gd_err_end_;
+        keep_end_values();
         h = cut_at_kink(t, mode, z, k1, h_new);
         zero_time_events = 0;
         events_at_instant = 0;
-        for (std::size_t i = 0; i < NE; ++i)
-          if (!armed_[i] && g_start_[i] > 0.0) {
-            armed_[i] = true;
-            remainder_known_ = false;
-          }
+        rearm_risen();
         if (to_break) {
           // The input may jump or kink here: let the model re-select its mode, restart.
           t_clamp = std::numeric_limits<double>::infinity();
-          if (const auto end = apply_transition(t, kBreakpoint, mode, z, obs)) return *end;
-          f(t, z, k1);
-          ++stats_.rhs_evals;
-          t_break = next_breakpoint_of(model_, t, mode);
-          h = std::fmin(h, model_.step_hint(mode));
-          start_rates(t, mode, z, k1, h);
+          if (const auto end = restart_at_breakpoint(f, t, mode, z, k1, h, t_break, obs)) return *end;
         }
         continue;
       }
       // An event inside the step: keep the trajectory up to it, apply the transition, restart.
       double te = hit->t;
       State ze = z;
-      if (te > t) {
-        // The accepted step straddles the event, where the right-hand side is usually not
-        // smooth (forces switch on or off), so its interpolant is least accurate exactly there.
-        // One fresh step from t to te stays on the smooth side and gives the event state the
-        // accuracy of an ordinary step end.
-        State k7e;
-        const double err_e = attempt(f, t, te - t, z, k1, ze, k7e);
-        if (std::isfinite(err_e)) {
-          dense(f, t, te - t, z, ze, k1, k7e, seg);
-          polish_event(f, t, t_next, hit->index, mode, z, k1, te, ze, seg);
-        } else {
-          seg.eval(te, ze);
-        }
-        if (!obs.on_step(seg, t, te, mode)) return RunStatus::ObserverStop;
-      }
+      if (te > t && !step_to_event(f, t, t_next, hit->index, mode, z, k1, te, ze, seg, obs)) return RunStatus::ObserverStop;
       zero_time_events = (te == t) ? zero_time_events + 1 : 0;
       events_at_instant = (te == t) ? events_at_instant + 1 : 0;
       if (events_at_instant > kMaxEventsAtInstant * opt_.chatter_limit) return RunStatus::Chatter;
@@ -347,30 +315,108 @@ class HybridIntegrator {
       z = ze;
       if (const auto end = apply_transition(t, hit->index, mode, z, obs)) return *end;
       if (zero_time_events >= opt_.chatter_limit) {
-        const auto held = model_.resolve_chatter(t, mode, z);
-        if (!held) return RunStatus::Chatter;
-        EventInfo<Mode, N> hold{t, z, z, mode, held->next, -1, held->kind, false};
-        mode = held->next;
-        model_.complete(mode, z);
-        hold.z = z;
-        if (!obs.on_event(hold)) return RunStatus::ObserverStop;
-        Events g_hold;
-        model_.events(t, mode, z, g_hold);
-        for (std::size_t i = 0; i < NE; ++i) armed_[i] = g_hold[i] > 0.0;
+        if (const auto end = hold_chatter(t, mode, z, obs)) return *end;
         zero_time_events = 0;
       }
-      f(t, z, k1);
-      ++stats_.rhs_evals;
-      t_break = next_breakpoint_of(model_, t, mode);
-      h = std::fmin(h_new, model_.step_hint(mode));
-      h = restart_step_of(model_, t, mode, z, k1, std::fmin(h, opt_.h_max));
-      h = cut_at_kink(t, mode, z, k1, h);
-      start_rates(t, mode, z, k1, h);
+      h = restart_after_event(f, t, mode, z, k1, h_new, t_break);
     }
     return RunStatus::ReachedEnd;
   }
 
  private:
+  // The event values and rates at the accepted step's end become those at the next step's start.
+  void keep_end_values() {
+    g_start_ = g_end_;
+    gd_start_ = gd_end_;
+    gd_err_start_ = gd_err_end_;
+  }
+
+  // After an event: the new mode's derivative, next breakpoint and first step (the model's hint,
+  // its restart step, cut at a kink); returns the step.
+  template <class F>
+  double restart_after_event(F& f, double t, const Mode& mode, const State& z, State& k1, double h_new,
+                             double& t_break) {
+    f(t, z, k1);
+    ++stats_.rhs_evals;
+    t_break = next_breakpoint_of(model_, t, mode);
+    double h = std::fmin(h_new, model_.step_hint(mode));
+    h = restart_step_of(model_, t, mode, z, k1, std::fmin(h, opt_.h_max));
+    h = cut_at_kink(t, mode, z, k1, h);
+    start_rates(t, mode, z, k1, h);
+    return h;
+  }
+
+  // Observers get an accepted step without an event (its end state given; ensure: how they get the
+  // full dense output if the step has only its Hermite interpolant). False: one asked to stop.
+  template <class Observer, class Ensure>
+  bool observe_step(Observer& obs, DenseSegment<N>& seg, double t, double t_next, const Mode& mode, const State& y_end,
+                    Ensure* ensure) {
+    if (ensure) seg.set_refine([](void* e) { (*static_cast<Ensure*>(e))(); }, ensure);
+    seg.end_state = &y_end;
+    const bool go = obs.on_step(seg, t, t_next, mode);
+    seg.set_refine(nullptr, nullptr);
+    seg.end_state = nullptr;
+    return go;
+  }
+
+  // At an input breakpoint reached by a step: the model re-selects its mode (the input may jump
+  // or kink), and the integration restarts from there.
+  template <class F, class Observer>
+  std::optional<RunStatus> restart_at_breakpoint(F& f, double t, Mode& mode, State& z, State& k1, double& h,
+                                                 double& t_break, Observer& obs) {
+    if (const auto end = apply_transition(t, kBreakpoint, mode, z, obs)) return end;
+    f(t, z, k1);
+    ++stats_.rhs_evals;
+    t_break = next_breakpoint_of(model_, t, mode);
+    h = std::fmin(h, model_.step_hint(mode));
+    start_rates(t, mode, z, k1, h);
+    return std::nullopt;
+  }
+
+  // The accepted step straddles the event at te, where the right-hand side is usually not smooth
+  // (forces switch on or off), so its interpolant is least accurate exactly there. One fresh step
+  // from t to te stays on the smooth side and gives the event state ze the accuracy of an
+  // ordinary step end; observers get the piece up to te (false: one asked to stop).
+  template <class F, class Observer>
+  bool step_to_event(F& f, double t, double t_next, int index, const Mode& mode, const State& z, const State& k1,
+                     double& te, State& ze, DenseSegment<N>& seg, Observer& obs) {
+    State k7e;
+    const double err_e = attempt(f, t, te - t, z, k1, ze, k7e);
+    if (std::isfinite(err_e)) {
+      dense(f, t, te - t, z, ze, k1, k7e, seg);
+      polish_event(f, t, t_next, index, mode, z, k1, te, ze, seg);
+    } else {
+      seg.eval(te, ze);
+    }
+    return obs.on_step(seg, t, te, mode);
+  }
+
+  // Zero-duration events repeating at one instant: the model holds a mode (sticking, resting)
+  // if it can; observers see the hold; the event functions are armed from the held mode.
+  template <class Observer>
+  std::optional<RunStatus> hold_chatter(double t, Mode& mode, State& z, Observer& obs) {
+    const auto held = model_.resolve_chatter(t, mode, z);
+    if (!held) return RunStatus::Chatter;
+    EventInfo<Mode, N> hold{t, z, z, mode, held->next, -1, held->kind, false};
+    mode = held->next;
+    model_.complete(mode, z);
+    hold.z = z;
+    if (!obs.on_event(hold)) return RunStatus::ObserverStop;
+    Events g_hold;
+    model_.events(t, mode, z, g_hold);
+    for (std::size_t i = 0; i < NE; ++i) armed_[i] = g_hold[i] > 0.0;
+    return std::nullopt;
+  }
+
+  // An event function disarmed at zero is armed again once it is positive at a step end.
+  void rearm_risen() {
+    for (std::size_t i = 0; i < NE; ++i)
+      if (!armed_[i] && g_start_[i] > 0.0) {
+        armed_[i] = true;
+        remainder_known_ = false;
+      }
+  }
+
   // The transition of event `index` (or kBreakpoint) at t: the model picks the next mode and may
   // change the state; observers see it with the state before and after. Every event function is
   // armed again (one at zero fires at once unless it rises first). Returns the run's end status
