@@ -162,7 +162,6 @@ void require_sample_count(const std::string& field, double interval, double span
     throw UsageError(e.what());
   }
 }
-}
 
 void require_range(const std::string& field, double v, double lo, double hi, bool lo_incl, bool hi_incl) {
   try {

@@ -153,16 +153,8 @@ AssemblySetup assembly_from(const Settings& s) {
   AssemblySetup setup;
   Assembly& a = setup.assembly;
   a = v.file.empty() ? from_preset(s, v) : from_file(s, v);
-  if (s.flag("columns-rock-only")) {
-    if (!v.rigid) throw Invalid("--columns-rock-only (seed 001's 5-DOF restriction) needs --contact rigid");
-    // No sliding and plastic impacts on the ground: the blocks standing on it only rock.
-    a.rock_only_on_ground = true;
-    for (AssemblyInterface& i : a.interfaces)
-      if (i.lower < 0) {
-        i.law.mu_s = i.law.mu_k = kNoSlip;
-        i.law.restitution = 0.0;
-      }
-  }
+  if (s.flag("columns-rock-only")) restrict_to_rocking_on_ground(a);
+
   if (s.has("collapse-rotation") || v.file.empty()) a.collapse_rotation = v.collapse_rotation;
   if (s.has("min-bearing") || v.file.empty()) a.min_bearing = v.min_bearing;
   validate(a);

@@ -72,16 +72,8 @@ ForcedModel assembly_model(const Settings& s) {
   }
   Assembly a = make_preset(preset, po);
   const bool rock_only = s.flag("columns-rock-only");
-  if (rock_only) {
-    if (!po.rigid_contacts) throw Invalid("--columns-rock-only (seed 001's 5-DOF restriction) needs --contact rigid");
-    // As `blockdyn assembly --columns-rock-only`: no sliding and plastic impacts on the ground.
-    a.rock_only_on_ground = true;
-    for (AssemblyInterface& i : a.interfaces)
-      if (i.lower < 0) {
-        i.law.mu_s = i.law.mu_k = kNoSlipFriction;
-        i.law.restitution = 0.0;
-      }
-  }
+  if (rock_only) restrict_to_rocking_on_ground(a);
+
   nlohmann::ordered_json description = {{"model", "assembly"}, {"preset", preset},          {"contact", a.contact},
                                          {"blocks", a.blocks.size()}, {"phi_s", phi_s},      {"phi_l", phi_l},
                                          {"slenderness", po.slenderness}, {"columns_rock_only", rock_only}};

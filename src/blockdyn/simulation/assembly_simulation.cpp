@@ -6,7 +6,7 @@
 #include <memory>
 #include <stdexcept>
 
-#include "blockdyn/simulation/output_clock.hpp"
+#include "blockdyn/simulation/trajectory_rows.hpp"
 #include "blockdyn/model/assembly/assembly_model.hpp"
 #include "blockdyn/simulation/assembly_columns.hpp"
 #include "blockdyn/simulation/moreau_jean_run.hpp"
@@ -132,43 +132,25 @@ const char* const kEndState[] = {"O", "K", "P", "N"};
 
 // The trajectory table: one row per output instant (dense output) and one per event.
 template <int Cap>
-class AssemblyTrajectory final : public Observer<Model<Cap>> {
- public:
+class AssemblyTrajectory final : public TrajectoryRows<Model<Cap>, AssemblyTrajectory<Cap>> {
   using M = Model<Cap>;
+  using Base = TrajectoryRows<M, AssemblyTrajectory<Cap>>;
+
+ public:
   using typename Observer<M>::Mode;
   using typename Observer<M>::State;
   using typename Observer<M>::Event;
-  using typename Observer<M>::Segment;
 
-  AssemblyTrajectory(TrajectoryTable& out, double interval) : out_(out), interval_(interval) {}
+  using Base::Base;
 
-  void on_start(const M& m, double t, const Mode& md, const State& z) override {
-    const auto names = assembly_columns(m.blocks(), m.interfaces());
-    cells_.resize(names.size());
-    out_.columns(names);
-    e0_ = m.energy(md, z) - m.work(z);
-    row(m, t, md, z, "start");
-    clock_.start(t, interval_);
-  }
-  bool on_segment(const M& m, const Segment& seg, double, double t1, const Mode& md) override {
-    clock_.emit(t1, [&](double t) {
-      State z;
-      seg.eval(t, z);
-      m.complete(md, z);
-      row(m, t, md, z, "");
-    });
-    return true;
-  }
+  std::vector<std::string> columns(const M& m) const { return assembly_columns(m.blocks(), m.interfaces()); }
+  void started(const M& m, const Mode& md, const State& z) { e0_ = m.energy(md, z) - m.work(z); }
   bool on_event(const M& m, const Event& e) override {
     if (e.kind == kAsmBreakpoint) return true;
-    row(m, e.t, e.to, e.z, assembly_event_name(e.kind));
+    this->row(m, e.t, e.to, e.z, assembly_event_name(e.kind));
     return true;
   }
-
- private:
-  void row(const M& m, double t, const Mode& md, const State& z, const char* ev) {
-    RowBuffer& c = cells_;
-    c.clear();
+  void fill(RowBuffer& c, const M& m, double t, const Mode& md, const State& z, const char* ev) const {
     c.number(t);
     c.text(ev);
     for (int b = 0; b < m.blocks(); ++b) {
@@ -187,12 +169,9 @@ class AssemblyTrajectory final : public Observer<Model<Cap>> {
     for (double v : {e.kinetic, e.gravity, e.normal_spring, e.tangential_spring, e.total(), z[M::kWGround],
                      z[M::kWNormal], z[M::kWFriction], z[M::kWSwitch], e.total() - m.work(z) - e0_})
       c.number(v);
-    c.write_to(out_);
   }
-  TrajectoryTable& out_;
-  double interval_;
-  OutputClock clock_;
-  RowBuffer cells_;
+
+ private:
   double e0_ = 0;
 };
 

@@ -286,4 +286,15 @@ void validate(const Assembly& a) {
   }
 }
 
+void restrict_to_rocking_on_ground(Assembly& a) {
+  if (a.contact != "rigid")
+    throw std::invalid_argument("--columns-rock-only (seed 001's 5-DOF restriction) needs --contact rigid");
+  a.rock_only_on_ground = true;
+  for (AssemblyInterface& i : a.interfaces)
+    if (i.lower < 0) {
+      i.law.mu_s = i.law.mu_k = kNoSlipFriction;
+      i.law.restitution = 0.0;
+    }
+}
+
 }  // namespace blockdyn

@@ -64,6 +64,11 @@ struct PresetOptions {
 
 Assembly make_preset(const std::string& name, const PresetOptions& o);
 
+// Seed 001's 5-DOF restriction (rigid law only): the blocks standing on the ground only rock (no
+// sliding, plastic impacts on the ground); a block leaving the ground is reported, not integrated.
+// Throws std::invalid_argument for an assembly with deformable contacts.
+void restrict_to_rocking_on_ground(Assembly& a);
+
 // Checks sizes, masses, friction, indices and the initial configuration (overlapping blocks, a
 // block floating above its support); throws std::invalid_argument naming the field.
 void validate(const Assembly& a);
