@@ -173,11 +173,7 @@ void add(CLI::App& app) {
   s->add_option("--plot", f->plot, "plot the spectrum (PNG + SVG), with the linearised closed form for rect");
   s->add_option("--plot-map", f->plot_map,
                 "plot the overturn / survive picture over (duration, amplitude) from the scan (PNG + SVG)");
-  s->add_flag("--json", f->json, "print the JSON summary");
-  s->add_option("--json-out", f->json_out, "write the JSON summary here");
-  s->add_option("--progress", f->progress, "auto, bar, plain or none")->check(CLI::IsMember({"auto", "bar", "plain", "none"}));
-  add_grid_run_flags(*s, f->g);
-  s->add_flag("--quiet", f->quiet, "no table, no progress");
+  add_grid_report_flags(*s, f->g, f->json, f->json_out, f->progress, f->quiet, "no table, no progress");
   s->callback([s, f] { run(*s, *f); });
 }
 

@@ -140,11 +140,7 @@ void add(CLI::App& app) {
                 "collapse mode are split in four, level after level");
   s->add_option("--out", f->out, "the points as CSV (the runner's table: journal and sidecar .json beside it)");
   s->add_option("--plot", f->plot, "plot the survival domain (PNG + SVG) in the style of seed 002");
-  s->add_flag("--json", f->json, "print the JSON summary");
-  s->add_option("--json-out", f->json_out, "write the JSON summary here");
-  s->add_option("--progress", f->progress, "auto, bar, plain or none")->check(CLI::IsMember({"auto", "bar", "plain", "none"}));
-  add_grid_run_flags(*s, f->g);
-  s->add_flag("--quiet", f->quiet, "no summary line, no progress");
+  add_grid_report_flags(*s, f->g, f->json, f->json_out, f->progress, f->quiet, "no summary line, no progress");
   s->callback([s, f] { run(*s, *f); });
 }
 

@@ -16,6 +16,15 @@ void add_grid_run_flags(CLI::App& s, GridRunFlags& f) {
   s.add_option("--progress-interval", f.progress_interval, "seconds between plain progress lines (default 10)");
 }
 
+void add_grid_report_flags(CLI::App& s, GridRunFlags& g, bool& json, std::string& json_out, std::string& progress,
+                           bool& quiet, const std::string& quiet_help) {
+  s.add_flag("--json", json, "print the JSON summary");
+  s.add_option("--json-out", json_out, "write the JSON summary here");
+  s.add_option("--progress", progress, "auto, bar, plain or none")->check(CLI::IsMember({"auto", "bar", "plain", "none"}));
+  add_grid_run_flags(s, g);
+  s.add_flag("--quiet", quiet, quiet_help);
+}
+
 GridOutput::GridOutput(const std::string& csv_flag, const std::string& csv, const std::string& kind,
                        const GridRunFlags& f, const std::string& json_out)
     : csv_(csv) {

@@ -22,6 +22,10 @@ struct GridRunFlags {
   double progress_interval = 10;
 };
 void add_grid_run_flags(CLI::App& s, GridRunFlags& f);
+// The report flags of a grid command: --json, --json-out, --progress, the runner's flags above and
+// --quiet (quiet_help: what it silences).
+void add_grid_report_flags(CLI::App& s, GridRunFlags& g, bool& json, std::string& json_out, std::string& progress,
+                           bool& quiet, const std::string& quiet_help);
 
 // Where the table goes: the user's CSV (the journal and sidecar beside it), or, when only JSON
 // or a figure was asked for, scratch files removed at the end (also on SIGINT/SIGTERM); such a

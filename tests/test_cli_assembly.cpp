@@ -7,13 +7,7 @@
 #include <cmath>
 #include <fstream>
 
-#include "test_sweep_util.hpp"
-
-using nlohmann::json;
-using sweep_test::exists;
-using sweep_test::run_cli;
-using sweep_test::slurp;
-using sweep_test::TmpDir;
+#include "cli_test.hpp"
 
 namespace {
 

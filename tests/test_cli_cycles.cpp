@@ -8,13 +8,7 @@
 #include <cmath>
 #include <sstream>
 
-#include "test_sweep_util.hpp"
-
-using nlohmann::json;
-using sweep_test::exists;
-using sweep_test::run_cli;
-using sweep_test::slurp;
-using sweep_test::TmpDir;
+#include "cli_test.hpp"
 
 namespace {
 const std::vector<std::string> kHousner{"--model", "housner", "--width", "0.3", "--height", "1.5"};

@@ -4,13 +4,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include "test_sweep_util.hpp"
-
-using nlohmann::json;
-using sweep_test::exists;
-using sweep_test::run_cli;
-using sweep_test::slurp;
-using sweep_test::TmpDir;
+#include "cli_test.hpp"
 
 TEST(CliSpectrum, JsonRowsCsvAndPlot) {
   TmpDir d("spectrum");

@@ -9,48 +9,19 @@
 
 #include "blockdyn/integrate/dopri5.hpp"
 #include "blockdyn/integrate/hybrid_integrator.hpp"
+#include "stepper_test_problem.hpp"
 
 using namespace blockdyn;
 
 namespace {
 
-// y0' = y0 cos t (y0 = exp(sin t)), y1'' = -y1 (y1 = cos t as a first-order pair y1, y2).
-constexpr std::size_t kN = 3;
-void rhs(double t, const Vec<kN>& y, Vec<kN>& dy) {
-  dy[0] = y[0] * std::cos(t);
-  dy[1] = y[2];
-  dy[2] = -y[1];
-}
-Vec<kN> exact(double t) { return {std::exp(std::sin(t)), std::cos(t), -std::sin(t)}; }
+using stepper_test::exact;
+using stepper_test::kN;
+using stepper_test::max_err;
+using stepper_test::rhs;
 
-double max_err(const Vec<kN>& a, const Vec<kN>& b) {
-  double e = 0;
-  for (std::size_t i = 0; i < kN; ++i) e = std::fmax(e, std::fabs(a[i] - b[i]));
-  return e;
-}
-
-// A stepper whose error estimate is the plain absolute error (atol 1, rtol 0).
-Dopri5<kN> absolute_stepper() {
-  Dopri5<kN> st;
-  st.atol.fill(1.0);
-  st.rtol.fill(0.0);
-  return st;
-}
-
-// Fixed-step integration over [0, T] in n steps; the error estimate is ignored.
-double global_error(int n, double T) {
-  Dopri5<kN> st = absolute_stepper();
-  StepperStats stats;
-  Vec<kN> y = exact(0), k1, k7, y1;
-  rhs(0, y, k1);
-  const double h = T / n;
-  for (int i = 0; i < n; ++i) {
-    st.attempt(rhs, i * h, h, y, k1, y1, k7, stats);
-    y = y1;
-    k1 = k7;
-  }
-  return max_err(y, exact(T));
-}
+Dopri5<kN> absolute_stepper() { return stepper_test::absolute_stepper<Dopri5<kN>>(); }
+double global_error(int n, double T) { return stepper_test::global_error<Dopri5<kN>>(n, T); }
 
 }  // namespace
 
