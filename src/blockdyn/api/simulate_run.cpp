@@ -201,13 +201,6 @@ SimulateReport run_rigid(const Scenario& sc, const SimulateOutputs& out) {
   });
 }
 
-// The block families' runs by model name (one Scenario type for the three).
-SimulateReport run_block(const Scenario& sc, const SimulateOutputs& out) {
-  if (sc.model == "housner") return run_housner(sc, out);
-  if (sc.model == "rigid") return run_rigid(sc, out);
-  return run_winkler(sc, out);
-}
-
 class PreparedBlock final : public PreparedRun {
  public:
   explicit PreparedBlock(Scenario sc) : sc_(std::move(sc)) {}
@@ -297,9 +290,9 @@ const std::vector<SimulateFamily>& simulate_families() {
   // One row per family: a new family is its folder (model, run) plus a row here.
   static const std::vector<SimulateFamily> families{
       {"winkler", "block on a Winkler foundation (non-dimensional unless a physical block is given)",
-       scenario_option_names, prepare_block},
-      {"housner", "1-DOF rocking on rigid ground", scenario_option_names, prepare_block},
-      {"rigid", "3-DOF on rigid ground, five mechanisms", scenario_option_names, prepare_block},
+       scenario_option_names, prepare_block, run_winkler},
+      {"housner", "1-DOF rocking on rigid ground", scenario_option_names, prepare_block, run_housner},
+      {"rigid", "3-DOF on rigid ground, five mechanisms", scenario_option_names, prepare_block, run_rigid},
       {"assembly", "block assemblies (preset or TOML file) with deformable or rigid contacts", assembly_option_names,
        prepare_assembly},
   };
@@ -325,7 +318,9 @@ std::unique_ptr<PreparedRun> prepare_run(const Settings& s) {
 SimulateReport run_scenario(const Scenario& sc, const SimulateOutputs& out) {
   if (out.timing_repeat < 1 || out.timing_repeat > 1000)
     throw std::invalid_argument("timing-repeat = " + std::to_string(out.timing_repeat) + " is out of range: [1, 1000]");
-  return run_block(sc, out);
+  const SimulateFamily& f = simulate_family(sc.model);
+  if (!f.run_scenario) throw std::invalid_argument("--model " + sc.model + " is not described by a scenario");
+  return f.run_scenario(sc, out);
 }
 
 }  // namespace blockdyn
