@@ -16,10 +16,11 @@
 #include "blockdyn/analysis/sweep/sweep_runner.hpp"
 #include "blockdyn/io/json_io.hpp"
 #include "blockdyn/io/progress.hpp"
-#include "bounds_common.hpp"
+#include "blockdyn/api/study_command.hpp"
 #include "cli_common.hpp"
 #include "cli_registry.hpp"
 #include "grid_run.hpp"
+#include "study_table_output.hpp"
 
 namespace blockdyn::cli {
 namespace {
@@ -84,7 +85,7 @@ void run(const CLI::App& s, const MapFlags& f) {
     throw UsageError("boundary-points = " + std::to_string(f.boundary_points) + " is out of range: must be in [0, 1000]");
   require_range("fine-per-decade", f.fine_per_decade, 0.0, 1000);
   if (f.critical_n < 2) throw UsageError("critical-n = " + std::to_string(f.critical_n) + " is out of range: must be >= 2");
-  const IcChoice ic = bounds::parse_ic(f.ic);
+  const IcChoice ic = parse_ic_choice(f.ic);
 
   SweepSpec spec;
   spec.k = parse_axis("k", f.k, AxisSpacing::Log);
@@ -124,19 +125,19 @@ void run(const CLI::App& s, const MapFlags& f) {
       return boundary_row(ir, f.mu, ic, f.critical_n, run, k_lo, k_hi, f.fine_per_decade);
     });
   }
-  bounds::Table t;
+  StudyTable t;
   t.columns = {"inv_r", "r", "k_stability", "stability_status", "k_high", "k_high_status", "k_critical",
                "k_critical_status"};
   t.columns.insert(t.columns.end(), {"k3_stability", "k3_status"});
   for (const auto& b : rows)
-    t.rows.push_back({bounds::num(b.inv_r), bounds::num(b.r), bounds::num(bounds::cell(b.stability.result)),
-                      to_string(b.stability.result.status), bounds::num(bounds::cell(b.high.result)),
-                      to_string(b.high.result.status), bounds::num(bounds::cell(b.critical.result)),
+    t.rows.push_back({cell_text(b.inv_r), cell_text(b.r), cell_text(boundary_cell(b.stability.result)),
+                      to_string(b.stability.result.status), cell_text(boundary_cell(b.high.result)),
+                      to_string(b.high.result.status), cell_text(boundary_cell(b.critical.result)),
                       to_string(b.critical.result.status),
-                      b.k3 ? bounds::num(bounds::cell(b.k3->point.result)) : bounds::num(NAN),
+                      b.k3 ? cell_text(boundary_cell(b.k3->point.result)) : cell_text(NAN),
                       b.k3 ? to_string(b.k3->point.result.status) : "not_applicable"});
   const std::string bpath = boundaries_path(out.paths.csv);
-  bounds::json meta = {{"run", run_info()},
+  nlohmann::ordered_json meta = {{"run", run_info()},
                        {"what", "boundaries of the response map"},
                        {"mu", f.mu},
                        {"ic", ic.name()},
@@ -146,10 +147,10 @@ void run(const CLI::App& s, const MapFlags& f) {
                        {"k_critical_n", f.critical_n},
                        {"fine_points_per_decade", f.fine_per_decade},
                        {"k_range", {k_lo, k_hi}},
-                       {"run_options", bounds::run_options_json(run)}};
-  bounds::write_table(bpath, t, meta);
+                       {"run_options", run_options_json(run)}};
+  write_study_table(bpath, t, meta);
   if (!f.plot.empty())
-    run_python("plot_map.py", {out.paths.csv, bpath, f.plot, "mu = " + bounds::num(f.mu) + ", " + ic.name()});
+    run_python("plot_map.py", {out.paths.csv, bpath, f.plot, "mu = " + cell_text(f.mu) + ", " + ic.name()});
   if (!f.quiet)
     std::printf("map: %zu points (%zu computed, %zu resumed) in %.1f s -> %s, boundaries -> %s\n", out.points,
                 out.computed, out.resumed, out.wall_seconds, out.paths.csv.c_str(), bpath.c_str());

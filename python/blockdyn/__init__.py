@@ -427,3 +427,62 @@ def periodic_orbits(**options):
     cols, j = _table_and_json("periodic-orbits", options)
     j.update(cols)
     return j
+
+
+class StudyResult:
+    """A study's results: `table` ({column: NumPy array, or object array of text}), `summary` (the
+    dict the command's JSON summary holds), `text` (what the command prints) and `series` (an
+    orbit study's tables by name, e.g. response's "swings" and "phase": {column: array})."""
+
+    def __init__(self, table, summary, text, series=None):
+        self.table, self.summary, self.text = table, summary, text
+        self.series = series or {}
+
+    def __getitem__(self, column):
+        """A column of the table, or a series by name."""
+        return self.table[column] if column in self.table else self.series[column]
+
+    def __repr__(self):
+        return f"StudyResult({self.summary.get('command', '')!r}, columns={list(self.table)})"
+
+
+def studies():
+    """{study name: (description, {option: (default, help)})}: the analyses `blockdyn.study` runs
+    (the command line's subcommands of the same names)."""
+    return _core.studies()
+
+
+def study(name, table=True, **options):
+    """Runs the study NAME (e.g. "flight-time", "stability-curve", "equilibria") from memory, with
+    the command line's options as keywords (a list gives a comma-separated list); returns a
+    StudyResult. table=False skips tables the summary does not need (equilibria, bifurcation, the
+    orbit studies' series)."""
+    opts = []
+    for key, value in options.items():
+        if value is None or value is False:
+            continue
+        flag = key.replace("_", "-")
+        if value is True:
+            opts.append((flag, "true"))
+        elif isinstance(value, (list, tuple, np.ndarray)):
+            opts.append((flag, ",".join(_number(v) for v in value)))
+        else:
+            opts.append((flag, _number(value)))
+    cols, summary, text, series = _core.study(name, opts, table)
+    return StudyResult(_columns(cols), json.loads(summary), text,
+                       {k: _columns(v) for k, v in series.items()})
+
+
+def _study_function(name, description):
+    def run_named(**options):
+        return study(name, **options)
+
+    run_named.__name__ = name.replace("-", "_")
+    run_named.__doc__ = f"{description} (`blockdyn {name}`; see blockdyn.study)."
+    return run_named
+
+
+for _name, (_description, _opts) in _core.studies().items():
+    globals()[_name.replace("-", "_")] = _study_function(_name, _description)
+    __all__.append(_name.replace("-", "_"))
+__all__ += ["study", "studies", "StudyResult"]

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "blockdyn/api/simulate_run.hpp"
+#include "blockdyn/api/study_command.hpp"
 #include "blockdyn/io/json_io.hpp"
 #include "blockdyn/version.hpp"
 #include "cli_run.hpp"
@@ -100,6 +101,29 @@ py::tuple to_python(const Prepared& p, Outcome& o) {
   return py::make_tuple(cols, dump_json(doc));
 }
 
+// A study's table as columns: numbers as arrays where every cell reads as one, else text.
+py::dict study_columns(const StudyTable& t) {
+  py::dict cols;
+  for (std::size_t j = 0; j < t.columns.size(); ++j) {
+    std::vector<double> numbers;
+    std::vector<std::string> texts;
+    bool numeric = true;
+    for (const auto& row : t.rows) {
+      const std::string& c = j < row.size() ? row[j] : std::string();
+      texts.push_back(c);
+      char* end = nullptr;
+      const double v = std::strtod(c.c_str(), &end);
+      numeric = numeric && !c.empty() && end == c.c_str() + c.size();
+      numbers.push_back(v);
+    }
+    if (numeric)
+      cols[py::str(t.columns[j])] = py::array_t<double>(py::ssize_t(numbers.size()), numbers.data());
+    else
+      cols[py::str(t.columns[j])] = py::cast(texts);
+  }
+  return cols;
+}
+
 }  // namespace
 
 PYBIND11_MODULE(_core, m) {
@@ -150,6 +174,39 @@ PYBIND11_MODULE(_core, m) {
       },
       py::arg("runs"), py::arg("threads") = 1, py::arg("trajectory") = true,
       "Runs many blocks on `threads` threads (each run on one thread: the results are those of serial calls).");
+  m.def(
+      "study",
+      [](const std::string& name, const OptionList& options, bool table) {
+        const Settings s = settings_of(options);
+        StudyRequest request;
+        request.want_table = table;
+        StudyReport r;
+        {
+          py::gil_scoped_release release;
+          r = run_study(name, s, request);
+        }
+        nlohmann::ordered_json doc;
+        doc["schema"] = schema_name(name, "summary");
+        for (auto it = r.summary.begin(); it != r.summary.end(); ++it) doc[it.key()] = it.value();
+        py::dict series;
+        for (const NamedTable& t : r.series) series[py::str(t.name)] = study_columns(t.table);
+        return py::make_tuple(study_columns(r.table), dump_json(doc), r.text, series);
+      },
+      py::arg("name"), py::arg("options"), py::arg("table") = true,
+      "Runs a study (blockdyn.studies()); returns ({column: array or list}, summary JSON text, text, "
+      "{series name: {column: array}}).");
+  m.def(
+      "studies",
+      [] {
+        py::dict d;
+        for (const StudyCommand& c : study_commands()) {
+          py::dict opts;
+          for (const StudyOption& o : c.options) opts[py::str(o.name)] = py::make_tuple(o.default_value, o.help);
+          d[py::str(c.name)] = py::make_tuple(c.description, opts);
+        }
+        return d;
+      },
+      "{study name: (description, {option: (default, help)})}");
   m.def(
       "run_cli",
       [](const std::vector<std::string>& args) {

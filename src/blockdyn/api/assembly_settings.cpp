@@ -53,15 +53,18 @@ void check_values(const Settings& s, const Values& v) {
   require_in_range("phi-s", v.phi_s, 0, 90);
   require_in_range("phi-l", v.phi_l, 0, 90);
   // The kinetic angles lie between 0 and the static ones (the file's, or the options').
-  if (v.phi_s_kinetic) require_in_range("phi-s-kinetic", *v.phi_s_kinetic, 0, v.file.empty() || s.has("phi-s") ? v.phi_s : 90);
-  if (v.phi_l_kinetic) require_in_range("phi-l-kinetic", *v.phi_l_kinetic, 0, v.file.empty() || s.has("phi-l") ? v.phi_l : 90);
+  if (v.phi_s_kinetic)
+    require_in_range("phi-s-kinetic", *v.phi_s_kinetic, 0, v.file.empty() || s.has("phi-s") ? v.phi_s : 90);
+  if (v.phi_l_kinetic)
+    require_in_range("phi-l-kinetic", *v.phi_l_kinetic, 0, v.file.empty() || s.has("phi-l") ? v.phi_l : 90);
   require_in_range("tilt", v.tilt, -1.5, 1.5, false, false);
   require_in_range("normal-stiffness", v.k_normal, 1, 1e13);
   if (s.has("tangential-stiffness")) require_in_range("tangential-stiffness", v.k_tangential, 1, 1e13);
   require_in_range("restitution", v.restitution, v.rigid ? 0.0 : 1e-3, 1);
   if (v.rigid)
     for (const char* n : {"normal-stiffness", "tangential-stiffness", "rtol", "atol", "method"})
-      if (s.has(n)) throw Invalid(std::string("--") + n + " belongs to --contact deformable (the rigid law has --step)");
+      if (s.has(n))
+        throw Invalid(std::string("--") + n + " belongs to --contact deformable (the rigid law has --step)");
   if (!v.rigid && s.has("step")) throw Invalid("--step belongs to --contact rigid");
   require_in_range("collapse-rotation", v.collapse_rotation, 0, 10, false);
   require_in_range("min-bearing", v.min_bearing, 0, 1e3);
@@ -82,7 +85,8 @@ void set_kinetic(ContactLaw& l, const std::optional<double>& phi_kinetic, const 
 }
 
 Assembly from_file(const Settings& s, const Values& v) {
-  for (const char* n : {"slenderness", "drums", "block-width", "thickness", "density", "lintel-length", "overhang", "tilt"})
+  for (const char* n :
+       {"slenderness", "drums", "block-width", "thickness", "density", "lintel-length", "overhang", "tilt"})
     if (s.has(n)) throw Invalid(std::string("--") + n + " belongs to --preset (an assembly file gives its blocks)");
   Assembly a = read_assembly_file(v.file);
   // Options given override the file's contact laws.
@@ -136,11 +140,36 @@ void check_run(const AssemblyRunOptions& o) {
 
 const std::vector<std::string>& assembly_option_names() {
   static const std::vector<std::string> names = [] {
-    std::vector<std::string> n{"model", "file", "scenario", "preset", "contact", "slenderness", "drums", "block-width",
-                               "thickness", "density", "lintel-length", "overhang", "phi-s", "phi-l", "phi-s-kinetic",
-                               "phi-l-kinetic", "tilt", "normal-stiffness", "tangential-stiffness", "restitution",
-                               "collapse-rotation", "min-bearing", "g", "step", "columns-rock-only", "t-end", "rtol",
-                               "atol", "method", "output-interval"};
+    std::vector<std::string> n{"model",
+                               "file",
+                               "scenario",
+                               "preset",
+                               "contact",
+                               "slenderness",
+                               "drums",
+                               "block-width",
+                               "thickness",
+                               "density",
+                               "lintel-length",
+                               "overhang",
+                               "phi-s",
+                               "phi-l",
+                               "phi-s-kinetic",
+                               "phi-l-kinetic",
+                               "tilt",
+                               "normal-stiffness",
+                               "tangential-stiffness",
+                               "restitution",
+                               "collapse-rotation",
+                               "min-bearing",
+                               "g",
+                               "step",
+                               "columns-rock-only",
+                               "t-end",
+                               "rtol",
+                               "atol",
+                               "method",
+                               "output-interval"};
     for (const std::string& g : ground_option_names()) n.push_back(g);
     return n;
   }();

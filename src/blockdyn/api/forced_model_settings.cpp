@@ -39,7 +39,8 @@ ForcedModel block_model(const Settings& s, const std::string& model) {
   const double mu_s = s.number("mu-s", 0.7);
   rp.interface = {mu_s, s.number("mu-k", mu_s)};
   const std::string impact = s.text("impact", "housner");
-  if (impact != "housner" && impact != "newton") throw Invalid("--impact = '" + impact + "' is not one of: housner, newton");
+  if (impact != "housner" && impact != "newton")
+    throw Invalid("--impact = '" + impact + "' is not one of: housner, newton");
   rp.impact = impact == "newton" ? ImpactLaw::Newton : ImpactLaw::Housner;
   if (auto e = s.number("restitution")) rp.restitution = *e;
   return forced_block_model(rp, model == "housner");
@@ -74,18 +75,18 @@ ForcedModel assembly_model(const Settings& s) {
   const bool rock_only = s.flag("columns-rock-only");
   if (rock_only) restrict_to_rocking_on_ground(a);
 
-  nlohmann::ordered_json description = {{"model", "assembly"}, {"preset", preset},          {"contact", a.contact},
-                                         {"blocks", a.blocks.size()}, {"phi_s", phi_s},      {"phi_l", phi_l},
-                                         {"slenderness", po.slenderness}, {"columns_rock_only", rock_only}};
+  nlohmann::ordered_json description = {
+      {"model", "assembly"}, {"preset", preset}, {"contact", a.contact},          {"blocks", a.blocks.size()},
+      {"phi_s", phi_s},      {"phi_l", phi_l},   {"slenderness", po.slenderness}, {"columns_rock_only", rock_only}};
   return forced_assembly_model(a, std::move(description));
 }
 
 }  // namespace
 
 const std::vector<std::string>& forced_model_option_names() {
-  static const std::vector<std::string> n{"model",   "width",  "height",  "mass",        "g",           "mu-s",
-                                          "mu-k",    "impact", "restitution", "preset", "contact", "slenderness",
-                                          "block-width", "drums", "phi-s", "phi-l", "columns-rock-only"};
+  static const std::vector<std::string> n{
+      "model",  "width",   "height",      "mass",        "g",     "mu-s",  "mu-k",  "impact",           "restitution",
+      "preset", "contact", "slenderness", "block-width", "drums", "phi-s", "phi-l", "columns-rock-only"};
   return n;
 }
 

@@ -10,7 +10,8 @@ const std::vector<std::string>& ground_option_names() {
   static const std::vector<std::string> names = [] {
     std::vector<std::string> n;
     for (const char* c : {"ground-h", "ground-v"})
-      for (const char* k : {"", "-amplitude", "-frequency", "-phase", "-start", "-duration", "-pulse", "-record", "-scale"})
+      for (const char* k :
+           {"", "-amplitude", "-frequency", "-phase", "-start", "-duration", "-pulse", "-record", "-scale"})
         n.push_back(std::string(c) + k);
     return n;
   }();

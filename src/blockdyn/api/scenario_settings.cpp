@@ -43,7 +43,8 @@ void check_family_options(const Settings& s, const std::string& model) {
   }
   if (model == "housner")
     for (const char* n : {"mu-s", "mu-k", "impact", "x0", "y0", "vx0", "vy0"})
-      if (s.has(n)) throw Invalid(std::string("--") + n + " belongs to --model rigid (housner has one degree of freedom)");
+      if (s.has(n))
+        throw Invalid(std::string("--") + n + " belongs to --model rigid (housner has one degree of freedom)");
 }
 
 // The physical-block options on top of the scenario's [physical] block (if any).
@@ -52,7 +53,8 @@ void apply_physical(const Settings& s, Scenario& sc) {
   bool any = false;
   for (const PhysOption& po : kPhysOptions) {
     if (!s.has(po.name)) continue;
-    if (rigid && po.winkler_only) throw Invalid(std::string("--") + po.name + " belongs to the winkler model (--model winkler)");
+    if (rigid && po.winkler_only)
+      throw Invalid(std::string("--") + po.name + " belongs to the winkler model (--model winkler)");
     any = true;
   }
   if (!any) return;
@@ -80,8 +82,12 @@ void apply_initial(const Settings& s, Scenario& sc) {
     if (v != "ic1" && v != "ic2" && v != "custom") throw Invalid("--ic = '" + v + "' is not one of: ic1, ic2, custom");
     sc.initial.set = v;
   }
-  for (auto [name, field] : {std::pair{"w0", &InitialSpec::w0}, {"x0", &InitialSpec::x0}, {"y0", &InitialSpec::y0},
-                             {"vx0", &InitialSpec::vx0}, {"vy0", &InitialSpec::vy0}, {"vw0", &InitialSpec::vw0}})
+  for (auto [name, field] : {std::pair{"w0", &InitialSpec::w0},
+                             {"x0", &InitialSpec::x0},
+                             {"y0", &InitialSpec::y0},
+                             {"vx0", &InitialSpec::vx0},
+                             {"vy0", &InitialSpec::vy0},
+                             {"vw0", &InitialSpec::vw0}})
     if (auto v = s.number(name)) sc.initial.*field = *v;
 }
 
@@ -100,9 +106,9 @@ void apply_integrator(const Settings& s, IntegratorOptions& o) {
 
 const std::vector<std::string>& scenario_option_names() {
   static const std::vector<std::string> names = [] {
-    std::vector<std::string> n{"scenario", "model", "r", "mu", "k", "rtol", "atol", "method", "t-end", "output-interval",
-                               "ic", "w0", "x0", "y0", "vx0", "vy0", "vw0", "units", "restitution", "mu-s", "mu-k",
-                               "impact"};
+    std::vector<std::string> n{"scenario", "model",           "r",           "mu",   "k",    "rtol",  "atol", "method",
+                               "t-end",    "output-interval", "ic",          "w0",   "x0",   "y0",    "vx0",  "vy0",
+                               "vw0",      "units",           "restitution", "mu-s", "mu-k", "impact"};
     for (const PhysOption& po : kPhysOptions) n.emplace_back(po.name);
     for (const std::string& g : ground_option_names()) n.push_back(g);
     return n;
@@ -114,7 +120,8 @@ Scenario scenario_from(const Settings& s) {
   Scenario sc = s.has("scenario") ? load_scenario(s.text("scenario")) : Scenario{};
   if (s.has("model")) {
     const std::string m = s.text("model");
-    if (m != "winkler" && !is_rigid_family(m)) throw Invalid("--model = '" + m + "' is not one of: winkler, housner, rigid");
+    if (m != "winkler" && !is_rigid_family(m))
+      throw Invalid("--model = '" + m + "' is not one of: winkler, housner, rigid");
     sc.model = m;
   }
   check_family_options(s, sc.model);

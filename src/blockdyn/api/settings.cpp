@@ -22,7 +22,9 @@ std::string Settings::exact(double v) {
   return buf;
 }
 
-void Settings::add(std::string_view name, std::string value) { entries_[canonical(name)].values.push_back(std::move(value)); }
+void Settings::add(std::string_view name, std::string value) {
+  entries_[canonical(name)].values.push_back(std::move(value));
+}
 
 void Settings::set(std::string_view name, std::string value) {
   Entry& e = entries_[canonical(name)];

@@ -93,7 +93,8 @@ std::string rigid_text(const RigidResult& r, double alpha) {
                 to_string(r.status), r.t_final, to_string(r.final_mode));
   s += buf;
   if (!r.note.empty()) s += "note: " + r.note + "\n";
-  std::snprintf(buf, sizeof buf, "max |w| = %.6g rad (%.4g alpha) at t = %.6g s, impacts: %ld, mechanism changes: %ld\n",
+  std::snprintf(buf, sizeof buf,
+                "max |w| = %.6g rad (%.4g alpha) at t = %.6g s, impacts: %ld, mechanism changes: %ld\n",
                 r.max_abs_rotation, r.max_abs_rotation / alpha, r.t_max_abs_rotation, r.impacts, r.mode_changes);
   s += buf;
   std::snprintf(buf, sizeof buf, "steps: %ld, rhs evaluations: %ld, max |energy balance error| = %.3g J\n",
@@ -178,27 +179,28 @@ SimulateReport run_rigid_family(const Scenario& sc, const SimulateOutputs& out, 
   rep.timing = r.timing;
   const std::string title = block_title(sc.model, p);
   rep.figure.plot_script = "plot_rigid.py";
-  rep.figure.plot_args = {"--alpha", arg(p.shape.alpha()), "--model", sc.model, "--status", to_string(r.status),
-                          "--title", title};
-  rep.figure.animate_args = {"--model", sc.model, "--width", arg(p.shape.width), "--height", arg(p.shape.height),
-                             "--title", title + ": " + to_string(r.status)};
+  rep.figure.plot_args = {"--alpha",  arg(p.shape.alpha()), "--model", sc.model,
+                          "--status", to_string(r.status),  "--title", title};
+  rep.figure.animate_args = {"--model",  sc.model,
+                             "--width",  arg(p.shape.width),
+                             "--height", arg(p.shape.height),
+                             "--title",  title + ": " + to_string(r.status)};
   return rep;
 }
 
 SimulateReport run_housner(const Scenario& sc, const SimulateOutputs& out) {
-  return run_rigid_family<HousnerBlock>(sc, out, [](const RigidBlockParams& p, const GroundMotion& g,
-                                                    const RigidInitial& in, const RigidRunOptions& o,
-                                                    Observer<HousnerBlock>* obs, RigidEventSink* ev) {
-    return simulate_housner(p.shape, p.restitution, g, in, o, obs, ev);
-  });
+  return run_rigid_family<HousnerBlock>(sc, out,
+                                        [](const RigidBlockParams& p, const GroundMotion& g, const RigidInitial& in,
+                                           const RigidRunOptions& o, Observer<HousnerBlock>* obs, RigidEventSink* ev) {
+                                          return simulate_housner(p.shape, p.restitution, g, in, o, obs, ev);
+                                        });
 }
 
 SimulateReport run_rigid(const Scenario& sc, const SimulateOutputs& out) {
-  return run_rigid_family<RigidBlock>(sc, out, [](const RigidBlockParams& p, const GroundMotion& g,
-                                                  const RigidInitial& in, const RigidRunOptions& o,
-                                                  Observer<RigidBlock>* obs, RigidEventSink* ev) {
-    return simulate_rigid(p, g, in, o, obs, ev);
-  });
+  return run_rigid_family<RigidBlock>(
+      sc, out,
+      [](const RigidBlockParams& p, const GroundMotion& g, const RigidInitial& in, const RigidRunOptions& o,
+         Observer<RigidBlock>* obs, RigidEventSink* ev) { return simulate_rigid(p, g, in, o, obs, ev); });
 }
 
 class PreparedBlock final : public PreparedRun {
@@ -234,7 +236,8 @@ std::string assembly_text(const AssemblyResult& r) {
                   r.blocks[b].name.c_str(), r.blocks[b].max_abs_rotation, r.blocks[b].max_abs_sliding);
     s += buf;
   }
-  std::snprintf(buf, sizeof buf, "events: %ld, steps: %ld, rhs evaluations: %ld\n", r.events_total, r.steps, r.rhs_evals);
+  std::snprintf(buf, sizeof buf, "events: %ld, steps: %ld, rhs evaluations: %ld\n", r.events_total, r.steps,
+                r.rhs_evals);
   s += buf;
   std::snprintf(buf, sizeof buf,
                 "energy: E0 = %.9g J, max |balance error| = %.3g J, friction work = %.6g J, damping work = %.6g J\n",

@@ -51,10 +51,10 @@ class PreparedRun {
 };
 
 struct SimulateFamily {
-  const char* name;         // the --model value
-  const char* description;  // for --help
-  const std::vector<std::string>& (*options)();                 // the options it reads
-  std::unique_ptr<PreparedRun> (*prepare)(const Settings&);     // throws std::invalid_argument
+  const char* name;                                          // the --model value
+  const char* description;                                   // for --help
+  const std::vector<std::string>& (*options)();              // the options it reads
+  std::unique_ptr<PreparedRun> (*prepare)(const Settings&);  // throws std::invalid_argument
   // The run of a block described by a Scenario (winkler, housner, rigid); null for the others.
   SimulateReport (*run_scenario)(const Scenario&, const SimulateOutputs&) = nullptr;
 };

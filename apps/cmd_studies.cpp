@@ -1,0 +1,175 @@
+// SPDX-License-Identifier: Apache-2.0
+// Every library study (blockdyn/api/study_command.hpp) as a subcommand: its options from the
+// study's description, its outputs written here (CSV with sidecar, figure, JSON, text).
+#include <unistd.h>
+
+#include <cstdio>
+#include <iostream>
+#include <memory>
+#include <sstream>
+
+#include "blockdyn/api/study_command.hpp"
+#include "blockdyn/io/atomic_file.hpp"
+#include "cli_common.hpp"
+#include "cli_registry.hpp"
+#include "study_table_output.hpp"
+
+namespace blockdyn::cli {
+namespace {
+
+struct StudyOutputFlags {
+  std::string csv, plot, json_out;
+  bool json_stdout = false;  // SummaryFirst, Series: --json
+};
+
+// Series: each table to its file (P_<name>.csv, or the one --csv), then the figure from the
+// script's argument template; files that only fed the figure are removed.
+void write_series_and_figure(const StudyCommand& c, const StudyOutputFlags& f, const StudyReport& r) {
+  if (f.csv.empty() && f.plot.empty()) return;
+  const bool prefix = c.csv_flag == "csv-prefix";
+  const std::string base = f.csv.empty() ? "/tmp/blockdyn-" + c.name + "-" + std::to_string(::getpid()) : f.csv;
+  auto path_of = [&](const std::string& name) {
+    return prefix ? base + "_" + name + ".csv" : (f.csv.empty() ? base + ".csv" : base);
+  };
+  std::vector<std::string> written;
+  for (const NamedTable& t : r.series) {
+    std::ostringstream os;
+    write_study_rows(os, t.table);
+    write_file_atomically(path_of(t.name), os.str());
+    written.push_back(path_of(t.name));
+  }
+  auto remove_temporary = [&] {
+    if (f.csv.empty())
+      for (const auto& w : written) std::remove(w.c_str());
+  };
+  if (!f.plot.empty()) {
+    std::vector<std::string> args;
+    for (const std::string& a : r.plot_args)
+      args.push_back(a == "@plot" ? f.plot : a.rfind("@csv:", 0) == 0 ? path_of(a.substr(5)) : a);
+    try {
+      run_python(r.plot_script, args);
+    } catch (...) {
+      remove_temporary();
+      throw;
+    }
+  }
+  remove_temporary();
+}
+
+// The CSV (kept when --csv names it, else a temporary file for the figure only) and the figure.
+void write_table_and_figure(const StudyOutputFlags& f, const std::string& stem, StudyReport& r, bool table_style) {
+  if (f.csv.empty() && f.plot.empty()) return;
+  const std::string path = f.csv.empty() ? "/tmp/blockdyn-" + stem + "-" + std::to_string(::getpid()) + ".csv" : f.csv;
+  if (table_style)
+    write_study_table(path, r.table, r.sidecar);
+  else
+    write_study_csv(path, r.table, r.sidecar);
+  auto remove_temporary = [&] {
+    if (!f.csv.empty()) return;
+    std::remove(path.c_str());
+    std::remove((path + ".json").c_str());
+  };
+  if (!f.plot.empty()) {
+    std::vector<std::string> args{path, f.plot};
+    args.insert(args.end(), r.plot_args.begin(), r.plot_args.end());
+    try {
+      run_python(r.plot_script, args);
+    } catch (...) {
+      remove_temporary();
+      throw;
+    }
+  }
+  remove_temporary();
+}
+
+void run_command(const StudyCommand& c, const CLI::App& app, const StudyOutputFlags& f) {
+  const bool table_style = c.outputs == StudyOutputs::Table, series = c.outputs == StudyOutputs::Series;
+  if (table_style && !f.plot.empty() && (f.plot.size() < 5 || f.plot.substr(f.plot.size() - 4) != ".png"))
+    throw UsageError("plot = '" + f.plot + "' must end in .png (an .svg is written beside it)");
+  require_writable("plot", f.plot);
+  require_writable(c.csv_flag, c.csv_flag == "csv-prefix" && !f.csv.empty() ? f.csv + "_phase.csv" : f.csv);
+  require_writable(table_style ? "json" : "json-out", f.json_out);
+  StudyRequest request;
+  request.want_table = table_style || !f.csv.empty() || !f.plot.empty();
+  StudyReport r =
+      run_study(c.name, settings_of(app, {"--csv", "--csv-prefix", "--plot", "--json", "--json-out"}), request);
+  if (series)
+    write_series_and_figure(c, f, r);
+  else
+    write_table_and_figure(f, c.name, r, table_style);
+  if (table_style) {
+    if (!f.json_out.empty()) emit_json(r.summary, f.json_out);
+    if (f.json_out != "-") std::fputs(r.text.c_str(), stdout);
+    return;
+  }
+  if (!series && !f.csv.empty()) r.summary["csv"] = f.csv;
+  if (!series && !f.plot.empty()) r.summary["plot"] = f.plot;
+  if (!f.json_out.empty()) emit_json(r.summary, f.json_out);
+  if (f.json_stdout) {
+    emit_json(r.summary, "-");
+    return;
+  }
+  std::fputs(r.text.c_str(), stdout);
+}
+
+void add_study(CLI::App& app, const StudyCommand& c) {
+  CLI::App* s = app.add_subcommand(c.name, c.description);
+  for (const StudyOption& o : c.options) {
+    if (o.is_flag) {
+      s->add_flag("--" + o.name, o.help);
+      continue;
+    }
+    CLI::Option* opt = s->add_option("--" + o.name, o.help);
+    if (!o.default_value.empty()) opt->default_str(o.default_value);
+  }
+  auto f = std::make_shared<StudyOutputFlags>();
+  if (c.outputs == StudyOutputs::Table) {
+    s->add_option("--csv", f->csv, "write the table here (a JSON sidecar <csv>.json is written beside it)");
+    s->add_option("--plot", f->plot, "write a plot here (PNG; an SVG with the same stem beside it)");
+    s->add_option("--json", f->json_out, "write the JSON summary here ('-': stdout)");
+  } else if (c.outputs == StudyOutputs::Series) {
+    s->add_option("--" + c.csv_flag, f->csv,
+                  c.csv_flag == "csv-prefix" ? "write the series as PREFIX_<name>.csv" : "write the series CSV here");
+    s->add_option("--plot", f->plot, "write the figure here (PNG + SVG)");
+    s->add_flag("--json", f->json_stdout, "print the JSON summary on stdout");
+    s->add_option("--json-out", f->json_out, "also write the JSON summary to this file");
+  } else {
+    s->add_flag("--json", f->json_stdout, "print the JSON summary on stdout instead of a table");
+    s->add_option("--json-out", f->json_out, "also write the JSON summary to this file");
+    s->add_option("--csv", f->csv, "write the table (CSV + .json sidecar)");
+    s->add_option("--plot", f->plot, "plot the table (PNG; SVG beside it)");
+  }
+  s->callback([&c, s, f] { run_command(c, *s, *f); });
+}
+
+const bool registered = [] {
+  for (const StudyCommand& c : study_commands())
+    command_registry().push_back({c.order, [&c](CLI::App& app) { add_study(app, c); }});
+  return true;
+}();
+
+}  // namespace
+
+void write_study_rows(std::ostream& os, const StudyTable& t) {
+  for (std::size_t i = 0; i < t.columns.size(); ++i) os << (i ? "," : "") << t.columns[i];
+  os << '\n';
+  for (const auto& row : t.rows) {
+    for (std::size_t i = 0; i < row.size(); ++i) os << (i ? "," : "") << row[i];
+    os << '\n';
+  }
+}
+
+void write_study_csv(const std::string& path, const StudyTable& t, const nlohmann::ordered_json& sidecar) {
+  std::ostringstream os;
+  write_study_rows(os, t);
+  write_file_atomically(path, os.str());
+  emit_json(sidecar, path + ".json", "sidecar");
+}
+
+void write_study_table(const std::string& path, const StudyTable& t, nlohmann::ordered_json meta) {
+  meta["csv"] = path;
+  meta["columns"] = t.columns;
+  write_study_csv(path, t, meta);
+}
+
+}  // namespace blockdyn::cli

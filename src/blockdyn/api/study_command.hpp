@@ -1,0 +1,125 @@
+// SPDX-License-Identifier: Apache-2.0
+#pragma once
+// A study: an analysis whose options are named (with defaults and help), which computes a table
+// and a summary. The command line registers every study as a subcommand from its description
+// (apps/cmd_studies.cpp) and the Python module calls the same function (blockdyn.study), so an
+// analysis is written once, in the library, and reaches both front ends by one registration.
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "blockdyn/analysis/winkler/study_options.hpp"
+#include "blockdyn/api/settings.hpp"
+
+namespace blockdyn {
+
+struct StudyOption {
+  std::string name;           // without dashes: "r-min"
+  std::string help;           // for --help
+  std::string default_value;  // as the user would write it; empty: none
+  bool is_flag = false;       // given without a value
+};
+
+// How a study's outputs are named on the command line (both are contracts of existing commands).
+enum class StudyOutputs {
+  // --csv F (with its sidecar F.json: the meta, the csv path and the column names), --plot F.png,
+  // --json F|- (the summary), --threads N. The table is always computed.
+  Table,
+  // --csv F (sidecar: the study's own), --plot F, --json (summary on stdout, no text), --json-out F,
+  // --threads N for some. The table is computed only when a CSV or plot is wanted; the summary
+  // names them ("csv", "plot").
+  SummaryFirst,
+  // Series of one orbit: --csv-prefix P (P_<name>.csv per table) or --csv F (the one table), no
+  // sidecars; --plot F, --json (stdout), --json-out F. Tables only when a CSV or plot is wanted.
+  Series,
+};
+
+struct StudyTable {
+  std::vector<std::string> columns;
+  std::vector<std::vector<std::string>> rows;  // cells as written in the CSV
+};
+
+struct NamedTable {
+  std::string name;  // the file's suffix: P_<name>.csv
+  StudyTable table;
+};
+
+struct StudyReport {
+  StudyTable table;
+  std::vector<NamedTable> series;  // Series studies' tables
+  nlohmann::ordered_json sidecar;  // the JSON beside the CSV
+  nlohmann::ordered_json summary;  // the JSON summary
+  std::string text;                // the summary for a person (printed unless JSON goes to stdout)
+  std::string plot_script;         // python/plot_*.py: <csv> <figure> plot_args...
+  // Series studies: the script's whole argument list, with "@plot" for the figure's path and
+  // "@csv:<name>" for a table's.
+  std::vector<std::string> plot_args;
+};
+
+struct StudyRequest {
+  bool want_table = true;  // SummaryFirst studies skip the table's work when false
+};
+
+struct StudyCommand {
+  std::string name;         // the subcommand: "flight-time"
+  std::string description;  // for --help
+  int order = 0;            // position in --help
+  StudyOutputs outputs = StudyOutputs::Table;
+  std::vector<StudyOption> options;  // without the output options
+  StudyReport (*run)(const Settings&, const StudyRequest&) = nullptr;
+  std::string csv_flag = "csv";  // Series: "csv-prefix" (P_<name>.csv per table) or "csv" (one table)
+};
+
+// Every registered study, in --help order.
+const std::vector<StudyCommand>& study_commands();
+// The study named; throws std::invalid_argument listing the names.
+const StudyCommand& study_command(const std::string& name);
+// Runs a study from options given by name (refusing unknown ones and the output options).
+StudyReport run_study(const std::string& name, const Settings& s, const StudyRequest& request = {});
+
+// A study's options as given, else their defaults: values parsed on use, errors naming the option.
+class StudyOptions {
+ public:
+  StudyOptions(const Settings& given, const std::vector<StudyOption>& specs);
+  double number(const std::string& name) const;
+  long integer(const std::string& name) const;
+  std::string text(const std::string& name) const;
+  bool flag(const std::string& name) const;
+  bool given(const std::string& name) const { return given_.has(name); }
+  // --t-end --rtol --atol --method --max-steps.
+  StudyRunOptions run_options() const;
+  int threads() const;  // --threads, in [0, 1024]
+
+ private:
+  const Settings& given_;
+  Settings values_;
+};
+
+// The option lists many studies share.
+std::vector<StudyOption> study_run_options(const std::string& default_t_end);  // t-end .. max-steps
+StudyOption threads_option();
+
+// Cells: the shortest of %.15g / %.17g that reads back exactly ("nan" for NaN); and %.17g.
+std::string cell_text(double v);
+std::string cell_text17(double v);
+// A table from CSV text (a header line, then rows; no quoting).
+StudyTable table_from_csv(const std::string& text);
+// printf into a report's text.
+void append_text(std::string& to, const char* format, ...) __attribute__((format(printf, 2, 3)));
+// {t_end, integrator}
+nlohmann::ordered_json run_options_json(const StudyRunOptions& run);
+// A boundary search's result: status, value (null unless found), bracket, evaluations [, samples].
+nlohmann::ordered_json boundary_json(const BoundaryResult& b, bool with_samples = false);
+// A boundary's value for a cell: the value when found, NaN otherwise.
+double boundary_cell(const BoundaryResult& b);
+// "0,0.1,0.2" as numbers; std::invalid_argument naming the field.
+std::vector<double> parse_number_list(const std::string& field, const std::string& text);
+
+// The registrations (one per file of studies).
+void add_flight_studies(std::vector<StudyCommand>& to);
+void add_stability_studies(std::vector<StudyCommand>& to);
+void add_equilibrium_studies(std::vector<StudyCommand>& to);
+void add_orbit_studies(std::vector<StudyCommand>& to);
+
+}  // namespace blockdyn
