@@ -3,13 +3,16 @@
 // study's description, its outputs written here (CSV with sidecar, figure, JSON, text).
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <iostream>
+#include <map>
 #include <memory>
 #include <sstream>
 
 #include "blockdyn/api/study_command.hpp"
 #include "blockdyn/io/atomic_file.hpp"
+#include "blockdyn/io/progress.hpp"
 #include "cli_common.hpp"
 #include "cli_registry.hpp"
 #include "study_table_output.hpp"
@@ -18,42 +21,63 @@ namespace blockdyn::cli {
 namespace {
 
 struct StudyOutputFlags {
-  std::string csv, plot, json_out;
-  bool json_stdout = false;  // SummaryFirst, Series: --json
+  std::string csv, plot, json_out, progress = "auto";
+  bool json_stdout = false, quiet = false;          // --json (SummaryFirst, Series), --quiet
+  std::map<std::string, std::string> series_paths;  // Series with series_outputs: name -> --flag value
 };
 
-// Series: each table to its file (P_<name>.csv, or the one --csv), then the figure from the
-// script's argument template; files that only fed the figure are removed.
+// Where a series goes: the user's file, or a temporary one when only the figure needs it.
+struct SeriesTarget {
+  std::string path;
+  bool temporary = false;
+};
+
+SeriesTarget series_target(const StudyCommand& c, const StudyOutputFlags& f, const std::string& name) {
+  const std::string temp =
+      "/tmp/blockdyn-" + (c.series_outputs.empty() ? c.name : name) + "-" + std::to_string(::getpid());
+  std::string given;
+  if (c.csv_flag == "csv-prefix")
+    return f.csv.empty() ? SeriesTarget{temp + "_" + name + ".csv", true} : SeriesTarget{f.csv + "_" + name + ".csv"};
+  if (!c.series_outputs.empty()) {
+    const auto it = f.series_paths.find(name);
+    given = it == f.series_paths.end() ? "" : it->second;
+  } else {
+    given = f.csv;
+  }
+  return given.empty() ? SeriesTarget{temp + ".csv", true} : SeriesTarget{given};
+}
+
+// Series: each table to its file, then the figure from the script's argument template ("@plot",
+// "@csv:<name>"); files that only fed the figure are removed (also on failure or a signal).
 void write_series_and_figure(const StudyCommand& c, const StudyOutputFlags& f, const StudyReport& r) {
-  if (f.csv.empty() && f.plot.empty()) return;
-  const bool prefix = c.csv_flag == "csv-prefix";
-  const std::string base = f.csv.empty() ? "/tmp/blockdyn-" + c.name + "-" + std::to_string(::getpid()) : f.csv;
-  auto path_of = [&](const std::string& name) {
-    return prefix ? base + "_" + name + ".csv" : (f.csv.empty() ? base + ".csv" : base);
+  std::vector<std::unique_ptr<RemoveOnSignal>> guards;
+  std::vector<std::string> temporaries;
+  auto remove_temporaries = [&] {
+    for (const auto& t : temporaries) std::remove(t.c_str());
   };
-  std::vector<std::string> written;
   for (const NamedTable& t : r.series) {
+    const SeriesTarget target = series_target(c, f, t.name);
+    if (target.temporary && f.plot.empty()) continue;
+    if (target.temporary) {
+      guards.push_back(std::make_unique<RemoveOnSignal>(target.path));
+      temporaries.push_back(target.path);
+    }
     std::ostringstream os;
     write_study_rows(os, t.table);
-    write_file_atomically(path_of(t.name), os.str());
-    written.push_back(path_of(t.name));
+    write_file_atomically(target.path, os.str());
   }
-  auto remove_temporary = [&] {
-    if (f.csv.empty())
-      for (const auto& w : written) std::remove(w.c_str());
-  };
   if (!f.plot.empty()) {
     std::vector<std::string> args;
     for (const std::string& a : r.plot_args)
-      args.push_back(a == "@plot" ? f.plot : a.rfind("@csv:", 0) == 0 ? path_of(a.substr(5)) : a);
+      args.push_back(a == "@plot" ? f.plot : a.rfind("@csv:", 0) == 0 ? series_target(c, f, a.substr(5)).path : a);
     try {
       run_python(r.plot_script, args);
     } catch (...) {
-      remove_temporary();
+      remove_temporaries();
       throw;
     }
   }
-  remove_temporary();
+  remove_temporaries();
 }
 
 // The CSV (kept when --csv names it, else a temporary file for the figure only) and the figure.
@@ -91,8 +115,24 @@ void run_command(const StudyCommand& c, const CLI::App& app, const StudyOutputFl
   require_writable(table_style ? "json" : "json-out", f.json_out);
   StudyRequest request;
   request.want_table = table_style || !f.csv.empty() || !f.plot.empty();
-  StudyReport r =
-      run_study(c.name, settings_of(app, {"--csv", "--csv-prefix", "--plot", "--json", "--json-out"}), request);
+  for (const SeriesOutput& so : c.series_outputs) {
+    require_writable(so.flag, f.series_paths.at(so.name));
+    if (!f.plot.empty() || !f.series_paths.at(so.name).empty()) request.series.push_back(so.name);
+  }
+  if (!c.series_outputs.empty()) request.want_table = !request.series.empty();
+  std::unique_ptr<Progress> bar;
+  std::size_t shown = 0;
+  const ProgressMode mode = f.quiet ? ProgressMode::None : parse_progress_mode(f.progress);
+  if (c.progress_flag)
+    request.progress = [&bar, &shown, &c, mode](std::size_t done, std::size_t total) {
+      if (!bar) bar = std::make_unique<Progress>(c.name, total, 0, mode);
+      if (done > shown) bar->advance(done - shown);
+      shown = std::max(shown, done);
+    };
+  std::vector<std::string> outputs{"--csv", "--csv-prefix", "--plot", "--json", "--json-out", "--quiet", "--progress"};
+  for (const SeriesOutput& so : c.series_outputs) outputs.push_back("--" + so.flag);
+  StudyReport r = run_study(c.name, settings_of(app, outputs), request);
+  if (bar) bar->finish();
   if (series)
     write_series_and_figure(c, f, r);
   else
@@ -109,7 +149,7 @@ void run_command(const StudyCommand& c, const CLI::App& app, const StudyOutputFl
     emit_json(r.summary, "-");
     return;
   }
-  std::fputs(r.text.c_str(), stdout);
+  if (!f.quiet) std::fputs(r.text.c_str(), stdout);
 }
 
 void add_study(CLI::App& app, const StudyCommand& c) {
@@ -128,8 +168,10 @@ void add_study(CLI::App& app, const StudyCommand& c) {
     s->add_option("--plot", f->plot, "write a plot here (PNG; an SVG with the same stem beside it)");
     s->add_option("--json", f->json_out, "write the JSON summary here ('-': stdout)");
   } else if (c.outputs == StudyOutputs::Series) {
-    s->add_option("--" + c.csv_flag, f->csv,
-                  c.csv_flag == "csv-prefix" ? "write the series as PREFIX_<name>.csv" : "write the series CSV here");
+    if (c.series_outputs.empty())
+      s->add_option("--" + c.csv_flag, f->csv,
+                    c.csv_flag == "csv-prefix" ? "write the series as PREFIX_<name>.csv" : "write the series CSV here");
+    for (const SeriesOutput& so : c.series_outputs) s->add_option("--" + so.flag, f->series_paths[so.name], so.help);
     s->add_option("--plot", f->plot, "write the figure here (PNG + SVG)");
     s->add_flag("--json", f->json_stdout, "print the JSON summary on stdout");
     s->add_option("--json-out", f->json_out, "also write the JSON summary to this file");
@@ -139,6 +181,10 @@ void add_study(CLI::App& app, const StudyCommand& c) {
     s->add_option("--csv", f->csv, "write the table (CSV + .json sidecar)");
     s->add_option("--plot", f->plot, "plot the table (PNG; SVG beside it)");
   }
+  if (c.progress_flag)
+    s->add_option("--progress", f->progress, "auto, bar, plain or none")
+        ->check(CLI::IsMember({"auto", "bar", "plain", "none"}));
+  if (c.quiet_flag) s->add_flag("--quiet", f->quiet, "no summary lines, no progress");
   s->callback([&c, s, f] { run_command(c, *s, *f); });
 }
 

@@ -301,21 +301,17 @@ def response_curve(**options):
 
 
 def _harmonic_command(command, tables, options):
-    """Runs COMMAND with its JSON summary and the CSV tables {key: flag} in a temporary directory;
-    returns the summary with each table as {column: NumPy array} under its key."""
-    for reserved in ("json", "json_out", *tables.values()):
+    """Runs the study COMMAND from memory; returns its summary with each series of `tables` (the
+    names of the command line's CSV outputs) as {column: NumPy array} under its key."""
+    for reserved in ("json", "json_out", "out", "poincare", "trace", "plot", "quiet"):
         if reserved in options:
             raise ValueError(f"{reserved}: set by blockdyn.{command.replace('-', '_')} itself")
-    with tempfile.TemporaryDirectory(prefix="blockdyn-py-") as tmp:
-        summ = os.path.join(tmp, "summary.json")
-        paths = {key: os.path.join(tmp, key + ".csv") for key in tables}
-        opts = dict(options, json_out=summ, quiet=True, **{tables[k]: p for k, p in paths.items()})
-        run(*_args(command, opts))
-        with open(summ) as f:
-            j = json.load(f)
-        for key, path in paths.items():
-            j[key] = _read_csv(path)
-        return j
+    opts = _options(options)
+    cols, summary, text, series = _core.study(command, opts, True, list(tables))
+    j = json.loads(summary)
+    for key in tables:
+        j[key] = _columns(series[key])
+    return j
 
 
 def cycles(trace=False, **options):
@@ -323,7 +319,7 @@ def cycles(trace=False, **options):
     periods) and returns its JSON summary with the strobe samples under "strobe" ({column: array}:
     k, t, x_b, y_b, theta_b, vx_b, vy_b, omega_b per block, cycle) and the analysed block's "t",
     "theta", "omega" at t = k T; with trace=True also the trajectory under "trace"."""
-    tables = {"strobe": "out", **({"trace": "trace"} if trace else {})}
+    tables = ["strobe", *(["trace"] if trace else [])]
     j = _harmonic_command("cycles", tables, options)
     b = j["block"]
     j["t"], j["theta"], j["omega"] = (j["strobe"][c] for c in ("t", f"theta_{b}", f"omega_{b}"))
@@ -334,7 +330,7 @@ def impact_map(trace=False, **options):
     """Runs `blockdyn impact-map` and returns its JSON summary with the impacts as arrays "t",
     "phase" ((Omega t + phase) mod 2 pi), "omega_before", "omega_after", the Poincare section under
     "poincare" ({column: array}) and, with trace=True, the trajectory under "trace"."""
-    tables = {"impacts": "out", "poincare": "poincare", **({"trace": "trace"} if trace else {})}
+    tables = ["impacts", "poincare", *(["trace"] if trace else [])]
     j = _harmonic_command("impact-map", tables, options)
     for c in ("t", "phase", "omega_before", "omega_after"):
         j[c] = j["impacts"].get(c, np.array([], dtype=float))
@@ -482,7 +478,10 @@ def _study_function(name, description):
     return run_named
 
 
+# A function per study, but for the studies that have their own above (cycles, impact_map: their
+# results keep the shape they had).
 for _name, (_description, _opts) in _core.studies().items():
-    globals()[_name.replace("-", "_")] = _study_function(_name, _description)
-    __all__.append(_name.replace("-", "_"))
+    if _name.replace("-", "_") not in globals():
+        globals()[_name.replace("-", "_")] = _study_function(_name, _description)
+        __all__.append(_name.replace("-", "_"))
 __all__ += ["study", "studies", "StudyResult"]

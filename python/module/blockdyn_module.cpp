@@ -8,6 +8,7 @@
 #include <pybind11/stl.h>
 
 #include <algorithm>
+#include <cmath>
 #include <exception>
 #include <memory>
 #include <string>
@@ -101,7 +102,19 @@ py::tuple to_python(const Prepared& p, Outcome& o) {
   return py::make_tuple(cols, dump_json(doc));
 }
 
-// A study's table as columns: numbers as arrays where every cell reads as one, else text.
+// A cell as a CSV reader gives it: a quoted cell without its quotes ("" read as ").
+std::string unquoted(const std::string& c) {
+  if (c.size() < 2 || c.front() != '"' || c.back() != '"') return c;
+  std::string s;
+  for (std::size_t i = 1; i + 1 < c.size(); ++i) {
+    s += c[i];
+    if (c[i] == '"' && c[i + 1] == '"') ++i;
+  }
+  return s;
+}
+
+// A study's table as columns, as blockdyn's CSV reader gives them: numbers (empty cells NaN) where
+// every cell is a number or empty, else text.
 py::dict study_columns(const StudyTable& t) {
   py::dict cols;
   for (std::size_t j = 0; j < t.columns.size(); ++j) {
@@ -109,12 +122,12 @@ py::dict study_columns(const StudyTable& t) {
     std::vector<std::string> texts;
     bool numeric = true;
     for (const auto& row : t.rows) {
-      const std::string& c = j < row.size() ? row[j] : std::string();
-      texts.push_back(c);
+      const std::string c = unquoted(j < row.size() ? row[j] : std::string());
       char* end = nullptr;
-      const double v = std::strtod(c.c_str(), &end);
-      numeric = numeric && !c.empty() && end == c.c_str() + c.size();
+      const double v = c.empty() ? std::nan("") : std::strtod(c.c_str(), &end);
+      numeric = numeric && (c.empty() || end == c.c_str() + c.size());
       numbers.push_back(v);
+      texts.push_back(c);
     }
     if (numeric)
       cols[py::str(t.columns[j])] = py::array_t<double>(py::ssize_t(numbers.size()), numbers.data());
@@ -151,7 +164,8 @@ PYBIND11_MODULE(_core, m) {
         std::vector<std::exception_ptr> errors(runs.size());
         {
           py::gil_scoped_release release;
-          const std::size_t n = std::max<std::size_t>(1, std::min<std::size_t>(std::size_t(std::max(threads, 1)), runs.size()));
+          const std::size_t n =
+              std::max<std::size_t>(1, std::min<std::size_t>(std::size_t(std::max(threads, 1)), runs.size()));
           std::vector<std::thread> pool;
           for (std::size_t w = 0; w < n; ++w)
             pool.emplace_back([&, w] {
@@ -176,10 +190,12 @@ PYBIND11_MODULE(_core, m) {
       "Runs many blocks on `threads` threads (each run on one thread: the results are those of serial calls).");
   m.def(
       "study",
-      [](const std::string& name, const OptionList& options, bool table) {
+      [](const std::string& name, const OptionList& options, bool table,
+         const std::vector<std::string>& series_wanted) {
         const Settings s = settings_of(options);
         StudyRequest request;
         request.want_table = table;
+        request.series = series_wanted;
         StudyReport r;
         {
           py::gil_scoped_release release;
@@ -192,7 +208,7 @@ PYBIND11_MODULE(_core, m) {
         for (const NamedTable& t : r.series) series[py::str(t.name)] = study_columns(t.table);
         return py::make_tuple(study_columns(r.table), dump_json(doc), r.text, series);
       },
-      py::arg("name"), py::arg("options"), py::arg("table") = true,
+      py::arg("name"), py::arg("options"), py::arg("table") = true, py::arg("series") = std::vector<std::string>{},
       "Runs a study (blockdyn.studies()); returns ({column: array or list}, summary JSON text, text, "
       "{series name: {column: array}}).");
   m.def(
@@ -217,6 +233,5 @@ PYBIND11_MODULE(_core, m) {
         }
         return py::make_tuple(r.code, r.error);
       },
-      py::arg("args"),
-      "Runs `blockdyn <args...>`; returns (exit code, error message). 2 means invalid input.");
+      py::arg("args"), "Runs `blockdyn <args...>`; returns (exit code, error message). 2 means invalid input.");
 }

@@ -20,6 +20,7 @@ const std::vector<StudyCommand>& study_commands() {
     add_stability_studies(v);
     add_equilibrium_studies(v);
     add_orbit_studies(v);
+    add_harmonic_studies(v);
     return v;
   }();
   return all;
@@ -40,6 +41,13 @@ StudyReport run_study(const std::string& name, const Settings& s, const StudyReq
   for (const StudyOption& o : c.options) known.push_back(o.name);
   s.require_known(known, name);
   return c.run(s, request);
+}
+
+bool StudyRequest::wants(const std::string& series_name) const {
+  if (series.empty()) return want_table;
+  for (const std::string& n : series)
+    if (n == series_name) return true;
+  return false;
 }
 
 StudyOptions::StudyOptions(const Settings& given, const std::vector<StudyOption>& specs) : given_(given) {
@@ -117,16 +125,22 @@ std::string cell_text17(double v) {
 }
 
 StudyTable table_from_csv(const std::string& text) {
-  StudyTable t;
-  std::istringstream in(text);
+  // Cells keep their text as written (a quoted cell with its quotes), so that the table writes
+  // back to the same bytes; commas inside quotes do not split.
   auto split = [](const std::string& line) {
-    std::vector<std::string> cells;
-    std::size_t at = 0;
-    for (std::size_t comma; (comma = line.find(',', at)) != std::string::npos; at = comma + 1)
-      cells.push_back(line.substr(at, comma - at));
-    cells.push_back(line.substr(at));
+    std::vector<std::string> cells(1);
+    bool quoted = false;
+    for (char ch : line) {
+      if (ch == '"') quoted = !quoted;
+      if (ch == ',' && !quoted)
+        cells.emplace_back();
+      else
+        cells.back() += ch;
+    }
     return cells;
   };
+  StudyTable t;
+  std::istringstream in(text);
   std::string line;
   if (std::getline(in, line)) t.columns = split(line);
   while (std::getline(in, line)) t.rows.push_back(split(line));

@@ -4,6 +4,8 @@
 // and a summary. The command line registers every study as a subcommand from its description
 // (apps/cmd_studies.cpp) and the Python module calls the same function (blockdyn.study), so an
 // analysis is written once, in the library, and reaches both front ends by one registration.
+#include <cstddef>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -59,6 +61,22 @@ struct StudyReport {
 
 struct StudyRequest {
   bool want_table = true;  // SummaryFirst studies skip the table's work when false
+  // Series studies: the series wanted (empty: every one when want_table).
+  std::vector<std::string> series;
+  // Called as points complete (done of total), from one thread at a time; may be empty.
+  std::function<void(std::size_t done, std::size_t total)> progress;
+
+  bool wants(const std::string& series_name) const;
+  void advance(std::size_t done, std::size_t total) const {
+    if (progress) progress(done, total);
+  }
+};
+
+// A series written to its own flag's file (Series studies other than csv-prefix ones).
+struct SeriesOutput {
+  std::string name;  // the series' name in StudyReport::series
+  std::string flag;  // "out", "trace", ...
+  std::string help;
 };
 
 struct StudyCommand {
@@ -68,7 +86,10 @@ struct StudyCommand {
   StudyOutputs outputs = StudyOutputs::Table;
   std::vector<StudyOption> options;  // without the output options
   StudyReport (*run)(const Settings&, const StudyRequest&) = nullptr;
-  std::string csv_flag = "csv";  // Series: "csv-prefix" (P_<name>.csv per table) or "csv" (one table)
+  std::string csv_flag = "csv";                // Series: "csv-prefix" (P_<name>.csv per table) or "csv" (one table)
+  std::vector<SeriesOutput> series_outputs{};  // Series: each series to its own flag (instead of csv_flag)
+  bool quiet_flag = false;                     // --quiet: no text (and no progress)
+  bool progress_flag = false;                  // --progress auto|bar|plain|none
 };
 
 // Every registered study, in --help order.
@@ -87,6 +108,7 @@ class StudyOptions {
   std::string text(const std::string& name) const;
   bool flag(const std::string& name) const;
   bool given(const std::string& name) const { return given_.has(name); }
+  const Settings& given_settings() const { return given_; }
   // --t-end --rtol --atol --method --max-steps.
   StudyRunOptions run_options() const;
   int threads() const;  // --threads, in [0, 1024]
@@ -121,5 +143,6 @@ void add_flight_studies(std::vector<StudyCommand>& to);
 void add_stability_studies(std::vector<StudyCommand>& to);
 void add_equilibrium_studies(std::vector<StudyCommand>& to);
 void add_orbit_studies(std::vector<StudyCommand>& to);
+void add_harmonic_studies(std::vector<StudyCommand>& to);
 
 }  // namespace blockdyn
