@@ -14,11 +14,12 @@ void add_assembly_options(CLI::App& app, AssemblyFlags& f) {
   auto members = [](CLI::Option* o, std::initializer_list<std::string> names) {
     if (o) o->check(CLI::IsMember(std::vector<std::string>(names)));
   };
-  members(opt("--preset", f.preset, "block (one block), trilith (seed 002: two columns and a lintel), column (n drums)"),
-          {"block", "trilith", "column"});
+  members(
+      opt("--preset", f.preset, "block (one block), trilith (seed 002: two columns and a lintel), column (n drums)"),
+      {"block", "trilith", "column"});
   members(opt("--contact", f.contact,
-                "contact law: deformable (spring-dashpot + elastic Coulomb, default) or rigid (unilateral, Coulomb, "
-                "Newton impacts; Moreau-Jean time-stepping)"),
+              "contact law: deformable (spring-dashpot + elastic Coulomb, default) or rigid (unilateral, Coulomb, "
+              "Newton impacts; Moreau-Jean time-stepping)"),
           {"deformable", "rigid"});
   opt("--slenderness", f.preset_opt.slenderness, "column (or block) height / width (default 4)");
   opt("--drums", f.preset_opt.drums, "column: number of drums, 1 to 8 (default 4)");
@@ -27,29 +28,28 @@ void add_assembly_options(CLI::App& app, AssemblyFlags& f) {
   opt("--density", f.preset_opt.density, "density [kg/m^3] (default 2700)");
   opt("--lintel-length", f.preset_opt.lintel_length, "trilith: lintel length [m] (default: column height)");
   opt("--overhang", f.preset_opt.overhang,
-                "trilith: lintel beyond each column's outer face [m] (default 0: flush, seed 002)");
+      "trilith: lintel beyond each column's outer face [m] (default 0: flush, seed 002)");
   opt("--phi-s", f.phi_s, "friction angle column-ground [deg], 0 to 90 (90: no sliding; default 90)");
   opt("--phi-l", f.phi_l, "friction angle between blocks [deg], 0 to 90 (default 90)");
   opt("--phi-s-kinetic", f.phi_s_kinetic,
-                "kinetic friction angle column-ground [deg], 0 to phi-s (default: phi-s; static friction holds a "
-                "contact at rest up to phi-s, a sliding one feels this)");
-  opt("--phi-l-kinetic", f.phi_l_kinetic,
-                "kinetic friction angle between blocks [deg], 0 to phi-l (default: phi-l)");
+      "kinetic friction angle column-ground [deg], 0 to phi-s (default: phi-s; static friction holds a "
+      "contact at rest up to phi-s, a sliding one feels this)");
+  opt("--phi-l-kinetic", f.phi_l_kinetic, "kinetic friction angle between blocks [deg], 0 to phi-l (default: phi-l)");
   opt("--tilt", f.tilt, "initial rotation [rad] of the assembly's rocking mode, at rest (default 0)");
   opt("--normal-stiffness", f.k_normal, "normal stiffness per contact point [N/m] (default 1e7)");
   opt("--tangential-stiffness", f.k_tangential, "tangential stiffness per point [N/m] (default normal / 3)");
   opt("--restitution", f.restitution,
-                "deformable: restitution of a flat drop, sets the dashpots, in [0.001, 1] (default 0.5); rigid: "
-                "Newton's coefficient in [0, 1] (default 0)");
+      "deformable: restitution of a flat drop, sets the dashpots, in [0.001, 1] (default 0.5); rigid: "
+      "Newton's coefficient in [0, 1] (default 0)");
   opt("--collapse-rotation", f.collapse_rotation,
-                "collapse mode 1 when a block's |theta| reaches this fraction of atan(width/height) (default 1)");
+      "collapse mode 1 when a block's |theta| reaches this fraction of atan(width/height) (default 1)");
   opt("--min-bearing", f.min_bearing,
-                "collapse mode 2 when the overlap of two blocks' faces falls to this length [m] (default 0)");
+      "collapse mode 2 when the overlap of two blocks' faces falls to this length [m] (default 0)");
   opt("--g", f.g, "gravity [m/s^2] (default 9.81)");
   opt("--step", f.step, "rigid: time step [s] (default 1e-4)");
   flag("--columns-rock-only", f.rock_only,
-              "rigid: seed 001's 5-DOF restriction - the blocks on the ground only rock (no sliding, plastic "
-              "impacts); a block leaving the ground is reported, not integrated");
+       "rigid: seed 001's 5-DOF restriction - the blocks on the ground only rock (no sliding, plastic "
+       "impacts); a block leaving the ground is reported, not integrated");
 }
 
 }  // namespace blockdyn::cli

@@ -9,9 +9,9 @@
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
 #include <fstream>
-#include <cstdlib>
 #include <iostream>
 #include <sstream>
 
@@ -36,6 +36,17 @@ Settings settings_of(const CLI::App& app, const std::vector<std::string>& exclud
     for (const std::string& v : o->results()) s.add(name, v);
   }
   return s;
+}
+
+void add_spec_options(CLI::App& app, const std::vector<StudyOption>& specs) {
+  for (const StudyOption& o : specs) {
+    if (o.is_flag) {
+      app.add_flag("--" + o.name, o.help);
+      continue;
+    }
+    CLI::Option* opt = app.add_option("--" + o.name, o.help);
+    if (!o.default_value.empty()) opt->default_str(o.default_value);
+  }
 }
 
 void add_block_options(CLI::App& app, BlockParams& p) {

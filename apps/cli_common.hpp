@@ -8,9 +8,10 @@
 #include <string>
 #include <vector>
 
+#include "blockdyn/api/option_spec.hpp"
 #include "blockdyn/api/settings.hpp"
-#include "blockdyn/io/json_event_spool.hpp"
 #include "blockdyn/integrate/hybrid_integrator.hpp"
+#include "blockdyn/io/json_event_spool.hpp"
 #include "blockdyn/model/winkler/winkler_params.hpp"
 
 namespace blockdyn::cli {
@@ -31,6 +32,9 @@ inline void refuse(const CLI::App& s, const std::vector<std::string>& flags, con
 // The options given on the command line, as the library's Settings (names without dashes), less
 // the ones in `exclude` (the command's own output flags, e.g. "--plot").
 Settings settings_of(const CLI::App& app, const std::vector<std::string>& exclude = {});
+
+// Options the library describes (api/option_spec.hpp), unbound: read back with settings_of.
+void add_spec_options(CLI::App& app, const std::vector<StudyOption>& specs);
 
 // --r --mu --k bound to p (defaults kept unless given).
 void add_block_options(CLI::App& app, BlockParams& p);
@@ -67,7 +71,6 @@ void require_writable(const std::string& field, const std::string& path);
 // frames.
 void require_animation(const std::string& path, int frames);
 // Throws UsageError unless v is finite and in [lo, hi] (inclusive flags).
-void require_range(const std::string& field, double v, double lo, double hi, bool lo_incl = true,
-                   bool hi_incl = true);
+void require_range(const std::string& field, double v, double lo, double hi, bool lo_incl = true, bool hi_incl = true);
 
 }  // namespace blockdyn::cli

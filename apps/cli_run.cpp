@@ -6,9 +6,9 @@
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
-#include <utility>
 #include <iostream>
 #include <stdexcept>
+#include <utility>
 
 #include "blockdyn/version.hpp"
 #include "cli_common.hpp"
@@ -42,9 +42,10 @@ std::string extension_of(const std::string& path) {
 // two outputs name the same file, each can be written (its directory exists and is writable),
 // figures have a format matplotlib writes, animations are .gif or .mp4.
 void check_outputs(CLI::App& sub) {
-  static const char* const kOutputs[] = {"--out",  "--output",   "--json-out",  "--csv",        "--trajectory", "--trace",
-                                         "--twin-csv", "--plot", "--plot-map", "--animate"};
-  static const char* const kFigures[] = {".png", ".pdf", ".svg", ".jpg", ".jpeg", ".tif", ".tiff", ".webp", ".eps", ".ps"};
+  static const char* const kOutputs[] = {"--out",   "--output",   "--json-out", "--csv",      "--trajectory",
+                                         "--trace", "--twin-csv", "--plot",     "--plot-map", "--animate"};
+  static const char* const kFigures[] = {".png", ".pdf",  ".svg",  ".jpg", ".jpeg",
+                                         ".tif", ".tiff", ".webp", ".eps", ".ps"};
   std::vector<std::pair<std::string, std::string>> seen;  // (absolute path, flag)
   for (const char* name : kOutputs) {
     const CLI::Option* o = sub.get_option_no_throw(name);
@@ -55,7 +56,8 @@ void check_outputs(CLI::App& sub) {
     if (flag == "--plot" || flag == "--plot-map") {
       const std::string e = extension_of(value);
       if (std::find(std::begin(kFigures), std::end(kFigures), e) == std::end(kFigures))
-        throw UsageError(field + " = '" + value + "': a figure must end in .png, .pdf, .svg, .jpg, .tif, .webp or .eps");
+        throw UsageError(field + " = '" + value +
+                         "': a figure must end in .png, .pdf, .svg, .jpg, .tif, .webp or .eps");
     }
     if (flag == "--animate" && extension_of(value) != ".gif" && extension_of(value) != ".mp4")
       throw UsageError("animate = '" + value + "' must end in .gif or .mp4");

@@ -5,9 +5,9 @@
 #include <memory>
 
 #include "assembly_flags.hpp"
+#include "blockdyn/api/ground_settings.hpp"
 #include "cli_common.hpp"
 #include "cli_registry.hpp"
-#include "ground_flags.hpp"
 #include "simulate_output.hpp"
 
 namespace blockdyn::cli {
@@ -18,15 +18,15 @@ struct Flags {
   AssemblyFlags model;
   double t_end = 10, rtol = 1e-8, atol = 1e-10;
   IntegratorOptions integrator;
-  GroundFlags ground;
   SimulateOutputFlags out;
 };
 
 void add(CLI::App& app) {
   auto f = std::make_shared<Flags>();
   CLI::App* s = app.add_subcommand(
-      "assembly", "a block assembly (block, trilith, column of drums, or a TOML file) with deformable unilateral "
-                  "frictional contacts under ground motion (SI units: s, m, Hz, g); the same as simulate --model assembly");
+      "assembly",
+      "a block assembly (block, trilith, column of drums, or a TOML file) with deformable unilateral "
+      "frictional contacts under ground motion (SI units: s, m, Hz, g); the same as simulate --model assembly");
   s->add_option("file", f->file, "assembly file (TOML: [[block]], [[interface]], [contact])");
   add_assembly_options(*s, f->model);
   s->add_option("--t-end", f->t_end, "duration [s] (default 10)");
@@ -34,7 +34,7 @@ void add(CLI::App& app) {
   s->add_option("--atol", f->atol, "absolute tolerance in m, rad, m/s, rad/s, J (default 1e-10)");
   add_method_option(*s, f->integrator);
   add_simulate_output_flags(*s, f->out, 0.01);
-  add_ground_flags(*s, f->ground);
+  add_spec_options(*s, ground_options());
   s->callback([s, f] {
     Settings settings = settings_of(*s, simulate_output_flag_names());
     settings.add("model", "assembly");

@@ -6,17 +6,17 @@
 // k_high and k_critical are computed on a coarser set of 1/r values and overlaid.
 #include <cmath>
 #include <map>
-#include <optional>
 #include <memory>
+#include <optional>
 
-#include "blockdyn/analysis/winkler/flight.hpp"
 #include "blockdyn/analysis/sweep/parallel_map.hpp"
-#include "blockdyn/analysis/winkler/stability.hpp"
 #include "blockdyn/analysis/sweep/sweep_evaluator.hpp"
 #include "blockdyn/analysis/sweep/sweep_runner.hpp"
+#include "blockdyn/analysis/winkler/flight.hpp"
+#include "blockdyn/analysis/winkler/stability.hpp"
+#include "blockdyn/api/study_command.hpp"
 #include "blockdyn/io/json_io.hpp"
 #include "blockdyn/io/progress.hpp"
-#include "blockdyn/api/study_command.hpp"
 #include "cli_common.hpp"
 #include "cli_registry.hpp"
 #include "grid_run.hpp"
@@ -43,7 +43,8 @@ struct BoundaryRow {
 };
 
 std::string boundaries_path(const std::string& csv) {
-  const std::string stem = (csv.size() > 4 && csv.substr(csv.size() - 4) == ".csv") ? csv.substr(0, csv.size() - 4) : csv;
+  const std::string stem =
+      (csv.size() > 4 && csv.substr(csv.size() - 4) == ".csv") ? csv.substr(0, csv.size() - 4) : csv;
   return stem + "_boundaries.csv";
 }
 
@@ -82,9 +83,11 @@ void run(const CLI::App& s, const MapFlags& f) {
   if (f.output.empty()) throw UsageError("output: the CSV path is empty");
   require_writable("plot", f.plot);
   if (f.boundary_points < 0 || f.boundary_points > 1000)
-    throw UsageError("boundary-points = " + std::to_string(f.boundary_points) + " is out of range: must be in [0, 1000]");
+    throw UsageError("boundary-points = " + std::to_string(f.boundary_points) +
+                     " is out of range: must be in [0, 1000]");
   require_range("fine-per-decade", f.fine_per_decade, 0.0, 1000);
-  if (f.critical_n < 2) throw UsageError("critical-n = " + std::to_string(f.critical_n) + " is out of range: must be >= 2");
+  if (f.critical_n < 2)
+    throw UsageError("critical-n = " + std::to_string(f.critical_n) + " is out of range: must be >= 2");
   const IcChoice ic = parse_ic_choice(f.ic);
 
   SweepSpec spec;
@@ -126,8 +129,8 @@ void run(const CLI::App& s, const MapFlags& f) {
     });
   }
   StudyTable t;
-  t.columns = {"inv_r", "r", "k_stability", "stability_status", "k_high", "k_high_status", "k_critical",
-               "k_critical_status"};
+  t.columns = {"inv_r",         "r",          "k_stability",      "stability_status", "k_high",
+               "k_high_status", "k_critical", "k_critical_status"};
   t.columns.insert(t.columns.end(), {"k3_stability", "k3_status"});
   for (const auto& b : rows)
     t.rows.push_back({cell_text(b.inv_r), cell_text(b.r), cell_text(boundary_cell(b.stability.result)),
@@ -138,16 +141,16 @@ void run(const CLI::App& s, const MapFlags& f) {
                       b.k3 ? to_string(b.k3->point.result.status) : "not_applicable"});
   const std::string bpath = boundaries_path(out.paths.csv);
   nlohmann::ordered_json meta = {{"run", run_info()},
-                       {"what", "boundaries of the response map"},
-                       {"mu", f.mu},
-                       {"ic", ic.name()},
-                       {"stability_curve", ic.is_ic1() ? "k1_stability" : "k2_stability"},
-                       {"k3_curve", ic.is_ic1() ? "none (ic2 only)" : "k3_stability"},
-                       {"k_high_criterion", ic.is_ic1() ? "w_negative" : "ihor2"},
-                       {"k_critical_n", f.critical_n},
-                       {"fine_points_per_decade", f.fine_per_decade},
-                       {"k_range", {k_lo, k_hi}},
-                       {"run_options", run_options_json(run)}};
+                                 {"what", "boundaries of the response map"},
+                                 {"mu", f.mu},
+                                 {"ic", ic.name()},
+                                 {"stability_curve", ic.is_ic1() ? "k1_stability" : "k2_stability"},
+                                 {"k3_curve", ic.is_ic1() ? "none (ic2 only)" : "k3_stability"},
+                                 {"k_high_criterion", ic.is_ic1() ? "w_negative" : "ihor2"},
+                                 {"k_critical_n", f.critical_n},
+                                 {"fine_points_per_decade", f.fine_per_decade},
+                                 {"k_range", {k_lo, k_hi}},
+                                 {"run_options", run_options_json(run)}};
   write_study_table(bpath, t, meta);
   if (!f.plot.empty())
     run_python("plot_map.py", {out.paths.csv, bpath, f.plot, "mu = " + cell_text(f.mu) + ", " + ic.name()});
@@ -158,7 +161,8 @@ void run(const CLI::App& s, const MapFlags& f) {
 
 void add(CLI::App& app) {
   auto f = std::make_shared<MapFlags>();
-  CLI::App* s = app.add_subcommand("map", "response types over the (k, 1/r) plane with stability and flight boundaries (thesis Figs 6.1-6.2)");
+  CLI::App* s = app.add_subcommand(
+      "map", "response types over the (k, 1/r) plane with stability and flight boundaries (thesis Figs 6.1-6.2)");
   s->add_option("--k", f->k, "k axis: min:max:points[:log|:lin] or a list")->capture_default_str();
   s->add_option("--inv-r", f->inv_r, "1/r axis (height/width): min:max:points or a list")->capture_default_str();
   s->add_option("--mu", f->mu, "friction coefficient (>= 0)")->capture_default_str();
@@ -166,7 +170,8 @@ void add(CLI::App& app) {
   s->add_option("--t-end", f->t_end, "observation time of each run")->capture_default_str();
   add_tolerance_options(*s, f->integ);
   s->add_option("--max-steps", f->max_steps, "step cap per run (reported as numerical_failure)")->capture_default_str();
-  s->add_option("--boundary-points", f->boundary_points, "1/r values for the boundary curves (0: none)")->capture_default_str();
+  s->add_option("--boundary-points", f->boundary_points, "1/r values for the boundary curves (0: none)")
+      ->capture_default_str();
   s->add_option("--fine-per-decade", f->fine_per_decade,
                 "fine grid next to k_high and k_critical (points per decade; 0: coarse search only)")
       ->capture_default_str();
@@ -174,7 +179,8 @@ void add(CLI::App& app) {
   s->add_flag("--sensitivity", f->sensitivity,
               "also run every point from y'(0) + 1e-8 and mark sensitive dependence (twice the cost)");
   s->add_option("--threads", f->threads, "worker threads (0: all cores)")->capture_default_str();
-  s->add_option("-o,--output", f->output, "map CSV (journal, sidecar and boundaries CSV beside it)")->capture_default_str();
+  s->add_option("-o,--output", f->output, "map CSV (journal, sidecar and boundaries CSV beside it)")
+      ->capture_default_str();
   s->add_flag("--resume", f->resume, "continue an interrupted map, recomputing nothing finished");
   s->add_flag("--overwrite", f->overwrite, "replace existing output");
   s->add_flag("--quiet", f->quiet, "no progress output");

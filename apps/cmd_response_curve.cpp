@@ -103,19 +103,21 @@ void run(const CLI::App& s, const CurveFlags& f) {
   const std::size_t nw = std::size_t(o.omega_points), nl = phi_l.size(), ns = phi_s.size(), nb = o.betas.size();
 
   using json = nlohmann::ordered_json;
-  const json options = {{"excitation", o.excitation}, {"phase", o.phase},
-                        {"t_end", o.periods > 0 ? json(nullptr) : json(o.t_end)}, {"periods", o.periods},
+  const json options = {{"excitation", o.excitation},
+                        {"phase", o.phase},
+                        {"t_end", o.periods > 0 ? json(nullptr) : json(o.t_end)},
+                        {"periods", o.periods},
                         {"versus", versus_phi ? "phi_l" : "omega"}};
   json model = fm.description;
   if (assembly) {
     model["phi_s"] = phi_s;
     model["phi_l"] = phi_l;
   }
-  const json definition = {{"model", model}, {"alpha", fm.alpha}, {"p", fm.p}, {"width", fm.width},
-                           {"betas", o.betas},
-                           {"omega", {{"min", o.omega_min}, {"max", o.omega_max}, {"points", o.omega_points}}},
-                           {"options", options},
-                           {"index", "i_omega + n_omega * (i_phi_l + n_phi_l * (i_phi_s + n_phi_s * i_beta))"}};
+  const json definition = {
+      {"model", model},     {"alpha", fm.alpha},
+      {"p", fm.p},          {"width", fm.width},
+      {"betas", o.betas},   {"omega", {{"min", o.omega_min}, {"max", o.omega_max}, {"points", o.omega_points}}},
+      {"options", options}, {"index", "i_omega + n_omega * (i_phi_l + n_phi_l * (i_phi_s + n_phi_s * i_beta))"}};
   std::vector<std::string> cols = survival_columns();
   for (const char* c : {"phi_s", "phi_l", "theta_max_over_alpha", "max_sliding_over_b"}) cols.push_back(c);
   const GridTable table(
@@ -147,8 +149,9 @@ void run(const CLI::App& s, const CurveFlags& f) {
   j["alpha"] = fm.alpha;
   j["p"] = fm.p;
   j["width"] = fm.width;
-  j["units"] = "a_H = beta alpha g cos(omega p t + phase); rotations over alpha, slips over the block width; "
-               "friction angles in deg";
+  j["units"] =
+      "a_H = beta alpha g cos(omega p t + phase); rotations over alpha, slips over the block width; "
+      "friction angles in deg";
   j["options"] = options;
   j["tolerances"] = fm.tolerances;
   j["points"] = response_curve_points(t, assembly);
@@ -174,8 +177,9 @@ void add(CLI::App& app) {
   s->add_option("--phi-s-values", f->phi_s_values,
                 "assembly: friction angles on the ground [deg], \"v1,v2,...\" or \"min:max:points\" (one curve each)");
   s->add_option("--out", f->out, "the points as CSV (the runner's table: journal and sidecar .json beside it)");
-  s->add_option("--plot", f->plot, "plot theta_MAX / alpha (and the slip) versus omega or phi_l, one curve per beta "
-                                   "and phi_s (PNG + SVG)");
+  s->add_option("--plot", f->plot,
+                "plot theta_MAX / alpha (and the slip) versus omega or phi_l, one curve per beta "
+                "and phi_s (PNG + SVG)");
   add_grid_report_flags(*s, f->g, f->json, f->json_out, f->progress, f->quiet, "no summary line, no progress");
   s->callback([s, f] { run(*s, *f); });
 }

@@ -1,18 +1,18 @@
 // SPDX-License-Identifier: Apache-2.0
 // `blockdyn simulate`: one run of any registered model family (winkler, housner, rigid, assembly)
 // from flags or a TOML scenario; the library prepares and runs it, the outputs are written here.
+#include <unistd.h>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
 #include <memory>
-#include <unistd.h>
 
+#include "assembly_flags.hpp"
+#include "blockdyn/api/ground_settings.hpp"
 #include "blockdyn/api/simulate_run.hpp"
 #include "blockdyn/units/physical_units.hpp"
 #include "cli_common.hpp"
 #include "cli_registry.hpp"
-#include "assembly_flags.hpp"
-#include "ground_flags.hpp"
 #include "simulate_output.hpp"
 
 namespace blockdyn::cli {
@@ -27,7 +27,6 @@ struct SimulateFlags {
   double w0 = 0, x0 = 0, y0 = 0, vx0 = 0, vy0 = 0, vw0 = 0;
   double t_end = 10;
   std::string units = "nondim";
-  GroundFlags ground;
   PhysicalBlock phys;  // --height --width ... (physical input)
   double restitution = 0, mu_s = 0.7, mu_k = 0.7;
   std::string impact = "housner";
@@ -50,7 +49,8 @@ const PhysFlag kPhysFlags[] = {
     {"--density", nullptr, &PhysicalBlock::density, "density [kg/m^3] (with --thickness, instead of --mass)"},
     {"--thickness", nullptr, &PhysicalBlock::thickness, "out-of-plane depth [m]"},
     {"--subgrade-modulus", nullptr, &PhysicalBlock::subgrade_modulus, "winkler: modulus [N/m^3] (with --thickness)"},
-    {"--line-stiffness", nullptr, &PhysicalBlock::line_stiffness, "winkler: stiffness per unit length and depth [N/m^2]"},
+    {"--line-stiffness", nullptr, &PhysicalBlock::line_stiffness,
+     "winkler: stiffness per unit length and depth [N/m^2]"},
 };
 
 void add_physical_flags(CLI::App& s, SimulateFlags& f) {
@@ -58,7 +58,8 @@ void add_physical_flags(CLI::App& s, SimulateFlags& f) {
     if (pf.plain) {
       s.add_option(pf.name, f.phys.*pf.plain, pf.help);
     } else {
-      s.add_option_function<double>(pf.name, [&f, pf](double v) { f.phys.*pf.opt = v; }, pf.help);
+      s.add_option_function<double>(
+          pf.name, [&f, pf](double v) { f.phys.*pf.opt = v; }, pf.help);
     }
   }
 }
@@ -75,8 +76,9 @@ void run(const CLI::App& s, const SimulateFlags& f) {
 void add(CLI::App& app) {
   auto f = std::make_shared<SimulateFlags>();
   CLI::App* s = app.add_subcommand(
-      "simulate", "integrate one block (winkler, housner or rigid model) from flags or a TOML scenario, or a block "
-                  "assembly (--model assembly, the options of `blockdyn assembly`)");
+      "simulate",
+      "integrate one block (winkler, housner or rigid model) from flags or a TOML scenario, or a block "
+      "assembly (--model assembly, the options of `blockdyn assembly`)");
   s->add_option("scenario", f->scenario_file, "TOML scenario file (flags given as well override it)");
   std::string models;
   std::vector<std::string> names;
@@ -107,7 +109,7 @@ void add(CLI::App& app) {
                 "(default 10)");
   s->add_option("--units", f->units, "winkler: nondim, or physical (needs a physical block: flags or [physical])");
   add_simulate_output_flags(*s, f->out, 0.01);
-  add_ground_flags(*s, f->ground);
+  add_spec_options(*s, ground_options());
   add_physical_flags(*s, *f);
   add_assembly_options(*s, f->assembly);  // --model assembly (the options `blockdyn assembly` has)
   s->callback([s, f] { run(*s, *f); });

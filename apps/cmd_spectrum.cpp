@@ -46,8 +46,9 @@ std::vector<double> durations_of(const CLI::App& s, const SpectrumFlags& f) {
   require_range("duration-points", f.duration_points, 1, 100000);
   std::vector<double> d(f.duration_points);
   for (int i = 0; i < f.duration_points; ++i)
-    d[i] = f.duration_points == 1 ? f.duration_min
-                                  : f.duration_min * std::pow(f.duration_max / f.duration_min, double(i) / (f.duration_points - 1));
+    d[i] = f.duration_points == 1
+               ? f.duration_min
+               : f.duration_min * std::pow(f.duration_max / f.duration_min, double(i) / (f.duration_points - 1));
   return d;
 }
 
@@ -61,7 +62,8 @@ GroundMotion pulse_motion(PulseShape shape, double amplitude, double duration) {
 
 void run(const CLI::App& s, const SpectrumFlags& f) {
   const auto shape = pulse_from_string(f.pulse);
-  if (!shape || *shape == PulseShape::None) throw UsageError(std::string("pulse = '") + f.pulse + "' must be one of " + pulse_names());
+  if (!shape || *shape == PulseShape::None)
+    throw UsageError(std::string("pulse = '") + f.pulse + "' must be one of " + pulse_names());
   SpectrumOptions o = f.spec;
   o.durations = durations_of(s, f);
   require_range("t-after", f.t_after, 0, 1e4);
@@ -80,14 +82,23 @@ void run(const CLI::App& s, const SpectrumFlags& f) {
   const double t_after = f.t_after;
   const PulseShape pulse = *shape;
   const OverturnTest test = [&fm, pulse, t_after](double amplitude, double duration) {
-    return fm.run(pulse_motion(pulse, amplitude, duration), pulse_support(pulse) * duration + t_after).collapse_mode.has_value();
+    return fm.run(pulse_motion(pulse, amplitude, duration), pulse_support(pulse) * duration + t_after)
+        .collapse_mode.has_value();
   };
   using json = nlohmann::ordered_json;
-  const json options = {{"amplitude_min", o.amplitude_min}, {"amplitude_max", o.amplitude_max},
-                        {"scan_points", o.scan_points}, {"rel_tol", o.rel_tol}, {"t_after", f.t_after},
+  const json options = {{"amplitude_min", o.amplitude_min},
+                        {"amplitude_max", o.amplitude_max},
+                        {"scan_points", o.scan_points},
+                        {"rel_tol", o.rel_tol},
+                        {"t_after", f.t_after},
                         {"overturn", fm.overturn_rule}};
-  const json definition = {{"model", fm.description}, {"pulse", to_string(pulse)}, {"alpha", alpha}, {"p", p},
-                           {"durations", o.durations}, {"options", options}, {"index", "the duration's position"}};
+  const json definition = {{"model", fm.description},
+                           {"pulse", to_string(pulse)},
+                           {"alpha", alpha},
+                           {"p", p},
+                           {"durations", o.durations},
+                           {"options", options},
+                           {"index", "the duration's position"}};
   const GridTable table(
       "spectrum", spectrum_columns(), o.durations.size(),
       [&](std::size_t i, RowBuilder& row) {
@@ -135,7 +146,8 @@ void run(const CLI::App& s, const SpectrumFlags& f) {
   }
   j["rows"] = arr;
   j["runs"] = runs;
-  const std::string title = f.m.model + " " + (f.m.preset.empty() ? "" : f.m.preset + " ") + to_string(pulse) + " pulse";
+  const std::string title =
+      f.m.model + " " + (f.m.preset.empty() ? "" : f.m.preset + " ") + to_string(pulse) + " pulse";
   if (!f.plot.empty()) run_python("plot_spectrum.py", {out.csv(), f.plot, "--title", title});
   if (!f.plot_map.empty())
     run_python("plot_spectrum.py", {out.csv(), f.plot_map, "--title", title, "--map", format_double(o.amplitude_min),

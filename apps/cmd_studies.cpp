@@ -115,11 +115,12 @@ void run_command(const StudyCommand& c, const CLI::App& app, const StudyOutputFl
   require_writable(table_style ? "json" : "json-out", f.json_out);
   StudyRequest request;
   request.want_table = table_style || !f.csv.empty() || !f.plot.empty();
+  request.figure = series && !f.plot.empty();
   for (const SeriesOutput& so : c.series_outputs) {
     require_writable(so.flag, f.series_paths.at(so.name));
-    if (!f.plot.empty() || !f.series_paths.at(so.name).empty()) request.series.push_back(so.name);
+    if (!f.series_paths.at(so.name).empty()) request.series.push_back(so.name);
   }
-  if (!c.series_outputs.empty()) request.want_table = !request.series.empty();
+  if (!c.series_outputs.empty()) request.want_table = request.figure || !request.series.empty();
   std::unique_ptr<Progress> bar;
   std::size_t shown = 0;
   const ProgressMode mode = f.quiet ? ProgressMode::None : parse_progress_mode(f.progress);
@@ -154,14 +155,7 @@ void run_command(const StudyCommand& c, const CLI::App& app, const StudyOutputFl
 
 void add_study(CLI::App& app, const StudyCommand& c) {
   CLI::App* s = app.add_subcommand(c.name, c.description);
-  for (const StudyOption& o : c.options) {
-    if (o.is_flag) {
-      s->add_flag("--" + o.name, o.help);
-      continue;
-    }
-    CLI::Option* opt = s->add_option("--" + o.name, o.help);
-    if (!o.default_value.empty()) opt->default_str(o.default_value);
-  }
+  add_spec_options(*s, c.options);
   auto f = std::make_shared<StudyOutputFlags>();
   if (c.outputs == StudyOutputs::Table) {
     s->add_option("--csv", f->csv, "write the table here (a JSON sidecar <csv>.json is written beside it)");

@@ -58,14 +58,21 @@ void run(const CLI::App& s, const SurvivalFlags& f) {
                      " s at omega-min: at most 1e5 s (lower --periods or raise --omega-min)");
 
   using json = nlohmann::ordered_json;
-  json options = {{"excitation", o.excitation}, {"phase", o.phase}, {"t_end", o.periods > 0 ? json(nullptr) : json(o.t_end)},
-                  {"periods", o.periods}, {"t_star_classes_s", o.t_star_classes}, {"failure", fm.overturn_rule},
+  json options = {{"excitation", o.excitation},
+                  {"phase", o.phase},
+                  {"t_end", o.periods > 0 ? json(nullptr) : json(o.t_end)},
+                  {"periods", o.periods},
+                  {"t_star_classes_s", o.t_star_classes},
+                  {"failure", fm.overturn_rule},
                   {"pulse_duration", o.excitation == "harmonic" ? "" : "pi / Omega (half a forcing period)"},
                   {"refine", f.refine},
-                  {"cycle", "harmonic: the dominant (m, n) cycle of block 0 over the run (2m impacts per n forcing "
-                            "periods, seed 002; `blockdyn cycles` with its default window and tolerance, fitted to "
-                            "the run's length; before t* for a collapse), or non-periodic / no-impacts; null at rest"}};
-  const json definition = {{"model", fm.description}, {"alpha", fm.alpha}, {"p", fm.p},
+                  {"cycle",
+                   "harmonic: the dominant (m, n) cycle of block 0 over the run (2m impacts per n forcing "
+                   "periods, seed 002; `blockdyn cycles` with its default window and tolerance, fitted to "
+                   "the run's length; before t* for a collapse), or non-periodic / no-impacts; null at rest"}};
+  const json definition = {{"model", fm.description},
+                           {"alpha", fm.alpha},
+                           {"p", fm.p},
                            {"beta", {{"min", o.beta_min}, {"max", o.beta_max}, {"points", o.beta_points}}},
                            {"omega", {{"min", o.omega_min}, {"max", o.omega_max}, {"points", o.omega_points}}},
                            {"options", options},
@@ -108,8 +115,10 @@ void run(const CLI::App& s, const SurvivalFlags& f) {
       title += ", " + f.m.contact + " law, phi_s = " + short_number(f.m.phi_s) + ", phi_l = " + short_number(f.m.phi_l);
     std::vector<std::string> args{out.csv(), f.plot, "--title", title};
     if (f.refine > 0) {
-      args.insert(args.end(), {"--refined", format_double(o.omega_points > 1 ? (o.omega_max - o.omega_min) / (o.omega_points - 1) : 1.0),
-                               format_double(o.beta_points > 1 ? (o.beta_max - o.beta_min) / (o.beta_points - 1) : 1.0)});
+      args.insert(
+          args.end(),
+          {"--refined", format_double(o.omega_points > 1 ? (o.omega_max - o.omega_min) / (o.omega_points - 1) : 1.0),
+           format_double(o.beta_points > 1 ? (o.beta_max - o.beta_min) / (o.beta_points - 1) : 1.0)});
     }
     run_python("plot_survival.py", args);
   }
@@ -123,9 +132,10 @@ void run(const CLI::App& s, const SurvivalFlags& f) {
 void add(CLI::App& app) {
   auto f = std::make_shared<SurvivalFlags>();
   CLI::App* s = app.add_subcommand(
-      "survival", "survival domain over (beta, omega): rest, stable or collapse per point for a_H = beta alpha g "
-                  "cos(Omega t + phase), omega = Omega/p (seed 002), harmonic or as a half-period pulse "
-                  "(threads, MPI, resumable)");
+      "survival",
+      "survival domain over (beta, omega): rest, stable or collapse per point for a_H = beta alpha g "
+      "cos(Omega t + phase), omega = Omega/p (seed 002), harmonic or as a half-period pulse "
+      "(threads, MPI, resumable)");
   add_forced_model_flags(*s, f->m);
   add_excitation_grid_flags(*s, f->o);
   s->add_option("--beta-min", f->o.beta_min, "smallest beta (default 0.5)");

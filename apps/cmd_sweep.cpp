@@ -14,13 +14,13 @@
 #include "blockdyn/analysis/sweep/sweep_evaluator.hpp"
 #include "blockdyn/analysis/sweep/sweep_runner.hpp"
 #include "blockdyn/analysis/sweep/sweep_toml.hpp"
+#include "blockdyn/api/ground_settings.hpp"
 #include "blockdyn/io/json_io.hpp"
 #include "blockdyn/io/scenario.hpp"
 #include "blockdyn/io/toml_read.hpp"
 #include "cli_common.hpp"
 #include "cli_registry.hpp"
 #include "grid_run.hpp"
-#include "ground_flags.hpp"
 #include "mpi_sweep.hpp"
 
 namespace blockdyn::cli {
@@ -32,7 +32,6 @@ struct SweepFlags {
   std::vector<std::string> axes;  // housner/rigid: NAME=SPEC
   double width = 0, height = 0, mass = 1, g = 9.81, mu_s = 0.7, mu_k = 0.7, restitution = 0;
   std::string impact = "housner";
-  GroundFlags ground;
   std::string k, r, inv_r, mu, ic;
   double w0 = 0, w0_over_alpha = 0, x0 = 0, y0 = 0, vx0 = 0, vy0 = 0, vw0 = 0;
   double t_end = 30;
@@ -45,7 +44,6 @@ struct SweepFlags {
   int threads = 0;
   bool resume = false, overwrite = false, quiet = false, list_metrics = false, list_axes = false, dry_run = false;
 };
-
 
 std::vector<std::string> split_list(const std::string& s) {
   std::vector<std::string> out;
@@ -141,9 +139,7 @@ void plot_table(const std::vector<PlotAxis>& axes, const std::vector<std::string
   run_python("plot_sweep.py", args);
 }
 
-PlotAxis plot_axis(const SweepAxis& a) {
-  return {a.name, a.values, a.is_range && a.spacing == AxisSpacing::Log};
-}
+PlotAxis plot_axis(const SweepAxis& a) { return {a.name, a.values, a.is_range && a.spacing == AxisSpacing::Log}; }
 
 void plot(const SweepSpec& sp, const SweepPaths& paths) {
   std::vector<std::string> held;
@@ -171,7 +167,8 @@ void list_metrics() {
 
 // The rigid-family definition: a sweep file (model = "housner" | "rigid") and/or flags.
 RigidSweepSpec build_rigid_spec(const CLI::App& s, const SweepFlags& f, const std::string& model) {
-  for (const char* n : {"--k", "--r", "--inv-r", "--mu", "--ic", "--metric", "--stop-at-first-flight", "--stop-at-ihor"})
+  for (const char* n :
+       {"--k", "--r", "--inv-r", "--mu", "--ic", "--metric", "--stop-at-first-flight", "--stop-at-ihor"})
     if (given(s, n)) throw UsageError(std::string(n) + " belongs to the winkler sweep, not to --model " + model);
   RigidSweepSpec sp;
   if (f.file.empty())
@@ -190,7 +187,7 @@ RigidSweepSpec build_rigid_spec(const CLI::App& s, const SweepFlags& f, const st
   if (given(s, "--mu-k")) sp.block.interface.mu_k = f.mu_k;
   if (given(s, "--restitution")) sp.block.restitution = f.restitution;
   if (given(s, "--impact")) sp.block.impact = *impact_law_from_string(f.impact);
-  apply_ground_flags(s, f.ground, sp.ground);
+  apply_ground_settings(settings_of(s), sp.ground);
   if (given(s, "--w0") && given(s, "--w0-over-alpha")) throw UsageError("--w0 and --w0-over-alpha: give only one");
   if (given(s, "--w0")) {
     sp.initial.w0 = f.w0;
@@ -260,7 +257,8 @@ void execute(const PointTable& ev, const SweepFlags& f, const nlohmann::ordered_
     j["point_count"] = ev.size();
     j["fingerprint"] = ev.fingerprint();
     j["columns"] = ev.columns();
-    j["outputs"] = {{"csv", sweep_paths(ev.output()).csv}, {"sidecar", sweep_paths(ev.output()).sidecar},
+    j["outputs"] = {{"csv", sweep_paths(ev.output()).csv},
+                    {"sidecar", sweep_paths(ev.output()).sidecar},
                     {"journal", sweep_paths(ev.output()).journal}};
     j["definition"] = definition;
     emit_json(j, "-");
@@ -329,9 +327,10 @@ void run(const CLI::App& s, const SweepFlags& f) {
 
 void add(CLI::App& app) {
   auto f = std::make_shared<SweepFlags>();
-  CLI::App* s = app.add_subcommand(
-      "sweep", "parameter sweep with the model family's axes (winkler: k, r, mu, ic; housner/rigid: --axis) "
-               "(threads, MPI, resumable)");
+  CLI::App* s =
+      app.add_subcommand("sweep",
+                         "parameter sweep with the model family's axes (winkler: k, r, mu, ic; housner/rigid: --axis) "
+                         "(threads, MPI, resumable)");
   s->footer(
       "Axis values: a list \"v1,v2,...\" or a range \"min:max:points[:log|:lin]\" (k: log by default).\n"
       "Points are numbered index = k_i + n_k*(r_i + n_r*(mu_i + n_mu*ic_i)). See docs/sweep.md.");
@@ -350,8 +349,9 @@ void add(CLI::App& app) {
   s->add_option("--mu-s", f->mu_s, "rigid: static friction (default 0.7)");
   s->add_option("--mu-k", f->mu_k, "rigid: kinetic friction (default mu-s)");
   s->add_option("--restitution", f->restitution, "housner/rigid: restitution in [0, 1]");
-  s->add_option("--impact", f->impact, "rigid: impact law housner or newton")->check(CLI::IsMember({"housner", "newton"}));
-  add_ground_flags(*s, f->ground);
+  s->add_option("--impact", f->impact, "rigid: impact law housner or newton")
+      ->check(CLI::IsMember({"housner", "newton"}));
+  add_spec_options(*s, ground_options());
   s->add_option("--k", f->k, "stiffness axis, e.g. 1e2:1e8:40 (log) or 1e4,1e5");
   s->add_option("--r", f->r, "aspect-ratio axis r = width/height, e.g. 0.1:1:10 or 0.2");
   s->add_option("--inv-r", f->inv_r, "slenderness axis 1/r, e.g. 1:20:30");

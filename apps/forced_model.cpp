@@ -22,7 +22,8 @@ void add_forced_model_flags(CLI::App& s, ForcedModelFlags& f, const std::vector<
   s.add_option("--mu-k", f.mu_k, "rigid: kinetic friction (default mu-s)");
   s.add_option("--impact", f.impact, "rigid: housner or newton")->check(CLI::IsMember({"housner", "newton"}));
   s.add_option("--restitution", f.restitution, "restitution (housner/rigid as in simulate; assembly as in assembly)");
-  s.add_option("--preset", f.preset, "assembly: block, trilith or column")->check(CLI::IsMember({"block", "trilith", "column"}));
+  s.add_option("--preset", f.preset, "assembly: block, trilith or column")
+      ->check(CLI::IsMember({"block", "trilith", "column"}));
   s.add_option("--contact", f.contact, "assembly: deformable or rigid")->check(CLI::IsMember({"deformable", "rigid"}));
   s.add_option("--slenderness", f.preset_opt.slenderness, "assembly: height / width (default 4)");
   s.add_option("--block-width", f.preset_opt.block_width, "assembly: width [m] (default 0.12)");
@@ -35,7 +36,8 @@ void add_forced_model_flags(CLI::App& s, ForcedModelFlags& f, const std::vector<
 }
 
 void add_excitation_grid_flags(CLI::App& s, SurvivalOptions& o) {
-  s.add_option("--excitation", o.excitation, "harmonic (default), half-sine, half-cosine or rect (pulses last pi/Omega)")
+  s.add_option("--excitation", o.excitation,
+               "harmonic (default), half-sine, half-cosine or rect (pulses last pi/Omega)")
       ->check(CLI::IsMember({"harmonic", "half-sine", "half-cosine", "rect"}));
   s.add_option("--phase", o.phase, "phase of cos(Omega t + phase) [rad] (default 0)");
   s.add_option("--omega-min", o.omega_min, "smallest omega = Omega/p (default 1)");

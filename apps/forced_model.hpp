@@ -25,7 +25,6 @@ struct ForcedModelFlags {
   bool columns_rock_only = false;  // seed 001's 5-DOF trilith (rigid law)
 };
 
-
 using blockdyn::ForcedModel;
 
 // extra_models: further values --model accepts (handled by the command itself).

@@ -20,7 +20,8 @@ void add_grid_report_flags(CLI::App& s, GridRunFlags& g, bool& json, std::string
                            bool& quiet, const std::string& quiet_help) {
   s.add_flag("--json", json, "print the JSON summary");
   s.add_option("--json-out", json_out, "write the JSON summary here");
-  s.add_option("--progress", progress, "auto, bar, plain or none")->check(CLI::IsMember({"auto", "bar", "plain", "none"}));
+  s.add_option("--progress", progress, "auto, bar, plain or none")
+      ->check(CLI::IsMember({"auto", "bar", "plain", "none"}));
   add_grid_run_flags(s, g);
   s.add_flag("--quiet", quiet, quiet_help);
 }
@@ -43,7 +44,8 @@ GridOutput::GridOutput(const std::string& csv_flag, const std::string& csv, cons
   }
   require_writable(csv_flag.substr(2), csv_);
   if (!json_out.empty() && json_out == sweep_paths(csv_).sidecar)
-    throw UsageError("json-out: '" + json_out + "' is the sidecar of " + csv_flag + " " + csv_ + "; choose another name");
+    throw UsageError("json-out: '" + json_out + "' is the sidecar of " + csv_flag + " " + csv_ +
+                     "; choose another name");
 }
 
 GridOutput::~GridOutput() {
@@ -52,8 +54,8 @@ GridOutput::~GridOutput() {
   for (const std::string& x : {p.csv, p.journal, p.sidecar}) std::remove(x.c_str());
 }
 
-GridRunResult run_grid(const PointTable& t, const GridRunFlags& f, int threads, const std::string& progress,
-                       bool quiet, PointPlan* plan) {
+GridRunResult run_grid(const PointTable& t, const GridRunFlags& f, int threads, const std::string& progress, bool quiet,
+                       PointPlan* plan) {
   SweepRunOptions o;
   o.threads = threads;
   o.resume = f.resume;

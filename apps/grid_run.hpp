@@ -53,8 +53,8 @@ struct GridRunResult {
   int ranks = 1;
 };
 // Runs the table (the plan's stages; nullptr: every point) as `blockdyn sweep` runs its points.
-GridRunResult run_grid(const PointTable& t, const GridRunFlags& f, int threads, const std::string& progress,
-                       bool quiet, PointPlan* plan = nullptr);
+GridRunResult run_grid(const PointTable& t, const GridRunFlags& f, int threads, const std::string& progress, bool quiet,
+                       PointPlan* plan = nullptr);
 
 // The one MPI dispatch of every command that distributes points: over the ranks of an mpirun
 // launch (results byte-identical to one rank; only the root's result has root = true), else

@@ -58,7 +58,7 @@ enum Tag : int { kTagRow = 1, kTagDone = 2 };
 struct RowQueue {
   std::mutex mu;
   std::condition_variable cv;
-  std::deque<std::pair<std::size_t, SweepRow>> rows;
+  std::deque<std::pair<std::size_t, SweepRow> > rows;
   bool finished = false;
   std::exception_ptr error;
 };
@@ -105,11 +105,10 @@ void run_stage(const PointTable& ev, const std::vector<std::size_t>& mine, int t
   bool local_done = false;
   std::string buf;
   while (true) {
-    std::deque<std::pair<std::size_t, SweepRow>> batch;
+    std::deque<std::pair<std::size_t, SweepRow> > batch;
     {
       std::unique_lock<std::mutex> lock(q.mu);
-      q.cv.wait_for(lock, std::chrono::milliseconds(rank == 0 ? 2 : 50),
-                    [&] { return !q.rows.empty() || q.finished; });
+      q.cv.wait_for(lock, std::chrono::milliseconds(rank == 0 ? 2 : 50), [&] { return !q.rows.empty() || q.finished; });
       batch.swap(q.rows);
       if (q.error) {
         try {

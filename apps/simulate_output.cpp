@@ -33,8 +33,8 @@ void add_simulate_output_flags(CLI::App& s, SimulateOutputFlags& f, double defau
 }
 
 const std::vector<std::string>& simulate_output_flag_names() {
-  static const std::vector<std::string> n{"--trajectory", "--plot",  "--animate", "--animate-frames",
-                                          "--json",       "--json-out", "--quiet", "--timing",
+  static const std::vector<std::string> n{"--trajectory",    "--plot",           "--animate", "--animate-frames",
+                                          "--json",          "--json-out",       "--quiet",   "--timing",
                                           "--timing-repeat", "--max-output-rows"};
   return n;
 }

@@ -26,8 +26,8 @@ void add_simulate_output_flags(CLI::App& app, SimulateOutputFlags& f, double def
 const std::vector<std::string>& simulate_output_flag_names();
 // Checks the outputs, runs, writes the CSV, figures, JSON and text. `trajectory` and `plot` are the
 // paths to use (a scenario file may name them).
-void run_and_write(const std::unique_ptr<PreparedRun>& run, const SimulateOutputFlags& f,
-                   const std::string& trajectory, const std::string& plot);
+void run_and_write(const std::unique_ptr<PreparedRun>& run, const SimulateOutputFlags& f, const std::string& trajectory,
+                   const std::string& plot);
 inline void run_and_write(const std::unique_ptr<PreparedRun>& run, const SimulateOutputFlags& f) {
   run_and_write(run, f, f.trajectory, f.plot);
 }

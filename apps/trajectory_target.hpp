@@ -2,10 +2,10 @@
 #pragma once
 // Where a command's trajectory CSV goes: the user's file, or a temporary file when only figures
 // made from it are asked for (removed afterwards, also on failure and on SIGINT/SIGTERM).
+#include <unistd.h>
 #include <cstdio>
 #include <memory>
 #include <string>
-#include <unistd.h>
 #include <vector>
 
 #include "blockdyn/io/atomic_file.hpp"

@@ -303,7 +303,7 @@ def response_curve(**options):
 def _harmonic_command(command, tables, options):
     """Runs the study COMMAND from memory; returns its summary with each series of `tables` (the
     names of the command line's CSV outputs) as {column: NumPy array} under its key."""
-    for reserved in ("json", "json_out", "out", "poincare", "trace", "plot", "quiet"):
+    for reserved in ("json", "json_out", "out", "poincare", "trace", "plot", "quiet", "progress"):
         if reserved in options:
             raise ValueError(f"{reserved}: set by blockdyn.{command.replace('-', '_')} itself")
     opts = _options(options)
@@ -369,26 +369,21 @@ def lyapunov(**options):
     a ground motion) and returns its JSON summary with the convergence history as arrays "t",
     "growth", "estimate", and for forced models the two nearby orbits' separation as "twin_t",
     "twin_separation", "twin_predicted"."""
-    for reserved in ("csv", "twin_csv", "json", "json_out"):
+    for reserved in ("csv", "twin_csv", "json", "json_out", "plot"):
         if reserved in options:
             raise ValueError(f"{reserved}: set by blockdyn.lyapunov itself")
     forced = options.get("model", "winkler") != "winkler"
-    with tempfile.TemporaryDirectory(prefix="blockdyn-py-") as tmp:
-        summ, hist, twin = (os.path.join(tmp, n) for n in ("summary.json", "history.csv", "twin.csv"))
-        opts = dict(options, json_out=summ, csv=hist)
-        if forced:
-            opts["twin_csv"] = twin
-        run(*_args("lyapunov", opts))
-        with open(summ) as f:
-            j = json.load(f)
-        h = _read_csv(hist)
-        for k in ("t", "growth", "estimate"):
-            j[k] = h.get(k, np.array([], dtype=float))
-        if forced:
-            tw = _read_csv(twin)
-            for k in ("t", "separation", "predicted"):
-                j["twin_" + k] = tw.get(k, np.array([], dtype=float))
-        return j
+    tables = ["history", *(["twin"] if forced else [])]
+    _, summary, _, series = _core.study("lyapunov", _options(options), True, tables)
+    j = json.loads(summary)
+    h = _columns(series["history"])
+    for k in ("t", "growth", "estimate"):
+        j[k] = h.get(k, np.array([], dtype=float))
+    if forced:
+        tw = _columns(series["twin"])
+        for k in ("t", "separation", "predicted"):
+            j["twin_" + k] = tw.get(k, np.array([], dtype=float))
+    return j
 
 
 def _table_and_json(command, options):
@@ -409,8 +404,8 @@ def chaos_map(**options):
     """Runs `blockdyn chaos-map` and returns its JSON summary with one NumPy array per CSV column:
     "beta", "omega", "motion", "exponent" (1/s; -inf superstable, NaN none), "exponent_nondim",
     "exponent_second_half", "status", "impacts", "collapse_mode", "t_failure"."""
-    cols, j = _table_and_json("chaos-map", options)
-    j.update(cols)
+    j = _harmonic_command("chaos-map", ["points"], options)
+    j.update(j.pop("points"))
     return j
 
 
@@ -420,8 +415,8 @@ def periodic_orbits(**options):
     ("continue" is a Python keyword: pass it as continue_="ks") or the region grid (region=True)."""
     if "continue_" in options:
         options["continue"] = options.pop("continue_")
-    cols, j = _table_and_json("periodic-orbits", options)
-    j.update(cols)
+    j = _harmonic_command("periodic-orbits", ["table"], options)
+    j.update(j.pop("table"))
     return j
 
 

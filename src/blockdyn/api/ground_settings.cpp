@@ -6,13 +6,31 @@
 
 namespace blockdyn {
 
+const std::vector<StudyOption>& ground_options() {
+  static const std::vector<StudyOption> options = [] {
+    std::vector<StudyOption> o;
+    for (int i = 0; i < 2; ++i) {
+      const std::string n = i == 0 ? "ground-h" : "ground-v";
+      const std::string what = i == 0 ? "horizontal" : "vertical";
+      o.push_back({n, "constant " + what + " ground acceleration (g)"});
+      o.push_back({n + "-amplitude", what + " harmonic or pulse amplitude A (g): A g sin(2 pi F t + PHI)"});
+      o.push_back({n + "-frequency", what + " harmonic frequency F (Hz; non-dimensional winkler: per unit time)"});
+      o.push_back({n + "-phase", what + " harmonic phase PHI (rad)"});
+      o.push_back({n + "-start", what + " ground motion start time"});
+      o.push_back({n + "-duration", what + " duration: of the pulse, or of the motion (0: no end)"});
+      o.push_back({n + "-pulse", what + " pulse shape: " + pulse_names() + " (with -amplitude and -duration)"});
+      o.push_back({n + "-record", what + " accelerogram file: PEER .AT2, or CSV 't, a' (s, g)"});
+      o.push_back({n + "-scale", what + " scale factor on the record (default 1)"});
+    }
+    return o;
+  }();
+  return options;
+}
+
 const std::vector<std::string>& ground_option_names() {
   static const std::vector<std::string> names = [] {
     std::vector<std::string> n;
-    for (const char* c : {"ground-h", "ground-v"})
-      for (const char* k :
-           {"", "-amplitude", "-frequency", "-phase", "-start", "-duration", "-pulse", "-record", "-scale"})
-        n.push_back(std::string(c) + k);
+    for (const StudyOption& o : ground_options()) n.push_back(o.name);
     return n;
   }();
   return names;

@@ -5,12 +5,15 @@
 #include <string>
 #include <vector>
 
+#include "blockdyn/api/option_spec.hpp"
 #include "blockdyn/api/settings.hpp"
 #include "blockdyn/excitation/ground_motion.hpp"
 
 namespace blockdyn {
 
-// The option names (without dashes), for front ends that list or check them.
+// The options, with their help, for front ends that register them.
+const std::vector<StudyOption>& ground_options();
+// Their names (without dashes), for front ends that list or check them.
 const std::vector<std::string>& ground_option_names();
 // Sets the fields of g whose options were given (a record file is read here). Throws
 // std::invalid_argument naming the option.

@@ -21,6 +21,13 @@ const std::vector<StudyCommand>& study_commands() {
     add_equilibrium_studies(v);
     add_orbit_studies(v);
     add_harmonic_studies(v);
+    add_chaos_studies(v);
+    add_periodic_orbit_studies(v);
+    for (const StudyCommand& c : v)  // a name twice would make two flags of one
+      for (std::size_t i = 0; i < c.options.size(); ++i)
+        for (std::size_t k = 0; k < i; ++k)
+          if (c.options[i].name == c.options[k].name)
+            throw std::logic_error("study " + c.name + ": option --" + c.options[i].name + " twice");
     return v;
   }();
   return all;
@@ -43,11 +50,14 @@ StudyReport run_study(const std::string& name, const Settings& s, const StudyReq
   return c.run(s, request);
 }
 
-bool StudyRequest::wants(const std::string& series_name) const {
-  if (series.empty()) return want_table;
+bool StudyRequest::asked(const std::string& series_name) const {
   for (const std::string& n : series)
     if (n == series_name) return true;
   return false;
+}
+
+bool StudyRequest::wants(const std::string& series_name) const {
+  return figure || (series.empty() ? want_table : asked(series_name));
 }
 
 StudyOptions::StudyOptions(const Settings& given, const std::vector<StudyOption>& specs) : given_(given) {

@@ -12,16 +12,10 @@
 #include <nlohmann/json.hpp>
 
 #include "blockdyn/analysis/winkler/study_options.hpp"
+#include "blockdyn/api/option_spec.hpp"
 #include "blockdyn/api/settings.hpp"
 
 namespace blockdyn {
-
-struct StudyOption {
-  std::string name;           // without dashes: "r-min"
-  std::string help;           // for --help
-  std::string default_value;  // as the user would write it; empty: none
-  bool is_flag = false;       // given without a value
-};
 
 // How a study's outputs are named on the command line (both are contracts of existing commands).
 enum class StudyOutputs {
@@ -61,12 +55,15 @@ struct StudyReport {
 
 struct StudyRequest {
   bool want_table = true;  // SummaryFirst studies skip the table's work when false
-  // Series studies: the series wanted (empty: every one when want_table).
+  // Series studies: the series asked for by name (empty: every one when want_table); a figure
+  // wants every series its script reads.
   std::vector<std::string> series;
+  bool figure = false;
   // Called as points complete (done of total), from one thread at a time; may be empty.
   std::function<void(std::size_t done, std::size_t total)> progress;
 
-  bool wants(const std::string& series_name) const;
+  bool wants(const std::string& series_name) const;  // figure, asked, or every one
+  bool asked(const std::string& series_name) const;  // named in `series`
   void advance(std::size_t done, std::size_t total) const {
     if (progress) progress(done, total);
   }
@@ -144,5 +141,7 @@ void add_stability_studies(std::vector<StudyCommand>& to);
 void add_equilibrium_studies(std::vector<StudyCommand>& to);
 void add_orbit_studies(std::vector<StudyCommand>& to);
 void add_harmonic_studies(std::vector<StudyCommand>& to);
+void add_chaos_studies(std::vector<StudyCommand>& to);
+void add_periodic_orbit_studies(std::vector<StudyCommand>& to);
 
 }  // namespace blockdyn

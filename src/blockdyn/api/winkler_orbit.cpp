@@ -13,7 +13,7 @@
 
 namespace blockdyn {
 
-std::vector<StudyOption> winkler_orbit_options() {
+std::vector<StudyOption> winkler_orbit_options(const std::string& method_option) {
   const BlockParams p;
   const IntegratorOptions integ;
   return {
@@ -22,7 +22,7 @@ std::vector<StudyOption> winkler_orbit_options() {
       {"k", "non-dimensional foundation stiffness k a b/(m g) (> 0)", Settings::exact(p.k)},
       {"rtol", "relative tolerance of the integrator, in (0, 1)", Settings::exact(integ.rtol)},
       {"atol", "absolute tolerance (scaled by 1/k for y), in (0, 1)", Settings::exact(integ.atol)},
-      {"method",
+      {method_option,
        "Runge-Kutta pair: dopri5 (Dormand-Prince 5(4)), dop853 (8(5,3), 7th-order dense output) or auto "
        "(dop853 when rtol < 1e-6)",
        "auto"},
@@ -91,14 +91,16 @@ BlockStateVec initial_of(const StudyOptions& o, const WinklerOrbit& orbit) {
 
 }  // namespace
 
-WinklerOrbit winkler_orbit(const StudyOptions& o) {
+WinklerOrbit winkler_orbit(const StudyOptions& o, const std::string& method_option) {
   WinklerOrbit orbit;
   orbit.p = {o.number("r"), o.number("mu"), o.number("k")};
   validate(orbit.p);
   orbit.integrator.rtol = o.number("rtol");
   orbit.integrator.atol = o.number("atol");
-  const auto m = method_from_string(o.text("method"));
-  if (!m) throw std::invalid_argument("--method = '" + o.text("method") + "' is not one of: auto, dopri5, dop853");
+  const auto m = method_from_string(o.text(method_option));
+  if (!m)
+    throw std::invalid_argument("--" + method_option + " = '" + o.text(method_option) +
+                                "' is not one of: auto, dopri5, dop853");
   orbit.integrator.method = *m;
   orbit.ic = one_of(o, "ic", {"ic1", "ic2", "custom", "surface"});
   orbit.z0 = initial_of(o, orbit);

@@ -23,9 +23,11 @@ struct WinklerOrbit {
   BlockStateVec z0{};
 };
 
-std::vector<StudyOption> winkler_orbit_options();
+// method_option: the integrator's --method, or another name where the study has a --method of its
+// own (lyapunov: --integrator-method).
+std::vector<StudyOption> winkler_orbit_options(const std::string& method_option = "method");
 // Throws std::invalid_argument naming the option at fault.
-WinklerOrbit winkler_orbit(const StudyOptions& o);
+WinklerOrbit winkler_orbit(const StudyOptions& o, const std::string& method_option = "method");
 // Options of a run to t_end without an event log (validated).
 SimulationOptions orbit_run_options(double t_end, const IntegratorOptions& integ);
 // The opening of every orbit study's summary: run info, block, initial state, integrator.

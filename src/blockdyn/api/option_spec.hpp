@@ -1,0 +1,16 @@
+// SPDX-License-Identifier: Apache-2.0
+#pragma once
+// An option as the library describes it to its front ends: the command line registers it as a
+// flag (--name, with the help and the default shown), Python takes it as a keyword argument.
+#include <string>
+
+namespace blockdyn {
+
+struct StudyOption {
+  std::string name;             // without dashes: "r-min"
+  std::string help;             // for --help
+  std::string default_value{};  // as the user would write it; empty: none
+  bool is_flag = false;         // given without a value
+};
+
+}  // namespace blockdyn
