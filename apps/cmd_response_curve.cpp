@@ -20,7 +20,6 @@ namespace blockdyn::cli {
 namespace {
 
 struct CurveFlags {
-  ForcedModelFlags m;
   SurvivalOptions o;
   GridRunFlags g;
   double omega = 0;
@@ -44,13 +43,11 @@ std::vector<double> phi_axis(const CLI::App& s, const std::string& name, const s
   }
 }
 
-void plot_curve(const CurveFlags& f, const SurvivalOptions& o, const std::string& csv, const std::vector<double>& phi_s,
-                const std::vector<double>& phi_l, bool versus_phi) {
-  const bool assembly = f.m.model == "assembly";
-  std::string title = f.m.model + (f.m.preset.empty() ? "" : " " + f.m.preset) + ", " + o.excitation +
-                      (versus_phi ? ", omega = " + short_number(o.omega_min) : "");
-  if (assembly) {
-    title += ", " + f.m.contact + " law" + (f.m.columns_rock_only ? " (columns only rock)" : "");
+void plot_curve(const CurveFlags& f, const ForcedModelChoice& m, const SurvivalOptions& o, const std::string& csv,
+                const std::vector<double>& phi_s, const std::vector<double>& phi_l, bool versus_phi) {
+  std::string title = m.label() + ", " + o.excitation + (versus_phi ? ", omega = " + short_number(o.omega_min) : "");
+  if (m.assembly()) {
+    title += ", " + m.contact + " law" + (m.columns_rock_only ? " (columns only rock)" : "");
     if (phi_s.size() == 1) title += ", phi_s = " + short_number(phi_s[0]);
     if (phi_l.size() == 1) title += ", phi_l = " + short_number(phi_l[0]);
   }
@@ -76,10 +73,11 @@ void run(const CLI::App& s, const CurveFlags& f) {
     throw UsageError(e.what());
   }
   const bool friction_axes = given(s, "--phi-s-values") || given(s, "--phi-l-values");
-  if (friction_axes && f.m.model != "assembly")
+  const ForcedModelChoice choice = forced_model_choice(s);
+  if (friction_axes && !choice.assembly())
     throw UsageError("phi-s-values, phi-l-values: friction angles belong to --model assembly");
-  const std::vector<double> phi_s = phi_axis(s, "phi-s", f.phi_s_values, f.m.phi_s);
-  const std::vector<double> phi_l = phi_axis(s, "phi-l", f.phi_l_values, f.m.phi_l);
+  const std::vector<double> phi_s = phi_axis(s, "phi-s", f.phi_s_values, choice.phi_s);
+  const std::vector<double> phi_l = phi_axis(s, "phi-l", f.phi_l_values, choice.phi_l);
   const bool versus_phi = phi_l.size() > 1;
   if (versus_phi && o.omega_points > 1)
     throw UsageError("omega: give one frequency (--omega W) for a curve versus phi-l");
@@ -92,14 +90,14 @@ void run(const CLI::App& s, const CurveFlags& f) {
   for (double ps : phi_s)
     for (double pl : phi_l) {
       Settings m = given_flags;
-      if (f.m.model == "assembly") {
+      if (choice.assembly()) {
         m.set("phi-s", Settings::exact(ps));
         m.set("phi-l", Settings::exact(pl));
       }
-      models.push_back(build_forced_model(m));
+      models.push_back(forced_model_from(m));
     }
   const ForcedModel& fm = models.front();
-  const bool assembly = f.m.model == "assembly";
+  const bool assembly = choice.assembly();
   const std::size_t nw = std::size_t(o.omega_points), nl = phi_l.size(), ns = phi_s.size(), nb = o.betas.size();
 
   using json = nlohmann::ordered_json;
@@ -155,7 +153,7 @@ void run(const CLI::App& s, const CurveFlags& f) {
   j["options"] = options;
   j["tolerances"] = fm.tolerances;
   j["points"] = response_curve_points(t, assembly);
-  if (!f.plot.empty()) plot_curve(f, o, out.csv(), phi_s, phi_l, versus_phi);
+  if (!f.plot.empty()) plot_curve(f, choice, o, out.csv(), phi_s, phi_l, versus_phi);
   if (!f.json_out.empty()) emit_json(j, f.json_out);
   if (f.json) emit_json(j, "-");
   if (!f.json && !f.quiet) std::printf("%zu points %s\n", t.rows.size(), grid_run_note(res).c_str());
@@ -167,7 +165,7 @@ void add(CLI::App& app) {
                                    "largest rotation theta_MAX / alpha (and slip between blocks / b) versus omega = "
                                    "Omega/p for several beta, or versus the friction angle phi_l, under a_H = beta "
                                    "alpha g cos(Omega t + phase) (threads, MPI, resumable)");
-  add_forced_model_flags(*s, f->m);
+  add_forced_model_flags(*s);
   s->add_option("--betas", f->o.betas, "amplitudes beta, comma separated (a_H = beta alpha g ...)")->delimiter(',');
   add_excitation_grid_flags(*s, f->o);
   s->add_option("--omega", f->omega, "one frequency omega = Omega/p (instead of --omega-min/max/points)");

@@ -22,7 +22,6 @@ namespace blockdyn::cli {
 namespace {
 
 struct SpectrumFlags {
-  ForcedModelFlags m;
   std::string pulse = "rect";
   std::vector<double> durations;
   double duration_min = 0, duration_max = 0;
@@ -147,7 +146,7 @@ void run(const CLI::App& s, const SpectrumFlags& f) {
   j["rows"] = arr;
   j["runs"] = runs;
   const std::string title =
-      f.m.model + " " + (f.m.preset.empty() ? "" : f.m.preset + " ") + to_string(pulse) + " pulse";
+      forced_model_choice(s).label() + " " + to_string(pulse) + " pulse";
   if (!f.plot.empty()) run_python("plot_spectrum.py", {out.csv(), f.plot, "--title", title});
   if (!f.plot_map.empty())
     run_python("plot_spectrum.py", {out.csv(), f.plot_map, "--title", title, "--map", format_double(o.amplitude_min),
@@ -169,7 +168,7 @@ void add(CLI::App& app) {
   CLI::App* s = app.add_subcommand("spectrum",
                                    "overturning spectrum: the smallest pulse amplitude that overturns a block (or "
                                    "collapses an assembly), per pulse duration (s, g) (threads, MPI, resumable)");
-  add_forced_model_flags(*s, f->m);
+  add_forced_model_flags(*s);
   s->add_option("--pulse", f->pulse, std::string("pulse shape: ") + pulse_names() + " (default rect)");
   s->add_option("--durations", f->durations, "pulse durations t_p [s], comma separated")->delimiter(',');
   s->add_option("--duration-min", f->duration_min, "smallest duration [s] (geometric range)");

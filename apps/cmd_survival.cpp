@@ -20,7 +20,6 @@ namespace blockdyn::cli {
 namespace {
 
 struct SurvivalFlags {
-  ForcedModelFlags m;
   SurvivalOptions o;
   GridRunFlags g;
   int refine = 0;
@@ -110,9 +109,10 @@ void run(const CLI::App& s, const SurvivalFlags& f) {
   j["counts"] = sp.counts_json();
   j["points"] = sp.points;
   if (!f.plot.empty()) {
-    std::string title = f.m.model + (f.m.preset.empty() ? "" : " " + f.m.preset) + ", " + o.excitation;
-    if (f.m.model == "assembly")
-      title += ", " + f.m.contact + " law, phi_s = " + short_number(f.m.phi_s) + ", phi_l = " + short_number(f.m.phi_l);
+    const ForcedModelChoice m = forced_model_choice(s);
+    std::string title = m.label() + ", " + o.excitation;
+    if (m.assembly())
+      title += ", " + m.contact + " law, phi_s = " + short_number(m.phi_s) + ", phi_l = " + short_number(m.phi_l);
     std::vector<std::string> args{out.csv(), f.plot, "--title", title};
     if (f.refine > 0) {
       args.insert(
@@ -136,7 +136,7 @@ void add(CLI::App& app) {
       "survival domain over (beta, omega): rest, stable or collapse per point for a_H = beta alpha g "
       "cos(Omega t + phase), omega = Omega/p (seed 002), harmonic or as a half-period pulse "
       "(threads, MPI, resumable)");
-  add_forced_model_flags(*s, f->m);
+  add_forced_model_flags(*s);
   add_excitation_grid_flags(*s, f->o);
   s->add_option("--beta-min", f->o.beta_min, "smallest beta (default 0.5)");
   s->add_option("--beta-max", f->o.beta_max, "largest beta (default 5)");

@@ -7,7 +7,7 @@ import csv
 
 import numpy as np  # noqa: E402
 from matplotlib.colors import TwoSlopeNorm  # noqa: E402
-from plotkit import save, figure_parser, plt  # noqa: E402
+from plotkit import cell_edges, save, figure_parser, plt  # noqa: E402
 
 
 def main():
@@ -45,14 +45,7 @@ def main():
         hi = max(float(finite.max()), a.threshold)
         norm = TwoSlopeNorm(vmin=lo, vcenter=0.0, vmax=hi)
 
-        def edges(v):
-            v = np.asarray(v)
-            if v.size == 1:
-                return np.array([v[0] - 0.5, v[0] + 0.5])
-            mid = 0.5 * (v[1:] + v[:-1])
-            return np.concatenate([[2 * v[0] - mid[0]], mid, [2 * v[-1] - mid[-1]]])
-
-        pc = ax.pcolormesh(edges(omegas), edges(betas), np.ma.masked_invalid(grid), cmap="RdBu_r", norm=norm,
+        pc = ax.pcolormesh(cell_edges(omegas), cell_edges(betas), np.ma.masked_invalid(grid), cmap="RdBu_r", norm=norm,
                            shading="flat")
         cb = fig.colorbar(pc, ax=ax)
         cb.set_label("largest Lyapunov exponent / p")

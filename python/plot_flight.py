@@ -8,7 +8,7 @@ An SVG with the same stem is written beside the PNG.
 """
 import sys
 
-from plotkit import col, finish_k_scan, k_scan_figure, legend_outside, log_axes, np, plt, run_modes, save, t_end
+from plotkit import cell_edges, col, finish_k_scan, k_scan_figure, legend_outside, log_axes, np, plt, run_modes, save, t_end
 
 
 def plot_time(rows, meta, out):
@@ -69,13 +69,8 @@ def plot_map(rows, meta, out):
     for a, b, c in zip(r, k, t):
         grid[ir[a], ik[b]] = c
 
-    def edges(v):
-        lv = np.log(v)
-        mid = 0.5 * (lv[1:] + lv[:-1])
-        return np.exp(np.concatenate([[lv[0] - (mid[0] - lv[0])], mid, [lv[-1] + (lv[-1] - mid[-1])]]))
-
     fig, ax = plt.subplots(figsize=(7, 5), constrained_layout=True)
-    m = ax.pcolormesh(edges(ks), edges(rs), grid, cmap="gray_r", shading="flat", rasterized=True)
+    m = ax.pcolormesh(cell_edges(ks, log=True), cell_edges(rs, log=True), grid, cmap="gray_r", shading="flat", rasterized=True)
     ax.set_xscale("log")
     ax.set_yscale("log")
     ax.set_xlabel("k")

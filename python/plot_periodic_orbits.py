@@ -19,7 +19,7 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
-from plotkit import save  # noqa: E402
+from plotkit import cell_edges, save  # noqa: E402
 
 
 def read(path):
@@ -149,16 +149,9 @@ def plot_region(rows, lin, title):
             lin_ex[i, j] = float(int(r["linear_orbits"]) > 0)
             lin_st[i, j] = float(int(r["linear_stable"]) > 0)
 
-    def edges(v):
-        v = np.asarray(v)
-        if v.size == 1:
-            return np.array([v[0] - 0.5, v[0] + 0.5])
-        mid = 0.5 * (v[1:] + v[:-1])
-        return np.concatenate([[2 * v[0] - mid[0]], mid, [2 * v[-1] - mid[-1]]])
-
     from matplotlib.colors import ListedColormap
     cmap = ListedColormap(["white", "#f4b6b6", "#7fb3e0"])
-    ax.pcolormesh(edges(om), edges(ks), cls, cmap=cmap, vmin=-0.5, vmax=2.5, shading="flat")
+    ax.pcolormesh(cell_edges(om), cell_edges(ks), cls, cmap=cmap, vmin=-0.5, vmax=2.5, shading="flat")
     ax.plot([], [], "s", color="#f4b6b6", label="orbits exist, all unstable")
     ax.plot([], [], "s", color="#7fb3e0", label="a stable orbit exists")
     if lin and lin[3] and len(om) > 1 and len(ks) > 1:

@@ -10,7 +10,7 @@ balance. An SVG is written beside the PNG.
 """
 import argparse
 
-from plotkit import legend_outside, np, plt, read_rows, save
+from plotkit import legend_outside, shade_runs, np, plt, read_rows, save
 
 MECH_COLOURS = {"rest": "0.92", "slide": "#cfe8ff", "rock": "#fff2c2", "slide_rock": "#ffd8b0",
                 "flight": "#e4d4ff"}
@@ -18,12 +18,7 @@ MECH_COLOURS = {"rest": "0.92", "slide": "#cfe8ff", "rock": "#fff2c2", "slide_ro
 
 def bands(ax, t, mech):
     """Shade the time axis by mechanism (one span per run of equal mechanism)."""
-    start = 0
-    for i in range(1, len(t) + 1):
-        if i == len(t) or mech[i] != mech[start]:
-            ax.axvspan(t[start], t[min(i, len(t) - 1)], color=MECH_COLOURS.get(mech[start], "white"), lw=0,
-                       zorder=0)
-            start = i
+    shade_runs(ax, t, mech, MECH_COLOURS)
 
 
 def main():

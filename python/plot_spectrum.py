@@ -6,7 +6,7 @@ are geometric from AMIN to AMAX, one per character of the `scan` column).
 Usage: plot_spectrum.py SPECTRUM.csv OUT.png [--title T] [--map AMIN AMAX]"""
 import csv
 
-from plotkit import save, figure_parser, plt  # noqa: E402
+from plotkit import cell_edges, read_rows, save, figure_parser, plt  # noqa: E402
 
 
 def main():
@@ -39,18 +39,6 @@ def main():
     save(fig, a.out, dpi=120)
 
 
-def edges(v, log):
-    """Cell edges around sorted centres v (geometric midpoints on a log axis)."""
-    import math
-    v = list(v)
-    if len(v) == 1:
-        return [v[0] / 1.1, v[0] * 1.1] if log else [v[0] - 0.5, v[0] + 0.5]
-    mid = [math.sqrt(x * y) if log else 0.5 * (x + y) for x, y in zip(v[:-1], v[1:])]
-    first = v[0] ** 2 / mid[0] if log else 2 * v[0] - mid[0]
-    last = v[-1] ** 2 / mid[-1] if log else 2 * v[-1] - mid[-1]
-    return [first] + mid + [last]
-
-
 def picture(rows, d, amin, a):
     import numpy as np
     from matplotlib.colors import ListedColormap
@@ -60,7 +48,7 @@ def picture(rows, d, amin, a):
     z = np.array([[int(ch) for ch in rows[i]["scan"]] for i in order], dtype=float).T
     ds = [d[i] for i in order]
     fig, ax = plt.subplots(figsize=(7, 4.8))
-    ax.pcolormesh(edges(ds, True), edges(amps, True), z, cmap=ListedColormap(["#cfe3f3", "#d9534f"]),
+    ax.pcolormesh(cell_edges(ds, log=True), cell_edges(amps, log=True), z, cmap=ListedColormap(["#cfe3f3", "#d9534f"]),
                   vmin=0, vmax=1, shading="flat")
     ax.plot(ds, [amin[i] for i in order], "k-", lw=1.2, label="smallest overturning amplitude (bisection)")
     if any(r["linearised_rect"] for r in rows):

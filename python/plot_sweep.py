@@ -16,7 +16,7 @@ import math
 from matplotlib.colors import BoundaryNorm, ListedColormap
 from matplotlib.patches import Patch
 
-from plotkit import np, plt, read_rows, save
+from plotkit import cell_edges, np, plt, read_rows, save
 
 LABELS = {"k": "k = k_phys a b / (m g)", "r": "r = b / a", "inv_r": "1/r = a / b", "mu": "mu"}
 
@@ -47,17 +47,6 @@ def filtered_rows(path, where):
 def is_numeric(rows, column):
     vals = [r[column] for r in rows if r[column] != ""]
     return all(number(v) is not None for v in vals)
-
-
-def edges(centres, log):
-    """Cell edges half-way between sorted centres (geometric mean on a log axis)."""
-    c = np.log10(centres) if log else np.asarray(centres, dtype=float)
-    if len(c) == 1:
-        e = np.array([c[0] - 0.5, c[0] + 0.5])
-    else:
-        mid = 0.5 * (c[1:] + c[:-1])
-        e = np.concatenate([[c[0] - (mid[0] - c[0])], mid, [c[-1] + (c[-1] - mid[-1])]])
-    return 10.0 ** e if log else e
 
 
 def plot_line(ax, rows, a):
@@ -110,7 +99,7 @@ def plot_map(fig, ax, rows, a):
             continue
         grid[yi[float(r[a.y])], xi[float(r[a.x])]] = float(v) if numeric else cats.index(v)
     masked = np.ma.masked_invalid(grid)
-    xe, ye = edges(xv, a.logx), edges(yv, a.logy)
+    xe, ye = cell_edges(xv, a.logx), cell_edges(yv, a.logy)
     if numeric:
         cmap = plt.get_cmap("viridis").copy()
         cmap.set_bad("0.8")

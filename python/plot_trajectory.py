@@ -11,7 +11,7 @@ reactions Rx, Ry; the energy components with the closed balance. An SVG is writt
 import argparse
 import csv
 
-from plotkit import np, plt, save
+from plotkit import np, plt, save, shade_runs
 
 MODE_COLOURS = {"contact": "0.93", "slide": "#cfe8ff", "flight": "#e4d4ff"}
 
@@ -31,11 +31,7 @@ def load(path):
 
 def bands(ax, t, mode):
     """Mode as coloured spans (one per run of equal mode): readable on long runs too."""
-    start = 0
-    for i in range(1, len(t) + 1):
-        if i == len(t) or mode[i] != mode[start]:
-            ax.axvspan(t[start], t[min(i, len(t) - 1)], color=MODE_COLOURS.get(mode[start], "white"), lw=0, zorder=0)
-            start = i
+    shade_runs(ax, t, mode, MODE_COLOURS)
 
 
 def main():

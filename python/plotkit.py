@@ -40,6 +40,28 @@ def read_rows(path):
         return list(csv.DictReader(f))
 
 
+def cell_edges(centres, log=False):
+    """Cell edges around sorted centres, for pcolormesh: half-way between neighbours (geometric
+    means on a log axis), the outer cells as wide as their neighbours; a single centre gets a cell
+    one unit wide (a decade on a log axis)."""
+    c = np.log10(np.asarray(centres, dtype=float)) if log else np.asarray(centres, dtype=float)
+    if c.size == 1:
+        e = np.array([c[0] - 0.5, c[0] + 0.5])
+    else:
+        mid = 0.5 * (c[1:] + c[:-1])
+        e = np.concatenate([[2 * c[0] - mid[0]], mid, [2 * c[-1] - mid[-1]]])
+    return 10.0 ** e if log else e
+
+
+def shade_runs(ax, t, labels, colours):
+    """Shade the time axis by label: one span per run of equal labels, coloured from `colours`."""
+    start = 0
+    for i in range(1, len(t) + 1):
+        if i == len(t) or labels[i] != labels[start]:
+            ax.axvspan(t[start], t[min(i, len(t) - 1)], color=colours.get(labels[start], "white"), lw=0, zorder=0)
+            start = i
+
+
 def load_meta(path):
     """The JSON sidecar PATH.json written beside a CSV table."""
     with open(path + ".json") as f:

@@ -55,15 +55,12 @@ const char* const kTimeColumn = "first flight time; t_end when the block did not
 // ------------------------------------------------------------------ flight-time
 
 std::vector<StudyOption> flight_time_options() {
-  std::vector<StudyOption> o = {{"r", "aspect ratio (> 0)", "0.5"},
+  return with_run_options({{"r", "aspect ratio (> 0)", "0.5"},
                                 {"mu", "friction coefficient (>= 0)", "0.2"},
                                 {"ic", "initial conditions: ic1, ic2, ic1:F (w0 = F alpha)", "ic1"},
                                 {"k-min", "lowest k (log grid)", "1000"},
                                 {"k-max", "highest k", "1e9"},
-                                {"points", "number of k values", "120"}};
-  for (auto& x : study_run_options("30")) o.push_back(x);
-  o.push_back(threads_option());
-  return o;
+                                {"points", "number of k values", "120"}}, "30");
 }
 
 StudyReport flight_time(const Settings& given, const StudyRequest&) {
@@ -117,7 +114,7 @@ StudyReport flight_time(const Settings& given, const StudyRequest&) {
 // ------------------------------------------------------------------ flight-boundary
 
 std::vector<StudyOption> flight_boundary_options() {
-  std::vector<StudyOption> o = {
+  return with_run_options({
       {"ic", "initial conditions: ic1, ic2, ic1:F", "ic1"},
       {"mu", "friction coefficient (>= 0)", "0.2"},
       {"r-min", "lowest aspect ratio (log grid)", "0.05"},
@@ -135,10 +132,7 @@ std::vector<StudyOption> flight_boundary_options() {
       // Smooth curves (docs/flight.md); 0 restores the coarse search.
       {"fine-per-decade", "fine grid points per decade scanned next to each boundary (0: coarse search only)", "48"},
       {"fine-span", "decades of k next to the boundary that the fine grid must find clean",
-       Settings::exact(BoundarySearchOptions{}.refine.span_decades)}};
-  for (auto& x : study_run_options("100")) o.push_back(x);
-  o.push_back(threads_option());
-  return o;
+       Settings::exact(BoundarySearchOptions{}.refine.span_decades)}}, "100");
 }
 
 // The first-impact criteria of k_high (--high-criterion; default both for ic1, else ihor2).
@@ -374,17 +368,14 @@ StudyReport kmin_study(const Settings& given, const StudyRequest&) {
 // ------------------------------------------------------------------ flight-map
 
 std::vector<StudyOption> flight_map_options() {
-  std::vector<StudyOption> o = {{"ic", "initial conditions: ic1, ic2, ic1:F", "ic1"},
+  return with_run_options({{"ic", "initial conditions: ic1, ic2, ic1:F", "ic1"},
                                 {"mu", "friction coefficient (>= 0)", "0.2"},
                                 {"r-min", "lowest aspect ratio (log grid)", "0.05"},
                                 {"r-max", "highest aspect ratio", "1"},
                                 {"r-points", "number of r values", "24"},
                                 {"k-min", "lowest k (log grid)", "100"},
                                 {"k-max", "highest k", "1e10"},
-                                {"k-points", "number of k values", "48"}};
-  for (auto& x : study_run_options("30")) o.push_back(x);
-  o.push_back(threads_option());
-  return o;
+                                {"k-points", "number of k values", "48"}}, "30");
 }
 
 StudyReport flight_map(const Settings& given, const StudyRequest&) {

@@ -90,6 +90,17 @@ const std::vector<std::string>& forced_model_option_names() {
   return n;
 }
 
+ForcedModelChoice forced_model_choice(const Settings& s) {
+  ForcedModelChoice c;
+  c.model = s.text("model", c.model);
+  c.preset = s.text("preset");
+  c.contact = s.text("contact", c.contact);
+  c.phi_s = s.number("phi-s", c.phi_s);
+  c.phi_l = s.number("phi-l", c.phi_l);
+  c.columns_rock_only = s.flag("columns-rock-only");
+  return c;
+}
+
 ForcedModel forced_model_from(const Settings& s) {
   const std::string model = s.text("model", "housner");
   if (model != "housner" && model != "rigid" && model != "assembly")

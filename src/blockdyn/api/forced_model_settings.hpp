@@ -13,6 +13,17 @@
 namespace blockdyn {
 
 const std::vector<std::string>& forced_model_option_names();
+
+// What names the model in titles and decides the analyses' variants: the options as given, with
+// their defaults (model housner, contact deformable, friction angles 90 deg).
+struct ForcedModelChoice {
+  std::string model = "housner", preset, contact = "deformable";
+  double phi_s = 90, phi_l = 90;
+  bool columns_rock_only = false;
+  bool assembly() const { return model == "assembly"; }
+  std::string label() const { return model + (preset.empty() ? "" : " " + preset); }  // "assembly trilith"
+};
+ForcedModelChoice forced_model_choice(const Settings& s);
 // Throws std::invalid_argument naming the option.
 ForcedModel forced_model_from(const Settings& s);
 

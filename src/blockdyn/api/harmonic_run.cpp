@@ -45,10 +45,7 @@ ForcedModel forced_model_of(const StudyOptions& o) {
   return forced_model_from(model);
 }
 
-std::string forced_model_label(const StudyOptions& o) {
-  const std::string preset = o.text("preset");
-  return o.text("model") + (preset.empty() ? "" : " " + preset);
-}
+std::string forced_model_label(const StudyOptions& o) { return forced_model_choice(o.given_settings()).label(); }
 
 std::vector<StudyOption> harmonic_run_options(double default_periods) {
   std::vector<StudyOption> o = forced_model_options();

@@ -18,13 +18,6 @@ namespace {
 
 using json = nlohmann::ordered_json;
 
-template <class Write>
-StudyTable table_of(Write&& write) {
-  std::ostringstream os;
-  write(os);
-  return table_from_csv(os.str());
-}
-
 // ---------------------------------------------------------------- cycles
 
 constexpr const char* kConvention =

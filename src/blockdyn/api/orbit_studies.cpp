@@ -23,13 +23,6 @@ namespace {
 
 using json = nlohmann::ordered_json;
 
-template <class Write>
-StudyTable table_of(Write&& write) {
-  std::ostringstream os;
-  write(os);
-  return table_from_csv(os.str());
-}
-
 std::vector<StudyOption> with_orbit(std::vector<StudyOption> own) {
   std::vector<StudyOption> o = winkler_orbit_options();
   o.insert(o.end(), own.begin(), own.end());

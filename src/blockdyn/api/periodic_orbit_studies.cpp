@@ -134,13 +134,6 @@ void merge(json& j, const json& part) {
   for (auto it = part.begin(); it != part.end(); ++it) j[it.key()] = it.value();
 }
 
-template <class Write>
-StudyTable table_of(Write&& write) {
-  std::ostringstream os;
-  write(os);
-  return table_from_csv(os.str());
-}
-
 StudyReport region_report(const StudyOptions& o, const OrbitSetup& st, const StudyRequest& request) {
   OrbitRegionOptions ro;
   ro.ks_min = o.number("ks-min");

@@ -37,8 +37,7 @@ void add_common_options(std::vector<StudyOption>& o, bool with_search) {
              {"eps", "relative width of the neighbourhood above k2 excluded from k3", Settings::exact(d.eps)}})
       o.push_back(x);
   }
-  for (auto& x : study_run_options("30")) o.push_back(x);
-  o.push_back(threads_option());
+  o = with_run_options(std::move(o), "30");
 }
 
 StabilitySearchOptions search_of(const StudyOptions& o) {

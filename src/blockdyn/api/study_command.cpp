@@ -118,6 +118,12 @@ std::vector<StudyOption> study_run_options(const std::string& default_t_end) {
            std::to_string(d.integrator.max_steps)}};
 }
 
+std::vector<StudyOption> with_run_options(std::vector<StudyOption> own, const std::string& default_t_end) {
+  for (StudyOption& x : study_run_options(default_t_end)) own.push_back(std::move(x));
+  own.push_back(threads_option());
+  return own;
+}
+
 StudyOption threads_option() { return {"threads", "worker threads (0: all cores); output does not depend on it", "0"}; }
 
 std::string cell_text(double v) {

@@ -6,6 +6,7 @@
 // analysis is written once, in the library, and reaches both front ends by one registration.
 #include <cstddef>
 #include <functional>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -118,12 +119,21 @@ class StudyOptions {
 // The option lists many studies share.
 std::vector<StudyOption> study_run_options(const std::string& default_t_end);  // t-end .. max-steps
 StudyOption threads_option();
+// `own`, then the run options (study_run_options) and --threads.
+std::vector<StudyOption> with_run_options(std::vector<StudyOption> own, const std::string& default_t_end);
 
 // Cells: the shortest of %.15g / %.17g that reads back exactly ("nan" for NaN); and %.17g.
 std::string cell_text(double v);
 std::string cell_text17(double v);
-// A table from CSV text (a header line, then rows; no quoting).
+// A table from CSV text (a header line, then rows; a quoted cell is kept whole, quotes included).
 StudyTable table_from_csv(const std::string& text);
+// The table a CSV writer `write(std::ostream&)` writes.
+template <class Write>
+StudyTable table_of(Write&& write) {
+  std::ostringstream os;
+  write(os);
+  return table_from_csv(os.str());
+}
 // printf into a report's text.
 void append_text(std::string& to, const char* format, ...) __attribute__((format(printf, 2, 3)));
 // {t_end, integrator}

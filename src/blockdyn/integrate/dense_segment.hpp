@@ -23,6 +23,23 @@ struct DenseSegment {
 
   double t1() const { return t0 + h; }
 
+  // The first four terms, common to both continuous extensions: the cubic Hermite interpolant of
+  // the step's end values y, y_new and rates k1, k_end (the higher terms are the stepper's).
+  void set_hermite(double t, double step, int n_terms, const Vec<N>& y, const Vec<N>& y_new, const Vec<N>& k1,
+                   const Vec<N>& k_end) {
+    t0 = t;
+    h = step;
+    terms = n_terms;
+    for (std::size_t i = 0; i < N; ++i) {
+      const double ydiff = y_new[i] - y[i];
+      const double bspl = step * k1[i] - ydiff;
+      r[0][i] = y[i];
+      r[1][i] = ydiff;
+      r[2][i] = bspl;
+      r[3][i] = ydiff - step * k_end[i] - bspl;
+    }
+  }
+
   // A segment of an accepted step whose full dense output was not computed (DOP853, when neither
   // the event scan nor an observer needed it) holds the cubic Hermite interpolant of the step's
   // end values and rates instead (terms = 4: exact at both ends, 4th order inside) and can be

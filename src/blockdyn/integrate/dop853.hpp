@@ -200,17 +200,9 @@ class Dop853 {
     stage(f, t, h, y, a14, 14);
     stage(f, t, h, y, a15, 15);
     st.rhs_evals += 3;
-    seg.t0 = t;
-    seg.h = h;
-    seg.terms = 8;
+    seg.set_hermite(t, h, 8, y, y_new, k1, k_end);
     const Vec<N> c4 = combine_all(d4), c5 = combine_all(d5), c6 = combine_all(d6), c7 = combine_all(d7);
     for (std::size_t i = 0; i < N; ++i) {
-      const double ydiff = y_new[i] - y[i];
-      const double bspl = h * k1[i] - ydiff;
-      seg.r[0][i] = y[i];
-      seg.r[1][i] = ydiff;
-      seg.r[2][i] = bspl;
-      seg.r[3][i] = ydiff - h * k_end[i] - bspl;
       seg.r[4][i] = h * c4[i];
       seg.r[5][i] = h * c5[i];
       seg.r[6][i] = h * c6[i];

@@ -80,19 +80,9 @@ class Dopri5 {
   void dense(double t, double h, const Vec<N>& y, const Vec<N>& y_new, const Vec<N>& k1,
              const Vec<N>& k7, DenseSegment<N>& seg) const {
     using namespace dp5;
-    seg.t0 = t;
-    seg.h = h;
-    seg.terms = 5;
-    for (std::size_t i = 0; i < N; ++i) {
-      const double ydiff = y_new[i] - y[i];
-      const double bspl = h * k1[i] - ydiff;
-      seg.r[0][i] = y[i];
-      seg.r[1][i] = ydiff;
-      seg.r[2][i] = bspl;
-      seg.r[3][i] = ydiff - h * k7[i] - bspl;
-      seg.r[4][i] = h * (d1 * k1[i] + d3 * k3_[i] + d4 * k4_[i] + d5 * k5_[i] + d6 * k6_[i] +
-                         d7 * k7[i]);
-    }
+    seg.set_hermite(t, h, 5, y, y_new, k1, k7);
+    for (std::size_t i = 0; i < N; ++i)
+      seg.r[4][i] = h * (d1 * k1[i] + d3 * k3_[i] + d4 * k4_[i] + d5 * k5_[i] + d6 * k6_[i] + d7 * k7[i]);
   }
   // The same with the integrator's common signature (this extension needs no further stages).
   template <class Rhs>

@@ -499,17 +499,7 @@ class HybridIntegrator {
   // DOP853's continuous extension), for steps whose full dense output nobody asked for.
   static void hermite_segment(double t, double h, const State& y, const State& y_new, const State& k1,
                               const State& k_end, DenseSegment<N>& seg) {
-    seg.t0 = t;
-    seg.h = h;
-    seg.terms = 4;
-    for (std::size_t i = 0; i < N; ++i) {
-      const double ydiff = y_new[i] - y[i];
-      const double bspl = h * k1[i] - ydiff;
-      seg.r[0][i] = y[i];
-      seg.r[1][i] = ydiff;
-      seg.r[2][i] = bspl;
-      seg.r[3][i] = ydiff - h * k_end[i] - bspl;
-    }
+    seg.set_hermite(t, h, 4, y, y_new, k1, k_end);
   }
 
   template <class F>
