@@ -16,10 +16,6 @@ MECH_COLOURS = {"rest": "0.92", "slide": "#cfe8ff", "rock": "#fff2c2", "slide_ro
                 "flight": "#e4d4ff"}
 
 
-def bands(ax, t, mech):
-    """Shade the time axis by mechanism (one span per run of equal mechanism)."""
-    shade_runs(ax, t, mech, MECH_COLOURS)
-
 
 def main():
     ap = argparse.ArgumentParser()
@@ -40,7 +36,7 @@ def main():
     imp = [i for i, e in enumerate(event) if e == "impact"]
 
     fig, ax = plt.subplots(5, 1, figsize=(10, 12), sharex=True, constrained_layout=True)
-    bands(ax[0], t, mech)
+    shade_runs(ax[0], t, mech, MECH_COLOURS)
     ax[0].plot(t, w, lw=0.8, color="C0")
     if a.alpha:
         for s in (1, -1):

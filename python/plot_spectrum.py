@@ -4,7 +4,6 @@ linearised closed form for a rectangular pulse when present; with --map AMIN AMA
 overturn / survive picture of the scan over (duration, amplitude) instead (the scan's amplitudes
 are geometric from AMIN to AMAX, one per character of the `scan` column).
 Usage: plot_spectrum.py SPECTRUM.csv OUT.png [--title T] [--map AMIN AMAX]"""
-import csv
 
 from plotkit import cell_edges, read_rows, save, figure_parser, plt  # noqa: E402
 
@@ -13,8 +12,7 @@ def main():
     ap = figure_parser()
     ap.add_argument("--map", nargs=2, type=float, metavar=("AMIN", "AMAX"))
     a = ap.parse_args()
-    with open(a.csv, newline="") as f:
-        rows = list(csv.DictReader(f))
+    rows = read_rows(a.csv)
     d = [float(r["duration"]) for r in rows]
     amin = [float(r["min_overturning_amplitude"]) if r["min_overturning_amplitude"] else float("nan") for r in rows]
     if a.map:

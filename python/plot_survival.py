@@ -5,9 +5,8 @@ long), filled for mode 2 and hollow for mode 1; stable points as small grey dots
 crosses. With --refined DW DB (a map refined near class changes; DW, DB the coarse steps in omega
 and beta) every point is drawn as a tile of its level's cell size, coarse tiles first, so the
 fine boundary shows. Usage: plot_survival.py POINTS.csv OUT.png [--title T] [--refined DW DB]"""
-import csv
 
-from plotkit import save, figure_parser, plt  # noqa: E402
+from plotkit import read_rows, save, figure_parser, plt  # noqa: E402
 
 MARKERS = {"short": "^", "medium": "D", "long": "s", "very long": "o"}
 
@@ -16,8 +15,7 @@ def main():
     ap = figure_parser()
     ap.add_argument("--refined", nargs=2, type=float, metavar=("DW", "DB"))
     a = ap.parse_args()
-    with open(a.csv, newline="") as f:
-        rows = list(csv.DictReader(f))
+    rows = read_rows(a.csv)
     if a.refined:
         return tiles(rows, a)
     fig, ax = plt.subplots(figsize=(7.5, 5))

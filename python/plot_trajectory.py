@@ -29,10 +29,6 @@ def load(path):
     return data
 
 
-def bands(ax, t, mode):
-    """Mode as coloured spans (one per run of equal mode): readable on long runs too."""
-    shade_runs(ax, t, mode, MODE_COLOURS)
-
 
 def main():
     ap = argparse.ArgumentParser()
@@ -44,7 +40,7 @@ def main():
     d = load(a.csv)
     t = d["t"]
     fig, ax = plt.subplots(3, 2, figsize=(12, 9.5), constrained_layout=True)
-    bands(ax[0, 0], t, d["mode"])
+    shade_runs(ax[0, 0], t, d["mode"], MODE_COLOURS)
     ax[0, 0].plot(t, d["w"], lw=0.8, color="C0")
     if a.alpha:
         for s in (1, -1):

@@ -10,6 +10,7 @@
 #include "blockdyn/integrate/dopri5.hpp"
 #include "blockdyn/integrate/hybrid_integrator.hpp"
 #include "stepper_test_problem.hpp"
+#include "threshold_test_model.hpp"
 
 using namespace blockdyn;
 
@@ -20,7 +21,6 @@ using stepper_test::kN;
 using stepper_test::max_err;
 using stepper_test::rhs;
 
-Dopri5<kN> absolute_stepper() { return stepper_test::absolute_stepper<Dopri5<kN>>(); }
 double global_error(int n, double T) { return stepper_test::global_error<Dopri5<kN>>(n, T); }
 
 }  // namespace
@@ -29,11 +29,7 @@ TEST(Dopri5, FifthOrderGlobalConvergence) {
   const double T = 3.0;
   std::vector<double> e;
   for (int n : {16, 32, 64, 128}) e.push_back(global_error(n, T));
-  for (std::size_t i = 1; i < e.size(); ++i) {
-    const double order = std::log2(e[i - 1] / e[i]);
-    EXPECT_GT(order, 4.7) << "n = " << (16 << i);
-    EXPECT_LT(order, 5.5) << "n = " << (16 << i);
-  }
+  stepper_test::expect_orders(e, 4.7, 5.5, "global error, steps doubled");
   EXPECT_LT(e.back(), 1e-9);
 }
 
@@ -45,48 +41,23 @@ TEST(Dopri5, FsalAndDenseOutputOrder) {
   const double theta = 0.37;
   std::vector<double> e_end, e_mid;
   for (double h : {0.2, 0.1, 0.05, 0.025}) {
-    Dopri5<kN> st = absolute_stepper();
-    StepperStats stats;
-    Vec<kN> y = exact(t0), k1, k7, y1, k7_check, ym, ye;
-    rhs(t0, y, k1);
-    st.attempt(rhs, t0, h, y, k1, y1, k7, stats);
-    rhs(t0 + h, y1, k7_check);
-    for (std::size_t i = 0; i < kN; ++i) EXPECT_EQ(k7[i], k7_check[i]);  // FSAL
+    stepper_test::OneStep<Dopri5<kN>> s(t0, h);
     DenseSegment<kN> seg;
-    st.dense(t0, h, y, y1, k1, k7, seg);
-    seg.eval(t0, ym);
-    for (std::size_t i = 0; i < kN; ++i) EXPECT_EQ(ym[i], y[i]);
-    seg.eval(t0 + h, ye);
-    for (std::size_t i = 0; i < kN; ++i) EXPECT_NEAR(ye[i], y1[i], 1e-15 * (1 + std::fabs(y1[i])));
+    s.st.dense(t0, h, s.y, s.y1, s.k1, s.k_end, seg);
+    stepper_test::expect_segment_ends(seg, t0, h, s.y, s.y1);
+    Vec<kN> ym;
     seg.eval(t0 + theta * h, ym);
-    e_end.push_back(max_err(y1, exact(t0 + h)));
+    e_end.push_back(max_err(s.y1, exact(t0 + h)));
     e_mid.push_back(max_err(ym, exact(t0 + theta * h)));
   }
-  for (std::size_t i = 1; i < e_end.size(); ++i) {
-    const double p_end = std::log2(e_end[i - 1] / e_end[i]);
-    const double p_mid = std::log2(e_mid[i - 1] / e_mid[i]);
-    EXPECT_GT(p_end, 5.6) << i;
-    EXPECT_LT(p_end, 6.6) << i;
-    EXPECT_GT(p_mid, 4.6) << i;
-    EXPECT_LT(p_mid, 5.6) << i;
-  }
+  stepper_test::expect_orders(e_end, 5.6, 6.6, "step end");
+  stepper_test::expect_orders(e_mid, 4.6, 5.6, "dense output");
 }
 
 TEST(Dopri5, ErrorEstimateIsFifthPowerOfStep) {
   // The embedded order-4 solution differs from the order-5 one by O(h^5).
-  std::vector<double> est;
-  for (double h : {0.2, 0.1, 0.05}) {
-    Dopri5<kN> st = absolute_stepper();
-    StepperStats stats;
-    Vec<kN> y = exact(1.0), k1, k7, y1;
-    rhs(1.0, y, k1);
-    est.push_back(st.attempt(rhs, 1.0, h, y, k1, y1, k7, stats));
-  }
-  for (std::size_t i = 1; i < est.size(); ++i) {
-    const double p = std::log2(est[i - 1] / est[i]);
-    EXPECT_GT(p, 4.5);
-    EXPECT_LT(p, 5.5);
-  }
+  const std::vector<double> est = stepper_test::step_estimates<Dopri5<kN>>({0.2, 0.1, 0.05});
+  stepper_test::expect_orders(est, 4.5, 5.5, "error estimate");
 }
 
 // ---- Hybrid toy models --------------------------------------------------------------------
@@ -225,25 +196,7 @@ TEST(HybridIntegrator, WallOscillatorEventTimesToRoundoff) {
 namespace {
 // x = sin t; the event function c - x dips below zero only for |t - pi/2| < acos(c), a window
 // far shorter than the steps DOPRI5 takes on this smooth problem.
-struct Grazing {
-  static constexpr std::size_t kDim = 2;
-  static constexpr std::size_t kNumEvents = 1;
-  using Mode = int;
-  using State = Vec<2>;
-  double c;
-  void rhs(double, const Mode&, const State& z, State& dz) const {
-    dz[0] = z[1];
-    dz[1] = -z[0];
-  }
-  void events(double, const Mode& m, const State& z, std::array<double, 1>& g) const {
-    g[0] = m == 0 ? c - z[0] : z[0] - c;  // mode 1: back below c
-  }
-  void complete(const Mode&, State&) const {}
-  Transition<Mode> transition(double, const Mode& m, const State&, int) const { return {1 - m, false, m}; }
-  std::optional<Transition<Mode>> resolve_chatter(double, const Mode&, const State&) const { return std::nullopt; }
-  double step_hint(const Mode&) const { return 0.5; }
-  State abs_tol_scale() const { return {1.0, 1.0}; }
-};
+using Grazing = threshold_test::ThresholdCrossing<threshold_test::Harmonic>;
 
 // Grazing with threshold c run from x = 0, x' = 1 (x = sin t) up to t_end at rtol 1e-12.
 struct GrazingRun {

@@ -14,6 +14,7 @@
 
 #include "blockdyn/integrate/event_envelope.hpp"
 #include "blockdyn/integrate/hybrid_integrator.hpp"
+#include "threshold_test_model.hpp"
 
 using namespace blockdyn;
 
@@ -120,60 +121,13 @@ namespace {
 // event, and c close to A makes dips as short and shallow as wanted. With `Rates` the model
 // provides event_rates (exact), else the integrator differences.
 template <bool Rates>
-struct Sine {
-  static constexpr std::size_t kDim = 2;
-  static constexpr std::size_t kNumEvents = 1;
-  using Mode = int;
-  using State = Vec<2>;
-  double c;
-  double hint = 0.5;
-  void rhs(double, const Mode&, const State& z, State& dz) const {
-    dz[0] = z[1];
-    dz[1] = -z[0];
-  }
-  void events(double, const Mode& m, const State& z, std::array<double, 1>& g) const {
-    g[0] = m == 0 ? c - z[0] : z[0] - c;
-  }
-  void event_rates(double t, const Mode& m, const State& z, const State& dz, std::array<double, 1>& g,
-                   std::array<double, 1>& gd) const requires Rates {
-    events(t, m, z, g);
-    gd[0] = m == 0 ? -dz[0] : dz[0];
-  }
-  void complete(const Mode&, State&) const {}
-  Transition<Mode> transition(double, const Mode& m, const State&, int) const { return {1 - m, false, m}; }
-  std::optional<Transition<Mode>> resolve_chatter(double, const Mode&, const State&) const { return std::nullopt; }
-  double step_hint(const Mode&) const { return hint; }
-  State abs_tol_scale() const { return {1.0, 1.0}; }
-};
+using Sine = threshold_test::ThresholdCrossing<threshold_test::Harmonic, Rates>;
 
 // A thrown stone: x'' = -1, x = t - t^2 / 2 (top 1/2 at t = 1). Its path is a polynomial, so both
 // pairs integrate it exactly and take steps as long as h_max allows: a dip of g = c - x inside one
 // step is visible only to the scan. Rates from the model or from differences.
 template <bool Rates>
-struct Stone {
-  static constexpr std::size_t kDim = 2;
-  static constexpr std::size_t kNumEvents = 1;
-  using Mode = int;
-  using State = Vec<2>;
-  double c;
-  void rhs(double, const Mode&, const State& z, State& dz) const {
-    dz[0] = z[1];
-    dz[1] = -1.0;
-  }
-  void events(double, const Mode& m, const State& z, std::array<double, 1>& g) const {
-    g[0] = m == 0 ? c - z[0] : z[0] - c;
-  }
-  void event_rates(double t, const Mode& m, const State& z, const State& dz, std::array<double, 1>& g,
-                   std::array<double, 1>& gd) const requires Rates {
-    events(t, m, z, g);
-    gd[0] = m == 0 ? -dz[0] : dz[0];
-  }
-  void complete(const Mode&, State&) const {}
-  Transition<Mode> transition(double, const Mode& m, const State&, int) const { return {1 - m, false, m}; }
-  std::optional<Transition<Mode>> resolve_chatter(double, const Mode&, const State&) const { return std::nullopt; }
-  double step_hint(const Mode&) const { return 0.5; }
-  State abs_tol_scale() const { return {1.0, 1.0}; }
-};
+using Stone = threshold_test::ThresholdCrossing<threshold_test::Gravity, Rates>;
 
 struct Times {
   std::vector<double> t;
