@@ -60,6 +60,23 @@ std::vector<std::string> split_list(const std::string& s) {
   return out;
 }
 
+// The initial-state overrides (--x0 --y0 --vx0 --vy0 --vw0) and the run's flags (--t-end --rtol
+// --atol --method --max-steps --no-energy) both families share.
+template <class Initial, class Options>
+void apply_state_and_run_flags(const CLI::App& s, const SweepFlags& f, Initial& initial, Options& options) {
+  if (given(s, "--x0")) initial.x0 = f.x0;
+  if (given(s, "--y0")) initial.y0 = f.y0;
+  if (given(s, "--vx0")) initial.vx0 = f.vx0;
+  if (given(s, "--vy0")) initial.vy0 = f.vy0;
+  if (given(s, "--vw0")) initial.vw0 = f.vw0;
+  if (given(s, "--t-end")) options.t_end = f.t_end;
+  if (given(s, "--rtol")) options.integrator.rtol = f.integ.rtol;
+  if (given(s, "--atol")) options.integrator.atol = f.integ.atol;
+  if (given(s, "--method")) options.integrator.method = f.integ.method;
+  if (given(s, "--max-steps")) options.integrator.max_steps = f.max_steps;
+  if (given(s, "--no-energy")) options.track_energy = false;
+}
+
 SweepSpec build_spec(const CLI::App& s, const SweepFlags& f) {
   SweepSpec sp = f.file.empty() ? SweepSpec{} : load_sweep(f.file);
   if (given(s, "--r") && given(s, "--inv-r")) throw UsageError("--r and --inv-r: give only one aspect-ratio axis");
@@ -77,19 +94,9 @@ SweepSpec build_spec(const CLI::App& s, const SweepFlags& f) {
     sp.initial.w0_over_alpha = f.w0_over_alpha;
     sp.initial.w0.reset();
   }
-  if (given(s, "--x0")) sp.initial.x0 = f.x0;
-  if (given(s, "--y0")) sp.initial.y0 = f.y0;
-  if (given(s, "--vx0")) sp.initial.vx0 = f.vx0;
-  if (given(s, "--vy0")) sp.initial.vy0 = f.vy0;
-  if (given(s, "--vw0")) sp.initial.vw0 = f.vw0;
-  if (given(s, "--t-end")) sp.options.t_end = f.t_end;
-  if (given(s, "--rtol")) sp.options.integrator.rtol = f.integ.rtol;
-  if (given(s, "--atol")) sp.options.integrator.atol = f.integ.atol;
-  if (given(s, "--method")) sp.options.integrator.method = f.integ.method;
-  if (given(s, "--max-steps")) sp.options.integrator.max_steps = f.max_steps;
+  apply_state_and_run_flags(s, f, sp.initial, sp.options);
   if (given(s, "--stop-at-first-flight")) sp.options.stop_at_first_flight = f.stop_at_first_flight;
   if (given(s, "--stop-at-ihor")) sp.options.stop_at_ihor = f.stop_at_ihor;
-  if (given(s, "--no-energy")) sp.options.track_energy = false;
   if (given(s, "--metric")) sp.metrics = f.metrics;
   if (given(s, "--output")) sp.output = f.output;
   if (given(s, "--plot")) sp.plot = f.plot;
@@ -197,17 +204,7 @@ RigidSweepSpec build_rigid_spec(const CLI::App& s, const SweepFlags& f, const st
     sp.w0_over_alpha = f.w0_over_alpha;
     sp.initial.w0 = 0.0;
   }
-  if (given(s, "--vw0")) sp.initial.vw0 = f.vw0;
-  if (given(s, "--x0")) sp.initial.x0 = f.x0;
-  if (given(s, "--y0")) sp.initial.y0 = f.y0;
-  if (given(s, "--vx0")) sp.initial.vx0 = f.vx0;
-  if (given(s, "--vy0")) sp.initial.vy0 = f.vy0;
-  if (given(s, "--t-end")) sp.options.t_end = f.t_end;
-  if (given(s, "--rtol")) sp.options.integrator.rtol = f.integ.rtol;
-  if (given(s, "--atol")) sp.options.integrator.atol = f.integ.atol;
-  if (given(s, "--method")) sp.options.integrator.method = f.integ.method;
-  if (given(s, "--max-steps")) sp.options.integrator.max_steps = f.max_steps;
-  if (given(s, "--no-energy")) sp.options.track_energy = false;
+  apply_state_and_run_flags(s, f, sp.initial, sp.options);
   for (const auto& a : f.axes) {
     const auto eq = a.find('=');
     if (eq == std::string::npos || eq == 0)

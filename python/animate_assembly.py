@@ -2,7 +2,6 @@
 """Animation of an assembly run: the blocks over the moving ground, the contact points with their
 normal forces as arrows (open points hollow), the time and the ground acceleration.
 Usage: animate_assembly.py TRAJECTORY.csv OUT.gif|OUT.mp4 [--frames N] [--title T]"""
-import argparse
 
 import matplotlib
 
@@ -13,6 +12,7 @@ from matplotlib import animation  # noqa: E402
 from matplotlib.patches import Polygon  # noqa: E402
 
 from assembly_csv import load  # noqa: E402
+from plotkit import figure_parser  # noqa: E402
 
 
 def corners(x, y, th, b, h):
@@ -22,11 +22,8 @@ def corners(x, y, th, b, h):
 
 
 def main():
-    ap = argparse.ArgumentParser()
-    ap.add_argument("csv")
-    ap.add_argument("out")
+    ap = figure_parser()
     ap.add_argument("--frames", type=int, default=120)
-    ap.add_argument("--title", default="")
     ap.add_argument("--sizes", required=True, help="b0,h0,b1,h1,... block widths and heights (m)")
     a = ap.parse_args()
     c, nb, npts = load(a.csv)

@@ -12,7 +12,6 @@ mechanism or mode and the time are written in the frame; a lower panel shows the
 acceleration (rigid models; Winkler: the rotation) with a moving cursor. N frames uniformly spaced
 in time (default 120).
 """
-import argparse
 import csv
 import math
 
@@ -23,6 +22,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 from matplotlib import animation  # noqa: E402
 from matplotlib.patches import Polygon  # noqa: E402
+from plotkit import figure_parser  # noqa: E402
 
 
 def load(path):
@@ -46,15 +46,12 @@ def corners(x, y, w, b, h):
 
 
 def main():
-    ap = argparse.ArgumentParser()
-    ap.add_argument("csv")
-    ap.add_argument("out")
+    ap = figure_parser()
     ap.add_argument("--model", default="winkler")
     ap.add_argument("--width", type=float, required=True)
     ap.add_argument("--height", type=float, required=True)
     ap.add_argument("--frames", type=int, default=120)
     ap.add_argument("--fps", type=int, default=24)
-    ap.add_argument("--title", default="")
     a = ap.parse_args()
     d = load(a.csv)
     t = d["t"]

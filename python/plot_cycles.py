@@ -3,7 +3,6 @@
 the cycle found there, and the (theta, theta') phase portrait of each periodic segment (the whole
 segment faint, its last two cycles bold, the strobe samples as dots).
 Usage: plot_cycles.py STROBE.csv OUT.png --trace TRACE.csv --block B --period T [--title T]"""
-import argparse
 import csv
 import re
 
@@ -12,7 +11,7 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
-from plotkit import save  # noqa: E402
+from plotkit import figure_parser, save  # noqa: E402
 
 
 def read(path):
@@ -38,13 +37,10 @@ def segments(t, labels):
 
 
 def main():
-    ap = argparse.ArgumentParser()
-    ap.add_argument("csv")
-    ap.add_argument("out")
+    ap = figure_parser()
     ap.add_argument("--trace", required=True)
     ap.add_argument("--block", type=int, default=0)
     ap.add_argument("--period", type=float, required=True)
-    ap.add_argument("--title", default="")
     a = ap.parse_args()
     b = a.block
     rows = read(a.csv)

@@ -4,7 +4,6 @@ theta') plane, (b) the forcing phase of each impact against the angular velocity
 (c) the state at the forcing phase phi0 once per period.
 Usage: plot_impact_map.py IMPACTS.csv OUT.png --poincare SECTION.csv --trace TRACE.csv --block B
 [--section-phase PHI0] [--title T]"""
-import argparse
 import csv
 
 import matplotlib
@@ -12,7 +11,7 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
-from plotkit import save  # noqa: E402
+from plotkit import figure_parser, save  # noqa: E402
 
 
 def load(path):
@@ -22,15 +21,12 @@ def load(path):
 
 
 def main():
-    ap = argparse.ArgumentParser()
-    ap.add_argument("csv")
-    ap.add_argument("out")
+    ap = figure_parser()
     ap.add_argument("--poincare", required=True)
     ap.add_argument("--trace", required=True)
     ap.add_argument("--block", type=int, default=0)
     ap.add_argument("--section-phase", default="0")
     ap.add_argument("--period", type=float, default=0.0, help="forcing period: (a) shows the last 30 periods")
-    ap.add_argument("--title", default="")
     a = ap.parse_args()
     b = a.block
     imp, sec, tr = load(a.csv), load(a.poincare), load(a.trace)

@@ -11,7 +11,6 @@
                    the linearised model's fold and stability boundaries (lines).
 Usage: plot_periodic_orbits.py CSV OUT.png --kind K [--parameter ks|omega] [--title T] [--linear L]
 """
-import argparse
 import csv
 
 import matplotlib
@@ -19,7 +18,7 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
-from plotkit import cell_edges, save  # noqa: E402
+from plotkit import figure_parser, cell_edges, save  # noqa: E402
 
 
 def read(path):
@@ -172,12 +171,9 @@ def plot_region(rows, lin, title):
 
 
 def main():
-    ap = argparse.ArgumentParser()
-    ap.add_argument("csv")
-    ap.add_argument("out")
+    ap = figure_parser()
     ap.add_argument("--kind", choices=["orbits", "branches", "region"], required=True)
     ap.add_argument("--parameter", default="ks")
-    ap.add_argument("--title", default="")
     ap.add_argument("--linear", default="")
     a = ap.parse_args()
     rows = read(a.csv)

@@ -8,9 +8,8 @@ Panels: rotation with +-alpha and the mechanism as coloured bands, impacts marke
 with the jumps at impacts; the ground acceleration; contact forces; the energy terms and the closed
 balance. An SVG is written beside the PNG.
 """
-import argparse
 
-from plotkit import legend_outside, shade_runs, np, plt, read_rows, save
+from plotkit import figure_parser, legend_outside, shade_runs, np, plt, read_rows, save
 
 MECH_COLOURS = {"rest": "0.92", "slide": "#cfe8ff", "rock": "#fff2c2", "slide_rock": "#ffd8b0",
                 "flight": "#e4d4ff"}
@@ -18,13 +17,10 @@ MECH_COLOURS = {"rest": "0.92", "slide": "#cfe8ff", "rock": "#fff2c2", "slide_ro
 
 
 def main():
-    ap = argparse.ArgumentParser()
-    ap.add_argument("csv")
-    ap.add_argument("out")
+    ap = figure_parser()
     ap.add_argument("--alpha", type=float)
     ap.add_argument("--model", default="")
     ap.add_argument("--status", default="")
-    ap.add_argument("--title", default="")
     a = ap.parse_args()
     rows = read_rows(a.csv)
     if not rows:

@@ -8,10 +8,9 @@ Panels: rotation with +-alpha and the mode (contact / slide / flight) as coloure
 marked; heave of the centre; horizontal position; the (w, w') phase portrait; the foundation's
 reactions Rx, Ry; the energy components with the closed balance. An SVG is written beside the PNG.
 """
-import argparse
 import csv
 
-from plotkit import np, plt, save, shade_runs
+from plotkit import figure_parser, np, plt, save, shade_runs
 
 MODE_COLOURS = {"contact": "0.93", "slide": "#cfe8ff", "flight": "#e4d4ff"}
 
@@ -31,11 +30,8 @@ def load(path):
 
 
 def main():
-    ap = argparse.ArgumentParser()
-    ap.add_argument("csv")
-    ap.add_argument("out")
+    ap = figure_parser()
     ap.add_argument("--alpha", type=float)
-    ap.add_argument("--title", default="")
     a = ap.parse_args()
     d = load(a.csv)
     t = d["t"]

@@ -16,10 +16,7 @@ using namespace blockdyn;
 
 namespace {
 
-using stepper_test::exact;
-using stepper_test::kN;
-using stepper_test::max_err;
-using stepper_test::rhs;
+using namespace stepper_test;
 
 double global_error(int n, double T) { return stepper_test::global_error<Dopri5<kN>>(n, T); }
 

@@ -29,9 +29,7 @@ struct ThresholdCrossing {
     g[0] = m == 0 ? c - z[0] : z[0] - c;  // mode 1: back below c
   }
   void event_rates(double t, const Mode& m, const State& z, const State& dz, std::array<double, 1>& g,
-                   std::array<double, 1>& gd) const
-    requires Rates
-  {
+                   std::array<double, 1>& gd) const requires Rates {
     events(t, m, z, g);
     gd[0] = m == 0 ? -dz[0] : dz[0];
   }

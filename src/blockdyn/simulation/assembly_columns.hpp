@@ -10,7 +10,8 @@ namespace blockdyn {
 inline std::vector<std::string> assembly_columns(int blocks, int interfaces) {
   std::vector<std::string> n{"t", "event"};
   for (int b = 0; b < blocks; ++b)
-    for (const char* c : {"x", "y", "theta", "vx", "vy", "omega"}) n.push_back(std::string(c) + '_' + std::to_string(b));
+    for (const char* c : {"x", "y", "theta", "vx", "vy", "omega"})
+      n.push_back(std::string(c) + '_' + std::to_string(b));
   n.emplace_back("a_h");
   n.emplace_back("a_v");
   for (int p = 0; p < 2 * interfaces; ++p)

@@ -6,20 +6,23 @@
 #include <memory>
 #include <stdexcept>
 
-#include "blockdyn/simulation/trajectory_rows.hpp"
 #include "blockdyn/model/assembly/assembly_model.hpp"
 #include "blockdyn/simulation/assembly_columns.hpp"
 #include "blockdyn/simulation/moreau_jean_run.hpp"
 #include "blockdyn/simulation/observer.hpp"
 #include "blockdyn/simulation/run.hpp"
+#include "blockdyn/simulation/trajectory_rows.hpp"
 
 namespace blockdyn {
 
 void validate(const AssemblyRunOptions& o) {
   if (!(o.t_end > 0 && o.t_end <= 1e7)) throw std::invalid_argument("t-end must be in (0, 1e7] s");
-  if (!(o.integrator.rtol >= 1e-14 && o.integrator.rtol <= 1e-2)) throw std::invalid_argument("rtol must be in [1e-14, 1e-2]");
-  if (!(o.integrator.atol >= 1e-16 && o.integrator.atol <= 1e-2)) throw std::invalid_argument("atol must be in [1e-16, 1e-2]");
-  if (!(o.output_interval >= 0 && o.output_interval <= 1e7)) throw std::invalid_argument("output-interval must be in [0, 1e7] s");
+  if (!(o.integrator.rtol >= 1e-14 && o.integrator.rtol <= 1e-2))
+    throw std::invalid_argument("rtol must be in [1e-14, 1e-2]");
+  if (!(o.integrator.atol >= 1e-16 && o.integrator.atol <= 1e-2))
+    throw std::invalid_argument("atol must be in [1e-16, 1e-2]");
+  if (!(o.output_interval >= 0 && o.output_interval <= 1e7))
+    throw std::invalid_argument("output-interval must be in [0, 1e7] s");
   if (!(o.step >= 1e-7 && o.step <= 1e-2)) throw std::invalid_argument("step must be in [1e-7, 1e-2] s");
   if (!(o.t_end / o.step <= 2e9)) throw std::invalid_argument("t-end / step must be at most 2e9 steps");
 }
@@ -34,10 +37,7 @@ template <int Cap>
 class AssemblyRecorder final : public Observer<Model<Cap>> {
  public:
   using M = Model<Cap>;
-  using typename Observer<M>::Mode;
-  using typename Observer<M>::State;
-  using typename Observer<M>::Event;
-  using typename Observer<M>::Segment;
+  BLOCKDYN_OBSERVER_TYPES(M);
 
   AssemblyRecorder(AssemblyResult& r, const AssemblyRunOptions& o) : r_(r), o_(o) {}
 
@@ -96,8 +96,7 @@ class AssemblyRecorder final : public Observer<Model<Cap>> {
       r_.note = "contact interpenetration beyond the model's limit (2% of the smallest block size) at interface " +
                 std::to_string(rec.interface);
     }
-    if (rec.block >= 0)
-      rec.pose = {e.z[M::ix(rec.block)], e.z[M::ix(rec.block) + 1], e.z[M::ix(rec.block) + 2]};
+    if (rec.block >= 0) rec.pose = {e.z[M::ix(rec.block)], e.z[M::ix(rec.block) + 1], e.z[M::ix(rec.block) + 2]};
     if (o_.on_event) o_.on_event(rec);
     if (o_.record_events && long(r_.events.size()) < o_.max_events) r_.events.push_back(rec);
     return true;
@@ -137,9 +136,7 @@ class AssemblyTrajectory final : public TrajectoryRows<Model<Cap>, AssemblyTraje
   using Base = TrajectoryRows<M, AssemblyTrajectory<Cap>>;
 
  public:
-  using typename Observer<M>::Mode;
-  using typename Observer<M>::State;
-  using typename Observer<M>::Event;
+  BLOCKDYN_OBSERVER_TYPES(M);
 
   using Base::Base;
 
@@ -181,10 +178,7 @@ template <int Cap>
 class AssemblyProbe final : public Observer<Model<Cap>> {
  public:
   using M = Model<Cap>;
-  using typename Observer<M>::Mode;
-  using typename Observer<M>::State;
-  using typename Observer<M>::Event;
-  using typename Observer<M>::Segment;
+  BLOCKDYN_OBSERVER_TYPES(M);
 
   explicit AssemblyProbe(RunProbe& p) : p_(p) {}
 
@@ -231,7 +225,8 @@ class AssemblyProbe final : public Observer<Model<Cap>> {
 };
 
 template <int Cap>
-AssemblyEnergy energy_of(const Model<Cap>& m, const typename Model<Cap>::Mode& md, const typename Model<Cap>::State& z) {
+AssemblyEnergy energy_of(const Model<Cap>& m, const typename Model<Cap>::Mode& md,
+                         const typename Model<Cap>::State& z) {
   const auto e = m.energy_terms(md, z);
   return {e.kinetic, e.gravity, e.normal_spring, e.tangential_spring, e.total()};
 }
@@ -298,7 +293,6 @@ AssemblyResult run(const Assembly& a, const GroundMotion& g, const AssemblyRunOp
     r.motion = "rest";
   return r;
 }
-
 
 }  // namespace
 

@@ -82,7 +82,7 @@ struct AssemblyResult {
   std::vector<AssemblyEventRecord> events;
   long steps = 0, rejected_steps = 0, rhs_evals = 0;
   std::vector<double> damping;  // calibrated damping per interface (N s/m per point)
-  long impacts = 0;              // rigid law: contact ends closing with an approach velocity
+  long impacts = 0;             // rigid law: contact ends closing with an approach velocity
   // Rigid law: how the steps' contact problems were solved (direct active-set solves, Gauss-Seidel
   // for degenerate ones and its sweeps).
   long direct_solves = 0, gauss_seidel_solves = 0, gauss_seidel_sweeps = 0;

@@ -10,6 +10,14 @@
 
 #include "blockdyn/integrate/hybrid_integrator.hpp"
 
+// The types of Observer<Model> in a class template derived from it (names of a dependent base
+// are not found without these declarations).
+#define BLOCKDYN_OBSERVER_TYPES(ModelType)               \
+  using typename ::blockdyn::Observer<ModelType>::Mode;  \
+  using typename ::blockdyn::Observer<ModelType>::State; \
+  using typename ::blockdyn::Observer<ModelType>::Event; \
+  using typename ::blockdyn::Observer<ModelType>::Segment
+
 namespace blockdyn {
 
 template <class Model>
@@ -36,10 +44,7 @@ class Observer {
 template <class Model>
 class FanOut final : public Observer<Model> {
  public:
-  using typename Observer<Model>::Mode;
-  using typename Observer<Model>::State;
-  using typename Observer<Model>::Event;
-  using typename Observer<Model>::Segment;
+  BLOCKDYN_OBSERVER_TYPES(Model);
 
   FanOut& add(Observer<Model>* o) {
     if (o && n_ < list_.size()) list_[n_++] = o;
@@ -79,10 +84,7 @@ class FanOut final : public Observer<Model> {
 template <class Model>
 class EnergyBalance final : public Observer<Model> {
  public:
-  using typename Observer<Model>::Mode;
-  using typename Observer<Model>::State;
-  using typename Observer<Model>::Event;
-  using typename Observer<Model>::Segment;
+  BLOCKDYN_OBSERVER_TYPES(Model);
 
   double initial() const { return e0_; }
   double max_abs_error() const { return max_err_; }

@@ -13,10 +13,7 @@ namespace blockdyn {
 template <class Model>
 class RigidProbeObserver final : public Observer<Model> {
  public:
-  using typename Observer<Model>::Mode;
-  using typename Observer<Model>::State;
-  using typename Observer<Model>::Event;
-  using typename Observer<Model>::Segment;
+  BLOCKDYN_OBSERVER_TYPES(Model);
   static constexpr std::size_t kTh = Model::kThetaIndex, kOm = Model::kOmegaIndex;
 
   explicit RigidProbeObserver(RunProbe& p) : p_(p) {}

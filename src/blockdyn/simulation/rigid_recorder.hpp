@@ -13,10 +13,7 @@ namespace blockdyn {
 template <class Model>
 class RigidRecorder final : public Observer<Model> {
  public:
-  using typename Observer<Model>::Mode;
-  using typename Observer<Model>::State;
-  using typename Observer<Model>::Event;
-  using typename Observer<Model>::Segment;
+  BLOCKDYN_OBSERVER_TYPES(Model);
   static constexpr std::size_t kTh = Model::kThetaIndex, kOm = Model::kOmegaIndex;
 
   RigidRecorder(bool record_events, RigidResult& r, RigidEventSink* sink = nullptr)
@@ -84,8 +81,8 @@ class RigidRecorder final : public Observer<Model> {
     }
     // A change of mechanism, or of pivot or slip direction within one (an impact moves the pivot
     // by definition: there only the mechanism counts).
-    const bool changed = from != to || (kind != RigidEventKind::Impact && (m.pivot(e.from) != m.pivot(e.to) ||
-                                                                          m.slip(e.from) != m.slip(e.to)));
+    const bool changed = from != to || (kind != RigidEventKind::Impact &&
+                                        (m.pivot(e.from) != m.pivot(e.to) || m.slip(e.from) != m.slip(e.to)));
     if (changed && !e.stop) {
       ++res_.mode_changes;
       add(record(m, e, RigidEventKind::Mode, from, to));

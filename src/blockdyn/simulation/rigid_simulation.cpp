@@ -85,12 +85,14 @@ void finish(const Model& m, const RunOutcome<Model>& out, const EnergyBalance<Mo
     res.note = "Painleve: no unique consistent mechanism (or impulse) at t = " + std::to_string(out.t) +
                " s; the rigid model with this friction and slenderness has no unique motion";
   else if (res.status == SimStatus::Invalid)
-    res.note = "the state left the model at t = " + std::to_string(out.t) + " s (e.g. vertical ground acceleration above g)";
+    res.note =
+        "the state left the model at t = " + std::to_string(out.t) + " s (e.g. vertical ground acceleration above g)";
 }
 
 template <class Model>
-RigidResult run_rigid_family(const Model& m, typename Model::Mode mode, typename Model::State z, const RigidRunOptions& opt,
-                             Observer<Model>* extra, RigidEventSink* events, const char* name) {
+RigidResult run_rigid_family(const Model& m, typename Model::Mode mode, typename Model::State z,
+                             const RigidRunOptions& opt, Observer<Model>* extra, RigidEventSink* events,
+                             const char* name) {
   RigidResult res;
   res.model = name;
   res.t_start = opt.t_start;
@@ -134,9 +136,8 @@ RigidResult simulate_rigid(const RigidBlockParams& p, const GroundMotion& g, con
   RigidBlock::State z = rigid_initial_state(m, init);
   const auto mode = m.initial_mode(opt.t_start, z);
   if (!mode)
-    throw std::invalid_argument(
-        "initial state: no unique consistent mechanism (Painleve's paradox for mu-k = " +
-        std::to_string(p.interface.mu_k) + " and this slenderness)");
+    throw std::invalid_argument("initial state: no unique consistent mechanism (Painleve's paradox for mu-k = " +
+                                std::to_string(p.interface.mu_k) + " and this slenderness)");
   return run_rigid_family(m, *mode, z, opt, extra, events, "rigid");
 }
 

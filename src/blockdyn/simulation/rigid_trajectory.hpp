@@ -15,16 +15,22 @@ class RigidTrajectory final : public TrajectoryRows<Model, RigidTrajectory<Model
   using Base = TrajectoryRows<Model, RigidTrajectory<Model>>;
 
  public:
-  using typename Observer<Model>::Mode;
-  using typename Observer<Model>::State;
-  using typename Observer<Model>::Event;
+  BLOCKDYN_OBSERVER_TYPES(Model);
 
   using Base::Base;
 
   std::vector<std::string> columns(const Model&) const {
-    return {"t",     "x",   "y",   "w",   "vx",  "vy",  "vw",  "mode",    "event",      "a_h",      "a_v",
-            "N_A",   "T_A", "N_B", "T_B", "E_kin", "E_pot", "E_total", "W_friction", "W_ground", "W_impact",
-            "energy_balance"};
+    return {"t",          "x",
+            "y",          "w",
+            "vx",         "vy",
+            "vw",         "mode",
+            "event",      "a_h",
+            "a_v",        "N_A",
+            "T_A",        "N_B",
+            "T_B",        "E_kin",
+            "E_pot",      "E_total",
+            "W_friction", "W_ground",
+            "W_impact",   "energy_balance"};
   }
   void started(const Model& m, const Mode& md, const State& z) { e0_ = m.energy(md, z) - m.work(z); }
   bool on_event(const Model& m, const Event& e) override {

@@ -16,8 +16,8 @@ struct RunOutcome {
 };
 
 template <HybridModel Model>
-RunOutcome<Model> run_model(const Model& m, typename Model::Mode mode, Vec<Model::kDim> z, double t0,
-                            double t_end, const IntegratorOptions& opt, Observer<Model>& obs) {
+RunOutcome<Model> run_model(const Model& m, typename Model::Mode mode, Vec<Model::kDim> z, double t0, double t_end,
+                            const IntegratorOptions& opt, Observer<Model>& obs) {
   struct Bridge {
     const Model& m;
     Observer<Model>& o;

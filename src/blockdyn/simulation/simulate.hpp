@@ -9,10 +9,10 @@
 #include <vector>
 
 #include "blockdyn/integrate/hybrid_integrator.hpp"
-#include "blockdyn/simulation/run.hpp"
-#include "blockdyn/simulation/run_clock.hpp"
 #include "blockdyn/model/winkler/energy.hpp"
 #include "blockdyn/model/winkler/winkler_block.hpp"
+#include "blockdyn/simulation/run.hpp"
+#include "blockdyn/simulation/run_clock.hpp"
 
 namespace blockdyn {
 
@@ -20,10 +20,10 @@ struct SimulationOptions {
   double t_start = 0.0;
   double t_end = 10.0;
   IntegratorOptions integrator;
-  bool track_energy = true;    // energy balance at every step end (one Region evaluation each)
-  bool record_events = true;   // keep the list of events (counts are always kept)
+  bool track_energy = true;   // energy balance at every step end (one Region evaluation each)
+  bool record_events = true;  // keep the list of events (counts are always kept)
   bool stop_at_first_flight = false;
-  long stop_at_ihor = 0;       // stop once ihor reaches this value (0: never)
+  long stop_at_ihor = 0;  // stop once ihor reaches this value (0: never)
 };
 
 struct EventRecord {
@@ -70,8 +70,8 @@ class SimulationSink {
  public:
   virtual ~SimulationSink() = default;
   virtual void on_start(const WinklerBlock&, double /*t*/, const BlockMode&, const BlockStateVec&) {}
-  virtual void on_segment(const WinklerBlock&, const DenseSegment<kStateDim>&, double /*t0*/,
-                          double /*t1*/, const BlockMode&) {}
+  virtual void on_segment(const WinklerBlock&, const DenseSegment<kStateDim>&, double /*t0*/, double /*t1*/,
+                          const BlockMode&) {}
   virtual void on_event(const WinklerBlock&, const EventRecord&) {}
   virtual bool keep_going() const { return true; }
   // Whether on_segment evaluates the dense output inside every step (see Observer::needs_dense;

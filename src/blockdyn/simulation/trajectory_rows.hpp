@@ -15,9 +15,7 @@ namespace blockdyn {
 template <class Model, class Derived>
 class TrajectoryRows : public Observer<Model> {
  public:
-  using typename Observer<Model>::Mode;
-  using typename Observer<Model>::State;
-  using typename Observer<Model>::Segment;
+  BLOCKDYN_OBSERVER_TYPES(Model);
 
   TrajectoryRows(TrajectoryTable& out, double interval) : out_(out), interval_(interval) {}
 

@@ -7,9 +7,17 @@ WinklerTrajectory::WinklerTrajectory(TrajectoryTable& out, double interval, std:
     : out_(out), interval_(interval), scales_(s) {}
 
 void WinklerTrajectory::on_start(const WinklerBlock& m, double t, const BlockMode& mode, const BlockStateVec& z) {
-  std::vector<std::string> names{"t",       "x",      "y",     "w",      "vx",       "vy",       "vw",       "mode",
-                                 "side",    "event",  "Rx",    "Ry",     "E_kin_x",  "E_kin_y",  "E_rot",    "E_grav",
-                                 "E_springs", "E_total", "W_friction", "W_nonpotential", "W_ground", "energy_balance"};
+  std::vector<std::string> names{"t",          "x",
+                                 "y",          "w",
+                                 "vx",         "vy",
+                                 "vw",         "mode",
+                                 "side",       "event",
+                                 "Rx",         "Ry",
+                                 "E_kin_x",    "E_kin_y",
+                                 "E_rot",      "E_grav",
+                                 "E_springs",  "E_total",
+                                 "W_friction", "W_nonpotential",
+                                 "W_ground",   "energy_balance"};
   if (scales_)
     for (const char* n : {"t_s", "x_m", "y_m", "vx_m_per_s", "vy_m_per_s", "vw_rad_per_s", "Rx_N", "Ry_N", "E_total_J"})
       names.emplace_back(n);
@@ -29,7 +37,9 @@ void WinklerTrajectory::on_segment(const WinklerBlock& m, const DenseSegment<kSt
   });
 }
 
-void WinklerTrajectory::on_event(const WinklerBlock& m, const EventRecord& e) { row(m, e.t, e.to, e.z, to_string(e.kind)); }
+void WinklerTrajectory::on_event(const WinklerBlock& m, const EventRecord& e) {
+  row(m, e.t, e.to, e.z, to_string(e.kind));
+}
 
 void WinklerTrajectory::row(const WinklerBlock& m, double t, const BlockMode& mode, const BlockStateVec& z,
                             const char* event) {
@@ -42,8 +52,8 @@ void WinklerTrajectory::row(const WinklerBlock& m, double t, const BlockMode& mo
   c.text(to_string(mode.regime));
   c.number(mode.side);
   c.text(event);
-  for (double v : {f.Rx, f.Ry, e.kinetic_x, e.kinetic_y, e.rotation, e.gravity, e.springs, e.total(),
-                   z[kWorkFriction], z[kWorkNonPotential], z[kWorkGround], balance})
+  for (double v : {f.Rx, f.Ry, e.kinetic_x, e.kinetic_y, e.rotation, e.gravity, e.springs, e.total(), z[kWorkFriction],
+                   z[kWorkNonPotential], z[kWorkGround], balance})
     c.number(v);
   if (scales_) {
     const UnitScales& s = *scales_;
