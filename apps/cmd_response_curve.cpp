@@ -54,7 +54,8 @@ void plot_curve(const CurveFlags& f, const ForcedModelChoice& m, const SurvivalO
   run_python("plot_response_curve.py", {csv, f.plot, "--title", title, "--x", versus_phi ? "phi_l" : "omega"});
 }
 
-void run(const CLI::App& s, const CurveFlags& f) {
+// The amplitudes and frequencies: --betas, and --omega (one frequency) or the omega range.
+SurvivalOptions curve_options(const CLI::App& s, const CurveFlags& f) {
   SurvivalOptions o = f.o;
   if (o.betas.empty()) throw UsageError("--betas B1,B2,... is needed (the amplitudes, in units of alpha g)");
   o.beta_points = int(o.betas.size());
@@ -72,6 +73,28 @@ void run(const CLI::App& s, const CurveFlags& f) {
   } catch (const std::invalid_argument& e) {
     throw UsageError(e.what());
   }
+  return o;
+}
+
+// One model per friction pair (phi_s outer), built before any point runs.
+std::vector<ForcedModel> friction_models(const CLI::App& s, bool assembly, const std::vector<double>& phi_s,
+                                         const std::vector<double>& phi_l) {
+  std::vector<ForcedModel> models;
+  const Settings given_flags = settings_of(s);
+  for (double ps : phi_s)
+    for (double pl : phi_l) {
+      Settings m = given_flags;
+      if (assembly) {
+        m.set("phi-s", Settings::exact(ps));
+        m.set("phi-l", Settings::exact(pl));
+      }
+      models.push_back(forced_model_from(m));
+    }
+  return models;
+}
+
+void run(const CLI::App& s, const CurveFlags& f) {
+  const SurvivalOptions o = curve_options(s, f);
   const bool friction_axes = given(s, "--phi-s-values") || given(s, "--phi-l-values");
   const ForcedModelChoice choice = forced_model_choice(s);
   if (friction_axes && !choice.assembly())
@@ -84,18 +107,7 @@ void run(const CLI::App& s, const CurveFlags& f) {
   const GridOutput out("--out", f.out, "response-curve", f.g, f.json_out);
   require_writable("plot", f.plot);
   require_writable("json-out", f.json_out);
-  // One model per friction pair (phi_s outer), built before any point runs.
-  std::vector<ForcedModel> models;
-  const Settings given_flags = settings_of(s);
-  for (double ps : phi_s)
-    for (double pl : phi_l) {
-      Settings m = given_flags;
-      if (choice.assembly()) {
-        m.set("phi-s", Settings::exact(ps));
-        m.set("phi-l", Settings::exact(pl));
-      }
-      models.push_back(forced_model_from(m));
-    }
+  const std::vector<ForcedModel> models = friction_models(s, choice.assembly(), phi_s, phi_l);
   const ForcedModel& fm = models.front();
   const bool assembly = choice.assembly();
   const std::size_t nw = std::size_t(o.omega_points), nl = phi_l.size(), ns = phi_s.size(), nb = o.betas.size();

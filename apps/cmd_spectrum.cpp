@@ -122,31 +122,10 @@ void run(const CLI::App& s, const SpectrumFlags& f) {
   j["options"] = options;
   j["tolerances"] = fm.tolerances;
   j["scan_amplitudes"] = scan_amplitudes(o);
-  json arr = json::array();
-  long runs = 0;
-  std::vector<SpectrumRow> rows;
-  for (const TableRow& tr : t.rows) {
-    const SpectrumRow r = spectrum_row_from(t, tr);
-    json x;
-    x["duration"] = r.duration;
-    x["min_overturning_amplitude"] = r.min_overturning_amplitude ? json(*r.min_overturning_amplitude) : json(nullptr);
-    x["at_scan_floor"] = r.at_scan_floor;
-    if (pulse == PulseShape::Rect) x["linearised_rect"] = rect_pulse_overturning_linear(alpha, p, r.duration);
-    json isl = json::array();
-    for (const SpectrumIsland& i : r.safe_islands) isl.push_back({i.from, i.to});
-    x["safe_islands"] = isl;
-    x["runs"] = r.runs;
-    json scan = json::array();
-    for (char c : r.scan) scan.push_back(c != 0);
-    x["scan_overturned"] = scan;
-    runs += r.runs;
-    arr.push_back(x);
-    rows.push_back(r);
-  }
-  j["rows"] = arr;
-  j["runs"] = runs;
-  const std::string title =
-      forced_model_choice(s).label() + " " + to_string(pulse) + " pulse";
+  const SpectrumPoints sp = spectrum_points(t, pulse, alpha, p);
+  j["rows"] = sp.json;
+  j["runs"] = sp.runs;
+  const std::string title = forced_model_choice(s).label() + " " + to_string(pulse) + " pulse";
   if (!f.plot.empty()) run_python("plot_spectrum.py", {out.csv(), f.plot, "--title", title});
   if (!f.plot_map.empty())
     run_python("plot_spectrum.py", {out.csv(), f.plot_map, "--title", title, "--map", format_double(o.amplitude_min),
@@ -155,11 +134,11 @@ void run(const CLI::App& s, const SpectrumFlags& f) {
   if (f.json) emit_json(j, "-");
   if (!f.json && !f.quiet) {
     std::printf("duration [s]  min overturning amplitude [g]  safe islands above\n");
-    for (const SpectrumRow& r : rows)
+    for (const SpectrumRow& r : sp.rows)
       std::printf("%12.6g  %29s  %zu\n", r.duration,
                   r.min_overturning_amplitude ? std::to_string(*r.min_overturning_amplitude).c_str() : "none in scan",
                   r.safe_islands.size());
-    std::printf("%ld simulations %s\n", runs, grid_run_note(res).c_str());
+    std::printf("%ld simulations %s\n", sp.runs, grid_run_note(res).c_str());
   }
 }
 

@@ -6,17 +6,22 @@
 namespace blockdyn {
 
 const std::vector<std::string>& spectrum_columns() {
-  static const std::vector<std::string> c{"duration",      "min_overturning_amplitude", "linearised_rect", "safe_islands",
-                                          "at_scan_floor", "islands",                   "runs",            "scan"};
+  static const std::vector<std::string> c{
+      "duration", "min_overturning_amplitude", "linearised_rect", "safe_islands", "at_scan_floor", "islands", "runs",
+      "scan"};
   return c;
 }
 
 void add_spectrum_cells(const SpectrumRow& r, std::optional<double> linearised_rect, RowBuilder& row) {
   row.add(r.duration);
-  if (r.min_overturning_amplitude) row.add(*r.min_overturning_amplitude);
-  else row.empty();
-  if (linearised_rect) row.add(*linearised_rect);
-  else row.empty();
+  if (r.min_overturning_amplitude)
+    row.add(*r.min_overturning_amplitude);
+  else
+    row.empty();
+  if (linearised_rect)
+    row.add(*linearised_rect);
+  else
+    row.empty();
   row.add(r.safe_islands.size());
   row.add(static_cast<long long>(r.at_scan_floor));
   std::string isl;
@@ -52,6 +57,30 @@ SpectrumRow spectrum_row_from(const Table& t, const TableRow& r) {
   s.runs = long(cell_integer(cell("runs")));
   for (char c : cell("scan")) s.scan.push_back(c == '1' ? 1 : 0);
   return s;
+}
+
+SpectrumPoints spectrum_points(const Table& t, PulseShape pulse, double alpha, double p) {
+  using json = nlohmann::ordered_json;
+  SpectrumPoints out;
+  for (const TableRow& tr : t.rows) {
+    const SpectrumRow r = spectrum_row_from(t, tr);
+    json x;
+    x["duration"] = r.duration;
+    x["min_overturning_amplitude"] = r.min_overturning_amplitude ? json(*r.min_overturning_amplitude) : json(nullptr);
+    x["at_scan_floor"] = r.at_scan_floor;
+    if (pulse == PulseShape::Rect) x["linearised_rect"] = rect_pulse_overturning_linear(alpha, p, r.duration);
+    json isl = json::array();
+    for (const SpectrumIsland& i : r.safe_islands) isl.push_back({i.from, i.to});
+    x["safe_islands"] = isl;
+    x["runs"] = r.runs;
+    json scan = json::array();
+    for (char c : r.scan) scan.push_back(c != 0);
+    x["scan_overturned"] = scan;
+    out.runs += r.runs;
+    out.json.push_back(x);
+    out.rows.push_back(r);
+  }
+  return out;
 }
 
 }  // namespace blockdyn

@@ -7,8 +7,11 @@
 #include <string>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "blockdyn/analysis/forced/overturning_spectrum.hpp"
 #include "blockdyn/analysis/sweep/grid_table.hpp"
+#include "blockdyn/excitation/pulses.hpp"
 
 namespace blockdyn {
 
@@ -18,5 +21,14 @@ namespace blockdyn {
 const std::vector<std::string>& spectrum_columns();
 void add_spectrum_cells(const SpectrumRow& r, std::optional<double> linearised_rect, RowBuilder& row);
 SpectrumRow spectrum_row_from(const Table& t, const TableRow& r);
+
+// The finished table's rows, and as the summary's "rows" (duration, min_overturning_amplitude,
+// at_scan_floor, linearised_rect for rect pulses, safe_islands, runs, scan_overturned).
+struct SpectrumPoints {
+  std::vector<SpectrumRow> rows;
+  nlohmann::ordered_json json = nlohmann::ordered_json::array();
+  long runs = 0;  // simulations over all rows
+};
+SpectrumPoints spectrum_points(const Table& t, PulseShape pulse, double alpha, double p);
 
 }  // namespace blockdyn
