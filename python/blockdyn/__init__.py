@@ -275,7 +275,12 @@ def spectrum(**options):
 def survival(**options):
     """Runs `blockdyn survival` and returns its JSON summary, with arrays "beta", "omega",
     "motion", "t_failure" (NaN without failure) and "max_abs_rotation" over the points."""
-    j = _json_command("survival", options)
+    for reserved in ("out", "json", "json_out", "plot", "quiet", "progress", "resume", "overwrite"):
+        if reserved in options:
+            raise ValueError(f"{reserved}: set by blockdyn.survival itself")
+    cols, summary, _ = _core.grid_study("survival", _options(options))
+    j = json.loads(summary)
+    j["table"] = _columns(cols)
     pts = j["points"]
     j["beta"] = np.array([p["beta"] for p in pts], dtype=float)
     j["omega"] = np.array([p["omega"] for p in pts], dtype=float)

@@ -17,6 +17,7 @@
 #include <variant>
 #include <vector>
 
+#include "blockdyn/api/grid_studies.hpp"
 #include "blockdyn/api/simulate_run.hpp"
 #include "blockdyn/api/study_command.hpp"
 #include "blockdyn/io/json_io.hpp"
@@ -211,6 +212,22 @@ PYBIND11_MODULE(_core, m) {
       py::arg("name"), py::arg("options"), py::arg("table") = true, py::arg("series") = std::vector<std::string>{},
       "Runs a study (blockdyn.studies()); returns ({column: array or list}, summary JSON text, text, "
       "{series name: {column: array}}).");
+  m.def(
+      "grid_study",
+      [](const std::string& name, const OptionList& options) {
+        const Settings s = settings_of(options);
+        StudyReport r;
+        {
+          py::gil_scoped_release release;
+          r = run_grid_study(name, s);
+        }
+        nlohmann::ordered_json doc;
+        doc["schema"] = schema_name(name, "summary");
+        for (auto it = r.summary.begin(); it != r.summary.end(); ++it) doc[it.key()] = it.value();
+        return py::make_tuple(study_columns(r.table), dump_json(doc), r.text);
+      },
+      py::arg("name"), py::arg("options"),
+      "Runs a grid analysis (survival) in memory on its threads; returns ({column: array}, summary JSON text, text).");
   m.def(
       "studies",
       [] {

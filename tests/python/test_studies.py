@@ -101,3 +101,25 @@ def test_orbit_studies_give_their_series_as_arrays(tmp_path):
     np.testing.assert_array_equal(r["swings"]["t_end"], [float(x["t_end"]) for x in rows])
     lean = blockdyn.study("response", table=False, r=0.3, k=300, t_end=20)
     assert lean.series == {} and lean.summary["type"] == r.summary["type"]
+
+
+@pytest.mark.parametrize("extra", [[], ["--refine", "2"]])
+def test_survival_in_memory_equals_the_runner(tmp_path, extra):
+    """The grid computed in memory (stage after stage for --refine) gives the runner's table and
+    summary: the same points, classes and times."""
+    args = ["--model", "housner", "--width", "0.3", "--height", "1.5", "--beta-points", "3", "--omega-points", "3",
+            "--periods", "6", *extra]
+    out, summ = tmp_path / "s.csv", tmp_path / "summary.json"
+    subprocess.run([CLI, "survival", *args, "--out", str(out), "--json-out", str(summ), "--quiet"], check=True,
+                   capture_output=True)
+    cli = json.loads(summ.read_text())
+    opts = {a[2:].replace("-", "_"): b for a, b in zip(args[::2], args[1::2])}
+    mem = blockdyn.survival(**opts)
+    assert without_version(cli)["points"] == mem["points"]
+    assert cli["counts"] == mem["counts"] and cli["options"] == mem["options"]
+    with open(out) as f:
+        rows = list(csv.DictReader(f))
+    np.testing.assert_array_equal(mem["table"]["index"], [float(r["index"]) for r in rows])
+    assert list(mem["table"]["motion"]) == [r["motion"] for r in rows]
+    if extra:
+        assert len(rows) > 9  # refined points were added near class changes

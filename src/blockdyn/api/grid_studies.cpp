@@ -1,0 +1,249 @@
+// SPDX-License-Identifier: Apache-2.0
+// The grid studies: `survival` (survival domains over (beta, omega) for seed 002's excitation
+// a_H = beta alpha g cos(Omega t + phase), harmonic or as a pulse, for a block on rigid ground or an
+// assembly preset; --refine adds points near class changes).
+#include "blockdyn/api/grid_studies.hpp"
+
+#include <cmath>
+#include <map>
+#include <sstream>
+#include <stdexcept>
+
+#include "blockdyn/analysis/forced/survival_table.hpp"
+#include "blockdyn/analysis/sweep/refinement_plan.hpp"
+#include "blockdyn/analysis/sweep/sweep_runner.hpp"
+#include "blockdyn/api/forced_model_settings.hpp"
+#include "blockdyn/api/harmonic_run.hpp"
+#include "blockdyn/base/range_check.hpp"
+#include "blockdyn/io/json_io.hpp"
+
+namespace blockdyn {
+namespace {
+
+using json = nlohmann::ordered_json;
+
+// --excitation --phase --omega-min/max/points --t-end --periods --threads (survival, response-curve).
+std::vector<StudyOption> excitation_grid_options() {
+  const SurvivalOptions d;
+  auto x = [](double v) { return Settings::exact(v); };
+  return {{"excitation", "harmonic (default), half-sine, half-cosine or rect (pulses last pi/Omega)", d.excitation},
+          {"phase", "phase of cos(Omega t + phase) [rad]", x(d.phase)},
+          {"omega-min", "smallest omega = Omega/p", x(d.omega_min)},
+          {"omega-max", "largest omega", x(d.omega_max)},
+          {"omega-points", "omegas, uniform", std::to_string(d.omega_points)},
+          {"t-end", "duration of each run [s]: the transient window", x(d.t_end)},
+          {"periods", "duration of each run in forcing periods (instead of --t-end)", ""},
+          {"threads", "worker threads (0: all cores)", "0"}};
+}
+
+SurvivalOptions excitation_grid_of(const StudyOptions& o) {
+  SurvivalOptions s;
+  s.excitation = o.text("excitation");
+  s.phase = o.number("phase");
+  s.omega_min = o.number("omega-min");
+  s.omega_max = o.number("omega-max");
+  s.omega_points = int(o.integer("omega-points"));
+  s.t_end = o.number("t-end");
+  if (o.given("periods")) s.periods = o.number("periods");
+  s.threads = o.threads();
+  return s;
+}
+
+std::string title_of(const ForcedModelChoice& m, const std::string& excitation) {
+  std::string title = m.label() + ", " + excitation;
+  if (m.assembly())
+    title += ", " + m.contact + " law, phi_s = " + short_num(m.phi_s) + ", phi_l = " + short_num(m.phi_l);
+  return title;
+}
+
+// ---------------------------------------------------------------- survival
+
+std::vector<StudyOption> survival_options() {
+  std::vector<StudyOption> o = forced_model_options();
+  for (const StudyOption& x : excitation_grid_options()) o.push_back(x);
+  const std::vector<StudyOption> own = {
+      {"beta-min", "smallest beta", "0.5"},
+      {"beta-max", "largest beta", "5"},
+      {"beta-points", "betas, uniform", "10"},
+      {"t-star-classes", "upper bounds [s] of the t* classes <=5 s, short, medium, long", "5,30,100,300"},
+      {"refine",
+       "refinement levels near class changes (0-8): cells whose corners differ in motion or collapse mode are "
+       "split in four, level after level",
+       "0"}};
+  o.insert(o.end(), own.begin(), own.end());
+  return o;
+}
+
+SurvivalOptions survival_options_of(const StudyOptions& so, int& refine) {
+  SurvivalOptions o = excitation_grid_of(so);
+  o.beta_min = so.number("beta-min");
+  o.beta_max = so.number("beta-max");
+  o.beta_points = int(so.integer("beta-points"));
+  o.t_star_classes = parse_number_list("t-star-classes", so.text("t-star-classes"));
+  if (o.t_star_classes.size() != 4)
+    throw std::invalid_argument(
+        "--t-star-classes: 4 values are needed (the upper bounds of <=5 s, short, medium, long)");
+  validate(o);
+  if (so.given("t-end") && so.given("periods")) throw std::invalid_argument("give --t-end or --periods, not both");
+  const long levels = so.integer("refine");
+  require_in_range("refine", double(levels), 0, 8);
+  refine = int(levels);
+  const std::size_t nxf = RefinementPlan::fine_count(std::size_t(o.omega_points), refine);
+  const std::size_t nyf = RefinementPlan::fine_count(std::size_t(o.beta_points), refine);
+  if (double(nxf) * double(nyf) > 4e6)
+    throw std::invalid_argument("refine: the fine lattice would have " + std::to_string(nxf * nyf) +
+                                " points (at most 4e6): lower --refine or the point counts");
+  return o;
+}
+
+json survival_run_options(const SurvivalOptions& o, const ForcedModel& fm, int refine) {
+  return {{"excitation", o.excitation},
+          {"phase", o.phase},
+          {"t_end", o.periods > 0 ? json(nullptr) : json(o.t_end)},
+          {"periods", o.periods},
+          {"t_star_classes_s", o.t_star_classes},
+          {"failure", fm.overturn_rule},
+          {"pulse_duration", o.excitation == "harmonic" ? "" : "pi / Omega (half a forcing period)"},
+          {"refine", refine},
+          {"cycle",
+           "harmonic: the dominant (m, n) cycle of block 0 over the run (2m impacts per n forcing "
+           "periods, seed 002; `blockdyn cycles` with its default window and tolerance, fitted to "
+           "the run's length; before t* for a collapse), or non-periodic / no-impacts; null at rest"}};
+}
+
+StudyReport survival_report(const Table& t, const ForcedModel& fm, const SurvivalOptions& o, int refine,
+                            const json& options, const std::string& title) {
+  StudyReport rep;
+  json& j = rep.summary;
+  j["run"] = run_info();
+  j["model"] = fm.description;
+  j["alpha"] = fm.alpha;
+  j["p"] = fm.p;
+  j["units"] = "a_H = beta alpha g cos(omega p t + phase); t in s";
+  j["options"] = options;
+  j["tolerances"] = fm.tolerances;
+  const SurvivalPoints sp = survival_points(t, refine > 0);
+  j["counts"] = sp.counts_json();
+  j["points"] = sp.points;
+  rep.plot_script = "plot_survival.py";
+  rep.plot_args = {"@csv:table", "@plot", "--title", title};
+  if (refine > 0)
+    rep.plot_args.insert(
+        rep.plot_args.end(),
+        {"--refined", format_double(o.omega_points > 1 ? (o.omega_max - o.omega_min) / (o.omega_points - 1) : 1.0),
+         format_double(o.beta_points > 1 ? (o.beta_max - o.beta_min) / (o.beta_points - 1) : 1.0)});
+  const auto& c = sp.counts;
+  append_text(rep.text, "%zu points: %ld rest, %ld stable, %ld collapse, %ld invalid", t.rows.size(), c[0], c[1], c[2],
+              c[3]);
+  return rep;
+}
+
+GridStudy survival_grid(const Settings& given, const std::string& output) {
+  const StudyOptions so(given, survival_options());
+  int refine = 0;
+  const SurvivalOptions o = survival_options_of(so, refine);
+  const auto fm = std::make_shared<const ForcedModel>(forced_model_of(so));
+  // The longest run the periods give (at the lowest frequency), before any file is made.
+  if (o.periods > 0 && !(o.periods * 2 * M_PI / (o.omega_min * fm->p) <= 1e5))
+    throw std::invalid_argument("periods = " + std::to_string(o.periods) + " gives runs of " +
+                                std::to_string(o.periods * 2 * M_PI / (o.omega_min * fm->p)) +
+                                " s at omega-min: at most 1e5 s (lower --periods or raise --omega-min)");
+  const json options = survival_run_options(o, *fm, refine);
+  const json definition = {{"model", fm->description},
+                           {"alpha", fm->alpha},
+                           {"p", fm->p},
+                           {"beta", {{"min", o.beta_min}, {"max", o.beta_max}, {"points", o.beta_points}}},
+                           {"omega", {{"min", o.omega_min}, {"max", o.omega_max}, {"points", o.omega_points}}},
+                           {"options", options},
+                           {"index", "omega fastest: index = i_omega + n_omega * i_beta on the (refined) lattice"}};
+  std::vector<std::string> cols = survival_columns();
+  cols.push_back("level");
+  const std::size_t motion_col = 3, mode_col = 4;  // after index, beta, omega
+  // Refinement classes points by motion and collapse mode.
+  auto stages = std::make_shared<RefinementPlan>(std::size_t(o.omega_points), std::size_t(o.beta_points), refine,
+                                                 [](const std::string& r) {
+                                                   const auto c = split_csv_line(r.substr(0, r.size() - 1));
+                                                   return c[motion_col] + " " + c[mode_col];
+                                                 });
+  const std::size_t nxf = stages->nx_fine(), nyf = stages->ny_fine();
+  const RefinementPlan* plan = stages.get();
+  GridStudy g;
+  g.table = std::make_shared<const GridTable>(
+      "survival", cols, stages->size(),
+      [fm, o, nxf, nyf, plan](std::size_t i, RowBuilder& row) {
+        const double omega = grid_value(o.omega_min, o.omega_max, int(nxf), int(i % nxf));
+        const double beta = grid_value(o.beta_min, o.beta_max, int(nyf), int(i / nxf));
+        add_survival_cells(survival_point(fm->run, o, fm->alpha, fm->p, beta, omega), row);
+        row.add(static_cast<long long>(plan->level_of(i)));
+      },
+      definition, fm->tolerances, output);
+  g.plan = stages;
+  g.threads = o.threads;
+  const std::string title = title_of(forced_model_choice(given), o.excitation);
+  g.finish = [fm, o, refine, options, title](const Table& t) {
+    return survival_report(t, *fm, o, refine, options, title);
+  };
+  return g;
+}
+
+}  // namespace
+
+const std::vector<GridStudyCommand>& grid_study_commands() {
+  static const std::vector<GridStudyCommand> all = {{"survival", survival_options(), survival_grid}};
+  return all;
+}
+
+const GridStudyCommand& grid_study_command(const std::string& name) {
+  for (const GridStudyCommand& c : grid_study_commands())
+    if (c.name == name) return c;
+  throw std::invalid_argument("grid study '" + name + "' is not one of: survival");
+}
+
+Table compute_table(const PointTable& t, int threads, PointPlan* plan,
+                    const std::function<void(std::size_t, std::size_t)>& progress) {
+  std::map<std::size_t, std::string> rows;
+  AllPoints all(t.size());
+  PointPlan& p = plan ? *plan : all;
+  std::size_t done = 0;
+  const FinishedRow finished = [&rows](std::size_t i) -> const std::string* {
+    const auto it = rows.find(i);
+    return it == rows.end() ? nullptr : &it->second;
+  };
+  for (std::vector<std::size_t> stage = p.next_stage(finished); !stage.empty(); stage = p.next_stage(finished)) {
+    std::vector<std::size_t> todo;
+    for (std::size_t i : stage)
+      if (!rows.count(i)) todo.push_back(i);
+    const std::size_t total = done + todo.size();
+    compute_rows(t, todo, threads, [&](std::size_t i, const SweepRow& r) {
+      rows[i] = r.text;
+      if (progress) progress(++done, total);
+    });
+  }
+  Table out;
+  const std::string& header = t.header();
+  out.columns = split_csv_line(header.substr(0, header.size() - 1));
+  for (const auto& [i, text] : rows) {
+    TableRow r;
+    r.cells = split_csv_line(text.substr(0, text.size() - 1));
+    r.index = i;
+    out.rows.push_back(std::move(r));
+  }
+  return out;
+}
+
+StudyReport run_grid_study(const std::string& name, const Settings& s,
+                           const std::function<void(std::size_t, std::size_t)>& progress) {
+  const GridStudyCommand& c = grid_study_command(name);
+  std::vector<std::string> known;
+  for (const StudyOption& o : c.options) known.push_back(o.name);
+  s.require_known(known, name);
+  const GridStudy g = c.prepare(s, "(memory)");
+  const Table t = compute_table(*g.table, g.threads, g.plan.get(), progress);
+  StudyReport rep = g.finish(t);
+  rep.table.columns = t.columns;
+  for (const TableRow& r : t.rows) rep.table.rows.push_back(r.cells);
+  rep.text += "\n";
+  return rep;
+}
+
+}  // namespace blockdyn

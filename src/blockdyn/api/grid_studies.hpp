@@ -1,0 +1,43 @@
+// SPDX-License-Identifier: Apache-2.0
+#pragma once
+// A grid analysis (survival, ...): its points as a runner table with the plan of its stages, built
+// from options by name, and its report from the finished table. The command line runs the table on
+// the sweep runner (threads, MPI, journal, resume) and reads it back; Python computes it in memory
+// (run_grid_study): the same rows, the same report.
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "blockdyn/analysis/sweep/grid_table.hpp"
+#include "blockdyn/analysis/sweep/point_plan.hpp"
+#include "blockdyn/api/study_command.hpp"
+
+namespace blockdyn {
+
+struct GridStudy {
+  std::shared_ptr<const GridTable> table;
+  std::shared_ptr<PointPlan> plan;  // the stages (null: every point at once)
+  int threads = 0;
+  // The report from the finished table: summary, text (one line, without the run's note), the
+  // figure's script and arguments ("@csv:table" the table's CSV, "@plot" the figure).
+  std::function<StudyReport(const Table&)> finish;
+};
+
+struct GridStudyCommand {
+  std::string name;
+  std::vector<StudyOption> options;
+  // `output`: the table's CSV path (the runner's journal and sidecar beside it; unused in memory).
+  GridStudy (*prepare)(const Settings&, const std::string& output) = nullptr;
+};
+const std::vector<GridStudyCommand>& grid_study_commands();
+const GridStudyCommand& grid_study_command(const std::string& name);
+
+// The table computed in memory on `threads` threads, stage after stage: the rows the runner writes.
+Table compute_table(const PointTable& t, int threads, PointPlan* plan,
+                    const std::function<void(std::size_t done, std::size_t total)>& progress = {});
+// A grid study from options by name, in memory; the table as the report's table.
+StudyReport run_grid_study(const std::string& name, const Settings& s,
+                           const std::function<void(std::size_t, std::size_t)>& progress = {});
+
+}  // namespace blockdyn
