@@ -46,6 +46,7 @@ void add_spec_options(CLI::App& app, const std::vector<StudyOption>& specs) {
     }
     CLI::Option* opt = app.add_option("--" + o.name, o.help);
     if (!o.default_value.empty()) opt->default_str(o.default_value);
+    if (o.is_list) opt->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
   }
 }
 

@@ -260,10 +260,23 @@ def _json_command(command, options):
             return json.load(f)
 
 
+def _grid_summary(command, options):
+    """A grid analysis computed in memory on its threads (the runner's rows, no journal): its JSON
+    summary, with the table's columns under "table"."""
+    for reserved in ("out", "csv", "json", "json_out", "plot", "plot_map", "quiet", "progress", "resume",
+                     "overwrite", "progress_interval"):
+        if reserved in options:
+            raise ValueError(f"{reserved}: set by blockdyn.{command.replace('-', '_')} itself")
+    cols, summary, _ = _core.grid_study(command, _options(options))
+    j = json.loads(summary)
+    j["table"] = _columns(cols)
+    return j
+
+
 def spectrum(**options):
     """Runs `blockdyn spectrum` and returns its JSON summary, with the rows also as arrays under
     "duration" and "min_overturning_amplitude" (NaN where nothing in the scan overturns)."""
-    j = _json_command("spectrum", options)
+    j = _grid_summary("spectrum", options)
     rows = j["rows"]
     j["duration"] = np.array([r["duration"] for r in rows], dtype=float)
     j["min_overturning_amplitude"] = np.array(
@@ -275,12 +288,7 @@ def spectrum(**options):
 def survival(**options):
     """Runs `blockdyn survival` and returns its JSON summary, with arrays "beta", "omega",
     "motion", "t_failure" (NaN without failure) and "max_abs_rotation" over the points."""
-    for reserved in ("out", "json", "json_out", "plot", "quiet", "progress", "resume", "overwrite"):
-        if reserved in options:
-            raise ValueError(f"{reserved}: set by blockdyn.survival itself")
-    cols, summary, _ = _core.grid_study("survival", _options(options))
-    j = json.loads(summary)
-    j["table"] = _columns(cols)
+    j = _grid_summary("survival", options)
     pts = j["points"]
     j["beta"] = np.array([p["beta"] for p in pts], dtype=float)
     j["omega"] = np.array([p["omega"] for p in pts], dtype=float)

@@ -123,3 +123,17 @@ def test_survival_in_memory_equals_the_runner(tmp_path, extra):
     assert list(mem["table"]["motion"]) == [r["motion"] for r in rows]
     if extra:
         assert len(rows) > 9  # refined points were added near class changes
+
+
+def test_spectrum_in_memory_equals_the_runner(tmp_path):
+    args = ["--model", "housner", "--width", "0.3", "--height", "1.5", "--pulse", "rect", "--durations", "0.2,0.6",
+            "--scan-points", "12"]
+    out, summ = tmp_path / "s.csv", tmp_path / "summary.json"
+    subprocess.run([CLI, "spectrum", *args, "--csv", str(out), "--json-out", str(summ), "--quiet"], check=True,
+                   capture_output=True)
+    cli = json.loads(summ.read_text())
+    mem = blockdyn.spectrum(model="housner", width=0.3, height=1.5, pulse="rect", durations=[0.2, 0.6], scan_points=12)
+    assert cli["rows"] == mem["rows"] and cli["runs"] == mem["runs"]
+    # The rectangular pulse's minimum against the linearised closed form (a few per cent at b/h = 0.2).
+    for r in mem["rows"]:
+        assert abs(r["min_overturning_amplitude"] / r["linearised_rect"] - 1) < 0.05

@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: Apache-2.0
 // The grid studies: `survival` (survival domains over (beta, omega) for seed 002's excitation
 // a_H = beta alpha g cos(Omega t + phase), harmonic or as a pulse, for a block on rigid ground or an
-// assembly preset; --refine adds points near class changes).
+// assembly preset; --refine adds points near class changes) and `spectrum` (the smallest
+// overturning amplitude of a pulse per duration, with the safe islands above it and the whole
+// overturn / survive picture of the scan).
 #include "blockdyn/api/grid_studies.hpp"
 
 #include <cmath>
@@ -9,6 +11,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "blockdyn/analysis/forced/spectrum_table.hpp"
 #include "blockdyn/analysis/forced/survival_table.hpp"
 #include "blockdyn/analysis/sweep/refinement_plan.hpp"
 #include "blockdyn/analysis/sweep/sweep_runner.hpp"
@@ -65,7 +68,7 @@ std::vector<StudyOption> survival_options() {
       {"beta-min", "smallest beta", "0.5"},
       {"beta-max", "largest beta", "5"},
       {"beta-points", "betas, uniform", "10"},
-      {"t-star-classes", "upper bounds [s] of the t* classes <=5 s, short, medium, long", "5,30,100,300"},
+      {"t-star-classes", "upper bounds [s] of the t* classes <=5 s, short, medium, long", "5,30,100,300", false, true},
       {"refine",
        "refinement levels near class changes (0-8): cells whose corners differ in motion or collapse mode are "
        "split in four, level after level",
@@ -79,7 +82,7 @@ SurvivalOptions survival_options_of(const StudyOptions& so, int& refine) {
   o.beta_min = so.number("beta-min");
   o.beta_max = so.number("beta-max");
   o.beta_points = int(so.integer("beta-points"));
-  o.t_star_classes = parse_number_list("t-star-classes", so.text("t-star-classes"));
+  o.t_star_classes = so.numbers("t-star-classes");
   if (o.t_star_classes.size() != 4)
     throw std::invalid_argument(
         "--t-star-classes: 4 values are needed (the upper bounds of <=5 s, short, medium, long)");
@@ -186,17 +189,169 @@ GridStudy survival_grid(const Settings& given, const std::string& output) {
   return g;
 }
 
+// ---------------------------------------------------------------- spectrum
+
+std::vector<StudyOption> spectrum_options() {
+  const SpectrumOptions d;
+  std::vector<StudyOption> o = forced_model_options();
+  const std::vector<StudyOption> own = {
+      {"pulse", std::string("pulse shape: ") + pulse_names(), "rect"},
+      {"durations", "pulse durations t_p [s], comma separated", "", false, true},
+      {"duration-min", "smallest duration [s] (geometric range)", ""},
+      {"duration-max", "largest duration [s]", ""},
+      {"duration-points", "number of durations", ""},
+      {"amplitude-min", "smallest scanned amplitude [g]", Settings::exact(d.amplitude_min)},
+      {"amplitude-max", "largest scanned amplitude [g]", Settings::exact(d.amplitude_max)},
+      {"scan-points", "amplitudes scanned per duration, geometric", std::to_string(d.scan_points)},
+      {"rel-tol", "relative tolerance of the minimum", Settings::exact(d.rel_tol)},
+      {"t-after", "simulated time after the pulse [s]", "10"},
+      {"threads", "worker threads (0: all cores)", "0"}};
+  o.insert(o.end(), own.begin(), own.end());
+  return o;
+}
+
+std::vector<double> durations_of(const StudyOptions& o) {
+  const bool list = o.given("durations");
+  const bool range = o.given("duration-min") || o.given("duration-max") || o.given("duration-points");
+  if (list == range)
+    throw std::invalid_argument(list ? "give --durations or --duration-min/--duration-max/--duration-points, not both"
+                                     : "give --durations D1,D2,... or --duration-min --duration-max --duration-points");
+  if (list) return o.numbers("durations");
+  const double lo = o.given("duration-min") ? o.number("duration-min") : 0.0;
+  const double hi = o.given("duration-max") ? o.number("duration-max") : 0.0;
+  const long n = o.given("duration-points") ? o.integer("duration-points") : 0;
+  require_in_range("duration-min", lo, 0, 1e4, false);
+  require_in_range("duration-max", hi, lo, 1e4);
+  require_in_range("duration-points", double(n), 1, 100000);
+  std::vector<double> d(static_cast<std::size_t>(n));
+  for (long i = 0; i < n; ++i) d[std::size_t(i)] = n == 1 ? lo : lo * std::pow(hi / lo, double(i) / double(n - 1));
+  return d;
+}
+
+GroundMotion pulse_motion(PulseShape shape, double amplitude, double duration) {
+  GroundMotion g;
+  g.horizontal.pulse = shape;
+  g.horizontal.amplitude = amplitude;
+  g.horizontal.duration = duration;
+  return g;
+}
+
+std::string spectrum_text(const SpectrumPoints& sp) {
+  std::string t = "duration [s]  min overturning amplitude [g]  safe islands above\n";
+  for (const SpectrumRow& r : sp.rows)
+    append_text(t, "%12.6g  %29s  %zu\n", r.duration,
+                r.min_overturning_amplitude ? std::to_string(*r.min_overturning_amplitude).c_str() : "none in scan",
+                r.safe_islands.size());
+  append_text(t, "%ld simulations", sp.runs);
+  return t;
+}
+
+GridStudy spectrum_grid(const Settings& given, const std::string& output) {
+  const StudyOptions so(given, spectrum_options());
+  const auto shape = pulse_from_string(so.text("pulse"));
+  if (!shape || *shape == PulseShape::None)
+    throw std::invalid_argument("pulse = '" + so.text("pulse") + "' must be one of " + pulse_names());
+  SpectrumOptions o;
+  o.durations = durations_of(so);
+  o.amplitude_min = so.number("amplitude-min");
+  o.amplitude_max = so.number("amplitude-max");
+  o.scan_points = int(so.integer("scan-points"));
+  o.rel_tol = so.number("rel-tol");
+  const double t_after = so.number("t-after");
+  require_in_range("t-after", t_after, 0, 1e4);
+  o.threads = so.threads();
+  validate(o);
+  const auto fm = std::make_shared<const ForcedModel>(forced_model_of(so));
+  const PulseShape pulse = *shape;
+  const OverturnTest test = [fm, pulse, t_after](double amplitude, double duration) {
+    return fm->run(pulse_motion(pulse, amplitude, duration), pulse_support(pulse) * duration + t_after)
+        .collapse_mode.has_value();
+  };
+  const json options = {{"amplitude_min", o.amplitude_min},
+                        {"amplitude_max", o.amplitude_max},
+                        {"scan_points", o.scan_points},
+                        {"rel_tol", o.rel_tol},
+                        {"t_after", t_after},
+                        {"overturn", fm->overturn_rule}};
+  const json definition = {{"model", fm->description},
+                           {"pulse", to_string(pulse)},
+                           {"alpha", fm->alpha},
+                           {"p", fm->p},
+                           {"durations", o.durations},
+                           {"options", options},
+                           {"index", "the duration's position"}};
+  GridStudy g;
+  const double alpha = fm->alpha, p = fm->p;
+  g.table = std::make_shared<const GridTable>(
+      "spectrum", spectrum_columns(), o.durations.size(),
+      [test, o, pulse, alpha, p](std::size_t i, RowBuilder& row) {
+        const double d = o.durations[i];
+        add_spectrum_cells(spectrum_row(test, o, d),
+                           pulse == PulseShape::Rect ? std::optional<double>(rect_pulse_overturning_linear(alpha, p, d))
+                                                     : std::nullopt,
+                           row);
+      },
+      definition, fm->tolerances, output);
+  g.threads = o.threads;
+  const std::string title = forced_model_choice(given).label() + " " + to_string(pulse) + " pulse";
+  g.finish = [fm, o, pulse, options, title](const Table& t) {
+    StudyReport rep;
+    json& j = rep.summary;
+    j["run"] = run_info();
+    j["model"] = fm->description;
+    j["pulse"] = to_string(pulse);
+    j["alpha"] = fm->alpha;
+    j["p"] = fm->p;
+    j["units"] = "durations in s, amplitudes in g";
+    j["options"] = options;
+    j["tolerances"] = fm->tolerances;
+    j["scan_amplitudes"] = scan_amplitudes(o);
+    const SpectrumPoints sp = spectrum_points(t, pulse, fm->alpha, fm->p);
+    j["rows"] = sp.json;
+    j["runs"] = sp.runs;
+    rep.plot_script = "plot_spectrum.py";
+    rep.plot_args = {"@csv:table", "@plot", "--title", title};
+    rep.more_figures.push_back({"plot-map",
+                                {"@csv:table", "@plot", "--title", title, "--map", format_double(o.amplitude_min),
+                                 format_double(o.amplitude_max)}});
+    rep.text = spectrum_text(sp);
+    return rep;
+  };
+  return g;
+}
+
 }  // namespace
 
 const std::vector<GridStudyCommand>& grid_study_commands() {
-  static const std::vector<GridStudyCommand> all = {{"survival", survival_options(), survival_grid}};
+  static const std::vector<GridStudyCommand> all = {
+      {"spectrum",
+       "overturning spectrum: the smallest pulse amplitude that overturns a block (or collapses an assembly), per "
+       "pulse duration (s, g) (threads, MPI, resumable)",
+       13,
+       spectrum_options(),
+       spectrum_grid,
+       "csv",
+       "the spectrum as CSV (the runner's table: journal and sidecar .json beside it)",
+       {{"plot", "plot the spectrum (PNG + SVG), with the linearised closed form for rect"},
+        {"plot-map", "plot the overturn / survive picture over (duration, amplitude) from the scan (PNG + SVG)"}},
+       "no table, no progress"},
+      {"survival",
+       "survival domain over (beta, omega): rest, stable or collapse per point for a_H = beta alpha g cos(Omega t + "
+       "phase), omega = Omega/p (seed 002), harmonic or as a half-period pulse (threads, MPI, resumable)",
+       14,
+       survival_options(),
+       survival_grid,
+       "out",
+       "the points as CSV (the runner's table: journal and sidecar .json beside it)",
+       {{"plot", "plot the survival domain (PNG + SVG) in the style of seed 002"}},
+       "no summary line, no progress"}};
   return all;
 }
 
 const GridStudyCommand& grid_study_command(const std::string& name) {
   for (const GridStudyCommand& c : grid_study_commands())
     if (c.name == name) return c;
-  throw std::invalid_argument("grid study '" + name + "' is not one of: survival");
+  throw std::invalid_argument("grid study '" + name + "' is not one of: spectrum, survival");
 }
 
 Table compute_table(const PointTable& t, int threads, PointPlan* plan,

@@ -26,9 +26,14 @@ struct GridStudy {
 
 struct GridStudyCommand {
   std::string name;
+  std::string description;  // for --help
+  int order = 0;            // position in --help
   std::vector<StudyOption> options;
   // `output`: the table's CSV path (the runner's journal and sidecar beside it; unused in memory).
   GridStudy (*prepare)(const Settings&, const std::string& output) = nullptr;
+  std::string csv_flag, csv_help;    // the table's output option ("out", "csv")
+  std::vector<StudyOption> figures;  // the figures' output options ("plot", "plot-map")
+  std::string quiet_help;            // what --quiet silences
 };
 const std::vector<GridStudyCommand>& grid_study_commands();
 const GridStudyCommand& grid_study_command(const std::string& name);

@@ -11,6 +11,7 @@ struct StudyOption {
   std::string help;             // for --help
   std::string default_value{};  // as the user would write it; empty: none
   bool is_flag = false;         // given without a value
+  bool is_list = false;         // numbers: "a,b,c", or the option repeated
 };
 
 }  // namespace blockdyn

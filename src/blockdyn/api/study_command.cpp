@@ -63,8 +63,17 @@ bool StudyRequest::wants(const std::string& series_name) const {
 StudyOptions::StudyOptions(const Settings& given, const std::vector<StudyOption>& specs) : given_(given) {
   for (const StudyOption& o : specs)
     if (!o.default_value.empty()) values_.set(o.name, o.default_value);
-  for (const std::string& n : given.names())
-    for (const std::string& v : given.values(n)) values_.set(n, v);
+  for (const std::string& n : given.names()) {
+    const std::vector<std::string> v = given.values(n);
+    for (std::size_t i = 0; i < v.size(); ++i) i == 0 ? values_.set(n, v[i]) : values_.add(n, v[i]);
+  }
+}
+
+std::vector<double> StudyOptions::numbers(const std::string& name) const {
+  std::vector<double> out;
+  for (const std::string& v : values_.values(name))
+    for (double x : parse_number_list(name, v)) out.push_back(x);
+  return out;
 }
 
 double StudyOptions::number(const std::string& name) const {

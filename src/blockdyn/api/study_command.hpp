@@ -8,6 +8,7 @@
 #include <functional>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -52,6 +53,8 @@ struct StudyReport {
   // Series studies: the script's whole argument list, with "@plot" for the figure's path and
   // "@csv:<name>" for a table's.
   std::vector<std::string> plot_args;
+  // Further figures by the script: (the output option naming the figure, the argument template).
+  std::vector<std::pair<std::string, std::vector<std::string>>> more_figures{};
 };
 
 struct StudyRequest {
@@ -105,6 +108,9 @@ class StudyOptions {
   long integer(const std::string& name) const;
   std::string text(const std::string& name) const;
   bool flag(const std::string& name) const;
+  // Every value given (each "a,b,c" or one number), else the default's; std::invalid_argument
+  // naming the option.
+  std::vector<double> numbers(const std::string& name) const;
   bool given(const std::string& name) const { return given_.has(name); }
   const Settings& given_settings() const { return given_; }
   // --t-end --rtol --atol --method --max-steps.

@@ -1,0 +1,78 @@
+// SPDX-License-Identifier: Apache-2.0
+// Every library grid study (blockdyn/api/grid_studies.hpp: spectrum, survival) as a subcommand:
+// its options from the study's description, its points on the sweep runner (threads, MPI ranks,
+// journal and --resume, progress), then its report from the finished table: JSON, figures, text.
+#include <cstdio>
+#include <map>
+#include <memory>
+
+#include "blockdyn/api/grid_studies.hpp"
+#include "cli_common.hpp"
+#include "cli_registry.hpp"
+#include "grid_run.hpp"
+
+namespace blockdyn::cli {
+namespace {
+
+struct GridStudyFlags {
+  GridRunFlags g;
+  std::string csv, json_out, progress = "auto";
+  std::map<std::string, std::string> figures;  // output option -> path
+  bool json = false, quiet = false;
+};
+
+std::vector<std::string> output_flags(const GridStudyCommand& c) {
+  std::vector<std::string> n{"--" + c.csv_flag, "--json",   "--json-out",  "--progress",
+                             "--quiet",         "--resume", "--overwrite", "--progress-interval"};
+  for (const StudyOption& fig : c.figures) n.push_back("--" + fig.name);
+  return n;
+}
+
+void run_figure(const std::string& script, const std::vector<std::string>& args, const std::string& csv,
+                const std::string& out) {
+  std::vector<std::string> a;
+  for (const std::string& x : args) a.push_back(x == "@plot" ? out : x == "@csv:table" ? csv : x);
+  run_python(script, a);
+}
+
+void run(const GridStudyCommand& c, const CLI::App& s, const GridStudyFlags& f) {
+  const Settings given = settings_of(s, output_flags(c));
+  std::vector<std::string> known;
+  for (const StudyOption& o : c.options) known.push_back(o.name);
+  given.require_known(known, c.name);
+  c.prepare(given, "");  // usage errors before any file is made
+  const GridOutput out("--" + c.csv_flag, f.csv, c.name, f.g, f.json_out);
+  for (const auto& [flag, path] : f.figures) require_writable(flag, path);
+  require_writable("json-out", f.json_out);
+  const GridStudy study = c.prepare(given, out.csv());
+  const GridRunResult res = run_grid(*study.table, f.g, study.threads, f.progress, f.quiet, study.plan.get());
+  if (!res.root) return;  // the other ranks computed their share of the points
+  const StudyReport r = study.finish(read_table(out.csv(), study.table->header()));
+  const std::string& plot = f.figures.at("plot");
+  if (!plot.empty()) run_figure(r.plot_script, r.plot_args, out.csv(), plot);
+  for (const auto& [flag, args] : r.more_figures)
+    if (const auto it = f.figures.find(flag); it != f.figures.end() && !it->second.empty())
+      run_figure(r.plot_script, args, out.csv(), it->second);
+  if (!f.json_out.empty()) emit_json(r.summary, f.json_out);
+  if (f.json) emit_json(r.summary, "-");
+  if (!f.json && !f.quiet) std::printf("%s %s\n", r.text.c_str(), grid_run_note(res).c_str());
+}
+
+void add(CLI::App& app, const GridStudyCommand& c) {
+  auto f = std::make_shared<GridStudyFlags>();
+  CLI::App* s = app.add_subcommand(c.name, c.description);
+  add_spec_options(*s, c.options);
+  s->add_option("--" + c.csv_flag, f->csv, c.csv_help);
+  for (const StudyOption& fig : c.figures) s->add_option("--" + fig.name, f->figures[fig.name], fig.help);
+  add_grid_report_flags(*s, f->g, f->json, f->json_out, f->progress, f->quiet, c.quiet_help);
+  s->callback([&c, s, f] { run(c, *s, *f); });
+}
+
+const bool registered = [] {
+  for (const GridStudyCommand& c : grid_study_commands())
+    command_registry().push_back({c.order, [&c](CLI::App& app) { add(app, c); }, MpiUse::Distributes});
+  return true;
+}();
+
+}  // namespace
+}  // namespace blockdyn::cli
