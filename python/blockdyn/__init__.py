@@ -252,14 +252,6 @@ def assembly(file=None, **options):
     return Assembly(_columns(cols), json.loads(summary))
 
 
-def _json_command(command, options):
-    with tempfile.TemporaryDirectory(prefix="blockdyn-py-") as tmp:
-        summ = os.path.join(tmp, "summary.json")
-        run(*_args(command, dict(options, json_out=summ, quiet=True)))
-        with open(summ) as f:
-            return json.load(f)
-
-
 def _grid_summary(command, options):
     """A grid analysis computed in memory on its threads (the runner's rows, no journal): its JSON
     summary, with the table's columns under "table"."""
@@ -303,7 +295,7 @@ def response_curve(**options):
     """Runs `blockdyn response-curve` and returns its JSON summary, with arrays "beta", "omega",
     "theta_max_over_alpha", "max_sliding_over_b", "motion", "t_failure" (NaN without failure) and,
     against the friction angle, "phi_s" and "phi_l" over the points."""
-    j = _json_command("response-curve", options)
+    j = _grid_summary("response-curve", options)
     pts = j["points"]
     for key in ("beta", "omega", "theta_max_over_alpha", "max_sliding_over_b", "phi_s", "phi_l"):
         if pts and key in pts[0]:

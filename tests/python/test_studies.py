@@ -137,3 +137,18 @@ def test_spectrum_in_memory_equals_the_runner(tmp_path):
     # The rectangular pulse's minimum against the linearised closed form (a few per cent at b/h = 0.2).
     for r in mem["rows"]:
         assert abs(r["min_overturning_amplitude"] / r["linearised_rect"] - 1) < 0.05
+
+
+def test_response_curve_in_memory_equals_the_runner(tmp_path):
+    args = ["--model", "assembly", "--preset", "trilith", "--betas", "1.5", "--omega", "3", "--phi-l-values", "30,90",
+            "--t-end", "2"]
+    out, summ = tmp_path / "c.csv", tmp_path / "summary.json"
+    subprocess.run([CLI, "response-curve", *args, "--out", str(out), "--json-out", str(summ), "--quiet"],
+                   check=True, capture_output=True)
+    cli = json.loads(summ.read_text())
+    mem = blockdyn.response_curve(model="assembly", preset="trilith", betas=[1.5], omega=3, phi_l_values="30,90",
+                                  t_end=2)
+    np.testing.assert_array_equal(mem["phi_l"], [30, 90])
+    assert [p["theta_max_over_alpha"] for p in cli["points"]] == list(mem["theta_max_over_alpha"])
+    assert [p["motion"] for p in cli["points"]] == list(mem["motion"])
+    assert cli["options"] == mem["options"] and cli["model"] == mem["model"]
