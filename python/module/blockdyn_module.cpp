@@ -2,7 +2,7 @@
 // blockdyn._core: the library for Python. Runs are made from memory: options go to the library as
 // Settings (the same vocabulary and validation as the command line), results come back as NumPy
 // columns and the JSON summary's text, and the integration runs without the GIL. The commands
-// not yet exposed as library calls run through the command line in process (run_cli).
+// not yet exposed as library calls (sweep, map) run through the command line in process (run_cli).
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
@@ -138,12 +138,8 @@ py::dict study_columns(const StudyTable& t) {
   return cols;
 }
 
-}  // namespace
-
-PYBIND11_MODULE(_core, m) {
-  m.doc() = "blockdyn's library for Python (use the functions of the blockdyn package)";
-  m.attr("__version__") = blockdyn::kVersion;
-  m.attr("git_describe") = blockdyn::kGitDescribe;
+// Runs of one model: prepared, single, many on threads.
+void add_runs(py::module_& m) {
   py::class_<Prepared>(m, "Prepared", "a run's options, parsed and validated once (blockdyn.Simulator)")
       .def(py::init(&prepare), py::arg("options"), py::arg("command") = "simulate");
   m.def(
@@ -189,6 +185,10 @@ PYBIND11_MODULE(_core, m) {
       },
       py::arg("runs"), py::arg("threads") = 1, py::arg("trajectory") = true,
       "Runs many blocks on `threads` threads (each run on one thread: the results are those of serial calls).");
+}
+
+// The studies and grid analyses by name, from memory; the command line in process for the rest.
+void add_studies(py::module_& m) {
   m.def(
       "study",
       [](const std::string& name, const OptionList& options, bool table,
@@ -251,4 +251,14 @@ PYBIND11_MODULE(_core, m) {
         return py::make_tuple(r.code, r.error);
       },
       py::arg("args"), "Runs `blockdyn <args...>`; returns (exit code, error message). 2 means invalid input.");
+}
+
+}  // namespace
+
+PYBIND11_MODULE(_core, m) {
+  m.doc() = "blockdyn's library for Python (use the functions of the blockdyn package)";
+  m.attr("__version__") = blockdyn::kVersion;
+  m.attr("git_describe") = blockdyn::kGitDescribe;
+  add_runs(m);
+  add_studies(m);
 }
