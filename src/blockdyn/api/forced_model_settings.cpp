@@ -3,6 +3,8 @@
 
 #include <cmath>
 #include <stdexcept>
+#include <utility>
+#include <vector>
 
 #include "blockdyn/base/range_check.hpp"
 #include "blockdyn/model/rigid/rigid_params.hpp"
@@ -17,22 +19,14 @@ void refuse(const Settings& s, const std::vector<std::string>& names, const std:
     if (s.has(n)) throw Invalid("--" + n + " " + why);
 }
 
-void check_family(const Settings& s, const std::string& model) {
-  if (model == "housner" || model == "rigid")
-    refuse(s, {"preset", "contact", "slenderness", "block-width", "drums", "phi-s", "phi-l", "columns-rock-only"},
-           "applies to --model assembly only");
-  if (model == "housner") refuse(s, {"mu-s", "mu-k", "impact"}, "applies to --model rigid only");
-  if (model == "assembly")
-    refuse(s, {"width", "height", "mass", "g", "mu-s", "mu-k", "impact"},
-           "applies to --model housner|rigid only (an assembly's blocks and friction come from --preset and "
-           "--phi-s/--phi-l)");
+void check_values(const Settings& s) {
   if (auto mu_k = s.number("mu-k"); mu_k && !(std::isfinite(*mu_k) && *mu_k >= 0.0))
     throw Invalid("mu-k = " + std::to_string(*mu_k) + " is out of range: must be finite and >= 0");
   if (auto e = s.number("restitution"); e && !(std::isfinite(*e) && *e >= 0.0 && *e <= 1.0))
     throw Invalid("restitution = " + std::to_string(*e) + " is out of range: must be in [0, 1]");
 }
 
-ForcedModel block_model(const Settings& s, const std::string& model) {
+ForcedModel block_model(const Settings& s, const std::string& model, bool housner) {
   if (!s.has("width") || !s.has("height")) throw Invalid("--width and --height are needed for --model " + model);
   RigidBlockParams rp;
   rp.shape = {*s.number("width"), *s.number("height"), s.number("mass", 1.0), s.number("g", 9.81)};
@@ -43,7 +37,7 @@ ForcedModel block_model(const Settings& s, const std::string& model) {
     throw Invalid("--impact = '" + impact + "' is not one of: housner, newton");
   rp.impact = impact == "newton" ? ImpactLaw::Newton : ImpactLaw::Housner;
   if (auto e = s.number("restitution")) rp.restitution = *e;
-  return forced_block_model(rp, model == "housner");
+  return forced_block_model(rp, housner);
 }
 
 ForcedModel assembly_model(const Settings& s) {
@@ -81,6 +75,33 @@ ForcedModel assembly_model(const Settings& s) {
   return forced_assembly_model(a, std::move(description));
 }
 
+// The forced analyses' model families: the options each refuses (those of the other families) and
+// how it is built.
+struct ForcedFamily {
+  std::string name;
+  std::vector<std::pair<std::vector<std::string>, std::string>> refused;  // (options, why)
+  ForcedModel (*build)(const Settings&, const std::string& name);
+};
+
+const std::vector<ForcedFamily>& forced_families() {
+  static const std::vector<std::string> assembly_only = {"preset", "contact", "slenderness", "block-width",
+                                                         "drums",  "phi-s",   "phi-l",       "columns-rock-only"};
+  static const std::string not_block = "applies to --model assembly only";
+  static const std::vector<ForcedFamily> families = {
+      {"housner",
+       {{assembly_only, not_block}, {{"mu-s", "mu-k", "impact"}, "applies to --model rigid only"}},
+       [](const Settings& s, const std::string& n) { return block_model(s, n, true); }},
+      {"rigid",
+       {{assembly_only, not_block}},
+       [](const Settings& s, const std::string& n) { return block_model(s, n, false); }},
+      {"assembly",
+       {{{"width", "height", "mass", "g", "mu-s", "mu-k", "impact"},
+         "applies to --model housner|rigid only (an assembly's blocks and friction come from --preset and "
+         "--phi-s/--phi-l)"}},
+       [](const Settings& s, const std::string&) { return assembly_model(s); }}};
+  return families;
+}
+
 }  // namespace
 
 const std::vector<std::string>& forced_model_option_names() {
@@ -103,10 +124,16 @@ ForcedModelChoice forced_model_choice(const Settings& s) {
 
 ForcedModel forced_model_from(const Settings& s) {
   const std::string model = s.text("model", "housner");
-  if (model != "housner" && model != "rigid" && model != "assembly")
-    throw Invalid("--model = '" + model + "' is not one of: housner, rigid, assembly");
-  check_family(s, model);
-  return model == "assembly" ? assembly_model(s) : block_model(s, model);
+  const ForcedFamily* family = nullptr;
+  std::string names;
+  for (const ForcedFamily& f : forced_families()) {
+    if (f.name == model) family = &f;
+    names += (names.empty() ? "" : ", ") + f.name;
+  }
+  if (!family) throw Invalid("--model = '" + model + "' is not one of: " + names);
+  for (const auto& [options, why] : family->refused) refuse(s, options, why);
+  check_values(s);
+  return family->build(s, model);
 }
 
 }  // namespace blockdyn
