@@ -102,10 +102,7 @@ StudyReport chaos_map_study(const Settings& given, const StudyRequest& request) 
 
   StudyReport rep;
   json& j = rep.summary;
-  j["run"] = run_info();
-  j["model"] = fm.description;
-  j["alpha"] = fm.alpha;
-  j["p"] = fm.p;
+  j = forced_summary_head(fm);
   j["units"] = "a_H = beta alpha g cos(omega p t + phase); exponent in 1/s, exponent_nondim = exponent / p";
   j["options"] = {{"phase", o.grid.phase},
                   {"periods", o.use_t_end ? json(nullptr) : json(o.total_periods)},

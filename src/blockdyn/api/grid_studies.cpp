@@ -122,10 +122,7 @@ StudyReport survival_report(const Table& t, const ForcedModel& fm, const Surviva
                             const json& options, const std::string& title) {
   StudyReport rep;
   json& j = rep.summary;
-  j["run"] = run_info();
-  j["model"] = fm.description;
-  j["alpha"] = fm.alpha;
-  j["p"] = fm.p;
+  j = forced_summary_head(fm);
   j["units"] = "a_H = beta alpha g cos(omega p t + phase); t in s";
   j["options"] = options;
   j["tolerances"] = fm.tolerances;

@@ -140,12 +140,14 @@ void write_samples_csv(std::ostream& os, const ForcedTrace& tr, bool strobe_only
   }
 }
 
+nlohmann::ordered_json forced_summary_head(const ForcedModel& fm) {
+  return {{"run", run_info()}, {"model", fm.description}, {"alpha", fm.alpha}, {"p", fm.p}};
+}
+
 void describe_run(nlohmann::ordered_json& j, const HarmonicSetup& h, const HarmonicRun& r) {
   using json = nlohmann::ordered_json;
-  j["run"] = run_info();
-  j["model"] = h.fm.description;
-  j["alpha"] = h.fm.alpha;
-  j["p"] = h.fm.p;
+  const json head = forced_summary_head(h.fm);
+  for (auto it = head.begin(); it != head.end(); ++it) j[it.key()] = it.value();
   j["units"] = "a_H = beta alpha g cos(Omega t + phase), omega = Omega / p; t in s, theta in rad, theta' in rad/s";
   j["excitation"] = {{"type", "harmonic"},
                      {"beta", h.beta},

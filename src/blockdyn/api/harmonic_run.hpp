@@ -54,6 +54,8 @@ HarmonicRun run_harmonic(const HarmonicSetup& h, double t0, int per_period);
 void write_samples_csv(std::ostream& os, const ForcedTrace& tr, bool strobe_only, const std::string& extra_header = "",
                        const std::function<std::string(double)>& extra = {}, double t_from = -1.0);
 
+// The opening of a forced analysis's summary: run (program, version), model, alpha, p.
+nlohmann::ordered_json forced_summary_head(const ForcedModel& fm);
 // The fields every harmonic-run summary carries: run, model, alpha, p, excitation, the block, the
 // impact definition and the outcome (status, collapse_mode, t_failure, t_final).
 void describe_run(nlohmann::ordered_json& j, const HarmonicSetup& h, const HarmonicRun& r);
