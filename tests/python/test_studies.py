@@ -48,7 +48,7 @@ def test_flight_time_equals_the_command_line(tmp_path):
     assert "runs" in r.text
 
 
-def test_blowup_takes_a_list_and_kmin_matches_its_closed_form_bracket():
+def test_kmin_columns_equal_its_curves():
     r = blockdyn.kmin(ic="ic1", points=3, r_min=0.1, r_max=0.4)
     curve = r.summary["curves"]["ic1"]
     assert [c["status"] for c in curve] == ["found"] * 3
