@@ -170,7 +170,8 @@ GridStudy survival_grid(const Settings& given, const std::string& output) {
                                                    return c[motion_col] + " " + c[mode_col];
                                                  });
   const std::size_t nxf = stages->nx_fine(), nyf = stages->ny_fine();
-  const RefinementPlan* plan = stages.get();
+  // The table keeps the plan alive (a level per point), whoever holds the table.
+  const std::shared_ptr<const RefinementPlan> plan = stages;
   GridStudy g;
   g.table = std::make_shared<const GridTable>(
       "survival", cols, stages->size(),
