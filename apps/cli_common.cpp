@@ -46,7 +46,11 @@ void add_spec_options(CLI::App& app, const std::vector<StudyOption>& specs) {
     }
     CLI::Option* opt = app.add_option("--" + o.name, o.help);
     if (!o.default_value.empty()) opt->default_str(o.default_value);
-    if (o.is_list) opt->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+    // A list: "a,b,c", several values after the flag, or the flag repeated (as CLI11's vectors took).
+    if (o.is_list)
+      opt->expected(1, CLI::detail::expected_max_vector_size)
+          ->allow_extra_args(true)
+          ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
   }
 }
 

@@ -4,6 +4,7 @@
 // K_s or omega; existence and stability regions over (K_s, omega). The study's three modes are in
 // analysis/forced/periodic_orbit_study.hpp; this file reads the options and assembles the report.
 #include <array>
+#include <cmath>
 #include <cstdio>
 #include <optional>
 #include <sstream>
@@ -29,7 +30,7 @@ std::vector<StudyOption> periodic_orbit_options() {
           {"ks", "forcing amplitude K_s (g)", ""},
           {"beta", "forcing amplitude as K_s / alpha (instead of --ks)", ""},
           {"omega", "forcing frequency omega = Omega / p", "2"},
-          {"cycle", "m,n: 2m impacts per n forcing periods (seed 002)", "1,1"},
+          {"cycle", "m,n: 2m impacts per n forcing periods (seed 002)", "1,1", false, true},
           {"asymmetric",
            "shoot on the full 2m-impact map (default for m or n even; else the symmetric half map is used)", "", true},
           {"guess-phase", "start Newton here: forcing phase at an impact onto theta > 0 (rad)", ""},
@@ -61,19 +62,17 @@ struct OrbitSetup {
   std::string title;
 };
 
-std::array<int, 2> parse_cycle(const std::string& text) {
-  const auto comma = text.find(',');
-  std::array<int, 2> mn{};
-  if (comma != std::string::npos) {
-    try {
-      std::size_t a = 0, b = 0;
-      mn[0] = std::stoi(text.substr(0, comma), &a);
-      mn[1] = std::stoi(text.substr(comma + 1), &b);
-      if (a == comma && b == text.size() - comma - 1) return mn;
-    } catch (const std::exception&) {
-    }
+std::array<int, 2> parse_cycle(const StudyOptions& o) {
+  std::vector<double> v;
+  try {
+    v = o.numbers("cycle");
+  } catch (const std::invalid_argument&) {
+    v.clear();
   }
-  throw std::invalid_argument("--cycle must be m,n (two integers)");
+  if (v.size() != 2 || v[0] != std::floor(v[0]) || v[1] != std::floor(v[1]) || std::fabs(v[0]) > 1e6 ||
+      std::fabs(v[1]) > 1e6)
+    throw std::invalid_argument("--cycle must be m,n (two integers)");
+  return {int(v[0]), int(v[1])};
 }
 
 void read_amplitude(const StudyOptions& o, RockingForcing& rf, bool region) {
@@ -99,7 +98,7 @@ OrbitSetup orbit_setup(const StudyOptions& o) {
   read_amplitude(o, rf, region);
   rf.omega = o.number("omega");
   require_in_range("omega", rf.omega, 0, 1e4, false);
-  const std::array<int, 2> mn = parse_cycle(o.text("cycle"));
+  const std::array<int, 2> mn = parse_cycle(o);
   st.type = OrbitType{mn[0], mn[1], !o.flag("asymmetric") && mn[0] % 2 == 1 && mn[1] % 2 == 1};
   require_in_range("cycle m", mn[0], 1, 50);
   require_in_range("cycle n", mn[1], 1, 50);
