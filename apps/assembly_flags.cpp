@@ -46,7 +46,11 @@ void add_assembly_options(CLI::App& app, AssemblyFlags& f) {
   opt("--min-bearing", f.min_bearing,
       "collapse mode 2 when the overlap of two blocks' faces falls to this length [m] (default 0)");
   opt("--g", f.g, "gravity [m/s^2] (default 9.81)");
-  opt("--step", f.step, "rigid: time step [s] (default 1e-4)");
+  members(opt("--scheme", f.scheme,
+              "rigid: event-driven (exact events: contact forces of each mode, impacts where they occur) or "
+              "time-stepping (Moreau-Jean, fixed --step; default)"),
+          {"event-driven", "time-stepping"});
+  opt("--step", f.step, "rigid, time-stepping: time step [s] (default 1e-4)");
   flag("--columns-rock-only", f.rock_only,
        "rigid: seed 001's 5-DOF restriction - the blocks on the ground only rock (no sliding, plastic "
        "impacts); a block leaving the ground is reported, not integrated");

@@ -34,8 +34,9 @@ GroundMotion seed_harmonic(double beta, double omega) {
 }
 
 void run(benchmark::State& state, const Assembly& a, const GroundMotion& g, double rtol, double atol, double t_end,
-         double step = 1e-4) {
+         double step = 1e-4, AssemblyScheme scheme = AssemblyScheme::TimeStepping) {
   AssemblyRunOptions o;
+  o.scheme = scheme;
   o.step = step;
   o.t_end = t_end;
   o.integrator.rtol = rtol;
@@ -66,6 +67,13 @@ void BM_TrilithAtRest100s(benchmark::State& s) { run(s, trilith(90), {}, 1e-8, 1
 // The rigid law (Moreau-Jean, h = 1e-4 s): the seed's harmonic case and the trilith at rest.
 void BM_RigidTrilithHarmonic300s(benchmark::State& s) { run(s, trilith(90, true), seed_harmonic(4, 10), 1e-8, 1e-10, 300); }
 void BM_RigidTrilithAtRest100s(benchmark::State& s) { run(s, trilith(90, true), {}, 1e-8, 1e-10, 100); }
+// The rigid law, event-driven (issue 25): the same two cases, default tolerances.
+void BM_RigidEventDrivenTrilithHarmonic300s(benchmark::State& s) {
+  run(s, trilith(90, true), seed_harmonic(4, 10), 1e-8, 1e-10, 300, 1e-4, AssemblyScheme::EventDriven);
+}
+void BM_RigidEventDrivenTrilithAtRest100s(benchmark::State& s) {
+  run(s, trilith(90, true), {}, 1e-8, 1e-10, 100, 1e-4, AssemblyScheme::EventDriven);
+}
 
 }  // namespace
 
@@ -75,3 +83,5 @@ BENCHMARK(BM_TrilithFriction300s)->Unit(benchmark::kMillisecond)->Iterations(1);
 BENCHMARK(BM_TrilithAtRest100s)->Unit(benchmark::kMillisecond)->Iterations(1);
 BENCHMARK(BM_RigidTrilithHarmonic300s)->Unit(benchmark::kMillisecond)->Iterations(1);
 BENCHMARK(BM_RigidTrilithAtRest100s)->Unit(benchmark::kMillisecond)->Iterations(1);
+BENCHMARK(BM_RigidEventDrivenTrilithHarmonic300s)->Unit(benchmark::kMillisecond)->Iterations(1);
+BENCHMARK(BM_RigidEventDrivenTrilithAtRest100s)->Unit(benchmark::kMillisecond)->Iterations(1);

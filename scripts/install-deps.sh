@@ -3,7 +3,7 @@
 # Installs blockdyn's build and plot dependencies from Debian 12 packages (idempotent).
 set -euo pipefail
 PKGS=(build-essential cmake ninja-build pkg-config
-      libboost-dev libeigen3-dev libcli11-dev libtomlplusplus-dev nlohmann-json3-dev libfmt-dev
+      libboost-dev libeigen3-dev libglpk-dev libcli11-dev libtomlplusplus-dev nlohmann-json3-dev libfmt-dev
       libgtest-dev libgmock-dev libbenchmark-dev
       libopenmpi-dev openmpi-bin
       python3-numpy python3-scipy python3-matplotlib python3-pil python3-pytest python3-dev pybind11-dev ffmpeg

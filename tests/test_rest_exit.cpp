@@ -15,6 +15,8 @@
 #include <vector>
 
 #include "blockdyn/excitation/rest_exit.hpp"
+#include "blockdyn/model/assembly/assembly_params.hpp"
+#include "blockdyn/simulation/assembly_simulation.hpp"
 #include "blockdyn/simulation/rigid_simulation.hpp"
 
 using namespace blockdyn;
@@ -195,4 +197,38 @@ TEST(RestExit, FirstRestFailureBracketsTheCrossingToRounding) {
   // Below the threshold: nothing in 100 periods.
   g.horizontal.amplitude = 0.2 / kOver;
   EXPECT_TRUE(std::isinf(first_rest_failure(g, 0.2, 0.0, 33.0)));
+}
+
+// A resistance that depends on the direction (an asymmetric assembly): each side fails at its own.
+TEST(RestExit, AsymmetricResistanceFailsOnTheWeakerSideOfTheMotion) {
+  GroundMotion g;
+  g.horizontal.amplitude = 0.3;
+  g.horizontal.frequency = 1.0;
+  // a_H > 0 never exceeds 0.5; a_H < 0 exceeds 0.2 where sin(2 pi t) = -2/3.
+  const double t = first_rest_failure(g, 0.5, 0.2, 0.0, 10.0);
+  EXPECT_NEAR(t, (M_PI + std::asin(2.0 / 3.0)) / (2 * M_PI), 1e-12);
+  EXPECT_NEAR(first_rest_failure(g, 0.2, 0.5, 0.0, 10.0), std::asin(2.0 / 3.0) / (2 * M_PI), 1e-12);
+  const RestExit exit(g, 0.5, 0.2);
+  EXPECT_NEAR(exit.checkpoint(0.0), t, 1e-12);
+}
+
+// The rigid assemblies, event-driven: the block, the frame and the column leave rest at the
+// crossing of their static limit (b/h of the whole = 0.25, whatever the lintel).
+TEST(RestExit, RigidAssemblyEveryExcitationKindAtTheThreshold) {
+  PresetOptions o;
+  o.rigid_contacts = true;
+  o.ground_law.restitution = o.block_law.restitution = 0.0;
+  for (const char* preset : {"block", "trilith", "column"}) {
+    const Assembly a = make_preset(preset, o);
+    for (const Case& c : cases(0.25)) {
+      SCOPED_TRACE(std::string(preset) + ": " + c.name);
+      AssemblyRunOptions run;
+      run.t_end = c.t_cross + 0.05;
+      run.scheme = AssemblyScheme::EventDriven;
+      const AssemblyResult r = simulate_assembly(a, c.g, run);
+      ASSERT_FALSE(r.events.empty());
+      EXPECT_EQ(r.events[0].kind, "open");
+      EXPECT_NEAR(r.events[0].t, c.t_cross, kTol);
+    }
+  }
 }

@@ -61,11 +61,18 @@ void check_values(const Settings& s, const Values& v) {
   require_in_range("normal-stiffness", v.k_normal, 1, 1e13);
   if (s.has("tangential-stiffness")) require_in_range("tangential-stiffness", v.k_tangential, 1, 1e13);
   require_in_range("restitution", v.restitution, v.rigid ? 0.0 : 1e-3, 1);
-  if (v.rigid)
-    for (const char* n : {"normal-stiffness", "tangential-stiffness", "rtol", "atol", "method"})
+  const std::string scheme = s.text("scheme", "time-stepping");
+  if (scheme != "event-driven" && scheme != "time-stepping")
+    throw Invalid("--scheme = '" + scheme + "' is not one of: event-driven, time-stepping");
+  if (!v.rigid && s.has("scheme")) throw Invalid("--scheme belongs to --contact rigid");
+  for (const char* n : {"normal-stiffness", "tangential-stiffness"})
+    if (v.rigid && s.has(n)) throw Invalid(std::string("--") + n + " belongs to --contact deformable");
+  if (v.rigid && scheme == "time-stepping")
+    for (const char* n : {"rtol", "atol", "method"})
       if (s.has(n))
-        throw Invalid(std::string("--") + n + " belongs to --contact deformable (the rigid law has --step)");
-  if (!v.rigid && s.has("step")) throw Invalid("--step belongs to --contact rigid");
+        throw Invalid(std::string("--") + n + " belongs to --scheme event-driven (time-stepping has --step)");
+  if ((!v.rigid || scheme == "event-driven") && s.has("step"))
+    throw Invalid("--step belongs to --contact rigid --scheme time-stepping");
   require_in_range("collapse-rotation", v.collapse_rotation, 0, 10, false);
   require_in_range("min-bearing", v.min_bearing, 0, 1e3);
   require_in_range("g", v.g, 0, 1e3, false);
@@ -164,6 +171,7 @@ const std::vector<std::string>& assembly_option_names() {
                                "min-bearing",
                                "g",
                                "step",
+                               "scheme",
                                "columns-rock-only",
                                "t-end",
                                "rtol",
@@ -191,6 +199,7 @@ AssemblySetup assembly_from(const Settings& s) {
   AssemblyRunOptions& o = setup.run;
   o.t_end = s.number("t-end", o.t_end);
   o.step = s.number("step", o.step);
+  if (s.text("scheme", "time-stepping") == "event-driven") o.scheme = AssemblyScheme::EventDriven;
   o.integrator.rtol = s.number("rtol", o.integrator.rtol);
   o.integrator.atol = s.number("atol", o.integrator.atol);
   if (s.has("method")) {

@@ -72,13 +72,17 @@ double first_failure_on_piece(const RestCondition& f, double a, double b) {
 }  // namespace
 
 double first_rest_failure(const GroundMotion& g, double c, double t0, double t1) {
+  return first_rest_failure(g, c, c, t0, t1);
+}
+
+double first_rest_failure(const GroundMotion& g, double c_pos, double c_neg, double t0, double t1) {
   double t = t0;
   while (t < t1) {
     const double b = std::fmin(g.next_break(t), t1);
     double first = INFINITY;
     for (int sigma : {1, -1, 0}) {
       if (sigma != 0 && g.horizontal.is_zero() && g.vertical.is_zero()) continue;
-      first = std::fmin(first, first_failure_on_piece(RestCondition{g, c, sigma}, t, b));
+      first = std::fmin(first, first_failure_on_piece(RestCondition{g, sigma < 0 ? c_neg : c_pos, sigma}, t, b));
     }
     if (first < b) return first;
     if (b >= t1) break;
@@ -88,12 +92,14 @@ double first_rest_failure(const GroundMotion& g, double c, double t0, double t1)
   return INFINITY;
 }
 
-RestExit::RestExit(const GroundMotion& g, double c)
-    : g_(g), active_(true), c_(c), piecewise_linear_(g.piecewise_linear()) {
+RestExit::RestExit(const GroundMotion& g, double c) : RestExit(g, c, c) {}
+
+RestExit::RestExit(const GroundMotion& g, double c_pos, double c_neg)
+    : g_(g), active_(true), c_pos_(c_pos), c_neg_(c_neg), piecewise_linear_(g.piecewise_linear()) {
   if (!piecewise_linear_) return;
   auto holds = [&](double t) {
-    const double gv = 1.0 + g.av(t), a = std::fabs(g.ah(t));
-    return gv > 0.0 && c * gv - a >= 0.0;
+    const double gv = 1.0 + g.av(t), a = g.ah(t);
+    return gv > 0.0 && c_pos * gv - a >= 0.0 && c_neg * gv + a >= 0.0;
   };
   // Records are continuous at their samples; the input jumps only at window ends.
   auto window_end = [&](double t) {
@@ -116,7 +122,7 @@ double RestExit::checkpoint(double t) const {
   if (!piecewise_linear_) {
     const double span = kRestLookahead * std::fmin(g_.horizontal.time_scale(), g_.vertical.time_scale());
     const double t1 = t + span;
-    return std::fmin(first_rest_failure(g_, c_, t, t1), t1);
+    return std::fmin(first_rest_failure(g_, c_pos_, c_neg_, t, t1), t1);
   }
   // Rest holds on every piece before the one that ends at the next failing breakpoint.
   // (From t = 0 to the first breakpoint and after the last one the input is linear too: rest
@@ -126,7 +132,7 @@ double RestExit::checkpoint(double t) const {
   const double tb = *it;
   const double from = std::fmax(t, before_[std::size_t(it - fail_.begin())]);
   // A failure seen only in the left limit at tb (a jump back to rest) leaves tb as the checkpoint.
-  return std::fmin(first_rest_failure(g_, c_, from, tb), tb);
+  return std::fmin(first_rest_failure(g_, c_pos_, c_neg_, from, tb), tb);
 }
 
 }  // namespace blockdyn

@@ -20,6 +20,9 @@ namespace blockdyn {
 // bound, and the search steps to where that bound could first reach zero (quadratic convergence
 // to a crossing, and no crossing is stepped over, however shallow or brief).
 double first_rest_failure(const GroundMotion& g, double c, double t0, double t1);
+// The same with a resistance that depends on the direction (an asymmetric assembly): rest fails
+// where a_H > c_pos (1 + a_V) or -a_H > c_neg (1 + a_V).
+double first_rest_failure(const GroundMotion& g, double c_pos, double c_neg, double t0, double t1);
 
 // The search for one model (built once per run). checkpoint(t): where a block at rest at t must
 // next be looked at: its first failure of rest, or the end of a look-ahead span after which the
@@ -32,12 +35,13 @@ class RestExit {
  public:
   RestExit() = default;
   RestExit(const GroundMotion& g, double c);
+  RestExit(const GroundMotion& g, double c_pos, double c_neg);
   double checkpoint(double t) const;
 
  private:
   GroundMotion g_;  // a copy (records are shared): the search outlives no model it serves
   bool active_ = false;
-  double c_ = 0.0;
+  double c_pos_ = 0.0, c_neg_ = 0.0;
   bool piecewise_linear_ = false;
   std::vector<double> fail_, before_;  // failing breakpoints and the breakpoint before each
 };

@@ -117,7 +117,8 @@ json assembly_result_json(const Assembly& a, const GroundMotion& g, const Assemb
                                        r.work_friction - r.work_switch}};
   j["max_abs_energy_error"] = r.max_abs_energy_error;
   if (a.contact == "rigid") {
-    j["step"] = o.step;
+    j["scheme"] = to_string(o.scheme);
+    if (o.scheme == AssemblyScheme::TimeStepping) j["step"] = o.step;
     j["impacts"] = r.impacts;
   }
   j["max_abs_energy_change"] = r.max_abs_energy_change;

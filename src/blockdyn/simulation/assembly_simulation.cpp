@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "blockdyn/model/assembly/assembly_model.hpp"
+#include "blockdyn/model/assembly/rigid_assembly_model.hpp"
 #include "blockdyn/simulation/assembly_columns.hpp"
 #include "blockdyn/simulation/moreau_jean_run.hpp"
 #include "blockdyn/simulation/observer.hpp"
@@ -14,6 +15,8 @@
 #include "blockdyn/simulation/trajectory_rows.hpp"
 
 namespace blockdyn {
+
+const char* to_string(AssemblyScheme s) { return s == AssemblyScheme::EventDriven ? "event-driven" : "time-stepping"; }
 
 void validate(const AssemblyRunOptions& o) {
   if (!(o.t_end > 0 && o.t_end <= 1e7)) throw std::invalid_argument("t-end must be in (0, 1e7] s");
@@ -29,15 +32,23 @@ void validate(const AssemblyRunOptions& o) {
 
 namespace {
 
-template <int Cap>
-using Model = AssemblyModel<Cap>;
+// The event function an event belongs to; for a switch made at a breakpoint of the input (the
+// rigid law's exit from rest, found on the ground motion itself), the first contact point whose
+// state it changed (the normal event of that point).
+template <class Event>
+int event_index(const Event& e) {
+  if (e.index >= 0) return e.index;
+  for (std::size_t p = 0; p < e.from.point.size(); ++p)
+    if (e.from.point[p] != e.to.point[p]) return int(p);
+  return 0;
+}
 
 // Largest rotations and slidings, the event list and counts, the failure.
-template <int Cap>
-class AssemblyRecorder final : public Observer<Model<Cap>> {
+template <class M>
+class AssemblyRecorder final : public Observer<M> {
  public:
-  using M = Model<Cap>;
   BLOCKDYN_OBSERVER_TYPES(M);
+  static constexpr int Cap = M::kBlocks;
 
   AssemblyRecorder(AssemblyResult& r, const AssemblyRunOptions& o) : r_(r), o_(o) {}
 
@@ -66,10 +77,11 @@ class AssemblyRecorder final : public Observer<Model<Cap>> {
     if (e.kind == kAsmBreakpoint) return true;
     ++r_.event_counts[e.kind];
     ++r_.events_total;
+    if (e.kind == kAsmClose && e.z != e.z_before) ++r_.impacts;
     AssemblyEventRecord rec;
     rec.t = e.t;
     rec.kind = assembly_event_name(e.kind);
-    const int idx = e.index;
+    const int idx = event_index(e);
     if (idx < M::ev_wzero(0)) {
       const int p = idx % M::kPoints;
       rec.interface = p / 2;
@@ -93,8 +105,11 @@ class AssemblyRecorder final : public Observer<Model<Cap>> {
     }
     if (e.kind == kAsmInvalid) {
       r_.status = "invalid";
-      r_.note = "contact interpenetration beyond the model's limit (2% of the smallest block size) at interface " +
-                std::to_string(rec.interface);
+      if constexpr (requires { m.problem(); })
+        r_.note = m.problem();
+      else
+        r_.note = "contact interpenetration beyond the model's limit (2% of the smallest block size) at interface " +
+                  std::to_string(rec.interface);
     }
     if (rec.block >= 0) rec.pose = {e.z[M::ix(rec.block)], e.z[M::ix(rec.block) + 1], e.z[M::ix(rec.block) + 2]};
     if (o_.on_event) o_.on_event(rec);
@@ -130,10 +145,9 @@ class AssemblyRecorder final : public Observer<Model<Cap>> {
 const char* const kEndState[] = {"O", "K", "P", "N"};
 
 // The trajectory table: one row per output instant (dense output) and one per event.
-template <int Cap>
-class AssemblyTrajectory final : public TrajectoryRows<Model<Cap>, AssemblyTrajectory<Cap>> {
-  using M = Model<Cap>;
-  using Base = TrajectoryRows<M, AssemblyTrajectory<Cap>>;
+template <class M>
+class AssemblyTrajectory final : public TrajectoryRows<M, AssemblyTrajectory<M>> {
+  using Base = TrajectoryRows<M, AssemblyTrajectory<M>>;
 
  public:
   BLOCKDYN_OBSERVER_TYPES(M);
@@ -158,7 +172,7 @@ class AssemblyTrajectory final : public TrajectoryRows<Model<Cap>, AssemblyTraje
     c.number(a[0]);
     c.number(a[1]);
     for (int p = 0; p < 2 * m.interfaces(); ++p) {
-      const auto f = m.point_force(md, z, p);
+      const auto f = m.point_force(md, z, t, p);
       for (double v : {f.c.P.x, f.c.P.y, f.fn, f.ft}) c.number(v);
       c.text(kEndState[int(md.point[p])]);
     }
@@ -174,11 +188,11 @@ class AssemblyTrajectory final : public TrajectoryRows<Model<Cap>, AssemblyTraje
 
 // The forced analyses' probe (run_probe.hpp): block states from the dense output, passages of
 // each rotation through 0, contact ends closing and opening under each block.
-template <int Cap>
-class AssemblyProbe final : public Observer<Model<Cap>> {
+template <class M>
+class AssemblyProbe final : public Observer<M> {
  public:
-  using M = Model<Cap>;
   BLOCKDYN_OBSERVER_TYPES(M);
+  static constexpr int Cap = M::kBlocks;
 
   explicit AssemblyProbe(RunProbe& p) : p_(p) {}
 
@@ -197,7 +211,7 @@ class AssemblyProbe final : public Observer<Model<Cap>> {
   bool on_event(const M& m, const Event& e) override {
     ProbeEvent pe;
     pe.t = e.t;
-    const int idx = e.index;
+    const int idx = event_index(e);
     if (e.kind == kAsmWZero) {
       pe.kind = ProbeEvent::Passage;
       pe.block = (idx - M::ev_wzero(0)) % Cap;
@@ -224,38 +238,39 @@ class AssemblyProbe final : public Observer<Model<Cap>> {
   RunProbe& p_;
 };
 
-template <int Cap>
-AssemblyEnergy energy_of(const Model<Cap>& m, const typename Model<Cap>::Mode& md,
-                         const typename Model<Cap>::State& z) {
+template <class M>
+AssemblyEnergy energy_of(const M& m, const typename M::Mode& md, const typename M::State& z) {
   const auto e = m.energy_terms(md, z);
   return {e.kinetic, e.gravity, e.normal_spring, e.tangential_spring, e.total()};
 }
 
-template <int Cap>
+template <class M>
 AssemblyResult run(const Assembly& a, const GroundMotion& g, const AssemblyRunOptions& o, TrajectoryTable* csv_out,
                    RunProbe* probe) {
-  using M = Model<Cap>;
   // Passages through theta = 0 and contact-end switches count beyond the integration error.
   const M m(a, g, std::fmax(1e-12, 10.0 * o.integrator.atol));
   AssemblyResult r;
-  for (int i = 0; i < m.interfaces(); ++i) r.damping.push_back(m.law(i).cn);
+  if constexpr (requires { m.law(0).cn; })
+    for (int i = 0; i < m.interfaces(); ++i) r.damping.push_back(m.law(i).cn);
+  else
+    r.damping.assign(std::size_t(m.interfaces()), 0.0);
   typename M::State z = m.initial_state();
   typename M::Mode md = m.initial_mode(z);
   m.complete(md, z);
   if (auto why = m.validity_problem(md, z)) throw std::invalid_argument("initial state: " + *why);
   r.energy_initial = energy_of(m, md, z);
-  AssemblyRecorder<Cap> rec(r, o);
+  AssemblyRecorder<M> rec(r, o);
   EnergyBalance<M> balance;
-  std::unique_ptr<AssemblyTrajectory<Cap>> csv;
+  std::unique_ptr<AssemblyTrajectory<M>> csv;
   FanOut<M> fan;
   fan.add(&rec).add(&balance);
   if (csv_out) {
-    csv = std::make_unique<AssemblyTrajectory<Cap>>(*csv_out, o.output_interval);
+    csv = std::make_unique<AssemblyTrajectory<M>>(*csv_out, o.output_interval);
     fan.add(csv.get());
   }
-  std::unique_ptr<AssemblyProbe<Cap>> probe_obs;
+  std::unique_ptr<AssemblyProbe<M>> probe_obs;
   if (probe) {
-    probe_obs = std::make_unique<AssemblyProbe<Cap>>(*probe);
+    probe_obs = std::make_unique<AssemblyProbe<M>>(*probe);
     fan.add(probe_obs.get());
   }
   const RunOutcome<M> out = run_model(m, md, z, 0.0, o.t_end, o.integrator, fan);
@@ -302,11 +317,21 @@ AssemblyResult simulate_assembly(const Assembly& a, const GroundMotion& g, const
   validate(o);
   if (probe && a.blocks.size() > std::size_t(RunProbe::kMaxBlocks))
     throw std::invalid_argument("a probed run takes at most " + std::to_string(RunProbe::kMaxBlocks) + " blocks");
-  if (a.contact == "rigid") return run_moreau_jean(a, g, o, trajectory, probe);
+  const bool rigid = a.contact == "rigid";
+  if (rigid && o.scheme == AssemblyScheme::TimeStepping) return run_moreau_jean(a, g, o, trajectory, probe);
   const int n = int(a.blocks.size());
-  if (n == 1 && a.interfaces.size() <= 2) return run<1>(a, g, o, trajectory, probe);
-  if (n <= 3 && a.interfaces.size() <= 4) return run<3>(a, g, o, trajectory, probe);
-  return run<8>(a, g, o, trajectory, probe);
+  const int cap = (n == 1 && a.interfaces.size() <= 2) ? 1 : (n <= 3 && a.interfaces.size() <= 4) ? 3 : 8;
+  switch (cap) {
+    case 1:
+      return rigid ? run<RigidAssemblyModel<1>>(a, g, o, trajectory, probe)
+                   : run<AssemblyModel<1>>(a, g, o, trajectory, probe);
+    case 3:
+      return rigid ? run<RigidAssemblyModel<3>>(a, g, o, trajectory, probe)
+                   : run<AssemblyModel<3>>(a, g, o, trajectory, probe);
+    default:
+      return rigid ? run<RigidAssemblyModel<8>>(a, g, o, trajectory, probe)
+                   : run<AssemblyModel<8>>(a, g, o, trajectory, probe);
+  }
 }
 
 }  // namespace blockdyn

@@ -31,6 +31,12 @@ struct AssemblyEventRecord {
   std::array<double, 3> pose{};  // x, y, theta of `block` after the event
 };
 
+// How the rigid contact law is integrated: event-driven (exact events: smooth phases with the
+// contact forces of each mode, impacts resolved where they occur) or Moreau-Jean time-stepping
+// (a fixed step; events known to within a step; for accumulations of impacts).
+enum class AssemblyScheme { EventDriven, TimeStepping };
+const char* to_string(AssemblyScheme s);
+
 struct AssemblyRunOptions {
   double t_end = 10.0;
   IntegratorOptions integrator{1e-8, 1e-10};
@@ -38,6 +44,7 @@ struct AssemblyRunOptions {
   bool record_events = true;      // keep the event list (counts are always kept)
   long max_events = 1'000'000;    // kept in the list; further events are counted only
   double step = 1e-4;             // rigid law: Moreau-Jean time step (s)
+  AssemblyScheme scheme = AssemblyScheme::TimeStepping;  // rigid law only
   // Called with every event as it happens, whatever record_events and max_events say: a caller
   // that streams the events (the command line's JSON spool) holds O(1) memory on a run of any length.
   std::function<void(const AssemblyEventRecord&)> on_event;

@@ -141,6 +141,9 @@ class AssemblyModel {
     geometry(z, g);
     return point_force(m, z, g, p);
   }
+  // The same at time t (the deformable law's forces depend on the state alone; the rigid law's
+  // constraint forces on the ground's acceleration too).
+  PointForce point_force(const Mode& m, const State& z, double /*t*/, int p) const { return point_force(m, z, p); }
   // Accelerations of every block (and the normal-force rates of the slipping points), the
   // ground's accelerations and the contact points. all_points = false: the open points clear of
   // their faces get only their gap (what the right-hand side needs).

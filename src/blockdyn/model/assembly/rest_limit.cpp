@@ -1,0 +1,106 @@
+// SPDX-License-Identifier: Apache-2.0
+#include "blockdyn/model/assembly/rest_limit.hpp"
+
+#include <glpk.h>
+
+#include <cmath>
+#include <memory>
+
+#include "blockdyn/model/assembly/assembly_params.hpp"
+
+namespace blockdyn {
+
+namespace {
+constexpr double kLambdaCap = 1e6;
+
+struct LpDeleter {
+  void operator()(glp_prob* p) const { glp_delete_prob(p); }
+};
+}  // namespace
+
+// Columns: N per contact (>= 0), T per interface (free), lambda (free). Rows: the three
+// equilibrium equations per block, then |T| <= mu (N_1 + N_2) as two rows per interface.
+LoadMultiplier max_load_multiplier(const StaticProblem& p, int direction) {
+  const int nb = int(p.mass.size()), nc = int(p.contacts.size()), ni = int(p.mu.size());
+  std::unique_ptr<glp_prob, LpDeleter> lp(glp_create_prob());
+  glp_set_obj_dir(lp.get(), GLP_MAX);
+  const int col_t = nc + 1, col_lambda = nc + ni + 1;
+  glp_add_cols(lp.get(), nc + ni + 1);
+  for (int c = 1; c <= nc; ++c) glp_set_col_bnds(lp.get(), c, GLP_LO, 0.0, 0.0);
+  for (int i = 0; i < ni; ++i) glp_set_col_bnds(lp.get(), col_t + i, GLP_FR, 0.0, 0.0);
+  glp_set_col_bnds(lp.get(), col_lambda, GLP_DB, -kLambdaCap, kLambdaCap);
+  glp_set_obj_coef(lp.get(), col_lambda, 1.0);
+
+  std::vector<int> ia{0}, ja{0};
+  std::vector<double> ar{0.0};
+  auto put = [&](int row, int col, double v) {
+    if (v == 0.0) return;
+    ia.push_back(row);
+    ja.push_back(col);
+    ar.push_back(v);
+  };
+  glp_add_rows(lp.get(), 3 * nb);
+  for (int b = 0; b < nb; ++b) {
+    const double w = p.mass[b] * p.g;
+    // Contact forces + (-w lambda direction, -w, 0) = 0.
+    glp_set_row_bnds(lp.get(), 3 * b + 1, GLP_FX, 0.0, 0.0);
+    glp_set_row_bnds(lp.get(), 3 * b + 2, GLP_FX, w, w);
+    glp_set_row_bnds(lp.get(), 3 * b + 3, GLP_FX, 0.0, 0.0);
+    put(3 * b + 1, col_lambda, -w * direction);
+  }
+  for (int c = 0; c < nc; ++c) {
+    const StaticContact& k = p.contacts[c];
+    for (int side : {+1, -1}) {
+      const int b = side > 0 ? k.upper : k.lower;
+      if (b < 0) continue;
+      const Vec2 r = k.P - p.centre[b];
+      put(3 * b + 1, c + 1, side * k.n.x);
+      put(3 * b + 2, c + 1, side * k.n.y);
+      put(3 * b + 3, c + 1, side * cross(r, k.n));
+      // A tangential force along the face has the same moment wherever on the face it acts:
+      // one T per interface, applied at any of its points.
+      bool first = true;
+      for (int c2 = 0; c2 < c; ++c2)
+        if (p.contacts[c2].iface == k.iface) first = false;
+      if (first) {
+        put(3 * b + 1, col_t + k.iface, side * k.t.x);
+        put(3 * b + 2, col_t + k.iface, side * k.t.y);
+        put(3 * b + 3, col_t + k.iface, side * cross(r, k.t));
+      }
+    }
+  }
+  for (int i = 0; i < ni; ++i) {
+    if (!(p.mu[i] < kNoSlipFriction)) continue;
+    const int r0 = glp_add_rows(lp.get(), 2);
+    for (int s = 0; s < 2; ++s) {
+      glp_set_row_bnds(lp.get(), r0 + s, GLP_UP, 0.0, 0.0);
+      put(r0 + s, col_t + i, s == 0 ? 1.0 : -1.0);
+      for (int c = 0; c < nc; ++c)
+        if (p.contacts[c].iface == i) put(r0 + s, c + 1, -p.mu[i]);
+    }
+  }
+  glp_load_matrix(lp.get(), int(ar.size()) - 1, ia.data(), ja.data(), ar.data());
+  glp_smcp parm;
+  glp_init_smcp(&parm);
+  parm.msg_lev = GLP_MSG_OFF;
+  parm.presolve = GLP_OFF;
+  LoadMultiplier out;
+  if (glp_simplex(lp.get(), &parm) != 0) return out;
+  // The floating-point simplex ends within its tolerances (1e-7); the exact (rational) simplex
+  // from its basis makes the limit exact to the rounding of the result: rest must end at the
+  // crossing itself.
+  if (glp_exact(lp.get(), &parm) != 0 || glp_get_status(lp.get()) != GLP_OPT) return out;
+  out.feasible = true;
+  out.lambda = glp_get_obj_val(lp.get());
+  out.mechanism.assign(3 * std::size_t(nb), 0.0);
+  double power = 0.0;
+  for (int b = 0; b < nb; ++b) {
+    for (int k = 0; k < 3; ++k) out.mechanism[3 * b + k] = glp_get_row_dual(lp.get(), 3 * b + k + 1);
+    power -= p.mass[b] * direction * out.mechanism[3 * b];
+  }
+  if (power < 0)
+    for (double& v : out.mechanism) v = -v;
+  return out;
+}
+
+}  // namespace blockdyn

@@ -1,0 +1,174 @@
+// SPDX-License-Identifier: Apache-2.0
+#pragma once
+// An assembly of rigid blocks with rigid unilateral frictional contacts, event-driven (spec
+// block-assemblies.md; Pfeiffer & Glocker's formulation of multibody systems with unilateral
+// contacts). The contacts are the same points as the deformable law's (contact_point.hpp): the
+// two ends of each interface's overlap. In a mode every point is open, sticking or slipping
+// (+/-); between events the blocks move smoothly, the closed points' constraint forces solving
+// the acceleration-level contact problem of the mode:
+//   M a = f(t) + sum_closed W_N^T lambda_N + sum_slipping W_T^T (-mu_k s lambda_N) + sum_sticking W_T^T lambda_T
+//   closed point: gap'' = W_N a + kappa_N = 0;  sticking interface: slip' = W_T a + kappa_T = 0.
+// Events, each located where its function crosses zero: a closed point's normal force reaching
+// zero (it opens), an open point's gap reaching zero (an impact), a sticking interface's friction
+// reaching mu_s N (it slips), a slipping point's slip rate reaching zero (it sticks or reverses),
+// a contact end passing to the other block's corner, the passages of theta through 0 and the
+// collapse criteria. After each event the next mode is chosen by an active-set iteration on the
+// same contact problem (every normal force >= 0, every gap acceleration of a touching open point
+// >= 0, every sticking force within the cone, every slip kept); an impact is resolved by the
+// velocity-level problem with Newton's restitution at the impacting points and Coulomb's law for
+// the impulses.
+// Rest: a mode of its own in which every point is closed and sticking and nothing moves. Where the
+// assembly is statically indeterminate the forces at rest are not unique: rest holds while some
+// distribution holds the blocks, i.e. while the ground acceleration lies inside the static limits
+// (rest_limit.hpp: c_neg (1 + a_V) >= -a_H, c_pos (1 + a_V) >= a_H), found on the ground motion
+// itself (RestExit) and left into the limit's mechanism. Impacts that accumulate (a block settling
+// in ever shorter rocking cycles) end in rest once the velocities after an impact are below
+// settle_velocity() and rest holds: sqrt(2 g delta), the speed of a bounce delta high, delta the
+// noise band (10 atol: 1e-9 m by default), below which the integration does not resolve a motion.
+//
+// The state and mode layouts are those of AssemblyModel (the tangential spring slots stay zero),
+// so the observers of assembly runs serve both laws.
+#include <array>
+#include <optional>
+#include <string>
+
+#include "blockdyn/excitation/ground_motion.hpp"
+#include "blockdyn/excitation/rest_exit.hpp"
+#include "blockdyn/model/assembly/assembly_model.hpp"
+
+namespace blockdyn {
+
+template <int Cap>
+struct RigidAssemblyMode : AssemblyMode<Cap> {
+  bool rest = false;
+  double rest_pos = 0, rest_neg = 0;  // at rest: the configuration's static limits
+};
+
+template <int Cap>
+class RigidAssemblyModel {
+ public:
+  using Base = AssemblyModel<Cap>;
+  static constexpr int kBlocks = Cap, kIfaces = Cap + 1, kPoints = 2 * kIfaces;
+  static constexpr std::size_t kDim = Base::kDim;
+  static constexpr std::size_t kNumEvents = Base::kNumEvents;
+  static constexpr bool kStateJumps = true;
+  static constexpr int kCoords = 3 * Cap;
+  using Mode = RigidAssemblyMode<Cap>;
+  using State = Vec<kDim>;
+  using Geometry = typename Base::Geometry;
+  using PointForce = typename Base::PointForce;
+  using Energy = typename Base::Energy;
+
+  static constexpr std::size_t ix(int b) { return Base::ix(b); }
+  static constexpr std::size_t iv(int b) { return Base::iv(b); }
+  static constexpr std::size_t kWGround = Base::kWGround, kWNormal = Base::kWNormal, kWFriction = Base::kWFriction,
+                               kWSwitch = Base::kWSwitch;
+  static constexpr int ev_normal(int p) { return Base::ev_normal(p); }
+  static constexpr int ev_tangent(int p) { return Base::ev_tangent(p); }
+  static constexpr int ev_owner(int p) { return Base::ev_owner(p); }
+  static constexpr int ev_valid(int p) { return Base::ev_valid(p); }
+  static constexpr int ev_wzero(int b) { return Base::ev_wzero(b); }
+  static constexpr int ev_collapse(int b) { return Base::ev_collapse(b); }
+  static constexpr int ev_bearing(int i) { return Base::ev_bearing(i); }
+  // Rest's events (in the validity slots, unused by this law): the two static limits.
+  static constexpr int ev_rest(int dir) { return Base::ev_valid(dir > 0 ? 0 : 1); }
+
+  // Velocities after an impact below this end in rest where rest holds (the accumulation point
+  // of a settling block's impacts); a point leaving its face slower stays on it.
+  double settle_velocity() const { return settle_velocity_; }
+
+  RigidAssemblyModel(const Assembly& a, const GroundMotion& g, double noise_band = 1e-12);
+
+  int blocks() const { return geo_.blocks(); }
+  int interfaces() const { return geo_.interfaces(); }
+  const Assembly& assembly() const { return geo_.assembly(); }
+  double rotation_limit(int b) const { return geo_.rotation_limit(b); }
+  std::array<double, 2> ground_acceleration(double t) const { return geo_.ground_acceleration(t); }
+  void geometry(const State& z, Geometry& g) const { geo_.geometry(z, g); }
+  double overlap_of(const State& z, int iface) const { return geo_.overlap_of(z, iface); }
+
+  void rhs(double t, const Mode& m, const State& z, State& dz) const;
+  void events(double t, const Mode& m, const State& z, std::array<double, kNumEvents>& g) const;
+  void complete(const Mode&, State&) const {}
+  Transition<Mode> transition(double t, const Mode& m, State& z, int event) const;
+  std::optional<Transition<Mode>> resolve_chatter(double, const Mode&, const State&) const { return std::nullopt; }
+  double step_hint(const Mode&) const { return step_hint_; }
+  State abs_tol_scale() const;
+  double next_breakpoint(double t, const Mode& m) const;
+
+  State initial_state() const { return geo_.initial_state(); }
+  Mode initial_mode(const State& z) const;
+  std::optional<std::string> validity_problem(const Mode& m, const State& z) const;
+
+  // Why the last transition stopped the run (an accumulation of impacts that does not settle, a
+  // contact problem without a consistent mode); empty otherwise.
+  const std::string& problem() const { return problem_; }
+  // Impacts this many within kAccumulationWindow sqrt(L / g) that do not settle stop the run.
+  static constexpr int kAccumulationImpacts = 256;
+  static constexpr double kAccumulationWindow = 1e-2;
+
+  Energy energy_terms(const Mode& m, const State& z) const;
+  double energy(const Mode& m, const State& z) const { return energy_terms(m, z).total(); }
+  double work(const State& z) const { return z[kWGround] + z[kWNormal] + z[kWFriction] + z[kWSwitch]; }
+  // The contact forces of a point in a mode (the acceleration-level problem's solution at t; at
+  // rest the least-norm distribution that holds the blocks).
+  PointForce point_force(const Mode& m, const State& z, int p) const;
+  PointForce point_force(const Mode& m, const State& z, double t, int p) const;
+
+  // The static limits of the configuration z (every contact closed): a_H / (g + a_V) at which rest
+  // fails in each direction; nullopt where no distribution holds the blocks at all.
+  struct RestLimits {
+    double pos = 0, neg = 0;
+  };
+  std::optional<RestLimits> rest_limits(const State& z) const;
+
+  // One point's kinematics: generalized rows of its normal and tangential relative velocities
+  // (upper against lower) and their drifts (the velocity-dependent part of their rates).
+  struct PointRows {
+    FaceContact c;
+    int upper = 0, lower = -1;
+    std::array<double, 3> nu{}, nl{}, tu{}, tl{};  // rows on the upper and the lower block
+    double gap = 0, vn = 0, vt = 0, kn = 0, kt = 0;
+  };
+  // A mode's contact problem at time t: accelerations, normal and tangential forces per point.
+  struct Solution {
+    std::array<double, kCoords> acc{};
+    std::array<double, kPoints> fn{}, ft{};
+    bool ok = true;
+  };
+
+ private:
+  void rows(const State& z, const Geometry& geo, const Mode& m, std::array<PointRows, kPoints>& r) const;
+  Solution solve(double t, const Mode& m, const State& z, const std::array<PointRows, kPoints>& r) const;
+  // The next mode from `m` at (t, z) by the active-set iteration; false if it does not settle.
+  bool select_mode(double t, Mode& m, const State& z) const;
+  // The impact at (t, z): new velocities in z, work booked; the mode's closed set updated.
+  bool impact(double t, Mode& m, State& z) const;
+  void project_gaps(const Mode& m, State& z) const;
+  // Enter rest if every point touches, nothing moves and rest holds at t.
+  bool try_rest(double t, Mode& m, State& z) const;
+  Mode mechanism_mode(const Mode& m, const State& z, int direction) const;
+  double rate_of(const PointRows& r, const std::array<double, kCoords>& acc, bool normal) const;
+
+  Base geo_;
+  GroundMotion ground_;
+  bool forced_;
+  int nb_, ni_;
+  std::array<double, Cap> m_{}, I_{}, y0_{};
+  std::array<double, kIfaces> mu_s_{}, mu_k_{}, e_{};
+  std::array<int, kIfaces> lower_{}, upper_{};
+  double g_, step_hint_, len_, v_scale_, f_scale_, rotation_band_, switch_band_, settle_velocity_;
+  // The static limits of the initial configuration (the assembly returns to it after rocking).
+  mutable std::optional<RestLimits> limits0_;
+  State z0_{};
+  // The search for rest's failure, for the limits of the rest it was built for.
+  mutable RestExit rest_exit_;
+  // Why the run stopped outside the scheme's reach (empty: it did not), and the recent impacts'
+  // times (an accumulation that does not settle).
+  mutable std::string problem_;
+  mutable std::array<double, 256> impact_times_{};
+  mutable long impacts_ = 0;
+  mutable double exit_pos_ = NAN, exit_neg_ = NAN;
+};
+
+}  // namespace blockdyn
