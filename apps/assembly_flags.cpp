@@ -19,7 +19,7 @@ void add_assembly_options(CLI::App& app, AssemblyFlags& f) {
       {"block", "trilith", "column"});
   members(opt("--contact", f.contact,
               "contact law: deformable (spring-dashpot + elastic Coulomb, default) or rigid (unilateral, Coulomb, "
-              "Newton impacts; Moreau-Jean time-stepping)"),
+              "Newton impacts; see --scheme)"),
           {"deformable", "rigid"});
   opt("--slenderness", f.preset_opt.slenderness, "column (or block) height / width (default 4)");
   opt("--drums", f.preset_opt.drums, "column: number of drums, 1 to 8 (default 4)");
@@ -47,10 +47,13 @@ void add_assembly_options(CLI::App& app, AssemblyFlags& f) {
       "collapse mode 2 when the overlap of two blocks' faces falls to this length [m] (default 0)");
   opt("--g", f.g, "gravity [m/s^2] (default 9.81)");
   members(opt("--scheme", f.scheme,
-              "rigid: event-driven (exact events: contact forces of each mode, impacts where they occur) or "
-              "time-stepping (Moreau-Jean, fixed --step; default)"),
+              "rigid: event-driven (default: exact events, each mode's contact forces, impacts where they "
+              "occur; windows of chattering contacts handed to time-stepping) or time-stepping (Moreau-Jean, "
+              "fixed --step, events known to a step)"),
           {"event-driven", "time-stepping"});
-  opt("--step", f.step, "rigid, time-stepping: time step [s] (default 1e-4)");
+  opt("--step", f.step,
+      "rigid: Moreau-Jean time step [s] (default 1e-4): the whole run with --scheme time-stepping, the "
+      "windows of chattering contacts with event-driven");
   flag("--columns-rock-only", f.rock_only,
        "rigid: seed 001's 5-DOF restriction - the blocks on the ground only rock (no sliding, plastic "
        "impacts); a block leaving the ground is reported, not integrated");

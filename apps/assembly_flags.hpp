@@ -13,7 +13,7 @@
 namespace blockdyn::cli {
 
 struct AssemblyFlags {
-  std::string preset, contact = "deformable", scheme = "time-stepping";
+  std::string preset, contact = "deformable", scheme = "event-driven";
   PresetOptions preset_opt;
   double phi_s = 90, phi_l = 90, tilt = 0, phi_s_kinetic = 0, phi_l_kinetic = 0;
   double k_normal = 1e7, k_tangential = 0, restitution = 0.5;

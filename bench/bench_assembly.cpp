@@ -65,7 +65,9 @@ void BM_TrilithHarmonic300sLoose(benchmark::State& s) { run(s, trilith(90), seed
 void BM_TrilithFriction300s(benchmark::State& s) { run(s, trilith(20), seed_harmonic(1.5, 3), 1e-8, 1e-10, 300); }
 void BM_TrilithAtRest100s(benchmark::State& s) { run(s, trilith(90), {}, 1e-8, 1e-10, 100); }
 // The rigid law (Moreau-Jean, h = 1e-4 s): the seed's harmonic case and the trilith at rest.
-void BM_RigidTrilithHarmonic300s(benchmark::State& s) { run(s, trilith(90, true), seed_harmonic(4, 10), 1e-8, 1e-10, 300); }
+void BM_RigidTrilithHarmonic300s(benchmark::State& s) {
+  run(s, trilith(90, true), seed_harmonic(4, 10), 1e-8, 1e-10, 300);
+}
 void BM_RigidTrilithAtRest100s(benchmark::State& s) { run(s, trilith(90, true), {}, 1e-8, 1e-10, 100); }
 // The rigid law, event-driven (issue 25): the same two cases, default tolerances.
 void BM_RigidEventDrivenTrilithHarmonic300s(benchmark::State& s) {

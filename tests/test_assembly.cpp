@@ -415,10 +415,13 @@ PresetOptions rigid_preset() {
   return o;
 }
 
+// Moreau-Jean time-stepping with step `step` (these tests are about that scheme; the event-driven
+// default has its own: test_rigid_event_driven.cpp).
 AssemblyRunOptions rigid_run(double t_end, double step) {
   AssemblyRunOptions o;
   o.t_end = t_end;
   o.step = step;
+  o.scheme = AssemblyScheme::TimeStepping;
   return o;
 }
 
@@ -517,8 +520,10 @@ TEST(AssemblyRigidLaw, QuasiStaticUpliftAtGTanAlphaWhateverTheLintel) {
     ASSERT_TRUE(std::isfinite(t_open)) << preset;
     const double ratio = 2 * std::sin(2 * M_PI * f * t_open);
     EXPECT_NEAR(ratio, 1.0, 1e-2) << preset;
-    if (std::string(preset) == "block") a_block = ratio;
-    else EXPECT_NEAR(ratio, a_block, 1e-3);
+    if (std::string(preset) == "block")
+      a_block = ratio;
+    else
+      EXPECT_NEAR(ratio, a_block, 1e-3);
   }
 }
 
@@ -538,7 +543,8 @@ TEST(AssemblyRigidLaw, ColumnsRockOnlyRestriction) {
   // up to the pivot's play inside the activation band g h^2 (twice: both ends of the motion).
   const double play = 2 * 9.81 * 1e-4 * 1e-4;
   for (int b = 0; b < 2; ++b)
-    EXPECT_LE(r.blocks[b].max_abs_sliding, 0.5 * a.blocks[b].width * (1 - std::cos(r.blocks[b].max_abs_rotation)) + play);
+    EXPECT_LE(r.blocks[b].max_abs_sliding,
+              0.5 * a.blocks[b].width * (1 - std::cos(r.blocks[b].max_abs_rotation)) + play);
   EXPECT_GT(r.interfaces[2].slips + r.interfaces[3].slips, 0);
   Assembly jump = make_preset("block", rigid_preset());
   jump.rock_only_on_ground = true;
@@ -662,8 +668,8 @@ TEST(AssemblyFriction, EqualStaticAndKineticFrictionDoesNotChatter) {
   struct Case {
     double amplitude_g, hz, phi_deg;
   };
-  for (const Case c : {Case{0.15, 1, 20}, Case{0.15, 2, 20}, Case{0.15, 2, 30}, Case{0.15, 3.5, 20},
-                       Case{0.15, 5, 30}, Case{0.2, 1, 20}, Case{0.2, 1, 45}}) {
+  for (const Case c : {Case{0.15, 1, 20}, Case{0.15, 2, 20}, Case{0.15, 2, 30}, Case{0.15, 3.5, 20}, Case{0.15, 5, 30},
+                       Case{0.2, 1, 20}, Case{0.2, 1, 45}}) {
     SCOPED_TRACE(::testing::Message() << c.amplitude_g << " g, " << c.hz << " Hz, phi " << c.phi_deg);
     PresetOptions o = seed_preset();
     o.ground_law.mu_s = o.ground_law.mu_k = o.block_law.mu_s = o.block_law.mu_k = std::tan(c.phi_deg * M_PI / 180);

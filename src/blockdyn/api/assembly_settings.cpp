@@ -61,7 +61,7 @@ void check_values(const Settings& s, const Values& v) {
   require_in_range("normal-stiffness", v.k_normal, 1, 1e13);
   if (s.has("tangential-stiffness")) require_in_range("tangential-stiffness", v.k_tangential, 1, 1e13);
   require_in_range("restitution", v.restitution, v.rigid ? 0.0 : 1e-3, 1);
-  const std::string scheme = s.text("scheme", "time-stepping");
+  const std::string scheme = s.text("scheme", "event-driven");
   if (scheme != "event-driven" && scheme != "time-stepping")
     throw Invalid("--scheme = '" + scheme + "' is not one of: event-driven, time-stepping");
   if (!v.rigid && s.has("scheme")) throw Invalid("--scheme belongs to --contact rigid");
@@ -71,8 +71,7 @@ void check_values(const Settings& s, const Values& v) {
     for (const char* n : {"rtol", "atol", "method"})
       if (s.has(n))
         throw Invalid(std::string("--") + n + " belongs to --scheme event-driven (time-stepping has --step)");
-  if ((!v.rigid || scheme == "event-driven") && s.has("step"))
-    throw Invalid("--step belongs to --contact rigid --scheme time-stepping");
+  if (!v.rigid && s.has("step")) throw Invalid("--step belongs to --contact rigid");
   require_in_range("collapse-rotation", v.collapse_rotation, 0, 10, false);
   require_in_range("min-bearing", v.min_bearing, 0, 1e3);
   require_in_range("g", v.g, 0, 1e3, false);
@@ -199,7 +198,8 @@ AssemblySetup assembly_from(const Settings& s) {
   AssemblyRunOptions& o = setup.run;
   o.t_end = s.number("t-end", o.t_end);
   o.step = s.number("step", o.step);
-  if (s.text("scheme", "time-stepping") == "event-driven") o.scheme = AssemblyScheme::EventDriven;
+  o.scheme =
+      s.text("scheme", "event-driven") == "event-driven" ? AssemblyScheme::EventDriven : AssemblyScheme::TimeStepping;
   o.integrator.rtol = s.number("rtol", o.integrator.rtol);
   o.integrator.atol = s.number("atol", o.integrator.atol);
   if (s.has("method")) {

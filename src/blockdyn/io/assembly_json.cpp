@@ -11,8 +11,7 @@ using json = nlohmann::ordered_json;
 namespace {
 
 json law_json(const ContactLaw& l, double damping, const std::string& contact) {
-  if (contact == "rigid")
-    return {{"law", "rigid"}, {"restitution", l.restitution}, {"mu_s", l.mu_s}, {"mu_k", l.mu_k}};
+  if (contact == "rigid") return {{"law", "rigid"}, {"restitution", l.restitution}, {"mu_s", l.mu_s}, {"mu_k", l.mu_k}};
   return {{"law", "deformable"},
           {"k_normal", l.k_normal},
           {"k_tangential", l.k_tangential > 0 ? l.k_tangential : l.k_normal / 3.0},
@@ -118,7 +117,12 @@ json assembly_result_json(const Assembly& a, const GroundMotion& g, const Assemb
   j["max_abs_energy_error"] = r.max_abs_energy_error;
   if (a.contact == "rigid") {
     j["scheme"] = to_string(o.scheme);
-    if (o.scheme == AssemblyScheme::TimeStepping) j["step"] = o.step;
+    j["step"] = o.step;
+    if (o.scheme == AssemblyScheme::EventDriven)
+      j["time_stepping"] = {{"windows", r.time_stepping_windows},
+                            {"time", r.time_stepping_time},
+                            {"steps", r.time_stepping_steps},
+                            {"reason", r.time_stepping_windows > 0 ? json(r.time_stepping_reason) : json(nullptr)}};
     j["impacts"] = r.impacts;
   }
   j["max_abs_energy_change"] = r.max_abs_energy_change;
@@ -133,7 +137,8 @@ json assembly_result_json(const Assembly& a, const GroundMotion& g, const Assemb
       if (k == kAsmCollapse1) n += r.event_counts[kAsmCollapse2];
       counts[name] = n;
     }
-  if (r.event_counts[kAsmCollapse2] && !r.event_counts[kAsmCollapse1]) counts["failure"] = r.event_counts[kAsmCollapse2];
+  if (r.event_counts[kAsmCollapse2] && !r.event_counts[kAsmCollapse1])
+    counts["failure"] = r.event_counts[kAsmCollapse2];
   j["event_counts"] = counts;
   j["events_total"] = r.events_total;
   json ev = json::array();

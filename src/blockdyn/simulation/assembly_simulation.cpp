@@ -11,6 +11,7 @@
 #include "blockdyn/simulation/assembly_columns.hpp"
 #include "blockdyn/simulation/moreau_jean_run.hpp"
 #include "blockdyn/simulation/observer.hpp"
+#include "blockdyn/simulation/rigid_assembly_run.hpp"
 #include "blockdyn/simulation/run.hpp"
 #include "blockdyn/simulation/trajectory_rows.hpp"
 
@@ -77,7 +78,7 @@ class AssemblyRecorder final : public Observer<M> {
     if (e.kind == kAsmBreakpoint) return true;
     ++r_.event_counts[e.kind];
     ++r_.events_total;
-    if (e.kind == kAsmClose && e.z != e.z_before) ++r_.impacts;
+    if (e.kind == kAsmImpact) ++r_.impacts;
     AssemblyEventRecord rec;
     rec.t = e.t;
     rec.kind = assembly_event_name(e.kind);
@@ -209,14 +210,29 @@ class AssemblyProbe final : public Observer<M> {
     return true;
   }
   bool on_event(const M& m, const Event& e) override {
+    // The rigid law's impact and exit from rest change several points at once (the old pivot
+    // lifts as the new one lands): one probe event per point that changed.
+    if (e.kind == kAsmImpact || (e.index < 0 && e.kind != kAsmBreakpoint)) {
+      for (int p = 0; p < 2 * m.interfaces(); ++p) {
+        const bool was = is_closed(e.from.point[p]), is = is_closed(e.to.point[p]);
+        if (e.kind == kAsmImpact && p == e.index) {
+          // The hitting corner: closes, and leaves again at once if it bounced (restitution).
+          contact_event(m, e, p, ProbeEvent::Close);
+          if (!is) contact_event(m, e, p, ProbeEvent::Open);
+          continue;
+        }
+        if (was != is) contact_event(m, e, p, is ? ProbeEvent::Close : ProbeEvent::Open);
+      }
+      return true;
+    }
     ProbeEvent pe;
     pe.t = e.t;
     const int idx = event_index(e);
     if (e.kind == kAsmWZero) {
       pe.kind = ProbeEvent::Passage;
       pe.block = (idx - M::ev_wzero(0)) % Cap;
-    } else if ((e.kind == kAsmClose || e.kind == kAsmOpen) && idx < M::ev_wzero(0)) {
-      pe.kind = e.kind == kAsmClose ? ProbeEvent::Close : ProbeEvent::Open;
+    } else if ((e.kind == kAsmClose || e.kind == kAsmImpact || e.kind == kAsmOpen) && idx < M::ev_wzero(0)) {
+      pe.kind = e.kind == kAsmOpen ? ProbeEvent::Open : ProbeEvent::Close;
       pe.block = m.assembly().interfaces[(idx % M::kPoints) / 2].upper;
       pe.side = (idx % M::kPoints) % 2 == 0 ? -1 : 1;
     } else {
@@ -231,6 +247,17 @@ class AssemblyProbe final : public Observer<M> {
   void on_finish(const M&, double t, const Mode&, const State&) override { p_.finish(t); }
 
  private:
+  void contact_event(const M& m, const Event& e, int p, ProbeEvent::Kind kind) {
+    ProbeEvent pe;
+    pe.t = e.t;
+    pe.kind = kind;
+    pe.block = m.assembly().interfaces[p / 2].upper;
+    pe.side = p % 2 == 0 ? -1 : 1;
+    pe.theta = e.z[M::ix(pe.block) + 2];
+    pe.omega_before = e.z_before[M::iv(pe.block) + 2];
+    pe.omega_after = e.z[M::iv(pe.block) + 2];
+    p_.event(pe);
+  }
   static void fill(const M& m, const State& z, RunProbe::BlockState* s) {
     for (int b = 0; b < m.blocks(); ++b)
       s[b] = {z[M::ix(b)], z[M::ix(b) + 1], z[M::ix(b) + 2], z[M::iv(b)], z[M::iv(b) + 1], z[M::iv(b) + 2]};
@@ -273,7 +300,20 @@ AssemblyResult run(const Assembly& a, const GroundMotion& g, const AssemblyRunOp
     probe_obs = std::make_unique<AssemblyProbe<M>>(*probe);
     fan.add(probe_obs.get());
   }
-  const RunOutcome<M> out = run_model(m, md, z, 0.0, o.t_end, o.integrator, fan);
+  RunOutcome<M> out;
+  if constexpr (requires { m.wants_time_stepping(); }) {
+    TimeSteppingWindows w;
+    out = run_rigid_assembly(m, md, z, o, fan, w);
+    r.time_stepping_windows = w.count;
+    r.time_stepping_time = w.time;
+    r.time_stepping_steps = w.steps;
+    r.time_stepping_reason = w.first;
+    if (w.count > 0 && r.note.empty())
+      r.note = std::to_string(w.count) + " window(s), " + std::to_string(w.time) +
+               " s in all, integrated by Moreau-Jean time-stepping (h = " + std::to_string(o.step) + " s): " + w.first;
+  } else {
+    out = run_model(m, md, z, 0.0, o.t_end, o.integrator, fan);
+  }
   r.integrator_status = to_string(out.status);
   r.t_final = out.t;
   if (out.status != RunStatus::ReachedEnd && out.status != RunStatus::ModelStop) {
@@ -302,7 +342,8 @@ AssemblyResult run(const Assembly& a, const GroundMotion& g, const AssemblyRunOp
   r.rhs_evals = out.stats.rhs_evals;
   if (r.collapse_mode)
     r.motion = "collapse";
-  else if (r.event_counts[kAsmOpen] > 0 || r.event_counts[kAsmSlip] > 0 || r.event_counts[kAsmClose] > 0)
+  else if (r.event_counts[kAsmOpen] > 0 || r.event_counts[kAsmSlip] > 0 || r.event_counts[kAsmClose] > 0 ||
+           r.event_counts[kAsmImpact] > 0)
     r.motion = "stable";
   else
     r.motion = "rest";

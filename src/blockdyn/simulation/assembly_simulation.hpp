@@ -44,7 +44,7 @@ struct AssemblyRunOptions {
   bool record_events = true;      // keep the event list (counts are always kept)
   long max_events = 1'000'000;    // kept in the list; further events are counted only
   double step = 1e-4;             // rigid law: Moreau-Jean time step (s)
-  AssemblyScheme scheme = AssemblyScheme::TimeStepping;  // rigid law only
+  AssemblyScheme scheme = AssemblyScheme::EventDriven;  // rigid law only
   // Called with every event as it happens, whatever record_events and max_events say: a caller
   // that streams the events (the command line's JSON spool) holds O(1) memory on a run of any length.
   std::function<void(const AssemblyEventRecord&)> on_event;
@@ -93,6 +93,11 @@ struct AssemblyResult {
   // Rigid law: how the steps' contact problems were solved (direct active-set solves, Gauss-Seidel
   // for degenerate ones and its sweeps).
   long direct_solves = 0, gauss_seidel_solves = 0, gauss_seidel_sweeps = 0;
+  // Rigid law, event-driven: the windows handed to time-stepping (count, total duration in s,
+  // their steps) and why the first was needed.
+  long time_stepping_windows = 0, time_stepping_steps = 0;
+  double time_stepping_time = 0;
+  std::string time_stepping_reason;
 };
 
 // One run. `trajectory` (optional) receives the trajectory table; `probe` (optional) the samples, passages of

@@ -19,6 +19,8 @@ const char* assembly_event_name(int kind) {
     case kAsmInvalid: return "invalid";
     case kAsmBreakpoint: return "breakpoint";
     case kAsmImpact: return "impact";
+    case kAsmTimeStepping: return "time_stepping";
+    case kAsmEventDriven: return "event_driven";
   }
   return "?";
 }

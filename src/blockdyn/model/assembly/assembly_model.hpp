@@ -31,7 +31,9 @@ namespace blockdyn {
 // Kinds of assembly events reported to observers.
 enum AssemblyEventKind : int {
   kAsmOpen = 1, kAsmClose, kAsmSlip, kAsmStick, kAsmEndSwitch, kAsmWZero, kAsmCollapse1, kAsmCollapse2,
-  kAsmInvalid, kAsmBreakpoint, kAsmImpact
+  kAsmInvalid, kAsmBreakpoint, kAsmImpact,
+  // The rigid law, event-driven: a window handed to time-stepping, and the return from it.
+  kAsmTimeStepping, kAsmEventDriven
 };
 const char* assembly_event_name(int kind);
 

@@ -151,9 +151,24 @@ struct ContactSystem {
         A(k, j) = s;
       }
     }
-    Eigen::CompleteOrthogonalDecomposition<Mat> cod(A);
-    cod.setThreshold(1e-11);
-    const VecU sol = cod.solve(b);
+    // LU where the constraints are independent (the usual case: cheap); the least-norm solution of
+    // a rank-revealing decomposition where they are not (a face's two closed ends with redundant
+    // neighbours, as at rest).
+    Eigen::PartialPivLU<Mat> lu(A);
+    double lo = INFINITY, hi = 0.0;
+    for (int k = 0; k < n; ++k) {
+      const double d = std::fabs(lu.matrixLU()(k, k));
+      lo = std::fmin(lo, d);
+      hi = std::fmax(hi, d);
+    }
+    VecU sol;
+    if (lo > 1e-10 * hi) {
+      sol = lu.solve(b);
+    } else {
+      Eigen::CompleteOrthogonalDecomposition<Mat> cod(A);
+      cod.setThreshold(1e-11);
+      sol = cod.solve(b);
+    }
     for (int k = 0; k < n; ++k) {
       x[k] = sol(k);
       if (!std::isfinite(x[k])) return false;
@@ -703,15 +718,16 @@ Transition<typename RigidAssemblyModel<Cap>::Mode> RigidAssemblyModel<Cap>::tran
   Transition<Mode> tr;
   tr.next = m;
   Mode& n = tr.next;
+  auto hand_over = [&](const std::string& why) {
+    tr.stop = true;
+    tr.kind = kAsmTimeStepping;
+    handover_ = true;
+    problem_ = why;
+  };
   auto reselect = [&] {
     project_gaps(n, z);
-    if (!select_mode(t, n, z)) {
-      tr.stop = true;
-      tr.kind = kAsmInvalid;
-      problem_ = "no contact mode is consistent at t = " + std::to_string(t) +
-                 " s (the rigid contact problem at acceleration level has no solution: friction makes it "
-                 "inconsistent); --scheme time-stepping integrates it at the velocity level";
-    }
+    if (!select_mode(t, n, z))
+      hand_over("no contact mode consistent (the acceleration-level contact problem has no solution)");
   };
   if (m.rest) {
     const auto a = ground_acceleration(t);
@@ -743,12 +759,10 @@ Transition<typename RigidAssemblyModel<Cap>::Mode> RigidAssemblyModel<Cap>::tran
       n.point[p] = PointState::Open;
       tr.kind = kAsmOpen;
     } else {
-      tr.kind = kAsmClose;
       n.point[p] = PointState::Stick;
+      const State before = z;
       if (!impact(t, n, z)) {
-        tr.stop = true;
-        tr.kind = kAsmInvalid;
-        problem_ = "the impact problem at t = " + std::to_string(t) + " s has no settled solution";
+        hand_over("an impact problem without a settled solution");
         return tr;
       }
       // An accumulation of impacts that does not settle (a chattering contact).
@@ -756,14 +770,14 @@ Transition<typename RigidAssemblyModel<Cap>::Mode> RigidAssemblyModel<Cap>::tran
       const double oldest = impact_times_[slot];
       impact_times_[slot] = t;
       if (impacts_ > kAccumulationImpacts && t - oldest < kAccumulationWindow * std::sqrt(len_ / g_)) {
-        tr.stop = true;
-        tr.kind = kAsmInvalid;
-        problem_ = std::to_string(kAccumulationImpacts) + " impacts between t = " + std::to_string(oldest) + " and " +
-                   std::to_string(t) +
-                   " s without settling (a chattering contact); --scheme time-stepping integrates through it";
+        hand_over("impacts accumulating without settling (a chattering contact)");
         return tr;
       }
-      if (!is_closed(n.point[p]) && !is_closed(n.point[p ^ 1])) tr.kind = kAsmClose;
+      // An impact when the velocities jumped; a contact closing without approach (grazing) otherwise.
+      tr.kind = kAsmClose;
+      for (int b = 0; b < nb_; ++b)
+        for (int k = 0; k < 3; ++k)
+          if (z[iv(b) + k] != before[iv(b) + k]) tr.kind = kAsmImpact;
     }
     reselect();
     if (!tr.stop) try_rest(t, n, z);
@@ -809,6 +823,22 @@ Transition<typename RigidAssemblyModel<Cap>::Mode> RigidAssemblyModel<Cap>::tran
 }
 
 template <int Cap>
+std::optional<typename RigidAssemblyModel<Cap>::Mode> RigidAssemblyModel<Cap>::resume(double t, State& z,
+                                                                                      Mode guess) const {
+  handover_ = false;
+  problem_.clear();
+  impacts_ = 0;
+  guess.rest = false;
+  for (int b = 0; b < nb_; ++b) guess.side[b] = z[ix(b) + 2] < 0.0 ? -1 : 1;
+  State trial = z;
+  project_gaps(guess, trial);
+  if (!select_mode(t, guess, trial)) return std::nullopt;
+  z = trial;
+  try_rest(t, guess, z);
+  return guess;
+}
+
+template <int Cap>
 typename RigidAssemblyModel<Cap>::State RigidAssemblyModel<Cap>::abs_tol_scale() const {
   State s;
   s.fill(1.0);
@@ -842,6 +872,14 @@ typename RigidAssemblyModel<Cap>::Mode RigidAssemblyModel<Cap>::initial_mode(con
   for (int b = 0; b < nb_; ++b) m.side[b] = z[ix(b) + 2] < 0.0 ? -1 : 1;
   State zz = z;
   if (try_rest(0.0, m, zz)) return m;
+  // Resting on every face but not held by it at t = 0 (a load beyond the static limit from the
+  // start): the sticking mode, whose failing conditions fire at t = 0 as events, so the run
+  // reports how it left rest.
+  bool touching = true, still = true;
+  for (int p = 0; p < 2 * ni_; ++p) touching &= is_closed(m.point[p]);
+  for (int b = 0; b < nb_; ++b)
+    for (int k = 0; k < 3; ++k) still &= z[iv(b) + k] == 0.0;
+  if (touching && still) return m;
   if (!select_mode(0.0, m, z)) throw std::invalid_argument("initial state: no consistent contact mode");
   return m;
 }

@@ -82,6 +82,7 @@ class RigidAssemblyModel {
   int blocks() const { return geo_.blocks(); }
   int interfaces() const { return geo_.interfaces(); }
   const Assembly& assembly() const { return geo_.assembly(); }
+  const GroundMotion& ground() const { return ground_; }
   double rotation_limit(int b) const { return geo_.rotation_limit(b); }
   std::array<double, 2> ground_acceleration(double t) const { return geo_.ground_acceleration(t); }
   void geometry(const State& z, Geometry& g) const { geo_.geometry(z, g); }
@@ -100,9 +101,15 @@ class RigidAssemblyModel {
   Mode initial_mode(const State& z) const;
   std::optional<std::string> validity_problem(const Mode& m, const State& z) const;
 
-  // Why the last transition stopped the run (an accumulation of impacts that does not settle, a
-  // contact problem without a consistent mode); empty otherwise.
+  // Why the last transition stopped the run; empty otherwise.
   const std::string& problem() const { return problem_; }
+  // Whether the run stopped to hand a window to time-stepping (an accumulation of impacts that
+  // does not settle, a contact problem without a consistent mode), and why.
+  bool wants_time_stepping() const { return handover_; }
+  // Back from time-stepping at (t, z): the mode that the contact states `guess` (from the
+  // time-stepping's last step) settle into, the closed points put on their faces; nullopt if no
+  // mode is consistent there yet.
+  std::optional<Mode> resume(double t, State& z, Mode guess) const;
   // Impacts this many within kAccumulationWindow sqrt(L / g) that do not settle stop the run.
   static constexpr int kAccumulationImpacts = 256;
   static constexpr double kAccumulationWindow = 1e-2;
@@ -166,6 +173,7 @@ class RigidAssemblyModel {
   // Why the run stopped outside the scheme's reach (empty: it did not), and the recent impacts'
   // times (an accumulation that does not settle).
   mutable std::string problem_;
+  mutable bool handover_ = false;
   mutable std::array<double, 256> impact_times_{};
   mutable long impacts_ = 0;
   mutable double exit_pos_ = NAN, exit_neg_ = NAN;

@@ -1,0 +1,230 @@
+// SPDX-License-Identifier: Apache-2.0
+#include "blockdyn/simulation/rigid_assembly_run.hpp"
+
+#include <cmath>
+#include <vector>
+
+#include "blockdyn/model/assembly/moreau_jean.hpp"
+
+namespace blockdyn {
+
+namespace {
+
+template <int Cap>
+class TimeSteppingWindow {
+ public:
+  using M = RigidAssemblyModel<Cap>;
+  using Mode = typename M::Mode;
+  using State = typename M::State;
+  using Event = EventInfo<Mode, M::kDim>;
+
+  TimeSteppingWindow(const M& m, const Assembly& a, const GroundMotion& g, double h, Observer<M>& obs)
+      : m_(m), obs_(obs), mj_(a, g, options(h)), nb_(m.blocks()), ni_(m.interfaces()), q_(3 * nb_), v_(3 * nb_) {}
+
+  // Steps from (t, z) until the contacts keep their states for kQuietSteps steps (then true: the
+  // events may take over) or the run ends (t_end, a failure: false, `stopped` says which).
+  bool run(double& t, Mode& mode, State& z, double t_end, long& steps, bool& stopped) {
+    for (int b = 0; b < nb_; ++b)
+      for (int k = 0; k < 3; ++k) q_[3 * b + k] = z[M::ix(b) + k], v_[3 * b + k] = z[M::iv(b) + k];
+    int quiet = 0;
+    stopped = false;
+    while (t < t_end) {
+      const State z0 = z;
+      const Mode before = mode;
+      if (!mj_.step(t, q_, v_)) {
+        stopped = true;
+        return false;
+      }
+      ++steps;
+      const double t1 = t + mj_.h();
+      for (int b = 0; b < nb_; ++b)
+        for (int k = 0; k < 3; ++k) z[M::ix(b) + k] = q_[3 * b + k], z[M::iv(b) + k] = v_[3 * b + k];
+      z[M::kWGround] += mj_.work_ground;
+      z[M::kWNormal] += mj_.work_normal;
+      z[M::kWFriction] += mj_.work_tangential;
+      segment(t, t1, z0, z, before);
+      const bool changed = contact_events(t1, before, mode, z0, z);
+      if (!rotation_events(t1, mode, z) || !failure_events(t1, mode, z)) {
+        t = t1;
+        stopped = true;
+        return false;
+      }
+      t = t1;
+      quiet = changed ? 0 : quiet + 1;
+      if (quiet >= kQuietSteps) return true;
+    }
+    return false;
+  }
+
+ private:
+  static MoreauJeanOptions options(double h) {
+    MoreauJeanOptions mo;
+    mo.h = h;
+    return mo;
+  }
+
+  void segment(double t0, double t1, const State& z0, const State& z1, const Mode& mode) {
+    State k0{}, k1{};
+    const double h = t1 - t0;
+    for (int b = 0; b < nb_; ++b)
+      for (int k = 0; k < 3; ++k) {
+        k0[M::ix(b) + k] = z0[M::iv(b) + k];
+        k1[M::ix(b) + k] = z1[M::iv(b) + k];
+        k0[M::iv(b) + k] = k1[M::iv(b) + k] = (z1[M::iv(b) + k] - z0[M::iv(b) + k]) / h;
+      }
+    for (std::size_t w : {M::kWGround, M::kWNormal, M::kWFriction, M::kWSwitch}) k0[w] = k1[w] = (z1[w] - z0[w]) / h;
+    seg_.set_hermite(t0, h, 4, z0, z1, k0, k1);
+    seg_.end_state = &z1;
+    obs_.on_segment(m_, seg_, t0, t1, mode);
+    seg_.end_state = nullptr;
+  }
+
+  void emit(double t, const State& z_before, const State& z, const Mode& from, const Mode& to, int index, int kind,
+            bool stop = false) {
+    Event e{t, z, z_before, from, to, index, kind, stop};
+    obs_.on_event(m_, e);
+  }
+
+  // The contact ends' states after the step; an event per change (an impact carries the step's
+  // velocity jump: the state before is the step's start).
+  bool contact_events(double t1, const Mode& before, Mode& mode, const State& z0, const State& z) {
+    bool changed = false;
+    const auto& ends = mj_.ends();
+    for (int p = 0; p < 2 * ni_; ++p) {
+      const auto& e = ends[std::size_t(p)];
+      PointState s = PointState::Open;
+      if (e.active && e.pushing)
+        s = e.slipping ? (e.slip > 0 ? PointState::SlipPos : PointState::SlipNeg) : PointState::Stick;
+      const PointState was = mode.point[p];
+      Mode next = mode;
+      next.point[p] = s;
+      next.owner[p] = std::uint8_t(e.owner);
+      if (s == was) {
+        mode = next;
+        continue;
+      }
+      changed = true;
+      int kind = kAsmStick;
+      if (!is_closed(was))
+        kind = kAsmClose;
+      else if (!is_closed(s))
+        kind = kAsmOpen;
+      else if (slip_sign(s) != 0)
+        kind = kAsmSlip;
+      const bool impact = kind == kAsmClose && e.un_before < 0.0;
+      if (impact) kind = kAsmImpact;
+      emit(t1, impact ? z0 : z, z, mode, next,
+           kind == kAsmSlip || kind == kAsmStick ? M::ev_tangent(p) : M::ev_normal(p), kind);
+      mode = next;
+    }
+    (void)before;
+    return changed;
+  }
+
+  bool rotation_events(double t1, Mode& mode, const State& z) {
+    for (int b = 0; b < nb_; ++b) {
+      if (mode.side[b] * z[M::ix(b) + 2] >= -1e-12) continue;
+      Mode next = mode;
+      next.side[b] = std::int8_t(-mode.side[b]);
+      emit(t1, z, z, mode, next, M::ev_wzero(b), kAsmWZero);
+      mode = next;
+    }
+    return true;
+  }
+
+  bool failure_events(double t1, const Mode& mode, const State& z) {
+    for (int b = 0; b < nb_; ++b)
+      if (std::fabs(z[M::ix(b) + 2]) >= m_.rotation_limit(b)) {
+        emit(t1, z, z, mode, mode, M::ev_collapse(b), kAsmCollapse1, true);
+        return false;
+      }
+    for (int i = 0; i < ni_; ++i)
+      if (m_.assembly().interfaces[i].lower >= 0 && m_.overlap_of(z, i) <= m_.assembly().min_bearing) {
+        emit(t1, z, z, mode, mode, M::ev_bearing(i), kAsmCollapse2, true);
+        return false;
+      }
+    return true;
+  }
+
+  const M& m_;
+  Observer<M>& obs_;
+  MoreauJean mj_;
+  int nb_, ni_;
+  std::vector<double> q_, v_;
+  DenseSegment<M::kDim> seg_;
+};
+
+}  // namespace
+
+template <int Cap>
+RunOutcome<RigidAssemblyModel<Cap>> run_rigid_assembly(const RigidAssemblyModel<Cap>& m,
+                                                       typename RigidAssemblyModel<Cap>::Mode mode,
+                                                       typename RigidAssemblyModel<Cap>::State z,
+                                                       const AssemblyRunOptions& o,
+                                                       Observer<RigidAssemblyModel<Cap>>& obs,
+                                                       TimeSteppingWindows& windows) {
+  using M = RigidAssemblyModel<Cap>;
+  struct Bridge {
+    const M& m;
+    Observer<M>& o;
+    bool on_step(const DenseSegment<M::kDim>& s, double a, double b, const typename M::Mode& md) {
+      return o.on_segment(m, s, a, b, md);
+    }
+    bool on_event(const EventInfo<typename M::Mode, M::kDim>& e) { return o.on_event(m, e); }
+    bool needs_dense() const { return o.needs_dense(); }
+  } bridge{m, obs};
+  obs.on_start(m, 0.0, mode, z);
+  RunOutcome<M> out;
+  std::unique_ptr<TimeSteppingWindow<Cap>> window;
+  while (true) {
+    HybridIntegrator<M> integ(m, o.integrator);
+    out.status = integ.run(out.t, o.t_end, mode, z, bridge);
+    const StepperStats& st = integ.stats();
+    out.stats.accepted += st.accepted;
+    out.stats.rejected += st.rejected;
+    out.stats.rhs_evals += st.rhs_evals;
+    // Events that repeat at one instant (the integrator's chatter guard) are a chattering
+    // contact too.
+    const bool chatter = out.status == RunStatus::Chatter;
+    if (!chatter && (out.status != RunStatus::ModelStop || !m.wants_time_stepping())) break;
+    // A window of time-stepping, until the contacts are quiet and a consistent mode exists.
+    if (windows.count++ == 0) windows.first = chatter ? "contact events repeating at one instant" : m.problem();
+    if (chatter) {
+      EventInfo<typename M::Mode, M::kDim> e{out.t, z, z, mode, mode, 0, kAsmTimeStepping, false};
+      obs.on_event(m, e);
+    }
+    if (!window) window = std::make_unique<TimeSteppingWindow<Cap>>(m, m.assembly(), m.ground(), o.step, obs);
+    const double t_start = out.t;
+    bool stopped = false, back = false;
+    while (!back) {
+      if (!window->run(out.t, mode, z, o.t_end, windows.steps, stopped)) break;
+      if (const auto resumed = m.resume(out.t, z, mode)) {
+        EventInfo<typename M::Mode, M::kDim> e{out.t, z, z, mode, *resumed, 0, kAsmEventDriven, false};
+        mode = *resumed;
+        obs.on_event(m, e);
+        back = true;
+      }
+    }
+    windows.time += out.t - t_start;
+    if (!back) {
+      out.status = stopped ? RunStatus::ModelStop : RunStatus::ReachedEnd;
+      break;
+    }
+  }
+  out.mode = mode;
+  out.z = z;
+  obs.on_finish(m, out.t, mode, z);
+  return out;
+}
+
+template RunOutcome<RigidAssemblyModel<1>> run_rigid_assembly(const RigidAssemblyModel<1>&, RigidAssemblyModel<1>::Mode,
+                                                              RigidAssemblyModel<1>::State, const AssemblyRunOptions&,
+                                                              Observer<RigidAssemblyModel<1>>&, TimeSteppingWindows&);
+template RunOutcome<RigidAssemblyModel<3>> run_rigid_assembly(const RigidAssemblyModel<3>&, RigidAssemblyModel<3>::Mode,
+                                                              RigidAssemblyModel<3>::State, const AssemblyRunOptions&,
+                                                              Observer<RigidAssemblyModel<3>>&, TimeSteppingWindows&);
+template RunOutcome<RigidAssemblyModel<8>> run_rigid_assembly(const RigidAssemblyModel<8>&, RigidAssemblyModel<8>::Mode,
+                                                              RigidAssemblyModel<8>::State, const AssemblyRunOptions&,
+                                                              Observer<RigidAssemblyModel<8>>&, TimeSteppingWindows&);
+
+}  // namespace blockdyn

@@ -1,0 +1,37 @@
+// SPDX-License-Identifier: Apache-2.0
+#pragma once
+// The rigid law's event-driven run (model/assembly/rigid_assembly_model.hpp) with its
+// time-stepping windows: where the event-driven scheme cannot go on (impacts that accumulate
+// without settling, a contact problem with no consistent mode: friction chatter), the run hands
+// over to Moreau-Jean time-stepping (model/assembly/moreau_jean.hpp) from the same state, and
+// takes the events back once the contacts have kept their states for kQuietSteps steps. Both
+// strategies feed the same observers: a time-stepping step is a segment (the cubic Hermite
+// interpolant of its end states: exact at the step ends, as the scheme is), its contact changes
+// are events at the step's end. The windows are reported (events `time_stepping` and
+// `event_driven`, their count and duration).
+#include "blockdyn/model/assembly/rigid_assembly_model.hpp"
+#include "blockdyn/simulation/assembly_simulation.hpp"
+#include "blockdyn/simulation/observer.hpp"
+#include "blockdyn/simulation/run.hpp"
+
+namespace blockdyn {
+
+struct TimeSteppingWindows {
+  long count = 0;     // windows handed to time-stepping
+  double time = 0;    // their total duration (s)
+  long steps = 0;     // their steps
+  std::string first;  // why the first one was needed
+};
+
+// Time-stepping steps without a contact change before the events take over again.
+inline constexpr int kQuietSteps = 50;
+
+template <int Cap>
+RunOutcome<RigidAssemblyModel<Cap>> run_rigid_assembly(const RigidAssemblyModel<Cap>& m,
+                                                       typename RigidAssemblyModel<Cap>::Mode mode,
+                                                       typename RigidAssemblyModel<Cap>::State z,
+                                                       const AssemblyRunOptions& o,
+                                                       Observer<RigidAssemblyModel<Cap>>& obs,
+                                                       TimeSteppingWindows& windows);
+
+}  // namespace blockdyn
