@@ -144,6 +144,32 @@ TEST(CliAssembly, KineticFrictionAngle) {
   }
 }
 
+TEST(CliAssembly, RigidSchemes) {
+  // Event-driven by default; time-stepping on request; seed 001's 5-DOF restriction runs on
+  // time-stepping (the only scheme that integrates it); --scheme only with the rigid law.
+  TmpDir d("asm_schemes");
+  const std::vector<std::string> base{"assembly", "--preset", "trilith", "--contact", "rigid",
+                                      "--tilt",   "0.05",     "--t-end", "0.5",       "--json"};
+  auto r = run_cli(base, d.path);
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(json::parse(r.out)["scheme"], "event-driven");
+  EXPECT_EQ(json::parse(r.out)["time_stepping"]["windows"], 0);
+  r = run_cli(base + std::vector<std::string>{"--scheme", "time-stepping"}, d.path);
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(json::parse(r.out)["scheme"], "time-stepping");
+  r = run_cli(base + std::vector<std::string>{"--columns-rock-only"}, d.path);
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(json::parse(r.out)["scheme"], "time-stepping");
+  r = run_cli(base + std::vector<std::string>{"--columns-rock-only", "--scheme", "event-driven"}, d.path);
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("--columns-rock-only"), std::string::npos) << r.err;
+  r = run_cli({"assembly", "--preset", "block", "--scheme", "event-driven", "--t-end", "0.1"}, d.path);
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("--scheme belongs to --contact rigid"), std::string::npos) << r.err;
+  r = run_cli(base + std::vector<std::string>{"--scheme", "implicit"}, d.path);
+  EXPECT_EQ(r.code, 2);
+}
+
 TEST(CliAssembly, BadInputIsAUsageError) {
   TmpDir d("asm_bad");
   std::ofstream(d.path + "/float.toml") << "[[block]]\nwidth = 0.1\nheight = 0.4\nmass = 5\ny = 0.25\n"

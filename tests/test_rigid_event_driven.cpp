@@ -157,3 +157,27 @@ TEST(RigidEventDriven, ForcedTrilithKeepsItsEnergyBalanceAndSettlesWhereTheForci
   }
   EXPECT_LT(s.max_abs_energy_error, 1e-8 * scale);
 }
+
+TEST(RigidEventDriven, ChatteringContactsAreHandedToTimeSteppingAndBack) {
+  // A trilith with friction (20 deg) at beta 3, omega 4: the lintel's contacts chatter at times;
+  // those windows run on Moreau-Jean through the same observers (energy balance, events), are
+  // reported, and the events take over again.
+  PresetOptions o = rigid_preset();
+  o.ground_law.mu_s = o.ground_law.mu_k = o.block_law.mu_s = o.block_law.mu_k = std::tan(20 * M_PI / 180);
+  const Assembly a = make_preset("trilith", o);
+  const double alpha = std::atan(0.25), p = 5.4535;
+  GroundMotion g = harmonic(3 * alpha, 4 * p / (2 * M_PI));
+  g.horizontal.phase = 0.5 * M_PI;
+  AssemblyRunOptions run = event_driven(20);
+  const AssemblyResult r = simulate_assembly(a, g, run);
+  EXPECT_NE(r.status, "invalid") << r.note;
+  ASSERT_GT(r.time_stepping_windows, 0);
+  EXPECT_FALSE(r.time_stepping_reason.empty());
+  EXPECT_NE(r.note.find("Moreau-Jean"), std::string::npos);
+  EXPECT_EQ(r.event_counts[kAsmTimeStepping], r.time_stepping_windows);
+  EXPECT_GE(r.event_counts[kAsmEventDriven], r.time_stepping_windows - 1);
+  EXPECT_GT(r.time_stepping_steps, 0);
+  EXPECT_NEAR(r.time_stepping_time, r.time_stepping_steps * run.step, 1e-9);
+  const double scale = a.blocks[2].mass * 9.81 * a.blocks[0].height;
+  EXPECT_LT(r.max_abs_energy_error, 1e-6 * scale);
+}

@@ -72,6 +72,8 @@ void check_values(const Settings& s, const Values& v) {
       if (s.has(n))
         throw Invalid(std::string("--") + n + " belongs to --scheme event-driven (time-stepping has --step)");
   if (!v.rigid && s.has("step")) throw Invalid("--step belongs to --contact rigid");
+  if (s.flag("columns-rock-only") && scheme == "event-driven" && s.has("scheme"))
+    throw Invalid("--columns-rock-only (seed 001's 5-DOF restriction) is integrated by --scheme time-stepping only");
   require_in_range("collapse-rotation", v.collapse_rotation, 0, 10, false);
   require_in_range("min-bearing", v.min_bearing, 0, 1e3);
   require_in_range("g", v.g, 0, 1e3, false);

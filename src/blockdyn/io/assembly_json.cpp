@@ -116,9 +116,9 @@ json assembly_result_json(const Assembly& a, const GroundMotion& g, const Assemb
                                        r.work_friction - r.work_switch}};
   j["max_abs_energy_error"] = r.max_abs_energy_error;
   if (a.contact == "rigid") {
-    j["scheme"] = to_string(o.scheme);
+    j["scheme"] = to_string(effective_scheme(a, o));
     j["step"] = o.step;
-    if (o.scheme == AssemblyScheme::EventDriven)
+    if (effective_scheme(a, o) == AssemblyScheme::EventDriven)
       j["time_stepping"] = {{"windows", r.time_stepping_windows},
                             {"time", r.time_stepping_time},
                             {"steps", r.time_stepping_steps},

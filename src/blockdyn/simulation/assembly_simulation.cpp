@@ -19,6 +19,10 @@ namespace blockdyn {
 
 const char* to_string(AssemblyScheme s) { return s == AssemblyScheme::EventDriven ? "event-driven" : "time-stepping"; }
 
+AssemblyScheme effective_scheme(const Assembly& a, const AssemblyRunOptions& o) {
+  return a.rock_only_on_ground ? AssemblyScheme::TimeStepping : o.scheme;
+}
+
 void validate(const AssemblyRunOptions& o) {
   if (!(o.t_end > 0 && o.t_end <= 1e7)) throw std::invalid_argument("t-end must be in (0, 1e7] s");
   if (!(o.integrator.rtol >= 1e-14 && o.integrator.rtol <= 1e-2))
@@ -359,7 +363,8 @@ AssemblyResult simulate_assembly(const Assembly& a, const GroundMotion& g, const
   if (probe && a.blocks.size() > std::size_t(RunProbe::kMaxBlocks))
     throw std::invalid_argument("a probed run takes at most " + std::to_string(RunProbe::kMaxBlocks) + " blocks");
   const bool rigid = a.contact == "rigid";
-  if (rigid && o.scheme == AssemblyScheme::TimeStepping) return run_moreau_jean(a, g, o, trajectory, probe);
+  if (rigid && effective_scheme(a, o) == AssemblyScheme::TimeStepping)
+    return run_moreau_jean(a, g, o, trajectory, probe);
   const int n = int(a.blocks.size());
   const int cap = (n == 1 && a.interfaces.size() <= 2) ? 1 : (n <= 3 && a.interfaces.size() <= 4) ? 3 : 8;
   switch (cap) {

@@ -50,6 +50,9 @@ struct AssemblyRunOptions {
   std::function<void(const AssemblyEventRecord&)> on_event;
 };
 void validate(const AssemblyRunOptions& o);
+// The scheme a rigid assembly is run with: the options', except seed 001's 5-DOF restriction
+// (rock_only_on_ground), which only time-stepping integrates.
+AssemblyScheme effective_scheme(const Assembly& a, const AssemblyRunOptions& o);
 
 struct AssemblyBlockSummary {
   std::string name;

@@ -85,7 +85,10 @@ ForcedModel forced_assembly_model(const Assembly& a, nlohmann::ordered_json desc
   fm.description = std::move(description);
   fm.overturn_rule = "collapse mode 1 (rotation) or 2 (bearing)";
   fm.tolerances = to_json(AssemblyRunOptions{}.integrator);
-  if (a.contact == "rigid") fm.tolerances["moreau_jean_step_s"] = AssemblyRunOptions{}.step;
+  if (a.contact == "rigid") {
+    fm.tolerances["rigid_scheme"] = to_string(effective_scheme(a, AssemblyRunOptions{}));
+    fm.tolerances["moreau_jean_step_s"] = AssemblyRunOptions{}.step;
+  }
   fm.traced = [a](const GroundMotion& g, double t_end, RunProbe* probe) {
     AssemblyRunOptions ao;
     ao.t_end = t_end;

@@ -713,6 +713,48 @@ void RigidAssemblyModel<Cap>::project_gaps(const Mode& m, State& z) const {
 }
 
 template <int Cap>
+void RigidAssemblyModel<Cap>::project_velocities(const Mode& m, State& z) const {
+  // The closed points' normal velocities, and the sticking interfaces' slip velocities, to zero
+  // (the smallest kinetic-energy change, booked with the contacts' work): time-stepping leaves
+  // them at its own tolerance, and a constraint kept at a nonzero rate would do work.
+  Geometry geo;
+  geo_.geometry(z, geo);
+  std::array<PointRows, kPoints> r;
+  rows(z, geo, m, r);
+  constexpr int kMaxU = kPoints + kIfaces;
+  ContactSystem<kCoords, kMaxU> sys;
+  std::array<double, kCoords> inv_mass{};
+  for (int b = 0; b < nb_; ++b) {
+    inv_mass[3 * b] = inv_mass[3 * b + 1] = 1.0 / m_[b];
+    inv_mass[3 * b + 2] = 1.0 / I_[b];
+  }
+  auto add = [&](const PointRows& k, const std::array<double, 3>& u, const std::array<double, 3>& l, double rate) {
+    const int j = sys.add();
+    for (int c = 0; c < 3; ++c) {
+      sys.col[j][3 * k.upper + c] = sys.row[j][3 * k.upper + c] = u[c];
+      if (k.lower >= 0) sys.col[j][3 * k.lower + c] = sys.row[j][3 * k.lower + c] = l[c];
+    }
+    sys.rhs[j] = -rate;
+  };
+  std::array<bool, kIfaces> stuck{};
+  for (int p = 0; p < 2 * ni_; ++p) {
+    if (!is_closed(m.point[p])) continue;
+    add(r[p], r[p].nu, r[p].nl, r[p].vn);
+    if (m.point[p] == PointState::Stick && !stuck[p / 2]) {
+      stuck[p / 2] = true;
+      add(r[p], r[p].tu, r[p].tl, r[p].vt);
+    }
+  }
+  std::array<double, kMaxU> x{};
+  if (sys.n == 0 || !sys.solve(inv_mass, x)) return;
+  const Energy before = energy_terms(m, z);
+  for (int j = 0; j < sys.n; ++j)
+    for (int b = 0; b < nb_; ++b)
+      for (int k = 0; k < 3; ++k) z[iv(b) + k] += inv_mass[3 * b + k] * sys.col[j][3 * b + k] * x[j];
+  z[kWNormal] += energy_terms(m, z).total() - before.total();
+}
+
+template <int Cap>
 Transition<typename RigidAssemblyModel<Cap>::Mode> RigidAssemblyModel<Cap>::transition(double t, const Mode& m,
                                                                                        State& z, int event) const {
   Transition<Mode> tr;
@@ -806,8 +848,23 @@ Transition<typename RigidAssemblyModel<Cap>::Mode> RigidAssemblyModel<Cap>::tran
     return tr;
   }
   if (event < ev_valid(0)) {
-    n.owner[event - ev_owner(0)] ^= 1;
+    const int p = event - ev_owner(0);
+    n.owner[p] ^= 1;
     tr.kind = kAsmEndSwitch;
+    if (is_closed(n.point[p])) {
+      // The other block's corner takes the contact with its own normal velocity (a rotating face
+      // passing a corner): approaching, it strikes (an impact); leaving, the end opens.
+      Geometry geo;
+      geo_.geometry(z, geo);
+      std::array<PointRows, kPoints> r;
+      rows(z, geo, n, r);
+      if (r[p].vn > kTol * v_scale_) {
+        n.point[p] = PointState::Open;
+      } else if (r[p].vn < -kTol * v_scale_ && !impact(t, n, z)) {
+        hand_over("an impact problem without a settled solution");
+        return tr;
+      }
+    }
     reselect();
     return tr;
   }
@@ -832,6 +889,7 @@ std::optional<typename RigidAssemblyModel<Cap>::Mode> RigidAssemblyModel<Cap>::r
   for (int b = 0; b < nb_; ++b) guess.side[b] = z[ix(b) + 2] < 0.0 ? -1 : 1;
   State trial = z;
   project_gaps(guess, trial);
+  project_velocities(guess, trial);
   if (!select_mode(t, guess, trial)) return std::nullopt;
   z = trial;
   try_rest(t, guess, z);

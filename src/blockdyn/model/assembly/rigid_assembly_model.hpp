@@ -152,6 +152,7 @@ class RigidAssemblyModel {
   // The impact at (t, z): new velocities in z, work booked; the mode's closed set updated.
   bool impact(double t, Mode& m, State& z) const;
   void project_gaps(const Mode& m, State& z) const;
+  void project_velocities(const Mode& m, State& z) const;
   // Enter rest if every point touches, nothing moves and rest holds at t.
   bool try_rest(double t, Mode& m, State& z) const;
   Mode mechanism_mode(const Mode& m, const State& z, int direction) const;
