@@ -9,7 +9,6 @@
 #include "blockdyn/model/assembly/assembly_model.hpp"
 #include "blockdyn/model/assembly/rigid_assembly_model.hpp"
 #include "blockdyn/simulation/assembly_columns.hpp"
-#include "blockdyn/simulation/moreau_jean_run.hpp"
 #include "blockdyn/simulation/observer.hpp"
 #include "blockdyn/simulation/rigid_assembly_run.hpp"
 #include "blockdyn/simulation/run.hpp"
@@ -312,6 +311,10 @@ AssemblyResult run(const Assembly& a, const GroundMotion& g, const AssemblyRunOp
     r.time_stepping_time = w.time;
     r.time_stepping_steps = w.steps;
     r.time_stepping_reason = w.first;
+    r.direct_solves = w.direct;
+    r.gauss_seidel_solves = w.gauss_seidel;
+    r.gauss_seidel_sweeps = w.sweeps;
+    if (effective_scheme(a, o) == AssemblyScheme::TimeStepping) r.impacts = r.event_counts[kAsmImpact];
     if (w.count > 0 && r.note.empty())
       r.note = std::to_string(w.count) + " window(s), " + std::to_string(w.time) +
                " s in all, integrated by Moreau-Jean time-stepping (h = " + std::to_string(o.step) + " s): " + w.first;
@@ -363,8 +366,6 @@ AssemblyResult simulate_assembly(const Assembly& a, const GroundMotion& g, const
   if (probe && a.blocks.size() > std::size_t(RunProbe::kMaxBlocks))
     throw std::invalid_argument("a probed run takes at most " + std::to_string(RunProbe::kMaxBlocks) + " blocks");
   const bool rigid = a.contact == "rigid";
-  if (rigid && effective_scheme(a, o) == AssemblyScheme::TimeStepping)
-    return run_moreau_jean(a, g, o, trajectory, probe);
   const int n = int(a.blocks.size());
   const int cap = (n == 1 && a.interfaces.size() <= 2) ? 1 : (n <= 3 && a.interfaces.size() <= 4) ? 3 : 8;
   switch (cap) {

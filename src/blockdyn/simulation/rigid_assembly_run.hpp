@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 #pragma once
-// The rigid law's event-driven run (model/assembly/rigid_assembly_model.hpp) with its
+// The rigid law's runs: time-stepping (Moreau-Jean) throughout, or the event-driven run
+// (model/assembly/rigid_assembly_model.hpp) with its
 // time-stepping windows: where the event-driven scheme cannot go on (impacts that accumulate
 // without settling, a contact problem with no consistent mode: friction chatter), the run hands
 // over to Moreau-Jean time-stepping (model/assembly/moreau_jean.hpp) from the same state, and
@@ -21,6 +22,8 @@ struct TimeSteppingWindows {
   double time = 0;    // their total duration (s)
   long steps = 0;     // their steps
   std::string first;  // why the first one was needed
+  // How the steps' contact problems were solved (moreau_jean.hpp).
+  long direct = 0, gauss_seidel = 0, sweeps = 0;
 };
 
 // Time-stepping steps without a contact change before the events take over again.

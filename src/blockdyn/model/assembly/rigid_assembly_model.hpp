@@ -103,6 +103,8 @@ class RigidAssemblyModel {
 
   // Why the last transition stopped the run; empty otherwise.
   const std::string& problem() const { return problem_; }
+  // A problem found outside the model's own transitions (a time-stepping window): the run's note.
+  void report(std::string why) const { problem_ = std::move(why); }
   // Whether the run stopped to hand a window to time-stepping (an accumulation of impacts that
   // does not settle, a contact problem without a consistent mode), and why.
   bool wants_time_stepping() const { return handover_; }
