@@ -220,15 +220,7 @@ RunOutcome<RigidAssemblyModel<Cap>> run_rigid_assembly(const RigidAssemblyModel<
                                                        Observer<RigidAssemblyModel<Cap>>& obs,
                                                        TimeSteppingWindows& windows) {
   using M = RigidAssemblyModel<Cap>;
-  struct Bridge {
-    const M& m;
-    Observer<M>& o;
-    bool on_step(const DenseSegment<M::kDim>& s, double a, double b, const typename M::Mode& md) {
-      return o.on_segment(m, s, a, b, md);
-    }
-    bool on_event(const EventInfo<typename M::Mode, M::kDim>& e) { return o.on_event(m, e); }
-    bool needs_dense() const { return o.needs_dense(); }
-  } bridge{m, obs};
+  ObserverBridge<M> bridge{m, obs};
   obs.on_start(m, 0.0, mode, z);
   RunOutcome<M> out;
   std::unique_ptr<TimeSteppingWindow<Cap>> window;

@@ -15,18 +15,22 @@ struct RunOutcome {
   StepperStats stats;
 };
 
+// The integrator's observer protocol (on_step, on_event) onto an Observer<Model>.
+template <class Model>
+struct ObserverBridge {
+  const Model& m;
+  Observer<Model>& o;
+  bool on_step(const DenseSegment<Model::kDim>& s, double a, double b, const typename Model::Mode& md) {
+    return o.on_segment(m, s, a, b, md);
+  }
+  bool on_event(const EventInfo<typename Model::Mode, Model::kDim>& e) { return o.on_event(m, e); }
+  bool needs_dense() const { return o.needs_dense(); }
+};
+
 template <HybridModel Model>
 RunOutcome<Model> run_model(const Model& m, typename Model::Mode mode, Vec<Model::kDim> z, double t0, double t_end,
                             const IntegratorOptions& opt, Observer<Model>& obs) {
-  struct Bridge {
-    const Model& m;
-    Observer<Model>& o;
-    bool on_step(const DenseSegment<Model::kDim>& s, double a, double b, const typename Model::Mode& md) {
-      return o.on_segment(m, s, a, b, md);
-    }
-    bool on_event(const EventInfo<typename Model::Mode, Model::kDim>& e) { return o.on_event(m, e); }
-    bool needs_dense() const { return o.needs_dense(); }
-  } bridge{m, obs};
+  ObserverBridge<Model> bridge{m, obs};
   m.complete(mode, z);
   obs.on_start(m, t0, mode, z);
   HybridIntegrator<Model> integ(m, opt);

@@ -57,6 +57,8 @@ RigidAssemblyModel<Cap>::RigidAssemblyModel(const Assembly& a, const GroundMotio
     const AssemblyBlock& k = a.blocks[b];
     m_[b] = k.mass;
     I_[b] = k.inertia();
+    inv_mass_[3 * b] = inv_mass_[3 * b + 1] = 1.0 / k.mass;
+    inv_mass_[3 * b + 2] = 1.0 / k.inertia();
     y0_[b] = k.y;
     len_ = std::fmin(len_, std::fmin(k.width, k.height));
     f_scale_ += k.mass * g_;
@@ -183,10 +185,9 @@ typename RigidAssemblyModel<Cap>::Solution RigidAssemblyModel<Cap>::solve(
     double t, const Mode& m, const State& z, const std::array<PointRows, kPoints>& r) const {
   Solution s;
   const double ah = forced_ ? ground_.ah(t) : 0.0, av = forced_ ? ground_.av(t) : 0.0;
-  std::array<double, kCoords> inv_mass{}, f{};
+  const std::array<double, kCoords>& inv_mass = inv_mass_;
+  std::array<double, kCoords> f{};
   for (int b = 0; b < nb_; ++b) {
-    inv_mass[3 * b] = inv_mass[3 * b + 1] = 1.0 / m_[b];
-    inv_mass[3 * b + 2] = 1.0 / I_[b];
     f[3 * b] = -m_[b] * g_ * ah;
     f[3 * b + 1] = -m_[b] * g_ * (1.0 + av);
   }
@@ -387,10 +388,9 @@ bool RigidAssemblyModel<Cap>::impact(double t, Mode& m, State& z) const {
   std::array<PointRows, kPoints> r;
   rows(z, geo, m, r);
   const double tol_g = 1e-7 * len_, tol_v = kTol * v_scale_;
-  std::array<double, kCoords> inv_mass{}, v{};
+  const std::array<double, kCoords>& inv_mass = inv_mass_;
+  std::array<double, kCoords> v{};
   for (int b = 0; b < nb_; ++b) {
-    inv_mass[3 * b] = inv_mass[3 * b + 1] = 1.0 / m_[b];
-    inv_mass[3 * b + 2] = 1.0 / I_[b];
     for (int k = 0; k < 3; ++k) v[3 * b + k] = z[iv(b) + k];
   }
   // The impact set: closed points and the open ones touching.
@@ -679,78 +679,43 @@ typename RigidAssemblyModel<Cap>::Mode RigidAssemblyModel<Cap>::mechanism_mode(c
 }
 
 template <int Cap>
-void RigidAssemblyModel<Cap>::project_gaps(const Mode& m, State& z) const {
-  // The closed points' gaps back to zero (the smallest mass-weighted displacement): they drift
-  // by the integration error and the events' noise band, and a point that reopens must start on
-  // its face for its gap event to mean what it says.
+void RigidAssemblyModel<Cap>::project(const Mode& m, State& z, bool velocities) const {
+  // Positions: the closed points' gaps back to zero (they drift by the integration error and the
+  // events' noise band, and a point that reopens must start on its face for its gap event to mean
+  // what it says). Velocities: the closed points' normal and the sticking interfaces' slip
+  // velocities to zero (time-stepping leaves them at its own tolerance, and a constraint kept at
+  // a nonzero rate would do work). The smallest mass-weighted change, its energy booked with the
+  // contacts' work.
   Geometry geo;
   geo_.geometry(z, geo);
   std::array<PointRows, kPoints> r;
   rows(z, geo, m, r);
   constexpr int kMaxU = kPoints + kIfaces;
   ContactSystem<kCoords, kMaxU> sys;
-  std::array<double, kCoords> inv_mass{};
-  for (int b = 0; b < nb_; ++b) {
-    inv_mass[3 * b] = inv_mass[3 * b + 1] = 1.0 / m_[b];
-    inv_mass[3 * b + 2] = 1.0 / I_[b];
-  }
-  for (int p = 0; p < 2 * ni_; ++p) {
-    if (!is_closed(m.point[p])) continue;
-    const int j = sys.add();
-    for (int c = 0; c < 3; ++c) {
-      sys.col[j][3 * r[p].upper + c] = sys.row[j][3 * r[p].upper + c] = r[p].nu[c];
-      if (r[p].lower >= 0) sys.col[j][3 * r[p].lower + c] = sys.row[j][3 * r[p].lower + c] = r[p].nl[c];
-    }
-    sys.rhs[j] = -r[p].gap;
-  }
-  std::array<double, kMaxU> x{};
-  if (sys.n == 0 || !sys.solve(inv_mass, x)) return;
-  const Energy before = energy_terms(m, z);
-  for (int j = 0; j < sys.n; ++j)
-    for (int b = 0; b < nb_; ++b)
-      for (int k = 0; k < 3; ++k) z[ix(b) + k] += inv_mass[3 * b + k] * sys.col[j][3 * b + k] * x[j];
-  z[kWNormal] += energy_terms(m, z).total() - before.total();
-}
-
-template <int Cap>
-void RigidAssemblyModel<Cap>::project_velocities(const Mode& m, State& z) const {
-  // The closed points' normal velocities, and the sticking interfaces' slip velocities, to zero
-  // (the smallest kinetic-energy change, booked with the contacts' work): time-stepping leaves
-  // them at its own tolerance, and a constraint kept at a nonzero rate would do work.
-  Geometry geo;
-  geo_.geometry(z, geo);
-  std::array<PointRows, kPoints> r;
-  rows(z, geo, m, r);
-  constexpr int kMaxU = kPoints + kIfaces;
-  ContactSystem<kCoords, kMaxU> sys;
-  std::array<double, kCoords> inv_mass{};
-  for (int b = 0; b < nb_; ++b) {
-    inv_mass[3 * b] = inv_mass[3 * b + 1] = 1.0 / m_[b];
-    inv_mass[3 * b + 2] = 1.0 / I_[b];
-  }
-  auto add = [&](const PointRows& k, const std::array<double, 3>& u, const std::array<double, 3>& l, double rate) {
+  auto add = [&](const PointRows& k, const std::array<double, 3>& u, const std::array<double, 3>& l, double value) {
     const int j = sys.add();
     for (int c = 0; c < 3; ++c) {
       sys.col[j][3 * k.upper + c] = sys.row[j][3 * k.upper + c] = u[c];
       if (k.lower >= 0) sys.col[j][3 * k.lower + c] = sys.row[j][3 * k.lower + c] = l[c];
     }
-    sys.rhs[j] = -rate;
+    sys.rhs[j] = -value;
   };
   std::array<bool, kIfaces> stuck{};
   for (int p = 0; p < 2 * ni_; ++p) {
     if (!is_closed(m.point[p])) continue;
-    add(r[p], r[p].nu, r[p].nl, r[p].vn);
-    if (m.point[p] == PointState::Stick && !stuck[p / 2]) {
+    add(r[p], r[p].nu, r[p].nl, velocities ? r[p].vn : r[p].gap);
+    if (velocities && m.point[p] == PointState::Stick && !stuck[p / 2]) {
       stuck[p / 2] = true;
       add(r[p], r[p].tu, r[p].tl, r[p].vt);
     }
   }
   std::array<double, kMaxU> x{};
-  if (sys.n == 0 || !sys.solve(inv_mass, x)) return;
+  if (sys.n == 0 || !sys.solve(inv_mass_, x)) return;
   const Energy before = energy_terms(m, z);
   for (int j = 0; j < sys.n; ++j)
     for (int b = 0; b < nb_; ++b)
-      for (int k = 0; k < 3; ++k) z[iv(b) + k] += inv_mass[3 * b + k] * sys.col[j][3 * b + k] * x[j];
+      for (int k = 0; k < 3; ++k)
+        z[(velocities ? iv(b) : ix(b)) + k] += inv_mass_[3 * b + k] * sys.col[j][3 * b + k] * x[j];
   z[kWNormal] += energy_terms(m, z).total() - before.total();
 }
 
@@ -767,7 +732,7 @@ Transition<typename RigidAssemblyModel<Cap>::Mode> RigidAssemblyModel<Cap>::tran
     problem_ = why;
   };
   auto reselect = [&] {
-    project_gaps(n, z);
+    project(n, z, false);
     if (!select_mode(t, n, z))
       hand_over("no contact mode consistent (the acceleration-level contact problem has no solution)");
   };
@@ -888,8 +853,8 @@ std::optional<typename RigidAssemblyModel<Cap>::Mode> RigidAssemblyModel<Cap>::r
   guess.rest = false;
   for (int b = 0; b < nb_; ++b) guess.side[b] = z[ix(b) + 2] < 0.0 ? -1 : 1;
   State trial = z;
-  project_gaps(guess, trial);
-  project_velocities(guess, trial);
+  project(guess, trial, false);
+  project(guess, trial, true);
   if (!select_mode(t, guess, trial)) return std::nullopt;
   z = trial;
   try_rest(t, guess, z);

@@ -153,8 +153,8 @@ class RigidAssemblyModel {
   bool select_mode(double t, Mode& m, const State& z) const;
   // The impact at (t, z): new velocities in z, work booked; the mode's closed set updated.
   bool impact(double t, Mode& m, State& z) const;
-  void project_gaps(const Mode& m, State& z) const;
-  void project_velocities(const Mode& m, State& z) const;
+  // The closed points back on their constraints: gaps (velocities = false) or rates.
+  void project(const Mode& m, State& z, bool velocities) const;
   // Enter rest if every point touches, nothing moves and rest holds at t.
   bool try_rest(double t, Mode& m, State& z) const;
   Mode mechanism_mode(const Mode& m, const State& z, int direction) const;
@@ -165,6 +165,7 @@ class RigidAssemblyModel {
   bool forced_;
   int nb_, ni_;
   std::array<double, Cap> m_{}, I_{}, y0_{};
+  std::array<double, kCoords> inv_mass_{};
   std::array<double, kIfaces> mu_s_{}, mu_k_{}, e_{};
   std::array<int, kIfaces> lower_{}, upper_{};
   double g_, step_hint_, len_, v_scale_, f_scale_, rotation_band_, switch_band_, settle_velocity_;
