@@ -558,9 +558,7 @@ bool RigidAssemblyModel<Cap>::impact(double t, Mode& m, State& z) const {
 }
 
 template <int Cap>
-std::optional<typename RigidAssemblyModel<Cap>::RestLimits> RigidAssemblyModel<Cap>::rest_limits(const State& z) const {
-  Geometry geo;
-  geo_.geometry(z, geo);
+StaticProblem RigidAssemblyModel<Cap>::static_problem(const State& z, const std::array<PointRows, kPoints>& r) const {
   StaticProblem sp;
   sp.g = g_;
   for (int b = 0; b < nb_; ++b) {
@@ -568,21 +566,29 @@ std::optional<typename RigidAssemblyModel<Cap>::RestLimits> RigidAssemblyModel<C
     sp.centre.push_back({z[ix(b)], z[ix(b) + 1]});
   }
   for (int i = 0; i < ni_; ++i) sp.mu.push_back(mu_s_[i]);
-  Mode m{};
   for (int p = 0; p < 2 * ni_; ++p) {
-    const int i = p / 2;
-    m.owner[p] = owner_margin(geo.lower[i], geo.upper[i], p % 2, 0) >= 0.0 ? 0 : 1;
-    const FaceContact c =
-        contact_point(geo.of(lower_[i]), geo.lower[i], geo.pose[upper_[i]], geo.upper[i], p % 2, m.owner[p]);
     StaticContact k;
-    k.upper = upper_[i];
-    k.lower = lower_[i];
-    k.iface = i;
-    k.P = c.P;
-    k.n = c.corner_of_upper ? c.n : -1.0 * c.n;
-    k.t = c.t;
+    k.upper = upper_[p / 2];
+    k.lower = lower_[p / 2];
+    k.iface = p / 2;
+    k.P = r[p].c.P;
+    k.n = {r[p].nu[0], r[p].nu[1]};
+    k.t = {r[p].tu[0], r[p].tu[1]};
     sp.contacts.push_back(k);
   }
+  return sp;
+}
+
+template <int Cap>
+std::optional<typename RigidAssemblyModel<Cap>::RestLimits> RigidAssemblyModel<Cap>::rest_limits(const State& z) const {
+  Geometry geo;
+  geo_.geometry(z, geo);
+  Mode m{};
+  for (int p = 0; p < 2 * ni_; ++p)
+    m.owner[p] = owner_margin(geo.lower[p / 2], geo.upper[p / 2], p % 2, 0) >= 0.0 ? 0 : 1;
+  std::array<PointRows, kPoints> r;
+  rows(z, geo, m, r);
+  const StaticProblem sp = static_problem(z, r);
   const LoadMultiplier pos = max_load_multiplier(sp, +1), neg = max_load_multiplier(sp, -1);
   if (!pos.feasible || !neg.feasible || pos.lambda < 0 || neg.lambda < 0) return std::nullopt;
   return RestLimits{pos.lambda, neg.lambda};
@@ -635,25 +641,9 @@ typename RigidAssemblyModel<Cap>::Mode RigidAssemblyModel<Cap>::mechanism_mode(c
                                                                                int direction) const {
   Geometry geo;
   geo_.geometry(z, geo);
-  StaticProblem sp;
-  sp.g = g_;
-  for (int b = 0; b < nb_; ++b) {
-    sp.mass.push_back(m_[b]);
-    sp.centre.push_back({z[ix(b)], z[ix(b) + 1]});
-  }
-  for (int i = 0; i < ni_; ++i) sp.mu.push_back(mu_s_[i]);
   std::array<PointRows, kPoints> r;
   rows(z, geo, m, r);
-  for (int p = 0; p < 2 * ni_; ++p) {
-    StaticContact k;
-    k.upper = upper_[p / 2];
-    k.lower = lower_[p / 2];
-    k.iface = p / 2;
-    k.P = r[p].c.P;
-    k.n = {r[p].nu[0], r[p].nu[1]};
-    k.t = {r[p].tu[0], r[p].tu[1]};
-    sp.contacts.push_back(k);
-  }
+  const StaticProblem sp = static_problem(z, r);
   Mode out = m;
   out.rest = false;
   const LoadMultiplier lm = max_load_multiplier(sp, direction);

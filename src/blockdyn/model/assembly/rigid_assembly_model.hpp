@@ -35,6 +35,7 @@
 #include "blockdyn/excitation/ground_motion.hpp"
 #include "blockdyn/excitation/rest_exit.hpp"
 #include "blockdyn/model/assembly/assembly_model.hpp"
+#include "blockdyn/model/assembly/rest_limit.hpp"
 
 namespace blockdyn {
 
@@ -158,6 +159,8 @@ class RigidAssemblyModel {
   // Enter rest if every point touches, nothing moves and rest holds at t.
   bool try_rest(double t, Mode& m, State& z) const;
   Mode mechanism_mode(const Mode& m, const State& z, int direction) const;
+  // The static programme of the configuration z with the contact points of `r`.
+  StaticProblem static_problem(const State& z, const std::array<PointRows, kPoints>& r) const;
   double rate_of(const PointRows& r, const std::array<double, kCoords>& acc, bool normal) const;
 
   Base geo_;
