@@ -13,9 +13,9 @@
 Options are the command line's, with dashes written as underscores (`t_end` for `--t-end`,
 `ground_h_amplitude` for `--ground-h-amplitude`); True gives a flag, None or False leaves an
 option out, a list repeats it; a record is a file or arrays, `ground_h_record=(t, a)` (s, g).
-`simulate`, `simulate_many` and `Simulator` call the library from memory (no files, no command
-line); the other functions run the program's code in this process. Either way the GIL is released
-and results are identical to the command line's to the last digit. Invalid input raises
+Every function calls the library from memory (no files, no command line); a run asked to write a
+figure or a named output file goes through the command's writers in this process. Either way the
+GIL is released and results are identical to the command line's to the last digit. Invalid input raises
 ValueError with the program's message (naming the field); other failures RuntimeError.
 """
 import csv
@@ -343,29 +343,48 @@ def impact_map(trace=False, **options):
 
 
 def _table_command(command, definition, options):
-    output = options.pop("output", None)
-    with tempfile.TemporaryDirectory(prefix="blockdyn-py-") as tmp:
-        out = output or os.path.join(tmp, command + ".csv")
-        opts = dict(options, output=out, quiet=True)
-        run(*_args(command, opts, [definition] if definition else []))
-        cols = _read_csv(out)
-        side = os.path.splitext(out)[0] + ".json" if out.endswith(".csv") else out + ".json"
-        with open(side) as f:
-            cols["_sidecar"] = json.load(f)
-        if command == "map":
-            cols["_boundaries"] = _read_csv(os.path.splitext(out)[0] + "_boundaries.csv")
-        return cols
+    """The grid of `sweep` or `map`: in memory on `threads` threads, or, given `output` (or a
+    figure), through the command's writers (CSV, sidecar, journal, figure)."""
+    if options.get("output") or options.get("plot"):
+        with tempfile.TemporaryDirectory(prefix="blockdyn-py-") as tmp:
+            out = options.pop("output", None) or os.path.join(tmp, command + ".csv")
+            opts = dict(options, output=out, quiet=True)
+            run(*_args(command, opts, [definition] if definition else []))
+            cols = _read_csv(out)
+            side = os.path.splitext(out)[0] + ".json" if out.endswith(".csv") else out + ".json"
+            with open(side) as f:
+                cols["_sidecar"] = json.load(f)
+            if command == "map":
+                cols["_boundaries"] = _read_csv(os.path.splitext(out)[0] + "_boundaries.csv")
+            return cols
+    for reserved in ("resume", "overwrite", "progress", "progress_interval", "dry_run"):
+        if reserved in options:
+            raise ValueError(f"{reserved}: a file-run option; give output= to run blockdyn.{command} on files")
+    options.pop("quiet", None)
+    threads = int(options.pop("threads", 0) or 0)
+    if definition is not None:
+        options["definition"] = os.fspath(definition)
+    result = getattr(_core, command)(_options(options), threads)
+    cols = _columns(result[0])
+    cols["_sidecar"] = json.loads(result[1])
+    if command == "map":
+        cols["_boundaries"] = _columns(result[2])
+        cols["_boundaries_meta"] = json.loads(result[3])
+    return cols
 
 
 def sweep(definition=None, **options):
     """Runs `blockdyn sweep` and returns {column: NumPy array}, with the sidecar dict under key
-    "_sidecar". Without `output` it writes to a temporary directory."""
+    "_sidecar" (its definition, tolerances, columns). In memory on `threads` threads (0: all
+    cores; the rows are the same on any count), or, given `output` or `plot`, on files as the
+    command line writes them."""
     return _table_command("sweep", definition, options)
 
 
 def map(**options):  # noqa: A001 (the command's name)
     """Runs `blockdyn map` (response types over (k, 1/r) with boundaries) and returns its table as
-    {column: NumPy array}, "_sidecar", and the boundaries table under "_boundaries"."""
+    {column: NumPy array}, "_sidecar", and the boundaries table under "_boundaries" (their meta
+    under "_boundaries_meta"). In memory, or on files given `output` or `plot`."""
     return _table_command("map", None, options)
 
 
@@ -389,20 +408,6 @@ def lyapunov(**options):
         for k in ("t", "separation", "predicted"):
             j["twin_" + k] = tw.get(k, np.array([], dtype=float))
     return j
-
-
-def _table_and_json(command, options):
-    """Runs COMMAND with --out (CSV) and --json-out; returns (columns, summary)."""
-    for reserved in ("out", "json", "json_out"):
-        if reserved in options:
-            raise ValueError(f"{reserved}: set by blockdyn.{command.replace('-', '_')} itself")
-    with tempfile.TemporaryDirectory(prefix="blockdyn-py-") as tmp:
-        out, summ = os.path.join(tmp, "table.csv"), os.path.join(tmp, "summary.json")
-        run(*_args(command, dict(options, out=out, json_out=summ, quiet=True)))
-        with open(summ) as f:
-            j = json.load(f)
-        cols = _read_csv(out) if os.path.exists(out) else {}
-        return cols, j
 
 
 def chaos_map(**options):

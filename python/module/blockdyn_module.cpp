@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 // blockdyn._core: the library for Python. Runs are made from memory: options go to the library as
 // Settings (the same vocabulary and validation as the command line), results come back as NumPy
-// columns and the JSON summary's text, and the integration runs without the GIL. The commands
-// not yet exposed as library calls (sweep, map) run through the command line in process (run_cli).
+// columns and the JSON summary's text, and the integration runs without the GIL. Runs that write
+// figures go through the command line in process (run_cli), whose writers make them.
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
@@ -17,7 +17,10 @@
 #include <variant>
 #include <vector>
 
+#include "blockdyn/analysis/sweep/sweep_runner.hpp"
 #include "blockdyn/api/grid_studies.hpp"
+#include "blockdyn/api/map_study.hpp"
+#include "blockdyn/api/sweep_settings.hpp"
 #include "blockdyn/api/simulate_run.hpp"
 #include "blockdyn/api/study_command.hpp"
 #include "blockdyn/io/json_io.hpp"
@@ -138,6 +141,24 @@ py::dict study_columns(const StudyTable& t) {
   return cols;
 }
 
+// A runner table's rows, as a study's table.
+StudyTable study_table_of(const Table& t) {
+  StudyTable out;
+  out.columns = t.columns;
+  for (const TableRow& r : t.rows) out.rows.push_back(r.cells);
+  return out;
+}
+
+// A sweep or map grid computed in memory on `threads` threads: (columns, sidecar JSON text).
+py::tuple grid_in_memory(const PointTable& table, int threads) {
+  Table t;
+  {
+    py::gil_scoped_release release;
+    t = compute_table(table, threads, nullptr);
+  }
+  return py::make_tuple(study_columns(study_table_of(t)), dump_json(table_sidecar(table, "complete")));
+}
+
 // Runs of one model: prepared, single, many on threads.
 void add_runs(py::module_& m) {
   py::class_<Prepared>(m, "Prepared", "a run's options, parsed and validated once (blockdyn.Simulator)")
@@ -228,6 +249,29 @@ void add_studies(py::module_& m) {
       },
       py::arg("name"), py::arg("options"),
       "Runs a grid analysis (survival) in memory on its threads; returns ({column: array}, summary JSON text, text).");
+  m.def(
+      "sweep",
+      [](const OptionList& options, int threads) {
+        const SweepDefinition d = sweep_definition(settings_of(options));
+        return grid_in_memory(*d.table, threads);
+      },
+      py::arg("options"), py::arg("threads") = 0,
+      "Runs `blockdyn sweep`'s grid in memory; returns ({column: array or list}, sidecar JSON text).");
+  m.def(
+      "map",
+      [](const OptionList& options, int threads) {
+        const Settings s = settings_of(options);
+        const MapStudy study = map_study(s);
+        py::tuple grid = grid_in_memory(*study.table, threads);
+        MapBoundaries b;
+        {
+          py::gil_scoped_release release;
+          b = map_boundaries(s, threads);
+        }
+        return py::make_tuple(grid[0], grid[1], study_columns(b.table), dump_json(b.meta));
+      },
+      py::arg("options"), py::arg("threads") = 0,
+      "Runs `blockdyn map` in memory; returns (columns, sidecar JSON text, boundary columns, their meta JSON).");
   m.def(
       "studies",
       [] {

@@ -187,3 +187,66 @@ def test_cycles_and_impact_map_equal_the_command_line():
     assert len(m["trace"]["t"]) > len(m["poincare"]["t"])
     with pytest.raises(ValueError, match="beta"):
         blockdyn.cycles(model="housner", width=0.3, height=1.5, omega=5)
+
+
+def _csv_columns(path):
+    with open(path, newline="") as f:
+        rows = list(csv.reader(f))
+    return rows[0], rows[1:]
+
+
+def _assert_columns_equal(got, header, body):
+    for i, name in enumerate(header):
+        col = [row[i] for row in body]
+        if got[name].dtype == object:
+            assert list(got[name]) == col, name
+        else:
+            np.testing.assert_array_equal(got[name], np.array([float(c) if c else np.nan for c in col]), name)
+
+
+def test_sweep_in_memory_writes_no_file_and_is_the_same_on_any_thread_count(tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    opts = dict(k="1e3:1e5:3", r="0.2,0.3", mu=0.3, t_end=2, metric=["response_type"])
+    one, two = blockdyn.sweep(threads=1, **opts), blockdyn.sweep(threads=2, **opts)
+    assert list(tmp_path.iterdir()) == []
+    for name in one:
+        if name.startswith("_"):
+            continue
+        if one[name].dtype == object:
+            assert list(one[name]) == list(two[name])
+        else:
+            np.testing.assert_array_equal(one[name], two[name])
+    cli(*blockdyn._args("sweep", dict(opts, output="s.csv", quiet=True)))
+    header, body = _csv_columns("s.csv")
+    _assert_columns_equal(one, header, body)
+    with open("s.json") as f:
+        side = json.load(f)
+    for key in ("schema", "fingerprint", "point_count", "columns", "definition", "tolerances"):
+        assert one["_sidecar"][key] == side[key], key
+
+
+def test_sweep_from_a_definition_file_in_memory(tmp_path):
+    d = tmp_path / "d.toml"
+    d.write_text('model = "housner"\n[physical]\nwidth = 0.25\nheight = 1.5\n'
+                 '[axes]\nground_h_amplitude = "0.2:0.6:3"\n')
+    s = blockdyn.sweep(d, ground_h_pulse="rect", ground_h_duration=0.4, t_end=3)
+    assert list(s["ground_h_amplitude"]) == pytest.approx([0.2, 0.4, 0.6])
+    assert s["_sidecar"]["definition"]["model"] == "housner"
+    with pytest.raises(ValueError, match="no-such-option"):
+        blockdyn.sweep(d, no_such_option=1)
+    with pytest.raises(ValueError, match="--k belongs to the winkler sweep"):
+        blockdyn.sweep(d, k="1e3:1e4:2")
+
+
+def test_map_in_memory_equals_the_command_line(tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    opts = dict(k="1e3:1e6:4", inv_r="2:6:3", t_end=5, boundary_points=2, fine_per_decade=0)
+    m = blockdyn.map(threads=2, **opts)
+    assert list(tmp_path.iterdir()) == []
+    cli(*blockdyn._args("map", dict(opts, output="m.csv", quiet=True)))
+    _assert_columns_equal(m, *_csv_columns("m.csv"))
+    _assert_columns_equal(m["_boundaries"], *_csv_columns("m_boundaries.csv"))
+    assert set(m["response_type"]) <= {"steady_rocking", "settle_down", "settled", "rock_flight_zero_friction",
+                                       "rock_to_vertical", "overturned"}
+    with pytest.raises(ValueError, match="critical-n"):
+        blockdyn.map(critical_n=1)

@@ -159,17 +159,26 @@ void SweepSession::record(std::size_t index, const SweepRow& row) {
   if (progress_) progress_->advance();
 }
 
-json SweepSession::sidecar(const std::string& status, int threads) const {
+json table_sidecar(const PointTable& t, const std::string& status) {
   json j;
-  j["schema"] = schema_name(ev_.kind(), "sidecar");
+  j["schema"] = schema_name(t.kind(), "sidecar");
   j["run"] = run_info();
   j["status"] = status;
-  j["fingerprint"] = ev_.fingerprint();
-  j["csv"] = paths_.csv;
-  j["point_count"] = ev_.size();
-  j["columns"] = ev_.columns();
-  j["definition"] = ev_.definition();
-  j["tolerances"] = ev_.tolerances();
+  j["fingerprint"] = t.fingerprint();
+  j["point_count"] = t.size();
+  j["columns"] = t.columns();
+  j["definition"] = t.definition();
+  j["tolerances"] = t.tolerances();
+  return j;
+}
+
+json SweepSession::sidecar(const std::string& status, int threads) const {
+  json j;
+  const json base = table_sidecar(ev_, status);
+  for (auto it = base.begin(); it != base.end(); ++it) {
+    j[it.key()] = it.value();
+    if (it.key() == "fingerprint") j["csv"] = paths_.csv;
+  }
   json t;
   t["started_utc"] = started_utc_;
   t["threads_per_rank"] = threads;

@@ -85,6 +85,10 @@ class SweepSession {
 // Single-process sweep (threads only) of the plan's points (nullptr: every point).
 SweepOutcome run_sweep(const PointTable& ev, const SweepRunOptions& o, PointPlan* plan = nullptr);
 
+// What a sidecar says of its table besides paths and timing: schema, run, status, fingerprint,
+// point count, columns, definition, tolerances (in that order).
+nlohmann::ordered_json table_sidecar(const PointTable& t, const std::string& status);
+
 // Fingerprint recorded by a sidecar whose status is "complete"; "" if absent, unreadable or
 // unfinished (lets --resume recognise a finished sweep).
 std::string complete_sidecar_fingerprint(const std::string& sidecar_path);

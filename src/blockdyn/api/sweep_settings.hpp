@@ -1,0 +1,44 @@
+// SPDX-License-Identifier: Apache-2.0
+#pragma once
+// `blockdyn sweep`'s definition from options by name: a TOML definition file (option
+// "definition"), then the flags given, for the family it names (winkler: k, r | inv_r, mu, ic;
+// housner and rigid: the block and --axis NAME=SPEC). The command line runs the resulting table
+// on the sweep runner (threads, MPI, journal); Python computes the same rows in memory.
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "blockdyn/analysis/sweep/point_table.hpp"
+#include "blockdyn/api/option_spec.hpp"
+#include "blockdyn/api/settings.hpp"
+
+namespace blockdyn {
+
+// The options that define a sweep (its rows, output path and figure), without the runner's
+// (threads, resume, progress) and the listing flags.
+const std::vector<StudyOption>& sweep_options();
+
+struct SweepPlotAxis {
+  std::string name;
+  std::vector<double> values;
+  bool log = false;  // a range spaced logarithmically
+};
+
+struct SweepDefinition {
+  std::string model;                        // winkler | housner | rigid
+  std::shared_ptr<const PointTable> table;  // the points and their rows
+  nlohmann::ordered_json definition;        // what determines the rows (the sidecar's)
+  std::string output, plot, plot_column;    // plot_column: the figure's column (default resolved)
+  std::vector<SweepPlotAxis> plot_axes;     // the axes in grid order
+  std::vector<std::string> held;            // NAME=VALUE held fixed in the figure
+  double t_end = 0;
+};
+
+// The family the options name: "model", else the definition file's `model` key, else winkler.
+std::string sweep_model(const Settings& s);
+// The sweep the options define; std::invalid_argument naming the option (or the file's key).
+SweepDefinition sweep_definition(const Settings& s);
+
+}  // namespace blockdyn
