@@ -27,9 +27,9 @@ struct RunnerFlags {
   int threads = 0;
   bool resume = false, overwrite = false, quiet = false, list_metrics = false, list_axes = false, dry_run = false;
 };
-const std::vector<std::string> kRunnerFlags = {"--threads",       "--resume",    "--overwrite", "--progress",
-                                               "--progress-interval", "--quiet", "--list-metrics", "--list-axes",
-                                               "--dry-run"};
+const std::vector<std::string> kRunnerFlags = {
+    "--threads", "--resume",       "--overwrite", "--progress", "--progress-interval",
+    "--quiet",   "--list-metrics", "--list-axes", "--dry-run"};
 
 // Axes with more than one value become plot axes (the first two); the others are held at one value.
 void plot(const SweepDefinition& d, const SweepPaths& paths) {

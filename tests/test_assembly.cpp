@@ -348,7 +348,7 @@ TEST(AssemblySymmetry, AMirroredGroundMotionMirrorsTheResponse) {
   const AssemblyResult r = simulate_assembly(a, harmonic(0.35, 2.5), run_to(1.5, 1e-11, 1e-14));
   const AssemblyResult m = simulate_assembly(a, harmonic(-0.35, 2.5), run_to(1.5, 1e-11, 1e-14));
   ASSERT_GT(r.event_counts[kAsmOpen], 0);
-  ASSERT_EQ(r.status, "t_end");
+  ASSERT_EQ(r.status, SimStatus::TEnd);
   const int swap[3] = {1, 0, 2};  // the mirror exchanges the columns
   for (int b = 0; b < 3; ++b)
     for (int k = 0; k < 6; ++k) {
@@ -366,7 +366,7 @@ TEST(AssemblyFailure, APulseBeyondTheFrameLimitCollapsesInModeOne) {
   g.horizontal.amplitude = 1.0;
   g.horizontal.duration = 0.5;
   const AssemblyResult r = simulate_assembly(a, g, run_to(5));
-  EXPECT_EQ(r.status, "collapsed");
+  EXPECT_EQ(r.status, SimStatus::Collapsed);
   EXPECT_EQ(r.motion, "collapse");
   ASSERT_TRUE(r.collapse_mode);
   EXPECT_EQ(*r.collapse_mode, 1);
@@ -447,7 +447,7 @@ TEST(AssemblyRigidLaw, BlockAndFrameRockLikeTheRigidReferences) {
       const double err = std::fabs(first_event(r, "w_zero", 0) - ref) / ref;
       EXPECT_LT(err, prev) << c.preset << ' ' << step;
       prev = err;
-      EXPECT_EQ(r.status, "t_end");
+      EXPECT_EQ(r.status, SimStatus::TEnd);
     }
     EXPECT_LT(prev, 1e-6) << c.preset;
   }
@@ -550,7 +550,7 @@ TEST(AssemblyRigidLaw, ColumnsRockOnlyRestriction) {
   jump.rock_only_on_ground = true;
   jump.blocks[0].vy = 0.5;
   const AssemblyResult j = simulate_assembly(jump, {}, rigid_run(1, 1e-4));
-  EXPECT_EQ(j.status, "invalid");
+  EXPECT_EQ(j.status, SimStatus::Invalid);
   EXPECT_NE(j.note.find("left the ground"), std::string::npos) << j.note;
   EXPECT_LT(j.t_final, 0.01);
   jump.contact = "deformable";
@@ -674,7 +674,7 @@ TEST(AssemblyFriction, EqualStaticAndKineticFrictionDoesNotChatter) {
     PresetOptions o = seed_preset();
     o.ground_law.mu_s = o.ground_law.mu_k = o.block_law.mu_s = o.block_law.mu_k = std::tan(c.phi_deg * M_PI / 180);
     const AssemblyResult r = simulate_assembly(make_preset("trilith", o), harmonic(c.amplitude_g, c.hz), run_to(1.0));
-    EXPECT_EQ(r.status, "t_end") << r.note;
+    EXPECT_EQ(r.status, SimStatus::TEnd) << r.note;
     EXPECT_EQ(r.t_final, 1.0);
     EXPECT_GT(r.event_counts[kAsmStick], 0);
     EXPECT_LT(r.max_abs_energy_error, 1e-6);

@@ -328,7 +328,7 @@ TEST(ForcedModels, EveryFamilyFindsTheSameOneOneOrbit) {
     ao.record_events = false;
     ForcedTrace tr(0.0, T, 1);
     const AssemblyResult r = simulate_assembly(a, g, ao, nullptr, &tr);
-    EXPECT_EQ(r.status, "t_end");
+    EXPECT_EQ(r.status, SimStatus::TEnd);
     EXPECT_EQ(cycle(tr, ImpactRule::Passage), "(1,1)") << (rigid ? "rigid" : "deformable");
     // Impacts every half period at the end, with opposite velocities before them.
     const auto imp = impacts_of(tr, 0, ImpactRule::Passage);

@@ -71,7 +71,7 @@ TEST(RigidEventDriven, BlockRocksWithHousnersImpactsAndRestitution) {
   double loss = 0;
   for (const auto& k : ref) loss += 0.5 * I_corner * k.w_before * k.w_before * (1 - e * e);
   EXPECT_NEAR(-r.work_normal / loss, 1.0, 1e-7);
-  EXPECT_EQ(r.status, "t_end");
+  EXPECT_EQ(r.status, SimStatus::TEnd);
   EXPECT_LT(r.max_abs_energy_error, 1e-7 * loss);
 }
 
@@ -140,7 +140,7 @@ TEST(RigidEventDriven, ForcedTrilithKeepsItsEnergyBalanceAndSettlesWhereTheForci
   // that ends: the frame's impacts accumulate and it comes to rest (exactly) on its bases.
   const Assembly a = make_preset("trilith", rigid_preset());
   const AssemblyResult r = simulate_assembly(a, harmonic(0.2548, 1.7359), event_driven(5));
-  EXPECT_EQ(r.status, "t_end") << r.note;
+  EXPECT_EQ(r.status, SimStatus::TEnd) << r.note;
   EXPECT_EQ(r.motion, "stable");
   const double scale = a.blocks[2].mass * 9.81 * a.blocks[0].height;
   EXPECT_LT(r.max_abs_energy_error, 1e-8 * scale);
@@ -149,7 +149,7 @@ TEST(RigidEventDriven, ForcedTrilithKeepsItsEnergyBalanceAndSettlesWhereTheForci
   pulse.horizontal.amplitude = 0.4;
   pulse.horizontal.duration = 0.3;
   const AssemblyResult s = simulate_assembly(a, pulse, event_driven(6));
-  EXPECT_EQ(s.status, "t_end") << s.note;
+  EXPECT_EQ(s.status, SimStatus::TEnd) << s.note;
   EXPECT_GT(s.impacts, 2);
   for (int b = 0; b < 3; ++b) {
     EXPECT_EQ(s.blocks[b].final_state[5], 0.0) << b;  // rest is exactly rest
@@ -170,7 +170,7 @@ TEST(RigidEventDriven, ChatteringContactsAreHandedToTimeSteppingAndBack) {
   g.horizontal.phase = 0.5 * M_PI;
   AssemblyRunOptions run = event_driven(20);
   const AssemblyResult r = simulate_assembly(a, g, run);
-  EXPECT_NE(r.status, "invalid") << r.note;
+  EXPECT_NE(r.status, SimStatus::Invalid) << r.note;
   ASSERT_GT(r.time_stepping_windows, 0);
   EXPECT_FALSE(r.time_stepping_reason.empty());
   EXPECT_NE(r.note.find("Moreau-Jean"), std::string::npos);

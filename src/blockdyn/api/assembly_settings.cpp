@@ -136,14 +136,6 @@ Assembly from_preset(const Settings& s, const Values& v) {
   return a;
 }
 
-void check_run(const AssemblyRunOptions& o) {
-  require_in_range("t-end", o.t_end, 0, 1e7, false);
-  require_in_range("step", o.step, 1e-7, 1e-2);
-  require_in_range("rtol", o.integrator.rtol, 1e-14, 1e-2);
-  require_in_range("atol", o.integrator.atol, 1e-16, 1e-2);
-  require_in_range("output-interval", o.output_interval, 0, 1e7);
-}
-
 }  // namespace
 
 const std::vector<std::string>& assembly_option_names() {
@@ -202,15 +194,9 @@ AssemblySetup assembly_from(const Settings& s) {
   o.step = s.number("step", o.step);
   o.scheme =
       s.text("scheme", "event-driven") == "event-driven" ? AssemblyScheme::EventDriven : AssemblyScheme::TimeStepping;
-  o.integrator.rtol = s.number("rtol", o.integrator.rtol);
-  o.integrator.atol = s.number("atol", o.integrator.atol);
-  if (s.has("method")) {
-    const auto m = method_from_string(s.text("method"));
-    if (!m) throw Invalid("--method = '" + s.text("method") + "' is not one of: auto, dopri5, dop853");
-    o.integrator.method = *m;
-  }
+  apply_integrator_settings(s, o.integrator);
   o.output_interval = s.number("output-interval", o.output_interval);
-  check_run(o);
+  validate(o);
   return setup;
 }
 

@@ -73,13 +73,7 @@ SweepSpec map_spec(const Settings& s) {
   spec.initial.sets = {ic.is_ic1() ? "ic1" : "ic2"};
   if (ic.is_ic1()) spec.initial.w0_over_alpha = ic.w0_fraction;
   spec.options.t_end = t_end;
-  spec.options.integrator.rtol = s.number("rtol", spec.options.integrator.rtol);
-  spec.options.integrator.atol = s.number("atol", spec.options.integrator.atol);
-  if (s.has("method")) {
-    const auto m = method_from_string(s.text("method"));
-    if (!m) throw Invalid("--method = '" + s.text("method") + "' is not one of: auto, dopri5, dop853");
-    spec.options.integrator.method = *m;
-  }
+  apply_integrator_settings(s, spec.options.integrator);
   spec.options.integrator.max_steps = s.integer("max-steps", 20'000'000);
   spec.metrics = {"response_type"};
   if (s.flag("sensitivity")) spec.metrics.push_back("sensitive_dependence");
@@ -105,8 +99,7 @@ const std::vector<StudyOption>& map_options() {
         {"method", "Runge-Kutta pair: dopri5, dop853 or auto (dop853 when rtol < 1e-6; default)", "auto"},
         {"max-steps", "step cap per run (reported as numerical_failure)", "20000000"},
         {"boundary-points", "1/r values for the boundary curves (0: none)", "10"},
-        {"fine-per-decade", "fine grid next to k_high and k_critical (points per decade; 0: coarse search only)",
-         "48"},
+        {"fine-per-decade", "fine grid next to k_high and k_critical (points per decade; 0: coarse search only)", "48"},
         {"critical-n", "n of k_critical_n (no flight while ihor < n)", "10"},
         {"sensitivity", "also run every point from y'(0) + 1e-8 and mark sensitive dependence (twice the cost)", "",
          true},

@@ -91,17 +91,6 @@ void apply_initial(const Settings& s, Scenario& sc) {
     if (auto v = s.number(name)) sc.initial.*field = *v;
 }
 
-void apply_integrator(const Settings& s, IntegratorOptions& o) {
-  o.rtol = s.number("rtol", o.rtol);
-  o.atol = s.number("atol", o.atol);
-  if (s.has("method")) {
-    const std::string v = s.text("method");
-    const auto m = method_from_string(v);
-    if (!m) throw Invalid("--method = '" + v + "' is not one of: auto, dopri5, dop853");
-    o.method = *m;
-  }
-}
-
 }  // namespace
 
 const std::vector<std::string>& scenario_option_names() {
@@ -128,7 +117,7 @@ Scenario scenario_from(const Settings& s) {
   sc.params.r = s.number("r", sc.params.r);
   sc.params.mu = s.number("mu", sc.params.mu);
   sc.params.k = s.number("k", sc.params.k);
-  apply_integrator(s, sc.options.integrator);
+  apply_integrator_settings(s, sc.options.integrator);
   sc.options.t_end = s.number("t-end", sc.options.t_end);
   sc.output_interval = s.number("output-interval", sc.output_interval);
   apply_initial(s, sc);

@@ -111,4 +111,15 @@ void Settings::require_known(const std::vector<std::string>& known, const std::s
   }
 }
 
+void apply_integrator_settings(const Settings& s, IntegratorOptions& o) {
+  o.rtol = s.number("rtol", o.rtol);
+  o.atol = s.number("atol", o.atol);
+  if (s.has("method")) {
+    const std::string v = s.text("method");
+    const auto m = method_from_string(v);
+    if (!m) throw std::invalid_argument("--method = '" + v + "' is not one of: auto, dopri5, dop853");
+    o.method = *m;
+  }
+}
+
 }  // namespace blockdyn

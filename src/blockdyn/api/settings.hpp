@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "blockdyn/excitation/accelerogram.hpp"
+#include "blockdyn/integrate/hybrid_integrator.hpp"
 
 namespace blockdyn {
 
@@ -54,5 +55,9 @@ class Settings {
   const Entry* find(std::string_view name) const;
   std::map<std::string, Entry, std::less<>> entries_;
 };
+
+// --rtol, --atol and --method (auto, dopri5, dop853) where given; std::invalid_argument naming
+// the option. Their ranges are checked with the run's options (simulation/run_options.hpp).
+void apply_integrator_settings(const Settings& s, IntegratorOptions& o);
 
 }  // namespace blockdyn

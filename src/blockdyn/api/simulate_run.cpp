@@ -222,7 +222,7 @@ std::unique_ptr<PreparedRun> prepare_block(const Settings& s) {
 std::string assembly_text(const AssemblyResult& r) {
   char buf[512];
   std::string s;
-  std::snprintf(buf, sizeof buf, "status: %s, motion: %s", r.status.c_str(), r.motion.c_str());
+  std::snprintf(buf, sizeof buf, "status: %s, motion: %s", to_string(r.status), r.motion.c_str());
   s += buf;
   if (r.collapse_mode) {
     std::snprintf(buf, sizeof buf, ", collapse mode %d at t* = %.9g s (block %d)", *r.collapse_mode, *r.t_failure,
@@ -264,7 +264,7 @@ class PreparedAssembly final : public PreparedRun {
     rep.text = assembly_text(r);
     char title[256];
     std::snprintf(title, sizeof title, "%s (%zu blocks): %s, %s%s at t = %.6g s", a.preset.c_str(), a.blocks.size(),
-                  r.status.c_str(), r.motion.c_str(),
+                  to_string(r.status), r.motion.c_str(),
                   r.collapse_mode ? (" mode " + std::to_string(*r.collapse_mode)).c_str() : "", r.t_final);
     std::string sizes;
     for (const AssemblyBlock& b : a.blocks) {

@@ -43,13 +43,7 @@ void apply_state_and_run(const Settings& s, Initial& initial, Options& options) 
   if (s.has("vy0")) initial.vy0 = *s.number("vy0");
   if (s.has("vw0")) initial.vw0 = *s.number("vw0");
   options.t_end = s.number("t-end", options.t_end);
-  options.integrator.rtol = s.number("rtol", options.integrator.rtol);
-  options.integrator.atol = s.number("atol", options.integrator.atol);
-  if (s.has("method")) {
-    const auto m = method_from_string(s.text("method"));
-    if (!m) throw Invalid("--method = '" + s.text("method") + "' is not one of: auto, dopri5, dop853");
-    options.integrator.method = *m;
-  }
+  apply_integrator_settings(s, options.integrator);
   options.integrator.max_steps = s.integer("max-steps", options.integrator.max_steps);
   if (s.flag("no-energy")) options.track_energy = false;
 }

@@ -80,12 +80,12 @@ json assembly_result_json(const Assembly& a, const GroundMotion& g, const Assemb
   j["tolerances"] = to_json(o.integrator);
   j["tolerances"]["atol_units"] = "m, rad, m/s, rad/s, J (absolute, per component)";
   j["t_end"] = o.t_end;
-  j["status"] = r.status;
+  j["status"] = to_string(r.status);
   j["motion"] = r.motion;
   j["collapse_mode"] = opt(r.collapse_mode);
   j["t_failure"] = opt(r.t_failure);
   j["failed_block"] = r.failed_block >= 0 ? json(r.failed_block) : json(nullptr);
-  j["integrator_status"] = r.integrator_status;
+  j["integrator_status"] = to_string(r.run_status);
   j["note"] = r.note.empty() ? json(nullptr) : json(r.note);
   j["t_final"] = r.t_final;
   json blocks = json::array();

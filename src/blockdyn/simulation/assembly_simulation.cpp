@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "blockdyn/simulation/assembly_simulation.hpp"
 
+#include "blockdyn/base/range_check.hpp"
+
 #include <algorithm>
 #include <cstdio>
 #include <memory>
@@ -23,14 +25,10 @@ AssemblyScheme effective_scheme(const Assembly& a, const AssemblyRunOptions& o) 
 }
 
 void validate(const AssemblyRunOptions& o) {
-  if (!(o.t_end > 0 && o.t_end <= 1e7)) throw std::invalid_argument("t-end must be in (0, 1e7] s");
-  if (!(o.integrator.rtol >= 1e-14 && o.integrator.rtol <= 1e-2))
-    throw std::invalid_argument("rtol must be in [1e-14, 1e-2]");
-  if (!(o.integrator.atol >= 1e-16 && o.integrator.atol <= 1e-2))
-    throw std::invalid_argument("atol must be in [1e-16, 1e-2]");
-  if (!(o.output_interval >= 0 && o.output_interval <= 1e7))
-    throw std::invalid_argument("output-interval must be in [0, 1e7] s");
-  if (!(o.step >= 1e-7 && o.step <= 1e-2)) throw std::invalid_argument("step must be in [1e-7, 1e-2] s");
+  validate(static_cast<const RunOptions&>(o));
+  if (o.t_start != 0.0) throw std::invalid_argument("t-start: an assembly's run starts at t = 0");
+  require_in_range("output-interval", o.output_interval, 0, 1e7);
+  require_in_range("step", o.step, 1e-7, 1e-2);
   if (!(o.t_end / o.step <= 2e9)) throw std::invalid_argument("t-end / step must be at most 2e9 steps");
 }
 
@@ -105,10 +103,10 @@ class AssemblyRecorder final : public Observer<M> {
       r_.t_failure = e.t;
       r_.failed_block = rec.block;
       r_.failed_interface = rec.interface;
-      r_.status = "collapsed";
+      r_.status = SimStatus::Collapsed;
     }
     if (e.kind == kAsmInvalid) {
-      r_.status = "invalid";
+      r_.status = SimStatus::Invalid;
       if constexpr (requires { m.problem(); })
         r_.note = m.problem();
       else
@@ -321,10 +319,10 @@ AssemblyResult run(const Assembly& a, const GroundMotion& g, const AssemblyRunOp
   } else {
     out = run_model(m, md, z, 0.0, o.t_end, o.integrator, fan);
   }
-  r.integrator_status = to_string(out.status);
+  r.run_status = out.status;
   r.t_final = out.t;
   if (out.status != RunStatus::ReachedEnd && out.status != RunStatus::ModelStop) {
-    r.status = "invalid";
+    r.status = SimStatus::Invalid;
     r.note = std::string("integration stopped: ") + to_string(out.status);
   }
   for (int b = 0; b < m.blocks(); ++b) {

@@ -17,7 +17,9 @@
 #include "blockdyn/excitation/ground_motion.hpp"
 #include "blockdyn/integrate/hybrid_integrator.hpp"
 #include "blockdyn/model/assembly/assembly_params.hpp"
+#include "blockdyn/simulation/run_options.hpp"
 #include "blockdyn/simulation/run_probe.hpp"
+#include "blockdyn/simulation/sim_status.hpp"
 #include "blockdyn/simulation/trajectory_table.hpp"
 
 namespace blockdyn {
@@ -37,13 +39,16 @@ struct AssemblyEventRecord {
 enum class AssemblyScheme { EventDriven, TimeStepping };
 const char* to_string(AssemblyScheme s);
 
-struct AssemblyRunOptions {
-  double t_end = 10.0;
-  IntegratorOptions integrator{1e-8, 1e-10};
-  double output_interval = 0.01;  // trajectory CSV (s)
-  bool record_events = true;      // keep the event list (counts are always kept)
-  long max_events = 1'000'000;    // kept in the list; further events are counted only
-  double step = 1e-4;             // rigid law: Moreau-Jean time step (s)
+// An assembly's run: the shared options (from t = 0; tolerances 1e-8, 1e-10 by default) and the
+// trajectory's interval, the event list's cap and the rigid law's scheme and step.
+struct AssemblyRunOptions : RunOptions {
+  AssemblyRunOptions() {
+    integrator.rtol = 1e-8;
+    integrator.atol = 1e-10;
+  }
+  double output_interval = 0.01;                        // trajectory CSV (s)
+  long max_events = 1'000'000;                          // kept in the list; further events are counted only
+  double step = 1e-4;                                   // rigid law: Moreau-Jean time step (s)
   AssemblyScheme scheme = AssemblyScheme::EventDriven;  // rigid law only
   // Called with every event as it happens, whatever record_events and max_events say: a caller
   // that streams the events (the command line's JSON spool) holds O(1) memory on a run of any length.
@@ -74,12 +79,12 @@ struct AssemblyEnergy {
 };
 
 struct AssemblyResult {
-  std::string status = "t_end";  // t_end | collapsed | invalid
-  std::string motion = "rest";   // rest | stable | collapse
+  SimStatus status = SimStatus::TEnd;  // TEnd | Collapsed | Invalid
+  std::string motion = "rest";         // rest | stable | collapse
   std::optional<int> collapse_mode;
   std::optional<double> t_failure;
   int failed_block = -1, failed_interface = -1;
-  std::string integrator_status = "t_end";
+  RunStatus run_status = RunStatus::ReachedEnd;  // the integrator's
   std::string note;
   double t_final = 0;
   std::vector<AssemblyBlockSummary> blocks;

@@ -10,14 +10,6 @@
 
 namespace blockdyn {
 
-void validate(const RigidRunOptions& o) {
-  SimulationOptions s;
-  s.t_start = o.t_start;
-  s.t_end = o.t_end;
-  s.integrator = o.integrator;
-  validate(s);
-}
-
 HousnerBlock::State housner_initial_state(const HousnerBlock& m, const RigidInitial& in) {
   const char* extra = in.x0 ? "x0" : in.y0 ? "y0" : in.vx0 ? "vx0" : in.vy0 ? "vy0" : nullptr;
   if (extra)

@@ -23,14 +23,8 @@ struct RigidInitial {
   std::optional<double> x0, y0, vx0, vy0;
 };
 
-struct RigidRunOptions {
-  double t_start = 0.0;
-  double t_end = 10.0;
-  IntegratorOptions integrator;
-  bool record_events = true;  // keep the event list (counts are always kept)
-  bool track_energy = true;
-};
-void validate(const RigidRunOptions& o);
+// The rigid block's run: the shared options as they are.
+using RigidRunOptions = RunOptions;
 
 struct RigidEventRecord {
   double t = 0;

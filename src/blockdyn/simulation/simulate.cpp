@@ -7,40 +7,6 @@
 
 namespace blockdyn {
 
-const char* to_string(SimStatus s) {
-  switch (s) {
-    case SimStatus::TEnd:
-      return "t_end";
-    case SimStatus::Overturned:
-      return "overturned";
-    case SimStatus::Invalid:
-      return "invalid";
-    case SimStatus::EarlyStop:
-      return "early_stop";
-    case SimStatus::NumericalFailure:
-      return "numerical_failure";
-  }
-  return "?";
-}
-
-void validate(const SimulationOptions& o) {
-  auto bad = [](const std::string& f, const std::string& range, double v) {
-    std::ostringstream os;
-    os << f << " = " << v << " is out of range: must be " << range;
-    throw std::invalid_argument(os.str());
-  };
-  // Bounded: a run of 1e7 time units is already days of computation at the default tolerances.
-  if (!std::isfinite(o.t_start) || o.t_start < 0 || o.t_start > kMaxTime) bad("t-start", "in [0, 1e7]", o.t_start);
-  if (!std::isfinite(o.t_end) || o.t_end <= o.t_start || o.t_end > kMaxTime)
-    bad("t-end", "> t-start and <= 1e7", o.t_end);
-  const auto& i = o.integrator;
-  if (!std::isfinite(i.rtol) || i.rtol <= 0 || i.rtol >= 1) bad("rtol", "in (0, 1)", i.rtol);
-  if (!std::isfinite(i.atol) || i.atol <= 0 || i.atol >= 1) bad("atol", "in (0, 1)", i.atol);
-  if (!(i.h_max > 0)) bad("h-max", "> 0", i.h_max);
-  if (i.max_steps <= 0 || i.max_steps > 1'000'000'000'000) bad("max-steps", "in [1, 1e12]", double(i.max_steps));
-  if (i.event_samples < 1 || i.event_samples > 64) bad("event-samples", "in [1, 64]", i.event_samples);
-}
-
 namespace {
 
 // The Winkler family's recorder: ihor (passages through w = 0), first flight, overturn, the event
@@ -134,19 +100,6 @@ SimulationResult simulate(const BlockParams& p, const GroundMotion& g, const Blo
   res.max_abs_energy_change = balance.max_abs_change();
   res.status = sim_status(out.status, res.overturn_time.has_value());
   return res;
-}
-
-SimStatus sim_status(RunStatus rs, bool overturned) {
-  switch (rs) {
-    case RunStatus::ReachedEnd:
-      return SimStatus::TEnd;
-    case RunStatus::ModelStop:
-      return overturned ? SimStatus::Overturned : SimStatus::Invalid;
-    case RunStatus::ObserverStop:
-      return SimStatus::EarlyStop;
-    default:
-      return SimStatus::NumericalFailure;
-  }
 }
 
 }  // namespace blockdyn

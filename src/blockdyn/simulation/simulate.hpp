@@ -13,15 +13,13 @@
 #include "blockdyn/model/winkler/winkler_block.hpp"
 #include "blockdyn/simulation/run.hpp"
 #include "blockdyn/simulation/run_clock.hpp"
+#include "blockdyn/simulation/run_options.hpp"
+#include "blockdyn/simulation/sim_status.hpp"
 
 namespace blockdyn {
 
-struct SimulationOptions {
-  double t_start = 0.0;
-  double t_end = 10.0;
-  IntegratorOptions integrator;
-  bool track_energy = true;   // energy balance at every step end (one Region evaluation each)
-  bool record_events = true;  // keep the list of events (counts are always kept)
+// The Winkler block's run: the shared options and its stop criteria.
+struct SimulationOptions : RunOptions {
   bool stop_at_first_flight = false;
   long stop_at_ihor = 0;  // stop once ihor reaches this value (0: never)
 };
@@ -33,11 +31,6 @@ struct EventRecord {
   BlockStateVec z{};
   long ihor = 0;  // after the event
 };
-
-enum class SimStatus { TEnd, Overturned, Invalid, EarlyStop, NumericalFailure };
-const char* to_string(SimStatus s);
-// The outcome users see, from the integrator's status (ModelStop: overturned, else invalid).
-SimStatus sim_status(RunStatus rs, bool overturned);
 
 constexpr int kNumEventKinds = int(EventKind::GrazingHold) + 1;
 
@@ -82,10 +75,5 @@ class SimulationSink {
 // Throws std::invalid_argument if the parameters, options or initial state are invalid.
 SimulationResult simulate(const BlockParams& p, const GroundMotion& g, const BlockStateVec& z0,
                           const SimulationOptions& opt, SimulationSink* sink = nullptr);
-
-void validate(const SimulationOptions& opt);
-
-// Longest run accepted (model time units: non-dimensional or seconds).
-inline constexpr double kMaxTime = 1e7;
 
 }  // namespace blockdyn

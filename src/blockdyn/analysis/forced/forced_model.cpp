@@ -98,7 +98,7 @@ ForcedModel forced_assembly_model(const Assembly& a, nlohmann::ordered_json desc
     out.moved = r.motion != "rest";
     out.collapse_mode = r.collapse_mode;
     out.t_failure = r.t_failure;
-    out.invalid = r.status == "invalid";
+    out.invalid = r.status == SimStatus::Invalid;
     for (const auto& b : r.blocks) out.max_abs_rotation = std::fmax(out.max_abs_rotation, b.max_abs_rotation);
     for (const auto& i : r.interfaces)
       if (i.lower >= 0) out.max_sliding = std::fmax(out.max_sliding, i.max_abs_sliding);

@@ -1,0 +1,26 @@
+// SPDX-License-Identifier: Apache-2.0
+#pragma once
+// The options of one run, shared by every model family, with one validation. A family's options
+// extend them (SimulationOptions: the Winkler block's stop criteria; AssemblyRunOptions: the
+// trajectory's interval, the rigid law's scheme and step).
+#include "blockdyn/integrate/hybrid_integrator.hpp"
+
+namespace blockdyn {
+
+// Bounded: a run of 1e7 time units is already days of computation at the default tolerances.
+inline constexpr double kMaxTime = 1e7;
+
+struct RunOptions {
+  double t_start = 0.0;
+  double t_end = 10.0;
+  IntegratorOptions integrator;
+  bool record_events = true;  // keep the list of events (counts are always kept)
+  bool track_energy = true;   // the energy balance at every step end
+};
+
+// t-start in [0, 1e7], t-end in (t-start, 1e7], rtol in [1e-14, 1e-2], atol in [1e-16, 1e-2],
+// h-max > 0, max-steps in [1, 1e12], event-samples in [1, 64]; std::invalid_argument naming the
+// option and its range.
+void validate(const RunOptions& o);
+
+}  // namespace blockdyn
