@@ -28,7 +28,7 @@ import numpy as np
 from . import _core
 
 __version__ = _core.__version__
-__all__ = ["simulate", "simulate_many", "Simulator", "assembly", "spectrum", "survival", "response_curve", "cycles", "impact_map", "sweep", "map", "run",
+__all__ = ["simulate", "simulate_many", "motion_info", "Simulator", "assembly", "spectrum", "survival", "response_curve", "cycles", "impact_map", "sweep", "map", "run",
            "Simulation", "Assembly", "lyapunov", "chaos_map", "periodic_orbits", "__version__"]
 
 # Where the plot scripts are once installed (share/blockdyn/python beside lib/python3/...).
@@ -143,7 +143,7 @@ def _options(options):
         if value is None or value is False:
             continue
         name = key.replace("_", "-")
-        if name.endswith("-record") and _is_samples(value):
+        if (name == "record" or name.endswith("-record")) and _is_samples(value):
             t, a = (np.asarray(v, dtype=float).ravel().tolist() for v in value)
             out.append((name, (t, a)))
         elif value is True:
@@ -427,6 +427,20 @@ def periodic_orbits(**options):
         options["continue"] = options.pop("continue_")
     j = _harmonic_command("periodic-orbits", ["table"], options)
     j.update(j.pop("table"))
+    return j
+
+
+def motion_info(record, **options):
+    """A record's intensity measures (`blockdyn motion info`): a dict with pga (g), pgv (m/s), pgd
+    (m), arias (m/s), d5_95, t5, t95, t_mid, mean_period (s), ...; with spectrum=True (or periods=
+    [...] or period_min/period_max/period_points) also "spectrum" (rows) and the arrays "period",
+    "sa" (g), "sd" (m). `record` is a file (PEER .AT2, CSV) or arrays (t in s, a in g)."""
+    if not _is_samples(record):
+        record = os.fspath(record)
+    j = json.loads(_core.motion_info(_options(dict(options, record=record))))
+    if "spectrum" in j:
+        for key in ("period", "sa", "sd", "t_peak"):
+            j[key] = np.array([row[key] for row in j["spectrum"]], dtype=float)
     return j
 
 

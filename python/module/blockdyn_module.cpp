@@ -20,6 +20,7 @@
 #include "blockdyn/analysis/sweep/sweep_runner.hpp"
 #include "blockdyn/api/grid_studies.hpp"
 #include "blockdyn/api/map_study.hpp"
+#include "blockdyn/api/motion_info.hpp"
 #include "blockdyn/api/sweep_settings.hpp"
 #include "blockdyn/api/simulate_run.hpp"
 #include "blockdyn/api/study_command.hpp"
@@ -272,6 +273,18 @@ void add_studies(py::module_& m) {
       },
       py::arg("options"), py::arg("threads") = 0,
       "Runs `blockdyn map` in memory; returns (columns, sidecar JSON text, boundary columns, their meta JSON).");
+  m.def(
+      "motion_info",
+      [](const OptionList& options) {
+        const Settings s = settings_of(options);
+        nlohmann::ordered_json j;
+        {
+          py::gil_scoped_release release;
+          j = motion_info(s);
+        }
+        return dump_json(j);
+      },
+      py::arg("options"), "A record's intensity measures and spectrum (`blockdyn motion info`): JSON text.");
   m.def(
       "studies",
       [] {

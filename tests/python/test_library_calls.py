@@ -2,6 +2,7 @@
 """The Python module on the library (issue 26): runs from memory, records as arrays, prepared runs
 repeated, many runs on threads, each equal to the single call to the last bit."""
 import os
+import tempfile
 
 import numpy as np
 import pytest
@@ -107,3 +108,21 @@ def test_assembly_from_memory_equals_the_command_line(tmp_path):
             np.testing.assert_array_equal(a.data[name], np.array([float(c) for c in col]))
     with pytest.raises(ValueError, match="--tilt: not an option of --model housner"):
         blockdyn.simulate(model="housner", width=0.3, height=1.5, tilt=0.1)
+
+
+def test_motion_info_from_a_file_and_from_arrays_agree():
+    t = np.arange(0, 8, 0.01)
+    a = 0.3 * np.sin(2 * np.pi * 1.1 * t) * np.exp(-0.3 * t)
+    with tempfile.TemporaryDirectory() as tmp:
+        path = os.path.join(tmp, "r.csv")
+        with open(path, "w") as f:
+            f.write("t, a\n" + "".join(f"{x!r}, {y!r}\n" for x, y in zip(t, a)))
+        from_file = blockdyn.motion_info(path, periods=[0.1, 0.5, 2.0])
+    from_arrays = blockdyn.motion_info((t, a), periods=[0.1, 0.5, 2.0])
+    for key in ("pga", "pgv", "pgd", "arias", "d5_95", "t_mid", "mean_period"):
+        assert from_file[key] == from_arrays[key], key
+    np.testing.assert_array_equal(from_file["sa"], from_arrays["sa"])
+    assert from_arrays["pga"] == pytest.approx(np.abs(a).max())
+    assert from_arrays["sa"].shape == (3,)
+    with pytest.raises(ValueError, match="damping"):
+        blockdyn.motion_info((t, a), spectrum=True, damping=-0.1)
