@@ -104,7 +104,8 @@ CliOutcome run_cli(const std::vector<std::string>& args) {
   if (ranks > 1 && std::find(refusing_mpi.begin(), refusing_mpi.end(), current_command()) != refusing_mpi.end())
     return {2, "MPI: `blockdyn " + current_command() + "` does not distribute its work over MPI ranks (launched with " +
                    std::to_string(ranks) +
-                   "): run it without mpirun (sweep, map, survival, spectrum and response-curve distribute)"};
+                   "): run it without mpirun (sweep, map, survival, spectrum, response-curve and rocking-spectrum "
+                   "distribute)"};
   // CLI11 parses the arguments in reverse order from a vector.
   std::vector<std::string> rev(args.rbegin(), args.rend());
   CliOutcome out;

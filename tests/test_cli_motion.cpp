@@ -1,12 +1,13 @@
 // SPDX-License-Identifier: Apache-2.0
-// `blockdyn motion info` (issue 27): the JSON keys scripts rely on, the measures of a step record
-// against their closed forms, the spectrum's rows, and bad records and options (exit 2 naming
-// the field).
+// `blockdyn motion info` and `rocking-spectrum` (issue 27): the JSON keys scripts rely on, the measures of a step
+// record against their closed forms, the spectrum's rows, and bad records and options (exit 2 naming the field).
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
 #include <cmath>
+#include <cstdio>
 #include <fstream>
+#include <sstream>
 
 #include "cli_test.hpp"
 
@@ -71,6 +72,80 @@ TEST(CliMotion, BadRecordsAndOptionsAreUsageErrors) {
   for (const auto& [args, word] : cases) {
     const auto r = run_cli(args, d.path);
     EXPECT_EQ(r.code, 2) << args[2 % args.size()] << ": " << r.err;
+    EXPECT_NE(r.err.find(word), std::string::npos) << r.err;
+  }
+}
+
+TEST(CliRockingSpectrum, EqualsSimulatePointByPoint) {
+  TmpDir d("rocking_spectrum");
+  const std::string rec = std::string(BLOCKDYN_SOURCE_DIR) + "/tests/fixtures/synthetic_60s.AT2";
+  for (const std::string model : {"housner", "rigid"}) {
+    const auto r =
+        run_cli({"rocking-spectrum", "--model", model, "--record", rec, "--alpha", "0.2", "--p-values", "1.5,4",
+                 "--scales", "1,2.5", "--t-after", "3", "--json", "--quiet", "--out", "rs.csv", "--overwrite"},
+                d.path);
+    ASSERT_EQ(r.code, 0) << r.err;
+    const json j = json::parse(r.out);
+    EXPECT_EQ(j["schema"], "blockdyn.rocking-spectrum.summary/1");
+    ASSERT_EQ(j["rows"].size(), 4u);
+    // Each row is the run of `simulate` for the block of that size: width, height from the CSV.
+    const std::string csv = slurp(d.path + "/rs.csv");
+    std::istringstream lines(csv);
+    std::string line;
+    std::getline(lines, line);
+    int checked = 0;
+    for (const json& row : j["rows"]) {
+      std::getline(lines, line);
+      std::vector<std::string> c;
+      std::stringstream ss(line);
+      for (std::string x; std::getline(ss, x, ',');) c.push_back(x);
+      const auto s = run_cli({"simulate", "--model", model, "--width", c[3], "--height", c[4], "--ground-h-record", rec,
+                              "--ground-h-scale", c[2], "--t-end", "62.99", "--json", "--quiet"},
+                             d.path);
+      ASSERT_EQ(s.code, 0) << s.err;
+      const json sj = json::parse(s.out);
+      EXPECT_EQ(row["max_abs_rotation_over_alpha"].get<double>(), sj["max_abs_rotation"].get<double>() / 0.2);
+      EXPECT_EQ(row["overturned"].get<bool>(), sj["status"] == "overturned");
+      ++checked;
+    }
+    EXPECT_EQ(checked, 4);
+  }
+}
+
+TEST(CliRockingSpectrum, RectangularPulseOverturnsAtTheClosedForm) {
+  // A rectangular pulse a_p for t_p overturns a slender Housner block when
+  // a_p / (g alpha) > 1 / (1 - exp(-p t_p)) (linearised; alpha = 0.05 makes it exact to 0.1 %).
+  TmpDir d("rocking_rect");
+  const double alpha = 0.05, p = 2.0, tp = 0.5, ap = alpha / (1 - std::exp(-p * tp));
+  char text[256];
+  std::snprintf(text, sizeof text, "0, %.17g\n%.17g, %.17g\n%.17g, 0\n%.17g, 0\n", ap, tp, ap, tp + 1e-6, tp + 1);
+  write(d.path + "/rect.csv", text);
+  const auto r = run_cli({"rocking-spectrum", "--record", "rect.csv", "--alpha", "0.05", "--p-values", "2", "--scales",
+                          "0.98,1.02", "--t-after", "30", "--json", "--quiet"},
+                         d.path);
+  ASSERT_EQ(r.code, 0) << r.err;
+  const json j = json::parse(r.out);
+  EXPECT_FALSE(j["rows"][0]["overturned"].get<bool>());
+  EXPECT_TRUE(j["rows"][1]["overturned"].get<bool>());
+  EXPECT_EQ(j["overturning_scales"][0]["min_overturning_scale"], 1.02);
+}
+
+TEST(CliRockingSpectrum, BadInputIsAUsageError) {
+  TmpDir d("rocking_bad");
+  const std::string rec = std::string(BLOCKDYN_SOURCE_DIR) + "/tests/fixtures/synthetic_60s.AT2";
+  const std::vector<std::pair<std::vector<std::string>, std::string>> cases{
+      {{"rocking-spectrum", "--record", rec, "--p-values", "1"}, "alpha"},
+      {{"rocking-spectrum", "--record", rec, "--alpha", "0.2"}, "p-values"},
+      {{"rocking-spectrum", "--record", rec, "--alpha", "1.2", "--p-values", "1"}, "alpha"},
+      {{"rocking-spectrum", "--record", rec, "--alpha", "0.2", "--p-values", "0"}, "p-values"},
+      {{"rocking-spectrum", "--alpha", "0.2", "--p-values", "1"}, "record"},
+      {{"rocking-spectrum", "--record", rec, "--alpha", "0.2", "--p-values", "1", "--mu-s", "0.3"}, "mu-s"},
+      {{"rocking-spectrum", "--model", "assembly", "--record", rec, "--alpha", "0.2", "--p-values", "1"}, "model"},
+      {{"rocking-spectrum", "--record", rec, "--alpha", "0.2", "--p-values", "1", "--scales", "-1"}, "scales"},
+  };
+  for (const auto& [args, word] : cases) {
+    const auto r = run_cli(args, d.path);
+    EXPECT_EQ(r.code, 2) << args.back() << ": " << r.err;
     EXPECT_NE(r.err.find(word), std::string::npos) << r.err;
   }
 }

@@ -17,9 +17,8 @@ namespace {
 
 // 72 points of 0.01 - 0.1 s each: long enough to watch and interrupt, short enough for a test.
 std::vector<std::string> long_sweep(const std::string& out, const std::string& threads) {
-  return {"sweep",     "--k",       "1e3:2e5:24", "--inv-r", "2,3,4", "--mu",        "0.3",
-          "--ic",      "ic2",       "--t-end",    "20",      "--max-steps", "2000000", "-o",
-          out,         "--threads", threads};
+  return {"sweep",   "--k", "1e3:2e5:24",  "--inv-r", "2,3,4", "--mu", "0.3",       "--ic", "ic2",
+          "--t-end", "20",  "--max-steps", "2000000", "-o",    out,    "--threads", threads};
 }
 
 std::vector<std::string> with(std::vector<std::string> a, const std::vector<std::string>& more) {
@@ -150,7 +149,7 @@ TEST(SweepCli, BadDefinitionsExitWithStatus2) {
   const sweep_test::TmpDir tmp("sweep-bad");
   const std::string& dir = tmp.path;
   struct Case {
-    std::string toml;                 // written to bad.toml if non-empty
+    std::string toml;  // written to bad.toml if non-empty
     std::vector<std::string> flags;
     std::string expect;
   };
@@ -218,7 +217,8 @@ TEST(SweepCli, TomlDefinitionDryRunAndPlots) {
   EXPECT_TRUE(exists(dir + "/line.png"));
   EXPECT_TRUE(exists(dir + "/line.svg"));
   // A finished sweep is not recomputed by --resume; a text column gives a categorical map.
-  const CliResult again = run_cli({"sweep", "map.toml", "--resume", "--plot", "status.png", "--plot-column", "status"}, dir);
+  const CliResult again =
+      run_cli({"sweep", "map.toml", "--resume", "--plot", "status.png", "--plot-column", "status"}, dir);
   ASSERT_EQ(again.code, 0) << again.err;
   EXPECT_NE(again.out.find("already complete"), std::string::npos) << again.out;
   EXPECT_TRUE(exists(dir + "/status.png"));
@@ -232,8 +232,9 @@ TEST(SweepCli, MpiEveryCommandDistributesOrRefuses) {
   const std::string mpirun = kMpirun2;
   const sweep_test::TmpDir tmp("mpi-commands");
   const std::string& dir = tmp.path;
-  const std::vector<std::string> map = {"map", "--k", "1e2:1e6:5", "--inv-r", "2:6:3", "--t-end", "3",
-                                        "--boundary-points", "0", "--threads", "1", "--quiet"};
+  const std::vector<std::string> map = {"map",   "--k",       "1e2:1e6:5", "--inv-r",
+                                        "2:6:3", "--t-end",   "3",         "--boundary-points",
+                                        "0",     "--threads", "1",         "--quiet"};
   const CliResult one = run_cli(with(map, {"-o", "one.csv"}), dir);
   ASSERT_EQ(one.code, 0) << one.err;
   const CliResult two = run_cli(with(map, {"-o", "two.csv"}), dir, mpirun);
@@ -249,7 +250,8 @@ TEST(SweepCli, MpiEveryCommandDistributesOrRefuses) {
   ASSERT_NE(at, std::string::npos) << help.out;
   std::istringstream lines(help.out.substr(at));
   std::string line;
-  const std::set<std::string> distribute = {"sweep", "map", "survival", "spectrum", "response-curve"};
+  const std::set<std::string> distribute = {"sweep",           "map", "survival", "spectrum", "response-curve",
+                                            "rocking-spectrum"};
   int refused = 0, ran = 0;
   while (std::getline(lines, line)) {
     std::istringstream words(line);
@@ -265,6 +267,6 @@ TEST(SweepCli, MpiEveryCommandDistributesOrRefuses) {
       ++refused;
     }
   }
-  EXPECT_EQ(ran, 5);
+  EXPECT_EQ(ran, 6);
   EXPECT_GT(refused, 15);
 }

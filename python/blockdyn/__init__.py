@@ -28,7 +28,7 @@ import numpy as np
 from . import _core
 
 __version__ = _core.__version__
-__all__ = ["simulate", "simulate_many", "motion_info", "Simulator", "assembly", "spectrum", "survival", "response_curve", "cycles", "impact_map", "sweep", "map", "run",
+__all__ = ["simulate", "simulate_many", "motion_info", "rocking_spectrum", "Simulator", "assembly", "spectrum", "survival", "response_curve", "cycles", "impact_map", "sweep", "map", "run",
            "Simulation", "Assembly", "lyapunov", "chaos_map", "periodic_orbits", "__version__"]
 
 # Where the plot scripts are once installed (share/blockdyn/python beside lib/python3/...).
@@ -288,6 +288,21 @@ def survival(**options):
     j["t_failure"] = np.array([np.nan if p["t_failure"] is None else p["t_failure"] for p in pts], dtype=float)
     j["max_abs_rotation"] = np.array([p["max_abs_rotation"] for p in pts], dtype=float)
     j["cycle"] = np.array([p["cycle"] for p in pts], dtype=object)
+    return j
+
+
+def rocking_spectrum(**options):
+    """Runs `blockdyn rocking-spectrum` in memory (record= a file or (t, a) arrays, alpha=,
+    p_values= or p_min/p_max/p_points, optionally scales=) and returns its JSON summary with the
+    rows also as arrays "p", "scale", "max_abs_rotation_over_alpha", "overturned" (bool)."""
+    record = options.get("record")
+    if record is not None and not _is_samples(record):
+        options["record"] = os.fspath(record)
+    j = _grid_summary("rocking-spectrum", options)
+    rows = j["rows"]
+    for key in ("p", "scale", "max_abs_rotation_over_alpha"):
+        j[key] = np.array([r[key] for r in rows], dtype=float)
+    j["overturned"] = np.array([r["overturned"] for r in rows], dtype=bool)
     return j
 
 

@@ -126,3 +126,15 @@ def test_motion_info_from_a_file_and_from_arrays_agree():
     assert from_arrays["sa"].shape == (3,)
     with pytest.raises(ValueError, match="damping"):
         blockdyn.motion_info((t, a), spectrum=True, damping=-0.1)
+
+
+def test_rocking_spectrum_from_arrays_equals_simulate():
+    t = np.arange(0, 6, 0.01)
+    a = 0.35 * np.sin(2 * np.pi * 1.5 * t) * np.exp(-0.4 * t)
+    j = blockdyn.rocking_spectrum(record=(t, a), alpha=0.15, p_values=[2.0, 5.0], t_after=2, threads=2)
+    assert j["p"].tolist() == [2.0, 5.0]
+    for p, ratio in zip(j["p"], j["max_abs_rotation_over_alpha"]):
+        R = 0.75 * 9.81 / p ** 2
+        r = blockdyn.simulate(model="housner", width=2 * R * np.sin(0.15), height=2 * R * np.cos(0.15),
+                              ground_h_record=(t, a), t_end=float(t[-1]) + 2)
+        assert ratio == pytest.approx(r.summary["max_abs_rotation"] / 0.15, rel=1e-12)
