@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
+#include <utility>
 
 #include "blockdyn/api/study_command.hpp"
 #include "blockdyn/base/range_check.hpp"
@@ -81,18 +82,19 @@ json motion_info(const Settings& s) {
                  {"dt", rec.uniform() ? json(rec.dt()) : json(nullptr)},
                  {"t_first", rec.time(0)},
                  {"duration", m.duration}};
-  j["g"] = g;
-  j["pga"] = m.pga;
-  j["pgv"] = m.pgv;
-  j["pgd"] = m.pgd;
-  j["arias"] = m.arias;
-  j["d5_95"] = number_or_null(m.d5_95);
-  j["t5"] = number_or_null(m.t5);
-  j["t95"] = number_or_null(m.t95);
-  j["t_mid"] = number_or_null(m.t_mid);
-  j["mean_period"] = number_or_null(m.mean_period);
-  j["final_velocity"] = m.final_velocity;
-  j["final_displacement"] = m.final_displacement;
+  const std::pair<const char*, double> measures[] = {{"g", g},
+                                                     {"pga", m.pga},
+                                                     {"pgv", m.pgv},
+                                                     {"pgd", m.pgd},
+                                                     {"arias", m.arias},
+                                                     {"d5_95", m.d5_95},
+                                                     {"t5", m.t5},
+                                                     {"t95", m.t95},
+                                                     {"t_mid", m.t_mid},
+                                                     {"mean_period", m.mean_period},
+                                                     {"final_velocity", m.final_velocity},
+                                                     {"final_displacement", m.final_displacement}};
+  for (const auto& [key, value] : measures) j[key] = number_or_null(value);
   j["units"] = {{"pga", "g"}, {"pgv", "m/s"}, {"pgd", "m"}, {"arias", "m/s"}, {"times", "s"}, {"sa", "g"}, {"sd", "m"}};
   if (spectrum) {
     j["damping"] = damping;
