@@ -63,6 +63,10 @@ void run_python(const std::string& script, const std::vector<std::string>& args)
 // caller (often "every step").
 void require_sample_count(const std::string& field, double interval, double span, double max_samples = 1e7);
 
+// The option group of an output that names a directory (motion generate --out): the command
+// checks it itself; the file checks made before every run pass it by.
+inline const std::string kDirectoryOutputs = "Output directory";
+
 // Throws UsageError (naming the field) unless a file can be written at path: not a directory, in
 // an existing writable directory. Checked before computing, so a bad path costs no work.
 void require_writable(const std::string& field, const std::string& path);

@@ -49,7 +49,7 @@ void check_outputs(CLI::App& sub) {
   std::vector<std::pair<std::string, std::string>> seen;  // (absolute path, flag)
   for (const char* name : kOutputs) {
     const CLI::Option* o = sub.get_option_no_throw(name);
-    if (!o || o->count() == 0) continue;
+    if (!o || o->count() == 0 || o->get_group() == kDirectoryOutputs) continue;
     const std::string value = o->as<std::string>();
     if (value.empty() || value == "-") continue;
     const std::string flag(name), field = flag.substr(2);

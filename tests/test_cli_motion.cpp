@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -146,6 +147,88 @@ TEST(CliRockingSpectrum, BadInputIsAUsageError) {
   for (const auto& [args, word] : cases) {
     const auto r = run_cli(args, d.path);
     EXPECT_EQ(r.code, 2) << args.back() << ": " << r.err;
+    EXPECT_NE(r.err.find(word), std::string::npos) << r.err;
+  }
+}
+
+TEST(CliMotion, GeneratedSuiteMeetsItsTargetsEndsAtRestAndReproduces) {
+  TmpDir d("motion_generate");
+  const std::vector<std::string> args = {"motion",  "generate", "--arias",   "0.5",  "--d5-95",  "8",   "--t-mid", "5",
+                                         "--f-mid", "4",        "--f-slope", "-0.1", "--zeta-f", "0.3", "--t-end", "20",
+                                         "--seed",  "11",       "--json"};
+  auto with = [&](std::vector<std::string> extra) {
+    std::vector<std::string> a = args;
+    a.insert(a.end(), extra.begin(), extra.end());
+    return a;
+  };
+  const auto one = run_cli(with({"--count", "60", "--out", "a", "--threads", "1"}), d.path);
+  ASSERT_EQ(one.code, 0) << one.err;
+  const json j = json::parse(one.out);
+  EXPECT_EQ(j["schema"], "blockdyn.motion-generate.summary/1");
+  ASSERT_EQ(j["records"].size(), 60u);
+  // The suite's medians near the targets (single records scatter: the Arias intensity's spread is
+  // 15 %, so its median over 60 records about 2 %; the high-pass takes some 4 % of the energy).
+  EXPECT_NEAR(j["median"]["arias"].get<double>(), 0.5, 0.12 * 0.5);
+  EXPECT_NEAR(j["median"]["d5_95"].get<double>(), 8, 0.05 * 8);
+  EXPECT_NEAR(j["median"]["t_mid"].get<double>(), 5, 0.05 * 5);
+  for (const json& r : j["records"]) {
+    // Every record ends at rest, to the 10 digits of the file.
+    EXPECT_LT(std::fabs(r["final_velocity"].get<double>()), 1e-7 * r["pgv"].get<double>()) << r["file"];
+    EXPECT_LT(std::fabs(r["final_displacement"].get<double>()), 1e-6 * r["pgd"].get<double>()) << r["file"];
+  }
+  // motion info reads the files back to the same measures.
+  const auto info = run_cli({"motion", "info", "a/" + j["records"][3]["file"].get<std::string>(), "--json"}, d.path);
+  ASSERT_EQ(info.code, 0) << info.err;
+  EXPECT_EQ(json::parse(info.out)["arias"], j["records"][3]["arias"]);
+  // Same seed, any thread count (and any count): the same bytes; another seed: other records.
+  ASSERT_EQ(run_cli(with({"--count", "30", "--out", "b", "--threads", "2"}), d.path).code, 0);
+  for (const char* f : {"rezaeian_0001.AT2", "rezaeian_0017.AT2", "rezaeian_0030.AT2"})
+    EXPECT_EQ(slurp(d.path + "/a/" + f), slurp(d.path + "/b/" + f)) << f;
+  auto other = with({"--count", "1", "--out", "c"});
+  other[std::find(other.begin(), other.end(), "--seed") - other.begin() + 1] = "12";
+  ASSERT_EQ(run_cli(other, d.path).code, 0);
+  EXPECT_NE(slurp(d.path + "/a/rezaeian_0001.AT2"), slurp(d.path + "/c/rezaeian_0001.AT2"));
+  // An existing suite is not overwritten silently.
+  const auto again = run_cli(with({"--count", "1", "--out", "a"}), d.path);
+  EXPECT_EQ(again.code, 2);
+  EXPECT_NE(again.err.find("overwrite"), std::string::npos) << again.err;
+}
+
+TEST(CliMotion, PulseRecordHasItsPgv) {
+  TmpDir d("motion_pulse");
+  const auto r = run_cli({"motion", "generate", "--model", "pulse", "--pulse-pgv", "0.6", "--pulse-period", "1.2",
+                          "--gamma", "2", "--nu", "0", "--dt", "0.005", "--out", "p", "--json"},
+                         d.path);
+  ASSERT_EQ(r.code, 0) << r.err;
+  const json rec = json::parse(r.out)["records"][0];
+  EXPECT_NEAR(rec["pgv"].get<double>(), 0.6, 1e-4);  // v peaks at A where the envelope does (nu = 0)
+  EXPECT_NEAR(rec["final_velocity"].get<double>(), 0.0, 1e-6);
+}
+
+TEST(CliMotion, GenerateBadInputIsAUsageError) {
+  TmpDir d("motion_generate_bad");
+  const std::vector<std::string> base = {"motion",  "generate", "--arias", "0.5", "--d5-95", "8",
+                                         "--t-mid", "5",        "--f-mid", "4",   "--t-end", "20"};
+  auto with = [&](std::vector<std::string> extra) {
+    std::vector<std::string> a = base;
+    a.insert(a.end(), extra.begin(), extra.end());
+    return a;
+  };
+  const std::vector<std::pair<std::vector<std::string>, std::string>> cases{
+      {with({}), "--out"},
+      {with({"--out", "o", "--count", "0"}), "count"},
+      {with({"--out", "o", "--d5-95", "30"}), "d5-95"},
+      {with({"--out", "o", "--f-slope", "-2"}), "f-slope"},
+      {with({"--out", "o", "--zeta-f", "1"}), "zeta-f"},
+      {with({"--out", "o", "--pulse-pgv", "1"}), "pulse-pgv"},
+      {with({"--out", "o", "--model", "ricker"}), "model"},
+      {{"motion", "generate", "--model", "pulse", "--pulse-period", "1", "--out", "o"}, "pulse-pgv"},
+      {{"motion", "generate", "--arias", "0.5", "--t-mid", "5", "--f-mid", "4", "--t-end", "20", "--out", "o"},
+       "d5-95"},
+  };
+  for (const auto& [args, word] : cases) {
+    const auto r = run_cli(args, d.path);
+    EXPECT_EQ(r.code, 2) << word << ": " << r.err;
     EXPECT_NE(r.err.find(word), std::string::npos) << r.err;
   }
 }

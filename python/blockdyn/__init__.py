@@ -28,7 +28,7 @@ import numpy as np
 from . import _core
 
 __version__ = _core.__version__
-__all__ = ["simulate", "simulate_many", "motion_info", "rocking_spectrum", "Simulator", "assembly", "spectrum", "survival", "response_curve", "cycles", "impact_map", "sweep", "map", "run",
+__all__ = ["simulate", "simulate_many", "motion_generate", "motion_info", "rocking_spectrum", "Simulator", "assembly", "spectrum", "survival", "response_curve", "cycles", "impact_map", "sweep", "map", "run",
            "Simulation", "Assembly", "lyapunov", "chaos_map", "periodic_orbits", "__version__"]
 
 # Where the plot scripts are once installed (share/blockdyn/python beside lib/python3/...).
@@ -442,6 +442,16 @@ def periodic_orbits(**options):
         options["continue"] = options.pop("continue_")
     j = _harmonic_command("periodic-orbits", ["table"], options)
     j.update(j.pop("table"))
+    return j
+
+
+def motion_generate(out, **options):
+    """Writes a suite of synthetic records into the directory `out` (`blockdyn motion generate`:
+    model="rezaeian" with arias=, d5_95=, t_mid=, f_mid=, ... or model="pulse" with pulse_pgv=,
+    pulse_period=, ...; count=, seed=, threads=) and returns motions.json's dict (per record its
+    file and measures, the suite's medians) with "files": the records' paths."""
+    j = json.loads(_core.motion_generate(_options(dict(options, out=os.fspath(out)))))
+    j["files"] = [os.path.join(os.fspath(out), r["file"]) for r in j["records"]]
     return j
 
 

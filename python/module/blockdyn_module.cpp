@@ -20,6 +20,7 @@
 #include "blockdyn/analysis/sweep/sweep_runner.hpp"
 #include "blockdyn/api/grid_studies.hpp"
 #include "blockdyn/api/map_study.hpp"
+#include "blockdyn/api/motion_generate.hpp"
 #include "blockdyn/api/motion_info.hpp"
 #include "blockdyn/api/sweep_settings.hpp"
 #include "blockdyn/api/simulate_run.hpp"
@@ -273,6 +274,18 @@ void add_studies(py::module_& m) {
       },
       py::arg("options"), py::arg("threads") = 0,
       "Runs `blockdyn map` in memory; returns (columns, sidecar JSON text, boundary columns, their meta JSON).");
+  m.def(
+      "motion_generate",
+      [](const OptionList& options) {
+        const Settings s = settings_of(options);
+        nlohmann::ordered_json j;
+        {
+          py::gil_scoped_release release;
+          j = motion_generate(s);
+        }
+        return dump_json(j);
+      },
+      py::arg("options"), "Writes a suite of synthetic records (`blockdyn motion generate`): motions.json's text.");
   m.def(
       "motion_info",
       [](const OptionList& options) {

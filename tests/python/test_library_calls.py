@@ -138,3 +138,13 @@ def test_rocking_spectrum_from_arrays_equals_simulate():
         r = blockdyn.simulate(model="housner", width=2 * R * np.sin(0.15), height=2 * R * np.cos(0.15),
                               ground_h_record=(t, a), t_end=float(t[-1]) + 2)
         assert ratio == pytest.approx(r.summary["max_abs_rotation"] / 0.15, rel=1e-12)
+
+
+def test_motion_generate_writes_records_that_motion_info_measures_alike(tmp_path):
+    j = blockdyn.motion_generate(tmp_path / "suite", arias=0.3, d5_95=6, t_mid=4, f_mid=5, t_end=15, count=3,
+                                 seed=5, threads=2)
+    assert len(j["files"]) == 3
+    for f, rec in zip(j["files"], j["records"]):
+        assert blockdyn.motion_info(f)["arias"] == rec["arias"]
+    with pytest.raises(ValueError, match="overwrite"):
+        blockdyn.motion_generate(tmp_path / "suite", arias=0.3, d5_95=6, t_mid=4, f_mid=5, t_end=15)

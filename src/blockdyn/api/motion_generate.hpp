@@ -1,0 +1,24 @@
+// SPDX-License-Identifier: Apache-2.0
+#pragma once
+// `blockdyn motion generate`: a suite of synthetic records (excitation/stochastic_motion.hpp)
+// written as PEER .AT2 files (g) into a directory with `motions.json`: per record its file and
+// measured pga, pgv, pgd, arias, d5_95, t_mid, mean period and end state, and the suite's
+// medians against the targets. Same seed, the same bytes whatever the thread count.
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "blockdyn/api/option_spec.hpp"
+#include "blockdyn/api/settings.hpp"
+
+namespace blockdyn {
+
+const std::vector<StudyOption>& motion_generate_options();
+// Checks every option first (std::invalid_argument naming it), then writes the records and
+// motions.json into `out` (created if missing; an existing motions.json needs `overwrite`) and
+// returns that document.
+nlohmann::ordered_json motion_generate(const Settings& s);
+// A PEER .AT2 text of samples a (g) at spacing dt.
+std::string at2_text(const std::vector<double>& a, double dt, const std::string& title);
+
+}  // namespace blockdyn

@@ -1,0 +1,187 @@
+// SPDX-License-Identifier: Apache-2.0
+#include "blockdyn/excitation/stochastic_motion.hpp"
+
+#include <boost/math/special_functions/gamma.hpp>
+
+#include <cmath>
+#include <random>
+#include <stdexcept>
+#include <string>
+
+#include "blockdyn/base/range_check.hpp"
+
+namespace blockdyn {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+using Invalid = std::invalid_argument;
+
+// (t95 - t5) / t45 of the gamma distribution of shape k: decreasing in k.
+double spread_ratio(double k) {
+  using boost::math::gamma_p_inv;
+  return (gamma_p_inv(k, 0.95) - gamma_p_inv(k, 0.05)) / gamma_p_inv(k, 0.45);
+}
+
+// Standard normal deviates from a stream fixed by the standard (mt19937_64, seed_seq) and
+// Box-Muller, so that a record depends on its seed and index only.
+class NormalStream {
+ public:
+  NormalStream(std::uint64_t seed, std::uint64_t index)
+      : rng_([&] {
+          std::seed_seq s{std::uint32_t(seed), std::uint32_t(seed >> 32), std::uint32_t(index),
+                          std::uint32_t(index >> 32), std::uint32_t(0x5eed)};
+          return std::mt19937_64(s);
+        }()) {}
+  double next() {
+    if (has_spare_) {
+      has_spare_ = false;
+      return spare_;
+    }
+    const double u1 = (double(rng_() >> 11) + 1.0) * 0x1.0p-53, u2 = double(rng_() >> 11) * 0x1.0p-53;
+    const double r = std::sqrt(-2.0 * std::log(u1));
+    spare_ = r * std::sin(2.0 * kPi * u2);
+    has_spare_ = true;
+    return r * std::cos(2.0 * kPi * u2);
+  }
+
+ private:
+  std::mt19937_64 rng_;
+  double spare_ = 0;
+  bool has_spare_ = false;
+};
+
+// The critically damped high-pass u'' + 2 w u' + w^2 u = x over piecewise-linear x, in closed
+// form per sample interval; returns u'' at the samples (the corrected acceleration).
+std::vector<double> high_pass(const std::vector<double>& x, double dt, double w) {
+  std::vector<double> out(x.size());
+  double u = 0, v = 0;
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    out[i] = x[i] - 2.0 * w * v - w * w * u;
+    if (i + 1 == x.size()) break;
+    const double s = (x[i + 1] - x[i]) / dt;
+    const double B = s / (w * w), A = x[i] / (w * w) - 2.0 * s / (w * w * w);
+    const double C = u - A, D = v - B + w * C, e = std::exp(-w * dt);
+    u = A + B * dt + (C + D * dt) * e;
+    v = B + (D - w * (C + D * dt)) * e;
+  }
+  return out;
+}
+
+// Final velocity and displacement (units of a times s, s^2) of the piecewise-linear samples.
+void end_state(const std::vector<double>& a, double dt, double& v, double& d) {
+  v = d = 0;
+  for (std::size_t i = 0; i + 1 < a.size(); ++i) {
+    d += v * dt + dt * dt * (2.0 * a[i] + a[i + 1]) / 6.0;
+    v += 0.5 * dt * (a[i] + a[i + 1]);
+  }
+}
+
+}  // namespace
+
+double Modulation::at(double t) const { return t > 0.0 ? c1 * std::exp((c2 - 1.0) * std::log(t) - c3 * t) : 0.0; }
+
+Modulation fit_modulation(double arias, double d5_95, double t_mid, double g) {
+  require_in_range("arias", arias, 0, 1e3, false);
+  require_in_range("d5-95", d5_95, 0, 1e4, false);
+  require_in_range("t-mid", t_mid, 0, 1e4, false);
+  // The shape k = 2 c2 - 1 must exceed 1 (q(0) = 0): the spread ratio of k = 1 bounds D5-95 / t_mid.
+  const double r = d5_95 / t_mid, r_max = spread_ratio(1.0 + 1e-9);
+  if (!(r < r_max))
+    throw Invalid("d5-95 = " + std::to_string(d5_95) + " s is too long for t-mid = " + std::to_string(t_mid) +
+                  " s: a gamma-type modulation needs d5-95 / t-mid < " + std::to_string(r_max));
+  double lo = std::log(1.0 + 1e-9), hi = std::log(1e6);
+  if (!(spread_ratio(std::exp(hi)) < r)) throw Invalid("d5-95: too short for t-mid (d5-95 / t-mid below 4e-3)");
+  for (int it = 0; it < 200 && hi - lo > 1e-15; ++it) {
+    const double mid = 0.5 * (lo + hi);
+    (spread_ratio(std::exp(mid)) > r ? lo : hi) = mid;
+  }
+  const double k = std::exp(0.5 * (lo + hi)), lambda = boost::math::gamma_p_inv(k, 0.45) / t_mid;
+  Modulation q;
+  q.c2 = 0.5 * (k + 1.0);
+  q.c3 = 0.5 * lambda;
+  // Expected Arias intensity pi g / 2 int q^2 dt with int q^2 = c1^2 Gamma(k) / lambda^k.
+  q.c1 = std::exp(0.5 * (std::log(2.0 * arias / (kPi * g)) + k * std::log(lambda) - std::lgamma(k)));
+  return q;
+}
+
+void validate(const RezaeianParams& p) {
+  require_in_range("dt", p.dt, 1e-4, 1.0);
+  require_in_range("t-end", p.t_end, 10 * p.dt, 1e4);
+  if (p.t_end / p.dt > 2e6) throw Invalid("t-end / dt: at most 2e6 samples per record");
+  require_in_range("f-mid", p.f_mid, 0, 0.25 / p.dt, false);
+  require_in_range("f-slope", p.f_slope, -1e3, 1e3);
+  require_in_range("zeta-f", p.zeta_f, 0, 1, false, false);
+  require_in_range("f-highpass", p.f_highpass, 0, 10);
+  require_in_range("g", p.g, 0, 1e3, false);
+  for (const double t : {0.0, p.t_end})
+    if (!(p.f_mid + p.f_slope * (t - p.t_mid) > 0.0))
+      throw Invalid("f-slope = " + std::to_string(p.f_slope) +
+                    " Hz/s makes the filter frequency f-mid + f-slope (t - " +
+                    "t-mid) reach 0 within [0, t-end]: give a smaller |f-slope|");
+  fit_modulation(p.arias, p.d5_95, p.t_mid, p.g);
+}
+
+GeneratedRecord rezaeian_record(const RezaeianParams& p, const Modulation& q, std::uint64_t seed, std::uint64_t index) {
+  const std::size_t n = std::size_t(std::floor(p.t_end / p.dt + 1e-9)) + 1;
+  NormalStream normal(seed, index);
+  std::vector<double> u(n), x(n, 0.0), wf(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    u[i] = normal.next();
+    wf[i] = 2.0 * kPi * (p.f_mid + p.f_slope * (double(i) * p.dt - p.t_mid));
+  }
+  const double sq = std::sqrt(1.0 - p.zeta_f * p.zeta_f);
+  for (std::size_t j = 0; j < n; ++j) {
+    double sum = 0.0, var = 0.0;
+    for (std::size_t i = 0; i <= j; ++i) {
+      const double tau = double(j - i) * p.dt, decay = p.zeta_f * wf[i] * tau;
+      if (decay > 40.0) continue;  // below 4e-18 of the term's size
+      const double h = wf[i] / sq * std::exp(-decay) * std::sin(wf[i] * sq * tau);
+      sum += h * u[i];
+      var += h * h;
+    }
+    if (var > 0.0) x[j] = q.at(double(j) * p.dt) * sum / std::sqrt(var);
+  }
+  GeneratedRecord r;
+  r.a = p.f_highpass > 0.0 ? high_pass(x, p.dt, 2.0 * kPi * p.f_highpass) : x;
+  // Ends at rest exactly: a correction alpha q + beta t q (shapes of the motion itself) cancels
+  // the final velocity and displacement the high-pass leaves (small: it has nearly done so).
+  std::vector<double> w1(n), w2(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    w1[i] = q.at(double(i) * p.dt);
+    w2[i] = w1[i] * double(i) * p.dt / p.t_end;
+  }
+  double v0, d0, v1, d1, v2, d2;
+  end_state(r.a, p.dt, v0, d0);
+  end_state(w1, p.dt, v1, d1);
+  end_state(w2, p.dt, v2, d2);
+  const double det = v1 * d2 - v2 * d1;
+  if (det != 0.0) {
+    const double alpha = (-v0 * d2 + v2 * d0) / det, beta = (-v1 * d0 + v0 * d1) / det;
+    for (std::size_t i = 0; i < n; ++i) {
+      const double c = alpha * w1[i] + beta * w2[i];
+      r.a[i] += c;
+      r.baseline_correction = std::max(r.baseline_correction, std::fabs(c));
+    }
+  }
+  return r;
+}
+
+void validate(const PulseParams& p) {
+  require_in_range("pulse-pgv", p.pgv, 0, 1e2, false);
+  require_in_range("pulse-period", p.period, 0, 1e3, false);
+  require_in_range("gamma", p.gamma, 1, 1e2, false);
+  require_in_range("nu", p.nu, -2 * kPi, 2 * kPi);
+  require_in_range("pulse-t0", p.t0, 0, 1e4);
+}
+
+double pulse_acceleration(const PulseParams& p, double t, double g) {
+  const double tau = t - p.t0;
+  if (std::fabs(tau) > 0.5 * p.gamma * p.period) return 0.0;
+  const double we = 2.0 * kPi / (p.gamma * p.period), wp = 2.0 * kPi / p.period;
+  const double dv = -0.5 * p.pgv *
+                    (we * std::sin(we * tau) * std::cos(wp * tau + p.nu) +
+                     (1.0 + std::cos(we * tau)) * wp * std::sin(wp * tau + p.nu));
+  return dv / g;
+}
+
+}  // namespace blockdyn
