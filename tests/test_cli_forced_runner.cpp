@@ -4,8 +4,8 @@
 // resumed without losing a point and to identical bytes, the friction-angle curve on a case with
 // a known answer, and bad input (exit 2 naming the field).
 #include <gtest/gtest.h>
-#include <nlohmann/json.hpp>
 #include <signal.h>
+#include <nlohmann/json.hpp>
 
 #include <chrono>
 #include <thread>
@@ -30,15 +30,15 @@ const std::vector<std::string> kBlock{"--model", "housner", "--width", "0.3", "-
 
 // A Housner survival map refined twice near class changes: 3 stages.
 std::vector<std::string> refined_survival(const std::string& out, const std::string& periods = "20") {
-  return with(with({"survival"}, kBlock), {"--beta-min", "0.5", "--beta-max", "6", "--beta-points", "5", "--omega-min",
-                                           "1", "--omega-max", "20", "--omega-points", "5", "--periods", periods,
-                                           "--refine", "2", "--out", out});
+  return with(with({"survival"}, kBlock),
+              {"--beta-min", "0.5", "--beta-max", "6", "--beta-points", "5", "--omega-min", "1", "--omega-max", "20",
+               "--omega-points", "5", "--periods", periods, "--refine", "2", "--out", out});
 }
 
 std::vector<std::string> one_sine_spectrum(const std::string& csv) {
-  return with(with({"spectrum"}, kBlock), {"--pulse", "one-sine", "--duration-min", "0.15", "--duration-max", "3",
-                                           "--duration-points", "12", "--scan-points", "60", "--rel-tol", "1e-8",
-                                           "--csv", csv});
+  return with(with({"spectrum"}, kBlock),
+              {"--pulse", "one-sine", "--duration-min", "0.15", "--duration-max", "3", "--duration-points", "12",
+               "--scan-points", "60", "--rel-tol", "1e-8", "--csv", csv});
 }
 
 std::size_t journal_rows(const std::string& path) {
@@ -88,15 +88,18 @@ TEST(ForcedRunner, SameBytesForOneAndTwoThreads) {
                                      {"--threads", t, "--json-out", std::string("s") + t + "_summary.json", "--quiet"}),
                                 d.path);
     ASSERT_EQ(r.code, 0) << r.err;
-    const CliResult q = run_cli(with(one_sine_spectrum(std::string("p") + t + ".csv"), {"--threads", t, "--quiet"}), d.path);
+    const CliResult q =
+        run_cli(with(one_sine_spectrum(std::string("p") + t + ".csv"), {"--threads", t, "--quiet"}), d.path);
     ASSERT_EQ(q.code, 0) << q.err;
-    const CliResult c = run_cli(with(with({"response-curve"}, kBlock),
-                                     {"--betas", "1.5,3", "--omega-min", "2", "--omega-max", "12", "--omega-points", "6",
-                                      "--t-end", "8", "--threads", t, "--quiet", "--out", std::string("c") + t + ".csv"}),
-                                d.path);
+    const CliResult c =
+        run_cli(with(with({"response-curve"}, kBlock),
+                     {"--betas", "1.5,3", "--omega-min", "2", "--omega-max", "12", "--omega-points", "6", "--t-end",
+                      "8", "--threads", t, "--quiet", "--out", std::string("c") + t + ".csv"}),
+                d.path);
     ASSERT_EQ(c.code, 0) << c.err;
   }
-  for (const char* f : {"s", "p", "c"}) EXPECT_EQ(slurp(d.path + "/" + f + "1.csv"), slurp(d.path + "/" + f + "2.csv")) << f;
+  for (const char* f : {"s", "p", "c"})
+    EXPECT_EQ(slurp(d.path + "/" + f + "1.csv"), slurp(d.path + "/" + f + "2.csv")) << f;
   const json a = json::parse(slurp(d.path + "/s1_summary.json")), b = json::parse(slurp(d.path + "/s2_summary.json"));
   EXPECT_EQ(a["points"], b["points"]);
   // The refined map holds the coarse grid and points of levels 1 and 2, not the whole lattice.
@@ -113,13 +116,14 @@ TEST(ForcedRunner, MpiRanksMatchOneProcess) {
   TmpDir d("forced-mpi");
   if (!have_mpi(d.path)) GTEST_SKIP() << "mpirun or an MPI build not available";
   ASSERT_EQ(run_cli(with(refined_survival("one.csv"), {"--quiet", "--threads", "1"}), d.path).code, 0);
-  const CliResult two = run_cli(with(refined_survival("two.csv"), {"--progress", "none", "--threads", "1"}), d.path,
-                                kMpirun + "2");
+  const CliResult two =
+      run_cli(with(refined_survival("two.csv"), {"--progress", "none", "--threads", "1"}), d.path, kMpirun + "2");
   ASSERT_EQ(two.code, 0) << two.err;
   EXPECT_NE(two.out.find("2 rank(s)"), std::string::npos) << two.out;
   EXPECT_EQ(slurp(d.path + "/two.csv"), slurp(d.path + "/one.csv"));
   ASSERT_EQ(run_cli(with(one_sine_spectrum("p1.csv"), {"--quiet", "--threads", "2"}), d.path).code, 0);
-  const CliResult three = run_cli(with(one_sine_spectrum("p3.csv"), {"--quiet", "--threads", "1"}), d.path, kMpirun + "3");
+  const CliResult three =
+      run_cli(with(one_sine_spectrum("p3.csv"), {"--quiet", "--threads", "1"}), d.path, kMpirun + "3");
   ASSERT_EQ(three.code, 0) << three.err;
   EXPECT_EQ(slurp(d.path + "/p3.csv"), slurp(d.path + "/p1.csv"));
   EXPECT_NE(slurp(d.path + "/p3.json").find("\"mpi_ranks\": 3"), std::string::npos);
@@ -130,7 +134,8 @@ TEST(ForcedRunner, KilledRefinedSurvivalResumesToIdenticalBytes) {
   // Long runs (1500 forcing periods) so that the run is interrupted inside a refinement level.
   ASSERT_EQ(run_cli(with(refined_survival("ref.csv", "1500"), {"--quiet", "--threads", "2"}), d.path).code, 0);
   const std::size_t total = count_lines(slurp(d.path + "/ref.csv")) - 1;
-  const std::size_t kept = start_and_kill(with(refined_survival("s.csv", "1500"), {"--threads", "1"}), d.path, "s.csv", 30);
+  const std::size_t kept =
+      start_and_kill(with(refined_survival("s.csv", "1500"), {"--threads", "1"}), d.path, "s.csv", 30);
   if (HasFailure()) return;
   EXPECT_LT(kept, total);
   const CliResult refused = run_cli(with(refined_survival("s.csv", "1500"), {"--quiet"}), d.path);
@@ -163,9 +168,10 @@ TEST(ForcedRunner, FrictionAngleCurveOfTheRigidTrilith) {
   // lintel follows them as long as friction can accelerate it: it slides exactly when
   // tan(phi_l) < 0.147, i.e. phi_l < 8.36 deg.
   TmpDir d("forced-phi");
-  const std::vector<std::string> base{"response-curve", "--model", "assembly", "--preset", "trilith", "--contact",
-                                      "rigid", "--excitation", "half-cosine", "--betas", "0.6", "--omega", "2",
-                                      "--t-end", "1.5", "--json", "--quiet"};
+  const std::vector<std::string> base{
+      "response-curve", "--model", "assembly", "--preset", "trilith", "--contact", "rigid", "--excitation",
+      "half-cosine",    "--betas", "0.6",      "--omega",  "2",       "--t-end",   "1.5",   "--json",
+      "--quiet"};
   const CliResult r = run_cli(with(base, {"--phi-l-values", "5,8,9,20,90"}), d.path);
   ASSERT_EQ(r.code, 0) << r.err;
   const json j = json::parse(r.out);
@@ -173,8 +179,10 @@ TEST(ForcedRunner, FrictionAngleCurveOfTheRigidTrilith) {
   const double b = j["width"];
   for (const auto& p : j["points"]) {
     const double phi = p["phi_l"], slip = p["max_sliding_over_b"].get<double>() * b;
-    if (phi < 8.36) EXPECT_GT(slip, 1e-6) << phi;
-    else EXPECT_LT(slip, 1e-12) << phi;  // no sliding at all, phi = 90 included
+    if (phi < 8.36)
+      EXPECT_GT(slip, 1e-6) << phi;
+    else
+      EXPECT_LT(slip, 1e-12) << phi;  // no sliding at all, phi = 90 included
     EXPECT_LT(p["theta_max_over_alpha"].get<double>(), 1e-12) << phi;
     EXPECT_EQ(p["phi_s"], 90.0);
   }
@@ -191,7 +199,8 @@ TEST(ForcedRunner, BadInputIsAUsageError) {
   TmpDir d("forced-bad");
   const auto survival = with({"survival"}, kBlock);
   const auto curve = with(with({"response-curve"}, kBlock), {"--betas", "2"});
-  const std::vector<std::string> trilith{"response-curve", "--model", "assembly", "--preset", "trilith", "--betas", "2"};
+  const std::vector<std::string> trilith{"response-curve", "--model", "assembly", "--preset",
+                                         "trilith",        "--betas", "2"};
   const std::vector<std::pair<std::vector<std::string>, std::string>> cases{
       {with(survival, {"--resume"}), "resume: needs --out"},
       {with(survival, {"--out", "x.csv", "--resume", "--overwrite"}), "--resume and --overwrite"},
@@ -215,8 +224,104 @@ TEST(ForcedRunner, BadInputIsAUsageError) {
     EXPECT_EQ(count_lines(r.err), 1u) << r.err;
   }
   // An existing table is never replaced silently.
-  ASSERT_EQ(run_cli(with(survival, {"--beta-points", "2", "--omega-points", "2", "--out", "t.csv", "--quiet"}), d.path).code, 0);
-  const CliResult again = run_cli(with(survival, {"--beta-points", "2", "--omega-points", "2", "--out", "t.csv"}), d.path);
+  ASSERT_EQ(
+      run_cli(with(survival, {"--beta-points", "2", "--omega-points", "2", "--out", "t.csv", "--quiet"}), d.path).code,
+      0);
+  const CliResult again =
+      run_cli(with(survival, {"--beta-points", "2", "--omega-points", "2", "--out", "t.csv"}), d.path);
   EXPECT_EQ(again.code, 2);
   EXPECT_NE(again.err.find("--overwrite"), std::string::npos) << again.err;
+}
+
+namespace {
+
+// A small generated suite (6 records of 12 s) and a fragility over it: 6 x 8 runs.
+std::vector<std::string> fragility_args(const std::string& out) {
+  return {"fragility", "--model",     "housner", "--width", "0.4",      "--height",    "1.7",
+          "--records", "suite/*.AT2", "--im",    "pga",     "--levels", "0.15:0.85:8", "--t-after",
+          "2",         "--bootstrap", "50",      "--out",   out};
+}
+
+void make_suite(const std::string& dir) {
+  const CliResult r = run_cli({"motion", "generate", "--arias", "0.6", "--d5-95", "6", "--t-mid", "4", "--f-mid", "3",
+                               "--t-end", "12", "--count", "6", "--seed", "3", "--out", "suite", "--quiet"},
+                              dir);
+  ASSERT_EQ(r.code, 0) << r.err;
+}
+
+}  // namespace
+
+TEST(ForcedRunner, FragilityRunsAreSimulateRunsAndResumeToIdenticalBytes) {
+  TmpDir d("forced-fragility");
+  make_suite(d.path);
+  const CliResult ref = run_cli(with(fragility_args("ref.csv"), {"--json", "--quiet", "--threads", "2"}), d.path);
+  ASSERT_EQ(ref.code, 0) << ref.err;
+  const json j = json::parse(ref.out);
+  EXPECT_EQ(j["schema"], "blockdyn.fragility.summary/1");
+  ASSERT_EQ(j["runs"].size(), 48u);
+  ASSERT_EQ(j["levels"].size(), 8u);
+  std::size_t over = 0;
+  for (const auto& l : j["levels"]) {
+    EXPECT_EQ(l["n"], 6);
+    over += l["n_overturned"].get<std::size_t>();
+  }
+  std::size_t counted = 0;
+  for (const auto& r : j["runs"]) counted += r["overturned"].get<bool>();
+  EXPECT_EQ(over, counted);
+  EXPECT_TRUE(j["fit"].contains("status"));
+  // Two runs against `simulate` with the record scaled as the table says (17 digits).
+  const std::string csv = slurp(d.path + "/ref.csv");
+  for (const std::size_t row : {9u, 46u}) {
+    std::size_t at = 0;
+    for (std::size_t k = 0; k <= row; ++k) at = csv.find('\n', at) + 1;
+    const std::string line = csv.substr(at, csv.find('\n', at) - at);
+    std::vector<std::string> c;
+    for (std::size_t a = 0, b; a <= line.size(); a = b + 1) {
+      b = line.find(',', a);
+      if (b == std::string::npos) b = line.size();
+      c.push_back(line.substr(a, b - a));
+    }
+    const CliResult s =
+        run_cli({"simulate", "--model", "housner", "--width", "0.4", "--height", "1.7", "--ground-h-record", c[1],
+                 "--ground-h-scale", c[4], "--t-end", "14", "--json", "--quiet"},
+                d.path);
+    ASSERT_EQ(s.code, 0) << s.err;
+    const json sj = json::parse(s.out);
+    EXPECT_EQ(j["runs"][row]["max_abs_rotation"], sj["max_abs_rotation"]) << line;
+    EXPECT_EQ(j["runs"][row]["overturned"].get<bool>(), sj["status"] == "overturned") << line;
+  }
+  // Killed and resumed: the same bytes as the uninterrupted run.
+  const std::size_t kept = start_and_kill(with(fragility_args("s.csv"), {"--threads", "1"}), d.path, "s.csv", 5);
+  if (HasFailure()) return;
+  const CliResult res = run_cli(with(fragility_args("s.csv"), {"--resume", "--json"}), d.path);
+  ASSERT_EQ(res.code, 0) << res.err;
+  EXPECT_EQ(slurp(d.path + "/s.csv"), slurp(d.path + "/ref.csv"));
+  EXPECT_EQ(json::parse(res.out)["fit"], j["fit"]);
+  EXPECT_LT(kept, 48u);
+}
+
+TEST(ForcedRunner, FragilityBadInputIsAUsageError) {
+  TmpDir d("forced-fragility-bad");
+  make_suite(d.path);
+  const std::vector<std::pair<std::vector<std::string>, std::string>> cases{
+      {{"fragility", "--records", "none/*.AT2", "--levels", "0.1:1:3", "--width", "0.4", "--height", "1.7"}, "records"},
+      {{"fragility", "--records", "suite/*.AT2", "--levels", "0:1:3", "--width", "0.4", "--height", "1.7"}, "levels"},
+      {{"fragility", "--records", "suite/*.AT2", "--levels", "-0.1,0.2", "--width", "0.4", "--height", "1.7"},
+       "levels"},
+      {{"fragility", "--records", "suite/*.AT2", "--width", "0.4", "--height", "1.7"}, "levels"},
+      {{"fragility", "--records", "suite/*.AT2", "--levels", "0.1:1:3", "--im", "pgd", "--width", "0.4", "--height",
+        "1.7"},
+       "im"},
+      {{"fragility", "--records", "suite/*.AT2", "--levels", "0.1:1:3", "--im", "sa:0", "--width", "0.4", "--height",
+        "1.7"},
+       "im"},
+      {{"fragility", "--records", "suite/*.AT2", "--levels", "0.1:1:3", "--bootstrap", "-1", "--width", "0.4",
+        "--height", "1.7"},
+       "bootstrap"},
+  };
+  for (const auto& [args, word] : cases) {
+    const CliResult r = run_cli(args, d.path);
+    EXPECT_EQ(r.code, 2) << word << ": " << r.err;
+    EXPECT_NE(r.err.find(word), std::string::npos) << r.err;
+  }
 }

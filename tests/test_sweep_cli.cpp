@@ -251,7 +251,7 @@ TEST(SweepCli, MpiEveryCommandDistributesOrRefuses) {
   std::istringstream lines(help.out.substr(at));
   std::string line;
   const std::set<std::string> distribute = {"sweep",           "map", "survival", "spectrum", "response-curve",
-                                            "rocking-spectrum"};
+                                            "rocking-spectrum", "fragility"};
   int refused = 0, ran = 0;
   while (std::getline(lines, line)) {
     std::istringstream words(line);
@@ -267,6 +267,6 @@ TEST(SweepCli, MpiEveryCommandDistributesOrRefuses) {
       ++refused;
     }
   }
-  EXPECT_EQ(ran, 6);
+  EXPECT_EQ(ran, 7);
   EXPECT_GT(refused, 15);
 }

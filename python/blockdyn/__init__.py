@@ -28,7 +28,7 @@ import numpy as np
 from . import _core
 
 __version__ = _core.__version__
-__all__ = ["simulate", "simulate_many", "motion_generate", "motion_info", "rocking_spectrum", "Simulator", "assembly", "spectrum", "survival", "response_curve", "cycles", "impact_map", "sweep", "map", "run",
+__all__ = ["simulate", "simulate_many", "motion_generate", "motion_info", "rocking_spectrum", "fragility", "Simulator", "assembly", "spectrum", "survival", "response_curve", "cycles", "impact_map", "sweep", "map", "run",
            "Simulation", "Assembly", "lyapunov", "chaos_map", "periodic_orbits", "__version__"]
 
 # Where the plot scripts are once installed (share/blockdyn/python beside lib/python3/...).
@@ -303,6 +303,18 @@ def rocking_spectrum(**options):
     for key in ("p", "scale", "max_abs_rotation_over_alpha"):
         j[key] = np.array([r[key] for r in rows], dtype=float)
     j["overturned"] = np.array([r["overturned"] for r in rows], dtype=bool)
+    return j
+
+
+def fragility(**options):
+    """Runs `blockdyn fragility` in memory (records= a glob, im=, levels=, the model's options) and
+    returns its JSON summary (runs, levels, fit with its 90 % band, curve) with the stripes as
+    arrays "level", "fraction" and the curve as "curve_im", "curve_p", "curve_p05", "curve_p95"."""
+    j = _grid_summary("fragility", options)
+    j["level"] = np.array([lv["im"] for lv in j["levels"]], dtype=float)
+    j["fraction"] = np.array([lv["n_overturned"] / lv["n"] for lv in j["levels"]], dtype=float)
+    for key in ("im", "p", "p05", "p95"):
+        j["curve_" + key] = np.array([c.get(key, np.nan) for c in j["curve"]], dtype=float)
     return j
 
 

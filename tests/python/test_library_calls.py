@@ -1,6 +1,7 @@
 # SPDX-License-Identifier: Apache-2.0
 """The Python module on the library (issue 26): runs from memory, records as arrays, prepared runs
 repeated, many runs on threads, each equal to the single call to the last bit."""
+import json
 import os
 import tempfile
 
@@ -148,3 +149,18 @@ def test_motion_generate_writes_records_that_motion_info_measures_alike(tmp_path
         assert blockdyn.motion_info(f)["arias"] == rec["arias"]
     with pytest.raises(ValueError, match="overwrite"):
         blockdyn.motion_generate(tmp_path / "suite", arias=0.3, d5_95=6, t_mid=4, f_mid=5, t_end=15)
+
+
+def test_fragility_in_memory_equals_the_command_line(tmp_path):
+    blockdyn.motion_generate(tmp_path / "suite", arias=0.6, d5_95=6, t_mid=4, f_mid=3, t_end=10, count=4, seed=2)
+    opts = dict(model="housner", width=0.4, height=1.7, records=str(tmp_path / "suite" / "*.AT2"), im="pga",
+                levels="0.2:0.8:4", t_after=2, bootstrap=20)
+    j = blockdyn.fragility(threads=2, **opts)
+    assert j["level"].shape == (4,)
+    assert len(j["runs"]) == 16
+    out = str(tmp_path / "f.json")
+    blockdyn.run(*blockdyn._args("fragility", dict(opts, json_out=out, quiet=True)))
+    with open(out) as f:
+        cli = json.load(f)
+    assert [r["max_abs_rotation"] for r in cli["runs"]] == [r["max_abs_rotation"] for r in j["runs"]]
+    assert cli["fit"] == j["fit"]

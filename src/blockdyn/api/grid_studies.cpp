@@ -21,6 +21,7 @@
 #include "blockdyn/analysis/sweep/sweep_runner.hpp"
 #include "blockdyn/api/forced_model_settings.hpp"
 #include "blockdyn/api/harmonic_run.hpp"
+#include "blockdyn/api/fragility.hpp"
 #include "blockdyn/api/rocking_spectrum.hpp"
 #include "blockdyn/base/range_check.hpp"
 #include "blockdyn/io/json_io.hpp"
@@ -518,14 +519,14 @@ const std::vector<GridStudyCommand>& grid_study_commands() {
          "plot theta_MAX / alpha (and the slip) versus omega or phi_l, one curve per beta and phi_s (PNG + "
          "SVG)"}},
        "no summary line, no progress"},
-      rocking_spectrum_command()};
+      rocking_spectrum_command(), fragility_command()};
   return all;
 }
 
 const GridStudyCommand& grid_study_command(const std::string& name) {
   for (const GridStudyCommand& c : grid_study_commands())
     if (c.name == name) return c;
-  throw std::invalid_argument("grid study '" + name + "' is not one of: spectrum, survival, response-curve, rocking-spectrum");
+  throw std::invalid_argument("grid study '" + name + "' is not one of: spectrum, survival, response-curve, rocking-spectrum, fragility");
 }
 
 Table compute_table(const PointTable& t, int threads, PointPlan* plan,
