@@ -325,3 +325,20 @@ TEST(ForcedRunner, FragilityBadInputIsAUsageError) {
     EXPECT_NE(r.err.find(word), std::string::npos) << r.err;
   }
 }
+
+TEST(ForcedRunner, FragilityOfAnAssemblyCountsCollapses) {
+  TmpDir d("forced-fragility-assembly");
+  make_suite(d.path);
+  const CliResult r =
+      run_cli({"fragility", "--model", "assembly", "--preset", "trilith", "--contact", "rigid", "--records",
+               "suite/*.AT2", "--levels", "0.05,1.5", "--t-after", "1", "--json", "--quiet"},
+              d.path);
+  ASSERT_EQ(r.code, 0) << r.err;
+  const json j = json::parse(r.out);
+  // Far below the columns' uplift (tan alpha = 0.25 g) nothing collapses; at 1.5 g all do: the
+  // runs are separated, which has no finite lognormal fit, and the summary says so.
+  EXPECT_EQ(j["levels"][0]["n_overturned"], 0);
+  EXPECT_EQ(j["levels"][1]["n_overturned"], 6);
+  EXPECT_EQ(j["fit"]["status"], "no_fit");
+  EXPECT_TRUE(j["fit"]["median"].is_null());
+}

@@ -219,3 +219,31 @@ TEST(StochasticMotion, PulseVelocityIsTheClosedForm) {
     ASSERT_NEAR(v, exact, 1e-6) << t;
   }
 }
+
+TEST(IntensityMeasures, SineAgainstItsClosedForms) {
+  // a = A sin(w t) over 3 whole periods at 1 Hz, 2000 samples per period: the interpolation
+  // changes the integrals by (w dt)^2 / 12 ~ 1e-6 relative.
+  const double A = 0.25, w = 2 * kPi, T = 3.0;
+  const Accelerogram rec = uniform(5e-4, 6001, [](double t) { return 0.25 * std::sin(2 * kPi * t); });
+  const IntensityMeasures m = intensity_measures(rec, g);
+  EXPECT_NEAR(m.arias, kPi * g / 2 * A * A * T / 2, 2e-6 * m.arias);
+  EXPECT_NEAR(m.pgv, 2 * A * g / w, 2e-6 * m.pgv);  // v = A g (1 - cos w t) / w
+  // Husid: (t - sin(2 w t) / (2 w)) / T; its 5 %, 45 % and 95 % times by Newton.
+  for (const double q : {0.05, 0.45, 0.95}) {
+    double t = q * T;
+    for (int i = 0; i < 50; ++i) t -= (t - std::sin(2 * w * t) / (2 * w) - q * T) / (1 - std::cos(2 * w * t));
+    EXPECT_NEAR(husid_time(rec, q), t, 2e-5) << q;
+  }
+  // Sa of an undamped oscillator at T_n = 0.4 s: from rest, u = -(A g / (wn^2 - w^2))(sin w t -
+  // (w / wn) sin wn t); after the record, the free vibration of its end state.
+  const double wn = 2 * kPi / 0.4, c = -A * g / (wn * wn - w * w);
+  double peak = 0;
+  for (int i = 0; i <= 3'000'000; ++i) {
+    const double t = T * i / 3e6;
+    peak = std::max(peak, std::fabs(c * (std::sin(w * t) - w / wn * std::sin(wn * t))));
+  }
+  const double uT = c * (std::sin(w * T) - w / wn * std::sin(wn * T)),
+               vT = c * w * (std::cos(w * T) - std::cos(wn * T));
+  peak = std::max(peak, std::hypot(uT, vT / wn));
+  EXPECT_NEAR(spectral_ordinate(rec, 0.4, 0.0, g).sd, peak, 1e-5 * peak);
+}

@@ -29,6 +29,7 @@ std::vector<StudyOption> rocking_spectrum_options() {
           {"p-min", "smallest p of a geometric range [rad/s]"},
           {"p-max", "largest p [rad/s]"},
           {"p-points", "number of p values"},
+          {"t-end", "duration of every run [s] (default: the record's end + --t-after)"},
           {"t-after", "simulated time after the record's end [s]", "5"},
           {"mass", "block mass [kg]", "1"},
           {"g", "gravity [m/s^2]", "9.81"},
@@ -132,7 +133,9 @@ GridStudy rocking_grid(const Settings& given, const std::string& output) {
   base.impact = *law;
   if (so.given("restitution")) base.restitution = so.number("restitution");
   const auto rec = record_of(given);
-  const double t_end = rec->t_last() + t_after;
+  if (so.given("t-end") && so.given("t-after")) throw Invalid("--t-end and --t-after: give only one");
+  const double t_end = so.given("t-end") ? so.number("t-end") : rec->t_last() + t_after;
+  require_in_range("t-end", t_end, 0, 1e5, false);
   // Every block of the grid is checked before any point runs (a restitution out of range, ...).
   for (double p : ax.p) forced_block_model(block_of(base, alpha, p), housner);
   const ForcedModel first = forced_block_model(block_of(base, alpha, ax.p.front()), housner);
