@@ -41,12 +41,13 @@ struct GenerateFlags {
   std::string json_out, plot;
 };
 
+const char* const kGenerateHelp =
+    "a suite of synthetic records as PEER .AT2 files (g): the Rezaeian & Der Kiureghian site model, or a near-fault "
+    "pulse (Mavroeidis & Papageorgiou), optionally on a stochastic background";
+
 void add_generate(CLI::App& motion) {
   auto f = std::make_shared<GenerateFlags>();
-  CLI::App* s = motion.add_subcommand(
-      "generate",
-      "a suite of synthetic records as PEER .AT2 files (g): the Rezaeian & Der Kiureghian site model, or a near-fault "
-      "pulse (Mavroeidis & Papageorgiou), optionally on a stochastic background");
+  CLI::App* s = motion.add_subcommand("generate", kGenerateHelp);
   add_spec_options(*s, motion_generate_options());
   s->get_option("--out")->group(kDirectoryOutputs);  // a directory, checked by the library
   s->add_option("--threads", "worker threads (0: all cores); the files are the same for any count")->default_str("0");

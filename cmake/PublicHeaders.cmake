@@ -13,6 +13,10 @@ set(BLOCKDYN_PUBLIC_ENTRY_HEADERS
   model/winkler/initial_conditions.hpp
   model/winkler/energy.hpp
   excitation/ground_motion.hpp
+  excitation/intensity_measures.hpp
+  excitation/response_spectrum.hpp
+  excitation/stochastic_motion.hpp
+  analysis/forced/fragility_fit.hpp
   io/json_io.hpp
   io/scenario.hpp
   io/csv_table.hpp

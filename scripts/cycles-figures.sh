@@ -4,13 +4,9 @@
 # impact maps of Housner's block and of seed 002's trilith (Figs. 12-15), about 2 minutes of CPU
 # on one core (the 400 s trilith runs take 15 s each). Usage: scripts/cycles-figures.sh [FIGDIR [DATADIR]]
 # (defaults docs/figures and out/cycles; needs a built ./build)
-set -euo pipefail
-cd "$(dirname "$0")/.."
-B=./build/blockdyn
-F=${1:-docs/figures}
-D=${2:-out/cycles}
-mkdir -p "$F" "$D"
-run() { echo "+ $*"; "$@" >/dev/null; }
+FIGURES_DATA_DIR=out/cycles
+# shellcheck source=scripts/figures-env.sh
+source "$(dirname "$0")/figures-env.sh"
 T="--model assembly --preset trilith"
 
 # Housner's block (0.3 x 1.5 m): a (2,6) transient settling on the (1,3) orbit.

@@ -6,13 +6,9 @@
 # scripts/forced_chaos_figures.sh and scripts/reproduce_forced.sh it regenerates every figure in
 # docs/figures. About 6 minutes of CPU. Usage: scripts/docs-figures.sh [FIGDIR [DATADIR]]
 # (defaults docs/figures and out/docs-figures; needs a built ./build).
-set -euo pipefail
-cd "$(dirname "$0")/.."
-B=./build/blockdyn
-F=${1:-docs/figures}
-D=${2:-out/docs-figures}
-mkdir -p "$F" "$D"
-run() { echo "+ $*"; "$@" >/dev/null; }
+FIGURES_DATA_DIR=out/docs-figures
+# shellcheck source=scripts/figures-env.sh
+source "$(dirname "$0")/figures-env.sh"
 
 # docs/flight.md
 run $B flight-time --ic ic1 --r 0.1 --mu 0.2 --k-min 1e2 --k-max 1e9 --points 120 --csv "$D/ft_ic1.csv" \

@@ -3,13 +3,10 @@
 # docs/earthquake.md's worked case: a museum statue (0.4 m x 1.7 m) on a generated suite for a
 # site; the commands exactly as the page gives them, timed. Usage:
 # scripts/earthquake-figures.sh [FIGDIR [DATADIR]] (defaults docs/figures and out/earthquake; needs a built ./build).
-set -euo pipefail
-cd "$(dirname "$0")/.."
-B=./build/blockdyn
-F=${1:-docs/figures}
-D=${2:-out/earthquake}
-mkdir -p "$F" "$D"
-run() { echo "+ $*"; /usr/bin/time -f "  %e s wall, %U s user" "$@" >/dev/null; }
+FIGURES_DATA_DIR=out/earthquake
+TIME=1
+# shellcheck source=scripts/figures-env.sh
+source "$(dirname "$0")/figures-env.sh"
 
 # The site's suite: 40 records of 30 s.
 run $B motion generate --model rezaeian --arias 0.8 --d5-95 12 --t-mid 7 --f-mid 3 --f-slope -0.05 --zeta-f 0.25 \

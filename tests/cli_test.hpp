@@ -8,6 +8,14 @@
 
 using nlohmann::json;
 using sweep_test::exists;
+using sweep_test::expect_usage_errors;
 using sweep_test::run_cli;
 using sweep_test::slurp;
 using sweep_test::TmpDir;
+
+// Runs the program (expecting success) and parses its standard output as JSON; null on failure.
+inline json cli_json(const std::vector<std::string>& args, const std::string& dir) {
+  const sweep_test::CliResult r = run_cli(args, dir);
+  EXPECT_EQ(r.code, 0) << r.err;
+  return r.code == 0 ? json::parse(r.out) : json();
+}

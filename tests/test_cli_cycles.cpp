@@ -151,9 +151,5 @@ TEST(CliCycles, BadInputIsAUsageError) {
       {with(with(with({"impact-map"}, kHousner), ok), {"--section-phase", "inf"}), "section-phase"},
       {with(with({"impact-map"}, kHousner), {"--beta", "2"}), "--omega"},
   };
-  for (const auto& [args, word] : cases) {
-    const auto r = run_cli(args, d.path);
-    EXPECT_EQ(r.code, 2) << args.back() << ": " << r.err;
-    EXPECT_NE(r.err.find(word), std::string::npos) << r.err;
-  }
+  expect_usage_errors(cases, d.path);
 }

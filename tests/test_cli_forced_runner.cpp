@@ -217,12 +217,7 @@ TEST(ForcedRunner, BadInputIsAUsageError) {
       {with(curve, {"--omega", "3", "--omega-min", "2"}), "--omega"},
       {with(curve, {"--omega", "-1"}), "omega"},
   };
-  for (const auto& [args, word] : cases) {
-    const CliResult r = run_cli(args, d.path);
-    EXPECT_EQ(r.code, 2) << word << ": " << r.err;
-    EXPECT_NE(r.err.find(word), std::string::npos) << r.err;
-    EXPECT_EQ(count_lines(r.err), 1u) << r.err;
-  }
+  expect_usage_errors(cases, d.path, true);
   // An existing table is never replaced silently.
   ASSERT_EQ(
       run_cli(with(survival, {"--beta-points", "2", "--omega-points", "2", "--out", "t.csv", "--quiet"}), d.path).code,
@@ -319,11 +314,7 @@ TEST(ForcedRunner, FragilityBadInputIsAUsageError) {
         "--height", "1.7"},
        "bootstrap"},
   };
-  for (const auto& [args, word] : cases) {
-    const CliResult r = run_cli(args, d.path);
-    EXPECT_EQ(r.code, 2) << word << ": " << r.err;
-    EXPECT_NE(r.err.find(word), std::string::npos) << r.err;
-  }
+  expect_usage_errors(cases, d.path);
 }
 
 TEST(ForcedRunner, FragilityOfAnAssemblyCountsCollapses) {

@@ -70,11 +70,7 @@ TEST(CliMotion, BadRecordsAndOptionsAreUsageErrors) {
       {{"motion", "info"}, "record"},
       {{"motion"}, "subcommand"},
   };
-  for (const auto& [args, word] : cases) {
-    const auto r = run_cli(args, d.path);
-    EXPECT_EQ(r.code, 2) << args[2 % args.size()] << ": " << r.err;
-    EXPECT_NE(r.err.find(word), std::string::npos) << r.err;
-  }
+  expect_usage_errors(cases, d.path);
 }
 
 TEST(CliRockingSpectrum, EqualsSimulatePointByPoint) {
@@ -144,11 +140,7 @@ TEST(CliRockingSpectrum, BadInputIsAUsageError) {
       {{"rocking-spectrum", "--model", "assembly", "--record", rec, "--alpha", "0.2", "--p-values", "1"}, "model"},
       {{"rocking-spectrum", "--record", rec, "--alpha", "0.2", "--p-values", "1", "--scales", "-1"}, "scales"},
   };
-  for (const auto& [args, word] : cases) {
-    const auto r = run_cli(args, d.path);
-    EXPECT_EQ(r.code, 2) << args.back() << ": " << r.err;
-    EXPECT_NE(r.err.find(word), std::string::npos) << r.err;
-  }
+  expect_usage_errors(cases, d.path);
 }
 
 TEST(CliMotion, GeneratedSuiteMeetsItsTargetsEndsAtRestAndReproduces) {
@@ -196,11 +188,11 @@ TEST(CliMotion, GeneratedSuiteMeetsItsTargetsEndsAtRestAndReproduces) {
 
 TEST(CliMotion, PulseRecordHasItsPgv) {
   TmpDir d("motion_pulse");
-  const auto r = run_cli({"motion", "generate", "--model", "pulse", "--pulse-pgv", "0.6", "--pulse-period", "1.2",
-                          "--gamma", "2", "--nu", "0", "--dt", "0.005", "--out", "p", "--json"},
-                         d.path);
-  ASSERT_EQ(r.code, 0) << r.err;
-  const json rec = json::parse(r.out)["records"][0];
+  const json j = cli_json({"motion", "generate", "--model", "pulse", "--pulse-pgv", "0.6", "--pulse-period", "1.2",
+                           "--gamma", "2", "--nu", "0", "--dt", "0.005", "--out", "p", "--json"},
+                          d.path);
+  ASSERT_FALSE(j.is_null());
+  const json rec = j["records"][0];
   EXPECT_NEAR(rec["pgv"].get<double>(), 0.6, 1e-4);  // v peaks at A where the envelope does (nu = 0)
   EXPECT_NEAR(rec["final_velocity"].get<double>(), 0.0, 1e-6);
 }
@@ -226,9 +218,5 @@ TEST(CliMotion, GenerateBadInputIsAUsageError) {
       {{"motion", "generate", "--arias", "0.5", "--t-mid", "5", "--f-mid", "4", "--t-end", "20", "--out", "o"},
        "d5-95"},
   };
-  for (const auto& [args, word] : cases) {
-    const auto r = run_cli(args, d.path);
-    EXPECT_EQ(r.code, 2) << word << ": " << r.err;
-    EXPECT_NE(r.err.find(word), std::string::npos) << r.err;
-  }
+  expect_usage_errors(cases, d.path);
 }

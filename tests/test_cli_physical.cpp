@@ -15,9 +15,10 @@ using sweep_test::TmpDir;
 TEST(CliPhysical, FlagsGiveTheNonDimensionalTwin) {
   TmpDir d("phys");
   const double a = 1.8, b = 0.45, t = 0.4, rho = 2700, ks = 2e9, g = 9.81;
-  const auto phys = run_cli({"simulate", "--height", "1.8", "--width", "0.45", "--thickness", "0.4", "--density",
-                             "2700", "--subgrade-modulus", "2e9", "--mu", "0.5", "--ic", "ic1", "--t-end", "3", "--json"},
-                            d.path);
+  const auto phys =
+      run_cli({"simulate", "--height", "1.8", "--width", "0.45", "--thickness", "0.4", "--density", "2700",
+               "--subgrade-modulus", "2e9", "--mu", "0.5", "--ic", "ic1", "--t-end", "3", "--json"},
+              d.path);
   ASSERT_EQ(phys.code, 0) << phys.err;
   const auto jp = nlohmann::json::parse(phys.out);
   const double m = rho * a * b * t;
@@ -34,8 +35,8 @@ TEST(CliPhysical, FlagsGiveTheNonDimensionalTwin) {
   std::snprintf(kbuf, sizeof kbuf, "%.17g", k);
   char tbuf[64];
   std::snprintf(tbuf, sizeof tbuf, "%.17g", 3.0 / std::sqrt(a / g));
-  const auto nd = run_cli({"simulate", "--r", "0.25", "--k", kbuf, "--mu", "0.5", "--ic", "ic1", "--t-end", tbuf, "--json"},
-                          d.path);
+  const auto nd = run_cli(
+      {"simulate", "--r", "0.25", "--k", kbuf, "--mu", "0.5", "--ic", "ic1", "--t-end", tbuf, "--json"}, d.path);
   ASSERT_EQ(nd.code, 0) << nd.err;
   const auto jn = nlohmann::json::parse(nd.out);
   EXPECT_EQ(jn["ihor"], jp["ihor"]);
@@ -46,9 +47,10 @@ TEST(CliPhysical, IncompleteOrConflictingInputIsRejected) {
   TmpDir d("physbad");
   for (const std::vector<std::string>& bad :
        {std::vector<std::string>{"simulate", "--height", "1.8", "--width", "0.45"},  // no mass, no stiffness
-        std::vector<std::string>{"simulate", "--height", "-1", "--width", "0.45", "--mass", "3", "--line-stiffness", "1e6"},
-        std::vector<std::string>{"simulate", "--height", "1", "--width", "0.4", "--mass", "3", "--line-stiffness", "1e6",
-                                 "--k", "5"},
+        std::vector<std::string>{"simulate", "--height", "-1", "--width", "0.45", "--mass", "3", "--line-stiffness",
+                                 "1e6"},
+        std::vector<std::string>{"simulate", "--height", "1", "--width", "0.4", "--mass", "3", "--line-stiffness",
+                                 "1e6", "--k", "5"},
         std::vector<std::string>{"simulate", "--units", "physical"}}) {
     const auto r = run_cli(bad, d.path);
     EXPECT_EQ(r.code, 2) << r.err;

@@ -55,11 +55,11 @@ TEST(CliRigid, HousnerJsonContract) {
 
 TEST(CliRigid, RigidPulseOverturnsWithEvents) {
   TmpDir d("rigidpulse");
-  const auto r = run_cli(base("rigid") + std::vector<std::string>{"--mu-s", "0.8", "--mu-k", "0.6", "--ground-h-pulse",
-                                                                  "half-sine", "--ground-h-amplitude", "0.8",
-                                                                  "--ground-h-duration", "0.6", "--t-end", "5",
-                                                                  "--json", "--trajectory", "run.csv"},
-                         d.path);
+  const auto r = run_cli(
+      base("rigid") + std::vector<std::string>{"--mu-s", "0.8", "--mu-k", "0.6", "--ground-h-pulse", "half-sine",
+                                               "--ground-h-amplitude", "0.8", "--ground-h-duration", "0.6", "--t-end",
+                                               "5", "--json", "--trajectory", "run.csv"},
+      d.path);
   ASSERT_EQ(r.code, 0) << r.err;
   const json j = json::parse(r.out);
   EXPECT_EQ(j["status"], "overturned");
@@ -116,7 +116,8 @@ TEST(CliRigid, BadInputExitsTwoNamingTheField) {
       {base("rigid") + std::vector<std::string>{"--ground-h-record", "trunc.AT2"}, "truncated"},
       {base("rigid") + std::vector<std::string>{"--ground-h-record", "bad.AT2"}, "bad.AT2"},
       {base("rigid") + std::vector<std::string>{"--ground-h-record", "missing.AT2"}, "ground-h-record"},
-      {base("rigid") + std::vector<std::string>{"--ground-h-pulse", "sine", "--ground-h-duration", "1"}, "ground-h-pulse"},
+      {base("rigid") + std::vector<std::string>{"--ground-h-pulse", "sine", "--ground-h-duration", "1"},
+       "ground-h-pulse"},
       {base("rigid") + std::vector<std::string>{"--ground-h-pulse", "rect", "--ground-h-amplitude", "1"}, "duration"},
       {base("housner") + std::vector<std::string>{"--mu-s", "0.5"}, "mu-s"},
       {base("housner") + std::vector<std::string>{"--x0", "0.5"}, "x0"},
@@ -138,10 +139,10 @@ TEST(CliRigid, BadInputExitsTwoNamingTheField) {
 
 TEST(CliRigid, PlotIsWritten) {
   TmpDir d("rigidplot");
-  const auto r = run_cli(base("housner") + std::vector<std::string>{"--ground-h-pulse", "one-sine", "--ground-h-amplitude",
-                                                                    "0.5", "--ground-h-duration", "0.8", "--t-end", "4",
-                                                                    "--plot", "p.png"},
-                         d.path);
+  const auto r = run_cli(
+      base("housner") + std::vector<std::string>{"--ground-h-pulse", "one-sine", "--ground-h-amplitude", "0.5",
+                                                 "--ground-h-duration", "0.8", "--t-end", "4", "--plot", "p.png"},
+      d.path);
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_TRUE(exists(d.path + "/p.png"));
   EXPECT_TRUE(exists(d.path + "/p.svg"));

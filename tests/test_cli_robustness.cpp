@@ -124,8 +124,8 @@ TEST(CliRobustness, HostileScenariosAreUsageErrors) {
 
 TEST(CliRobustness, CorruptJournalRowIsRefused) {
   TmpDir d("journal");
-  const std::vector<std::string> args = {"sweep", "--k", "1e3:1e4:3", "--r", "0.3", "--t-end", "2", "-o", "s.csv",
-                                         "--quiet"};
+  const std::vector<std::string> args = {"sweep",   "--k", "1e3:1e4:3", "--r",   "0.3",
+                                         "--t-end", "2",   "-o",        "s.csv", "--quiet"};
   ASSERT_EQ(run_cli(args, d.path).code, 0);
   // Rebuild a journal from the finished CSV, with a garbage row appended.
   const std::string csv = slurp(d.path + "/s.csv");
@@ -133,7 +133,7 @@ TEST(CliRobustness, CorruptJournalRowIsRefused) {
   const auto fp_at = side.find("\"fingerprint\": \"") + 16;
   const std::string fp = side.substr(fp_at, 16);
   std::ofstream(d.path + "/s.csv.journal") << "# blockdyn sweep journal v2 fingerprint=" << fp << " points=3\n"
-                                          << csv.substr(0, csv.find('\n') + 1) << "2,garbage\n";
+                                           << csv.substr(0, csv.find('\n') + 1) << "2,garbage\n";
   fs::remove(d.path + "/s.csv");
   auto resumed = args;
   resumed.push_back("--resume");
@@ -146,9 +146,9 @@ TEST(CliRobustness, CorruptJournalRowIsRefused) {
 // SIGTERM while the trajectory is being written: the temporary file is removed.
 TEST(CliRobustness, InterruptedRunLeavesNoTemporaryFile) {
   TmpDir d("sigterm");
-  const pid_t pid = spawn_cli({"simulate", "--r", "0.2", "--k", "1e8", "--t-end", "2000", "--output-interval", "0",
-                               "--trajectory", "t.csv"},
-                              d.path);
+  const pid_t pid = spawn_cli(
+      {"simulate", "--r", "0.2", "--k", "1e8", "--t-end", "2000", "--output-interval", "0", "--trajectory", "t.csv"},
+      d.path);
   ASSERT_GT(pid, 0);
   bool temp_seen = false;
   for (int i = 0; i < 2000 && !temp_seen; ++i) {
@@ -172,14 +172,64 @@ TEST(CliRobustness, InterruptedRunLeavesNoTemporaryFile) {
 TEST(CliRobustness, RandomHostileInputNeverCrashesOrHangs) {
   TmpDir d("fuzz");
   std::mt19937_64 rng(20261123);
-  const std::vector<std::string> values = {
-      "", "nan", "inf", "-inf", "-1", "0", "1e308", "-1e308", "1e-310", "4.9e-324", "1e300", "abc", "1e3:1e4:5",
-      "0.2", "1", "2", "0.5", "-0.3", "1e9", "1,2,3", "1e3:1e4:1e300", "..", "/dev/zero", "/", "%s%n", "9999999999999999999"};
-  const std::vector<std::string> opts = {
-      "--r", "--mu", "--k", "--w0", "--vw0", "--x0", "--y0", "--vx0", "--vy0", "--rtol", "--atol", "--ic",
-      "--ground-h", "--ground-h-amplitude", "--ground-h-frequency", "--ground-h-phase", "--ground-h-duration",
-      "--ground-h-pulse", "--ground-h-start", "--ground-v", "--width", "--height", "--mass", "--mu-s", "--mu-k",
-      "--restitution", "--impact", "--model", "--output-interval", "--units", "--density", "--thickness"};
+  const std::vector<std::string> values = {"",
+                                           "nan",
+                                           "inf",
+                                           "-inf",
+                                           "-1",
+                                           "0",
+                                           "1e308",
+                                           "-1e308",
+                                           "1e-310",
+                                           "4.9e-324",
+                                           "1e300",
+                                           "abc",
+                                           "1e3:1e4:5",
+                                           "0.2",
+                                           "1",
+                                           "2",
+                                           "0.5",
+                                           "-0.3",
+                                           "1e9",
+                                           "1,2,3",
+                                           "1e3:1e4:1e300",
+                                           "..",
+                                           "/dev/zero",
+                                           "/",
+                                           "%s%n",
+                                           "9999999999999999999"};
+  const std::vector<std::string> opts = {"--r",
+                                         "--mu",
+                                         "--k",
+                                         "--w0",
+                                         "--vw0",
+                                         "--x0",
+                                         "--y0",
+                                         "--vx0",
+                                         "--vy0",
+                                         "--rtol",
+                                         "--atol",
+                                         "--ic",
+                                         "--ground-h",
+                                         "--ground-h-amplitude",
+                                         "--ground-h-frequency",
+                                         "--ground-h-phase",
+                                         "--ground-h-duration",
+                                         "--ground-h-pulse",
+                                         "--ground-h-start",
+                                         "--ground-v",
+                                         "--width",
+                                         "--height",
+                                         "--mass",
+                                         "--mu-s",
+                                         "--mu-k",
+                                         "--restitution",
+                                         "--impact",
+                                         "--model",
+                                         "--output-interval",
+                                         "--units",
+                                         "--density",
+                                         "--thickness"};
   const auto t0 = std::chrono::steady_clock::now();
   int runs = 0;
   for (int i = 0; i < 120; ++i) {
@@ -211,7 +261,7 @@ TEST(CliRobustness, RandomHostileInputNeverCrashesOrHangs) {
     const int kind = int(rng() % 4);
     if (kind == 0) {
       text = text.substr(0, rng() % text.size());  // truncated
-    } else if (kind == 1) {  // a value replaced by a hostile one
+    } else if (kind == 1) {                        // a value replaced by a hostile one
       const auto eq = text.find(" = ", rng() % text.size());
       if (eq != std::string::npos) {
         const auto nl = text.find('\n', eq);
@@ -263,11 +313,11 @@ TEST(CliRobustness, RecordsAndBlocksOutsideTheirRangeAreUsageErrors) {
   EXPECT_NE(r.err.find("--restitution"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("--model rigid"), std::string::npos) << r.err;
   // At b/h = sqrt(2) exactly Housner's coefficient is 0: a plastic impact, allowed.
-  EXPECT_EQ(run_cli({"simulate", "--model", "housner", "--width", "1.41", "--height", "1", "--w0", "0.1",
-                     "--t-end", "1"},
-                    d.path)
-                .code,
-            0);
+  EXPECT_EQ(
+      run_cli({"simulate", "--model", "housner", "--width", "1.41", "--height", "1", "--w0", "0.1", "--t-end", "1"},
+              d.path)
+          .code,
+      0);
 }
 
 // Issue 26 item 10 (first part): an output path that exists and is not a regular file is written
@@ -288,8 +338,8 @@ TEST(CliRobustness, NonRegularOutputsAreWrittenIntoAndForeignFlagsRefused) {
   EXPECT_EQ(std::system(cmd.c_str()), 0);
   EXPECT_TRUE(fs::is_fifo(d.path + "/pipe.json"));
   EXPECT_NE(sweep_test::slurp(d.path + "/got.json").find("\"model\": \"housner\""), std::string::npos);
-  const std::vector<std::string> rigid = {"--model", "rigid", "--width", "0.3", "--height", "1.5", "--beta", "2",
-                                          "--omega", "5"};
+  const std::vector<std::string> rigid = {"--model", "rigid",  "--width", "0.3",     "--height",
+                                          "1.5",     "--beta", "2",       "--omega", "5"};
   auto cycles = [&](std::vector<std::string> tail) {
     std::vector<std::string> a = {"cycles"};
     a.insert(a.end(), tail.begin(), tail.end());
@@ -303,8 +353,8 @@ TEST(CliRobustness, NonRegularOutputsAreWrittenIntoAndForeignFlagsRefused) {
   const std::vector<Case> cases = {
       {cycles({"--model", "assembly", "--preset", "block", "--beta", "2", "--omega", "5", "--g", "nan"}), "--g"},
       {cycles({"--model", "assembly", "--preset", "block", "--beta", "2", "--omega", "5", "--mu-s", "0.3"}), "--mu-s"},
-      {cycles({"--model", "housner", "--width", "0.3", "--height", "1.5", "--preset", "block", "--beta", "2",
-               "--omega", "5"}),
+      {cycles({"--model", "housner", "--width", "0.3", "--height", "1.5", "--preset", "block", "--beta", "2", "--omega",
+               "5"}),
        "--preset"},
       {rigid_with({"--mu-k", "-1"}), "mu-k"},
       {rigid_with({"--mu-k", "nan"}), "mu-k"},
@@ -319,16 +369,19 @@ TEST(CliRobustness, NonRegularOutputsAreWrittenIntoAndForeignFlagsRefused) {
 TEST(CliRobustness, OutputsAreCheckedBeforeTheRun) {
   TmpDir d("outputs");
   const std::vector<Case> cases = {
-      {housner_cmd({"cycles"}, {"--beta", "2", "--omega", "5", "--out", "same.csv", "--trace", "same.csv"}), "same.csv"},
+      {housner_cmd({"cycles"}, {"--beta", "2", "--omega", "5", "--out", "same.csv", "--trace", "same.csv"}),
+       "same.csv"},
       {housner_cmd({"impact-map"}, {"--beta", "2", "--omega", "5", "--out", "x.csv", "--json-out", "x.csv"}), "x.csv"},
-      {housner_cmd({"impact-map"}, {"--beta", "2", "--omega", "5", "--out", "x.csv", "--json-out", "./x.csv"}), "x.csv"},
+      {housner_cmd({"impact-map"}, {"--beta", "2", "--omega", "5", "--out", "x.csv", "--json-out", "./x.csv"}),
+       "x.csv"},
       {housner_cmd({"simulate"}, {"--w0", "0.1", "--t-end", "1", "--trajectory", "t.csv", "--plot", "F.gif"}), "F.gif"},
       {housner_cmd({"simulate"}, {"--w0", "0.1", "--t-end", "1", "--trajectory", "t.csv", "--plot", "F.txt"}), "F.txt"},
       {housner_cmd({"simulate"}, {"--w0", "0.1", "--t-end", "1", "--animate", "F.png"}), "F.png"},
-      {housner_cmd({"survival"}, {"--beta-points", "2", "--omega-points", "2", "--periods", "4.9e-324", "--out", "s.csv"}),
+      {housner_cmd({"survival"},
+                   {"--beta-points", "2", "--omega-points", "2", "--periods", "4.9e-324", "--out", "s.csv"}),
        "periods"},
-      {housner_cmd({"survival"}, {"--beta-points", "2", "--omega-points", "2", "--periods", "1e5", "--omega-min", "1e-3",
-                          "--out", "s.csv"}),
+      {housner_cmd({"survival"}, {"--beta-points", "2", "--omega-points", "2", "--periods", "1e5", "--omega-min",
+                                  "1e-3", "--out", "s.csv"}),
        "periods"},
   };
   for (const Case& c : cases) expect_usage_error(c, d.path);

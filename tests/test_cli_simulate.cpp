@@ -3,8 +3,8 @@
 // scenario equivalence, and rejection of bad input (non-zero exit, a one-line `error:` message
 // naming the field, and no output file left behind). Runs the real binary in a temp directory.
 #include <gtest/gtest.h>
-#include <nlohmann/json.hpp>
 #include <sys/wait.h>
+#include <nlohmann/json.hpp>
 
 #include <cmath>
 #include <cstdlib>
@@ -95,9 +95,9 @@ TEST_F(CliSimulate, JsonSummaryHasRequiredKeysAndMatchesLibrary) {
   const CliRun r = simulate({"--r", "0.5", "--mu", "0.2", "--k", "1e4", "--t-end", "2", "--json"});
   ASSERT_EQ(r.code, 0) << r.err;
   const json j = json::parse(r.out);
-  for (const char* key : {"parameters", "tolerances", "initial_state", "initial_energy", "status", "t_final",
-                          "final_state", "ihor", "first_flight_time", "max_abs_energy_error", "steps",
-                          "rhs_evals", "events"})
+  for (const char* key :
+       {"parameters", "tolerances", "initial_state", "initial_energy", "status", "t_final", "final_state", "ihor",
+        "first_flight_time", "max_abs_energy_error", "steps", "rhs_evals", "events"})
     EXPECT_TRUE(j.contains(key)) << key;
   EXPECT_EQ(j["parameters"]["r"], 0.5);
   EXPECT_EQ(j["parameters"]["mu"], 0.2);
@@ -129,7 +129,7 @@ TEST_F(CliSimulate, JsonSummaryHasRequiredKeysAndMatchesLibrary) {
 
 TEST_F(CliSimulate, TrajectoryCsvRowsAtIntervalPlusEvents) {
   const CliRun r = simulate({"--r", "0.5", "--mu", "0.2", "--k", "1e4", "--t-end", "1", "--output-interval", "0.05",
-                          "--trajectory", "traj.csv", "--json-out", "summary.json"});
+                             "--trajectory", "traj.csv", "--json-out", "summary.json"});
   ASSERT_EQ(r.code, 0) << r.err;
   const json j = json::parse(slurp(dir / "summary.json"));
   std::istringstream csv(slurp(dir / "traj.csv"));
@@ -163,8 +163,7 @@ TEST_F(CliSimulate, TrajectoryCsvRowsAtIntervalPlusEvents) {
   ASSERT_EQ(regular.size(), 21u);
   for (std::size_t n = 0; n < regular.size(); ++n) EXPECT_NEAR(regular[n], 0.05 * n, 1e-12);
   ASSERT_EQ(event_times.size(), j["events"].size());
-  for (std::size_t i = 0; i < event_times.size(); ++i)
-    EXPECT_EQ(event_times[i], j["events"][i]["t"].get<double>());
+  for (std::size_t i = 0; i < event_times.size(); ++i) EXPECT_EQ(event_times[i], j["events"][i]["t"].get<double>());
 }
 
 TEST_F(CliSimulate, ScenarioFileEqualsFlags) {
@@ -173,8 +172,8 @@ TEST_F(CliSimulate, ScenarioFileEqualsFlags) {
         "[initial]\nset = \"ic2\"\n"
         "[run]\nt_end = 1.5\nrtol = 1e-9\natol = 1e-11\n");
   const CliRun a = simulate({"run.toml", "--json"});
-  const CliRun b = simulate({"--r", "0.3", "--mu", "0.25", "--k", "3e4", "--ic", "ic2", "--t-end", "1.5", "--rtol", "1e-9",
-                          "--atol", "1e-11", "--json"});
+  const CliRun b = simulate({"--r", "0.3", "--mu", "0.25", "--k", "3e4", "--ic", "ic2", "--t-end", "1.5", "--rtol",
+                             "1e-9", "--atol", "1e-11", "--json"});
   ASSERT_EQ(a.code, 0) << a.err;
   ASSERT_EQ(b.code, 0) << b.err;
   json ja = json::parse(a.out), jb = json::parse(b.out);
@@ -258,8 +257,8 @@ TEST_F(CliSimulate, BothRungeKuttaPairsGiveTheSameEventsAndRecordWhichRan) {
   // times whose deviation grows with t (measured: dopri5 up to 8e-8, dop853 up to 3e-8 by t = 10);
   // the JSON says which pair ran (auto picks dop853 below rtol 1e-6); dop853 takes far fewer steps.
   auto run = [&](const std::string& method, const std::string& rtol) {
-    const CliRun r = simulate({"--r", "0.5", "--k", "1e4", "--mu", "0.2", "--ic", "ic2", "--t-end", "10",
-                               "--rtol", rtol, "--method", method, "--json", "--quiet"});
+    const CliRun r = simulate({"--r", "0.5", "--k", "1e4", "--mu", "0.2", "--ic", "ic2", "--t-end", "10", "--rtol",
+                               rtol, "--method", method, "--json", "--quiet"});
     EXPECT_EQ(r.code, 0) << r.err;
     return json::parse(r.out);
   };
@@ -291,10 +290,11 @@ TEST_F(CliSimulate, JsonOnlyWhenAskedReproducibleAndTimedOnRequest) {
   // nothing else changes; the text summary counts the events the JSON lists.
   for (const char* model : {"winkler", "housner"}) {
     SCOPED_TRACE(model);
-    std::vector<std::string> args = std::string(model) == "winkler"
-                                         ? std::vector<std::string>{"--r", "0.5", "--k", "1e4", "--t-end", "3"}
-                                         : std::vector<std::string>{"--model", "housner", "--width", "0.3",
-                                                                    "--height", "1.2", "--w0", "0.1", "--t-end", "3"};
+    std::vector<std::string> args =
+        std::string(model) == "winkler"
+            ? std::vector<std::string>{"--r", "0.5", "--k", "1e4", "--t-end", "3"}
+            : std::vector<std::string>{"--model", "housner", "--width", "0.3",     "--height",
+                                       "1.2",     "--w0",    "0.1",     "--t-end", "3"};
     auto with = [&](std::vector<std::string> extra) {
       std::vector<std::string> a = args;
       a.insert(a.end(), extra.begin(), extra.end());

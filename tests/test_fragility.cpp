@@ -4,8 +4,10 @@
 // and its bootstrap band covers the fit.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <random>
+#include <tuple>
 #include <vector>
 
 #include "blockdyn/analysis/forced/fragility_fit.hpp"
@@ -91,10 +93,11 @@ TEST(FragilityFit, BootstrapBandCoversTheFitAndReproduces) {
   }
   const FragilityFit f = fit_fragility(all);
   const FragilityBand b = bootstrap_fragility(groups, 300, 5), again = bootstrap_fragility(groups, 300, 5);
-  EXPECT_LT(b.median_lo, f.median);
-  EXPECT_GT(b.median_hi, f.median);
-  EXPECT_LT(b.beta_lo, f.beta);
-  EXPECT_GT(b.beta_hi, f.beta);
-  EXPECT_EQ(b.median_lo, again.median_lo);
-  EXPECT_EQ(b.beta_hi, again.beta_hi);
+  for (const auto& [lo, fitted, hi] :
+       {std::array{b.median_lo, f.median, b.median_hi}, {b.beta_lo, f.beta, b.beta_hi}}) {
+    EXPECT_LT(lo, fitted);
+    EXPECT_GT(hi, fitted);
+  }
+  EXPECT_EQ(std::tie(b.median_lo, b.median_hi, b.beta_lo, b.beta_hi),
+            std::tie(again.median_lo, again.median_hi, again.beta_lo, again.beta_hi));
 }

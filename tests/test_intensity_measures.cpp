@@ -200,12 +200,7 @@ TEST(StochasticMotion, ModulationMeetsTheTargetsByQuadrature) {
 
 TEST(StochasticMotion, PulseVelocityIsTheClosedForm) {
   // The acceleration integrates to v(t) = A/2 [1 + cos(2 pi tau / (gamma Tp))] cos(2 pi tau / Tp + nu).
-  PulseParams p;
-  p.pgv = 0.8;
-  p.period = 1.5;
-  p.gamma = 2.5;
-  p.nu = 0.4;
-  p.t0 = 3;
+  const PulseParams p{.pgv = 0.8, .period = 1.5, .gamma = 2.5, .nu = 0.4, .t0 = 3};
   double v = 0;
   const double h = 1e-5;
   for (double t = 0; t < 6; t += h) {

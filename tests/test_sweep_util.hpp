@@ -11,6 +11,7 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace sweep_test {
@@ -91,6 +92,20 @@ inline pid_t spawn_cli(const std::vector<std::string>& args, const std::string& 
     ::_exit(127);
   }
   return pid;
+}
+
+// Command lines that are each a usage error: exit 2, the message naming `word` (and on one line
+// when `one_line`).
+using UsageCase = std::pair<std::vector<std::string>, std::string>;
+inline void expect_usage_errors(const std::vector<UsageCase>& cases, const std::string& dir, bool one_line = false) {
+  for (const auto& [args, word] : cases) {
+    const CliResult r = run_cli(args, dir);
+    EXPECT_EQ(r.code, 2) << word << ": " << r.err;
+    EXPECT_NE(r.err.find(word), std::string::npos) << word << ": " << r.err;
+    if (one_line) {
+      EXPECT_EQ(count_lines(r.err), 1u) << r.err;
+    }
+  }
 }
 
 }  // namespace sweep_test

@@ -22,9 +22,9 @@
 #include "blockdyn/api/map_study.hpp"
 #include "blockdyn/api/motion_generate.hpp"
 #include "blockdyn/api/motion_info.hpp"
-#include "blockdyn/api/sweep_settings.hpp"
 #include "blockdyn/api/simulate_run.hpp"
 #include "blockdyn/api/study_command.hpp"
+#include "blockdyn/api/sweep_settings.hpp"
 #include "blockdyn/io/json_io.hpp"
 #include "blockdyn/version.hpp"
 #include "cli_run.hpp"
@@ -141,6 +141,17 @@ py::dict study_columns(const StudyTable& t) {
       cols[py::str(t.columns[j])] = py::cast(texts);
   }
   return cols;
+}
+
+// A library call from options by name to a JSON document, without the GIL: the document's text.
+std::string json_call(nlohmann::ordered_json (*call)(const Settings&), const OptionList& options) {
+  const Settings s = settings_of(options);
+  nlohmann::ordered_json j;
+  {
+    py::gil_scoped_release release;
+    j = call(s);
+  }
+  return dump_json(j);
 }
 
 // A runner table's rows, as a study's table.
@@ -275,29 +286,11 @@ void add_studies(py::module_& m) {
       py::arg("options"), py::arg("threads") = 0,
       "Runs `blockdyn map` in memory; returns (columns, sidecar JSON text, boundary columns, their meta JSON).");
   m.def(
-      "motion_generate",
-      [](const OptionList& options) {
-        const Settings s = settings_of(options);
-        nlohmann::ordered_json j;
-        {
-          py::gil_scoped_release release;
-          j = motion_generate(s);
-        }
-        return dump_json(j);
-      },
+      "motion_generate", [](const OptionList& options) { return json_call(motion_generate, options); },
       py::arg("options"), "Writes a suite of synthetic records (`blockdyn motion generate`): motions.json's text.");
   m.def(
-      "motion_info",
-      [](const OptionList& options) {
-        const Settings s = settings_of(options);
-        nlohmann::ordered_json j;
-        {
-          py::gil_scoped_release release;
-          j = motion_info(s);
-        }
-        return dump_json(j);
-      },
-      py::arg("options"), "A record's intensity measures and spectrum (`blockdyn motion info`): JSON text.");
+      "motion_info", [](const OptionList& options) { return json_call(motion_info, options); }, py::arg("options"),
+      "A record's intensity measures and spectrum (`blockdyn motion info`): JSON text.");
   m.def(
       "studies",
       [] {

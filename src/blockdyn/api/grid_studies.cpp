@@ -564,9 +564,7 @@ Table compute_table(const PointTable& t, int threads, PointPlan* plan,
 StudyReport run_grid_study(const std::string& name, const Settings& s,
                            const std::function<void(std::size_t, std::size_t)>& progress) {
   const GridStudyCommand& c = grid_study_command(name);
-  std::vector<std::string> known;
-  for (const StudyOption& o : c.options) known.push_back(o.name);
-  s.require_known(known, name);
+  s.require_known(c.options, {}, name);
   const GridStudy g = c.prepare(s, "(memory)");
   const Table t = compute_table(*g.table, g.threads, g.plan.get(), progress);
   StudyReport rep = g.finish(t);

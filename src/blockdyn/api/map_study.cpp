@@ -54,9 +54,7 @@ BoundaryRow boundary_row(double inv_r, double mu, const IcChoice& ic, long n, co
 
 // The map's grid as a sweep definition, after checking every option.
 SweepSpec map_spec(const Settings& s) {
-  std::vector<std::string> known = {"output"};
-  for (const StudyOption& o : map_options()) known.push_back(o.name);
-  s.require_known(known, "map");
+  s.require_known(map_options(), {"output"}, "map");
   const double mu = s.number("mu", 0.2), t_end = s.number("t-end", 30);
   require_in_range("mu", mu, 0.0, kWinklerMuMax);
   require_in_range("t-end", t_end, 0.0, kMaxTime, false);

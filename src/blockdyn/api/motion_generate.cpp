@@ -11,6 +11,7 @@
 #include <stdexcept>
 
 #include "blockdyn/analysis/sweep/parallel_map.hpp"
+#include "blockdyn/api/motion_info.hpp"
 #include "blockdyn/base/range_check.hpp"
 #include "blockdyn/excitation/intensity_measures.hpp"
 #include "blockdyn/excitation/stochastic_motion.hpp"
@@ -38,9 +39,7 @@ struct Plan {
 const char* const kRezaeianOptions[] = {"arias", "d5-95", "t-mid", "f-mid", "f-slope", "zeta-f"};
 
 Plan plan_of(const Settings& s) {
-  std::vector<std::string> known = {"threads", "overwrite"};
-  for (const StudyOption& o : motion_generate_options()) known.push_back(o.name);
-  s.require_known(known, "motion generate");
+  s.require_known(motion_generate_options(), {"threads", "overwrite"}, "motion generate");
   Plan p;
   p.model = s.text("model", "rezaeian");
   if (p.model != "rezaeian" && p.model != "pulse")
@@ -175,17 +174,11 @@ json motion_generate(const Settings& s) {
     write_file_atomically(p.out + "/" + name, text);
     // Measured on the file as written (the samples rounded to 10 digits).
     const IntensityMeasures m = intensity_measures(parse_at2(text, name), p.rz.g);
-    return json{{"file", name},
-                {"pga", m.pga},
-                {"pgv", m.pgv},
-                {"pgd", m.pgd},
-                {"arias", m.arias},
-                {"d5_95", m.d5_95},
-                {"t_mid", m.t_mid},
-                {"mean_period", m.mean_period},
-                {"final_velocity", m.final_velocity},
-                {"final_displacement", m.final_displacement},
-                {"baseline_correction", r.baseline_correction}};
+    json row = {{"file", name}};
+    const json measures = measures_json(m);
+    for (auto it = measures.begin(); it != measures.end(); ++it) row[it.key()] = it.value();
+    row["baseline_correction"] = r.baseline_correction;
+    return row;
   });
   json j;
   j["schema"] = schema_name("motion-generate", "summary");

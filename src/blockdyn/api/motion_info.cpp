@@ -63,9 +63,7 @@ const std::vector<StudyOption>& motion_info_options() {
 }
 
 json motion_info(const Settings& s) {
-  std::vector<std::string> known = {"record"};
-  for (const StudyOption& o : motion_info_options()) known.push_back(o.name);
-  s.require_known(known, "motion info");
+  s.require_known(motion_info_options(), {"record"}, "motion info");
   const double g = s.number("g", 9.81), damping = s.number("damping", 0.05);
   require_in_range("g", g, 0.0, 1e3, false);
   require_in_range("damping", damping, 0.0, 1.0, true, false);
@@ -82,8 +80,22 @@ json motion_info(const Settings& s) {
                  {"dt", rec.uniform() ? json(rec.dt()) : json(nullptr)},
                  {"t_first", rec.time(0)},
                  {"duration", m.duration}};
-  const std::pair<const char*, double> measures[] = {{"g", g},
-                                                     {"pga", m.pga},
+  j["g"] = g;
+  const json measures = measures_json(m);
+  for (auto it = measures.begin(); it != measures.end(); ++it) j[it.key()] = it.value();
+  j["units"] = {{"pga", "g"}, {"pgv", "m/s"}, {"pgd", "m"}, {"arias", "m/s"}, {"times", "s"}, {"sa", "g"}, {"sd", "m"}};
+  if (spectrum) {
+    j["damping"] = damping;
+    json rows = json::array();
+    for (const SpectralOrdinate& o : response_spectrum(rec, periods, damping, g))
+      rows.push_back({{"period", o.period}, {"sa", o.sa}, {"sd", o.sd}, {"t_peak", o.t_peak}});
+    j["spectrum"] = rows;
+  }
+  return j;
+}
+
+json measures_json(const IntensityMeasures& m) {
+  const std::pair<const char*, double> measures[] = {{"pga", m.pga},
                                                      {"pgv", m.pgv},
                                                      {"pgd", m.pgd},
                                                      {"arias", m.arias},
@@ -94,15 +106,8 @@ json motion_info(const Settings& s) {
                                                      {"mean_period", m.mean_period},
                                                      {"final_velocity", m.final_velocity},
                                                      {"final_displacement", m.final_displacement}};
+  json j;
   for (const auto& [key, value] : measures) j[key] = number_or_null(value);
-  j["units"] = {{"pga", "g"}, {"pgv", "m/s"}, {"pgd", "m"}, {"arias", "m/s"}, {"times", "s"}, {"sa", "g"}, {"sd", "m"}};
-  if (spectrum) {
-    j["damping"] = damping;
-    json rows = json::array();
-    for (const SpectralOrdinate& o : response_spectrum(rec, periods, damping, g))
-      rows.push_back({{"period", o.period}, {"sa", o.sa}, {"sd", o.sd}, {"t_peak", o.t_peak}});
-    j["spectrum"] = rows;
-  }
   return j;
 }
 

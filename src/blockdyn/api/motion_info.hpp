@@ -10,6 +10,7 @@
 
 #include "blockdyn/api/option_spec.hpp"
 #include "blockdyn/api/settings.hpp"
+#include "blockdyn/excitation/intensity_measures.hpp"
 
 namespace blockdyn {
 
@@ -18,6 +19,9 @@ const std::vector<StudyOption>& motion_info_options();
 // option for bad input (a record with non-monotone times, NaN, zero dt; periods <= 0; damping
 // outside [0, 1)).
 nlohmann::ordered_json motion_info(const Settings& s);
+// The measures as JSON keys pga, pgv, pgd, arias, d5_95, t5, t95, t_mid, mean_period,
+// final_velocity, final_displacement (null where not finite).
+nlohmann::ordered_json measures_json(const IntensityMeasures& m);
 // The same for a person: one measure per line, then the spectrum's rows.
 std::string motion_info_text(const nlohmann::ordered_json& j);
 

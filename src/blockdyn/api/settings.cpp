@@ -111,6 +111,13 @@ void Settings::require_known(const std::vector<std::string>& known, const std::s
   }
 }
 
+void Settings::require_known(const std::vector<StudyOption>& specs, const std::vector<std::string>& extra,
+                             const std::string& what) const {
+  std::vector<std::string> known = extra;
+  for (const StudyOption& o : specs) known.push_back(o.name);
+  require_known(known, what);
+}
+
 void apply_integrator_settings(const Settings& s, IntegratorOptions& o) {
   o.rtol = s.number("rtol", o.rtol);
   o.atol = s.number("atol", o.atol);

@@ -12,6 +12,7 @@
 #include <string_view>
 #include <vector>
 
+#include "blockdyn/api/option_spec.hpp"
 #include "blockdyn/excitation/accelerogram.hpp"
 #include "blockdyn/integrate/hybrid_integrator.hpp"
 
@@ -41,6 +42,9 @@ class Settings {
   std::vector<std::string> names() const;
   // Throws std::invalid_argument naming the first option that is not in `known`.
   void require_known(const std::vector<std::string>& known, const std::string& what) const;
+  // The same for the options `specs` describes and the names `extra`.
+  void require_known(const std::vector<StudyOption>& specs, const std::vector<std::string>& extra,
+                     const std::string& what) const;
 
   // A number as a value that reads back to the same double (17 significant digits).
   static std::string exact(double v);

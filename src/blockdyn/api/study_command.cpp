@@ -44,9 +44,7 @@ const StudyCommand& study_command(const std::string& name) {
 
 StudyReport run_study(const std::string& name, const Settings& s, const StudyRequest& request) {
   const StudyCommand& c = study_command(name);
-  std::vector<std::string> known;
-  for (const StudyOption& o : c.options) known.push_back(o.name);
-  s.require_known(known, name);
+  s.require_known(c.options, {}, name);
   return c.run(s, request);
 }
 

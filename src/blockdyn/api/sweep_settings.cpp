@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "blockdyn/api/sweep_settings.hpp"
 
+#include <sstream>
 #include <stdexcept>
 
 #include "blockdyn/analysis/sweep/rigid_sweep.hpp"
@@ -19,18 +20,15 @@ using Invalid = std::invalid_argument;
 const char* const kWinklerOnly[] = {"k", "r", "inv-r", "mu", "ic", "metric", "stop-at-first-flight", "stop-at-ihor"};
 const char* const kRigidOnly[] = {"axis", "width", "height", "mass", "g", "mu-s", "mu-k", "restitution", "impact"};
 
-std::vector<std::string> split_list(const std::string& s) {
+// "ic1, ic2" -> {"ic1", "ic2"} (spaces dropped).
+std::vector<std::string> split_list(const std::string& text) {
+  std::string compact;
+  for (char c : text)
+    if (c != ' ') compact += c;
   std::vector<std::string> out;
-  std::string cur;
-  for (char c : s) {
-    if (c == ',') {
-      out.push_back(cur);
-      cur.clear();
-    } else if (c != ' ') {
-      cur += c;
-    }
-  }
-  out.push_back(cur);
+  std::istringstream in(compact);
+  for (std::string item; std::getline(in, item, ',');) out.push_back(item);
+  if (compact.empty() || compact.back() == ',') out.emplace_back();
   return out;
 }
 
@@ -239,9 +237,7 @@ std::string sweep_model(const Settings& s) {
 }
 
 SweepDefinition sweep_definition(const Settings& s) {
-  std::vector<std::string> known = {"definition", "output"};
-  for (const StudyOption& o : sweep_options()) known.push_back(o.name);
-  s.require_known(known, "sweep");
+  s.require_known(sweep_options(), {"definition", "output"}, "sweep");
   const std::string model = sweep_model(s);
   return model == "winkler" ? winkler_sweep(s) : rigid_sweep(s, model);
 }

@@ -1,24 +1,16 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "blockdyn/simulation/sim_status.hpp"
 
+#include <iterator>
+
 namespace blockdyn {
 
 const char* to_string(SimStatus s) {
-  switch (s) {
-    case SimStatus::TEnd:
-      return "t_end";
-    case SimStatus::Overturned:
-      return "overturned";
-    case SimStatus::Invalid:
-      return "invalid";
-    case SimStatus::EarlyStop:
-      return "early_stop";
-    case SimStatus::NumericalFailure:
-      return "numerical_failure";
-    case SimStatus::Collapsed:
-      return "collapsed";
-  }
-  return "?";
+  // In the enumeration's order (the JSON's "status" strings).
+  static const char* const names[] = {"t_end", "overturned", "invalid", "early_stop", "numerical_failure", "collapsed"};
+  static_assert(std::size(names) == std::size_t(SimStatus::Collapsed) + 1);
+  const auto i = std::size_t(s);
+  return i < std::size(names) ? names[i] : "?";
 }
 
 SimStatus sim_status(RunStatus rs, bool overturned) {
