@@ -3,10 +3,13 @@
 most 0.5 ms of overhead for a 0.1 s Housner run). Run with the build's package:
     PYTHONPATH=build/python /usr/bin/python3 bench/python_overhead.py build/blockdyn
 Prints the medians of the library call, of a prepared Simulator's run, of the command-line path
-(the earlier implementation: in-process command line, temporary CSV and JSON) and the integration."""
+(the earlier implementation: in-process command line, temporary CSV and JSON) and the integration,
+and a small sweep in memory against the same sweep through its files (the earlier path)."""
 import json
+import os
 import subprocess
 import sys
+import tempfile
 import time
 
 import blockdyn
@@ -33,9 +36,17 @@ def main():
     args = [program, "simulate", "--model", "housner", "--width", "0.3", "--height", "1.5", "--w0", "0.1",
             "--t-end", "0.1", "--json", "--timing", "--timing-repeat", "200"]
     integration = json.loads(subprocess.run(args, capture_output=True, text=True, check=True).stdout)["timing"]
+    sweep = dict(model="housner", width=0.25, height=1.5, ground_h_pulse="rect", t_end=2,
+                 axis=["ground_h_duration=0.1:1:4", "ground_h_amplitude=0.15:0.8:5"], threads=1)
+    sweep_memory = median(lambda: blockdyn.sweep(**sweep), 50)
+    with tempfile.TemporaryDirectory() as tmp:
+        out = os.path.join(tmp, "s.csv")
+        sweep_files = median(lambda: blockdyn.sweep(**dict(sweep, output=out, overwrite=True)), 50)
     print(json.dumps({"simulate_ms": library * 1e3, "simulator_run_ms": prepared * 1e3,
                       "command_line_path_ms": via_cli * 1e3,
-                      "integration_ms": integration["integration_cpu_s"] * 1e3}, indent=2))
+                      "integration_ms": integration["integration_cpu_s"] * 1e3,
+                      "sweep_20_points_in_memory_ms": sweep_memory * 1e3,
+                      "sweep_20_points_through_files_ms": sweep_files * 1e3}, indent=2))
 
 
 if __name__ == "__main__":

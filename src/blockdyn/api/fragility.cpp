@@ -98,6 +98,61 @@ json curve_json(const FragilityFit& f, const FragilityBand& b, double lo, double
   return c;
 }
 
+// The report of the finished runs: the stripes, the fit and its band, the curve, the figure.
+StudyReport fragility_report(const Table& t, const Suite& suite, const std::vector<double>& levels,
+                             const json& definition, const std::string& im, long bootstrap, long seed) {
+  StudyReport rep;
+  json& j = rep.summary;
+  j["run"] = run_info();
+  j["definition"] = definition;
+  const std::size_t cl = t.column("level"), cs = t.column("scale"), co = t.column("overturned"),
+                    cm = t.column("max_abs_rotation");
+  json runs = json::array();
+  std::vector<FragilityRun> all;
+  std::vector<std::vector<FragilityRun>> groups(suite.files.size());
+  std::vector<std::size_t> n(levels.size()), n_over(levels.size());
+  for (const TableRow& r : t.rows) {
+    const double level = cell_double(r.cells[cl]);
+    const bool over = r.cells[co] == "1";
+    runs.push_back({{"record", suite.files[r.index / levels.size()]},
+                    {"level", level},
+                    {"im", im},
+                    {"scale", cell_double(r.cells[cs])},
+                    {"overturned", over},
+                    {"max_abs_rotation", cell_double(r.cells[cm])}});
+    all.push_back({level, over});
+    groups[r.index / levels.size()].push_back({level, over});
+    ++n[r.index % levels.size()];
+    n_over[r.index % levels.size()] += over;
+  }
+  json lv = json::array();
+  for (std::size_t i = 0; i < levels.size(); ++i)
+    lv.push_back({{"im", levels[i]}, {"n", n[i]}, {"n_overturned", n_over[i]}});
+  const FragilityFit fit = fit_fragility(all);
+  const FragilityBand band =
+      fit.ok && bootstrap > 0 ? bootstrap_fragility(groups, int(bootstrap), std::uint64_t(seed)) : FragilityBand{};
+  j["levels"] = lv;
+  j["fit"] = fit_json(fit, band, int(bootstrap));
+  const double lo = *std::min_element(levels.begin(), levels.end()),
+               hi = *std::max_element(levels.begin(), levels.end());
+  j["curve"] = curve_json(fit, band, lo * 0.5, hi * 1.5);
+  j["runs"] = runs;
+  rep.plot_script = "plot_fragility.py";
+  std::string curve;
+  for (const json& c : j["curve"])
+    curve += format_double(c["im"].get<double>()) + ":" + format_double(c["p"].get<double>()) + ":" +
+             (c.contains("p05") ? format_double(c["p05"].get<double>()) + ":" + format_double(c["p95"].get<double>())
+                                : std::string("nan:nan")) +
+             ",";
+  rep.plot_args = {"@csv:table", "@plot", "--im", im, "--curve", curve.empty() ? "-" : curve};
+  if (fit.ok)
+    append_text(rep.text, "fragility: %zu runs, median %s = %.4g, beta = %.3g", all.size(), im.c_str(), fit.median,
+                fit.beta);
+  else
+    append_text(rep.text, "fragility: %zu runs, no fit (%s)", all.size(), fit.why.c_str());
+  return rep;
+}
+
 GridStudy fragility_grid(const Settings& given, const std::string& output) {
   const StudyOptions so(given, fragility_options());
   const std::string im = so.text("im");
@@ -165,56 +220,7 @@ GridStudy fragility_grid(const Settings& given, const std::string& output) {
       definition, fm->tolerances, output);
   gs.threads = so.threads();
   gs.finish = [suite, levels, definition, im, bootstrap, seed](const Table& t) {
-    StudyReport rep;
-    json& j = rep.summary;
-    j["run"] = run_info();
-    j["definition"] = definition;
-    const std::size_t cl = t.column("level"), cs = t.column("scale"), co = t.column("overturned"),
-                      cm = t.column("max_abs_rotation");
-    json runs = json::array();
-    std::vector<FragilityRun> all;
-    std::vector<std::vector<FragilityRun>> groups(suite->files.size());
-    std::vector<std::size_t> n(levels.size()), n_over(levels.size());
-    for (const TableRow& r : t.rows) {
-      const double level = cell_double(r.cells[cl]);
-      const bool over = r.cells[co] == "1";
-      runs.push_back({{"record", suite->files[r.index / levels.size()]},
-                      {"level", level},
-                      {"im", im},
-                      {"scale", cell_double(r.cells[cs])},
-                      {"overturned", over},
-                      {"max_abs_rotation", cell_double(r.cells[cm])}});
-      all.push_back({level, over});
-      groups[r.index / levels.size()].push_back({level, over});
-      ++n[r.index % levels.size()];
-      n_over[r.index % levels.size()] += over;
-    }
-    json lv = json::array();
-    for (std::size_t i = 0; i < levels.size(); ++i)
-      lv.push_back({{"im", levels[i]}, {"n", n[i]}, {"n_overturned", n_over[i]}});
-    const FragilityFit fit = fit_fragility(all);
-    const FragilityBand band =
-        fit.ok && bootstrap > 0 ? bootstrap_fragility(groups, int(bootstrap), std::uint64_t(seed)) : FragilityBand{};
-    j["levels"] = lv;
-    j["fit"] = fit_json(fit, band, int(bootstrap));
-    const double lo = *std::min_element(levels.begin(), levels.end()),
-                 hi = *std::max_element(levels.begin(), levels.end());
-    j["curve"] = curve_json(fit, band, lo * 0.5, hi * 1.5);
-    j["runs"] = runs;
-    rep.plot_script = "plot_fragility.py";
-    std::string curve;
-    for (const json& c : j["curve"])
-      curve += format_double(c["im"].get<double>()) + ":" + format_double(c["p"].get<double>()) + ":" +
-               (c.contains("p05") ? format_double(c["p05"].get<double>()) + ":" + format_double(c["p95"].get<double>())
-                                  : std::string("nan:nan")) +
-               ",";
-    rep.plot_args = {"@csv:table", "@plot", "--im", im, "--curve", curve.empty() ? "-" : curve};
-    if (fit.ok)
-      append_text(rep.text, "fragility: %zu runs, median %s = %.4g, beta = %.3g", all.size(), im.c_str(), fit.median,
-                  fit.beta);
-    else
-      append_text(rep.text, "fragility: %zu runs, no fit (%s)", all.size(), fit.why.c_str());
-    return rep;
+    return fragility_report(t, *suite, levels, definition, im, bootstrap, seed);
   };
   return gs;
 }

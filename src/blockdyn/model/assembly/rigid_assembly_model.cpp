@@ -178,6 +178,29 @@ struct ContactSystem {
     return true;
   }
 };
+
+// A contact point's rows, scaled by s, added into a generalized vector (upper block's u, lower's l).
+template <int NC, class Rows>
+void place_rows(std::array<double, NC>& w, const Rows& k, const std::array<double, 3>& u,
+                const std::array<double, 3>& l, double s) {
+  for (int c = 0; c < 3; ++c) {
+    w[3 * k.upper + c] += s * u[c];
+    if (k.lower >= 0) w[3 * k.lower + c] += s * l[c];
+  }
+}
+
+// The point's relative normal (or tangential) velocity for the generalized velocities w.
+template <int NC, class Rows>
+double relative_rate(const std::array<double, NC>& w, const Rows& k, bool normal) {
+  const auto& u = normal ? k.nu : k.tu;
+  const auto& l = normal ? k.nl : k.tl;
+  double s = 0.0;
+  for (int c = 0; c < 3; ++c) {
+    s += u[c] * w[3 * k.upper + c];
+    if (k.lower >= 0) s += l[c] * w[3 * k.lower + c];
+  }
+  return s;
+}
 }  // namespace
 
 template <int Cap>
@@ -195,13 +218,8 @@ typename RigidAssemblyModel<Cap>::Solution RigidAssemblyModel<Cap>::solve(
   ContactSystem<kCoords, kMaxU> sys;
   std::array<int, kPoints> normal_of{};
   std::array<int, kIfaces> tangent_of{}, ref_of{};
-  auto place = [&](std::array<double, kCoords>& v, const PointRows& k, const std::array<double, 3>& u,
-                   const std::array<double, 3>& l, double w) {
-    for (int c = 0; c < 3; ++c) {
-      v[3 * k.upper + c] += w * u[c];
-      if (k.lower >= 0) v[3 * k.lower + c] += w * l[c];
-    }
-  };
+  auto place = [](std::array<double, kCoords>& v, const PointRows& k, const std::array<double, 3>& u,
+                  const std::array<double, 3>& l, double w) { place_rows<kCoords>(v, k, u, l, w); };
   tangent_of.fill(-1);
   ref_of.fill(-1);
   for (int p = 0; p < 2 * ni_; ++p) {
@@ -381,131 +399,156 @@ bool RigidAssemblyModel<Cap>::select_mode(double t, Mode& m, const State& z) con
   return false;
 }
 
+// The velocity-level problem of one impact: the points in the impact set, which of them are
+// active (an impulse, the restitution target reached), each interface's slip, and the solution.
 template <int Cap>
-bool RigidAssemblyModel<Cap>::impact(double t, Mode& m, State& z) const {
+struct RigidAssemblyModel<Cap>::ImpactWork {
+  static constexpr int kMaxU = kPoints + kIfaces;
+  std::array<PointRows, kPoints> r;
+  std::array<double, kCoords> v{}, vp{};  // velocities before and after
+  std::array<bool, kPoints> in{}, active{};
+  std::array<int, kIfaces> slip{};  // per interface: 0 stick, +-1 slipping that way
+  std::array<double, kPoints> target{}, pn{}, pt{};
+  std::array<double, kIfaces> tsum{};  // a sticking interface's tangential impulse
+  ContactSystem<kCoords, kMaxU> sys;
+  std::array<double, kMaxU> x{};
+  double tol_v = 0, p_scale = 0;
+};
+
+template <int Cap>
+bool RigidAssemblyModel<Cap>::solve_impact(ImpactWork& w) const {
+  auto& sys = w.sys;
+  sys.clear();
+  std::array<int, kPoints> jn{};
+  std::array<int, kIfaces> jt{};
+  jn.fill(-1);
+  jt.fill(-1);
+  for (int p = 0; p < 2 * ni_; ++p) {
+    if (!w.active[p]) continue;
+    const PointRows& k = w.r[p];
+    const int i = p / 2, j = sys.add();
+    jn[p] = j;
+    place_rows<kCoords>(sys.col[j], k, k.nu, k.nl, 1.0);
+    if (w.slip[i] != 0) place_rows<kCoords>(sys.col[j], k, k.tu, k.tl, -mu_k_[i] * w.slip[i]);
+    place_rows<kCoords>(sys.row[j], k, k.nu, k.nl, 1.0);
+    sys.rhs[j] = w.target[p] - relative_rate<kCoords>(w.v, k, true);
+    if (w.slip[i] == 0 && jt[i] < 0) {
+      const int q = sys.add();
+      jt[i] = q;
+      place_rows<kCoords>(sys.col[q], k, k.tu, k.tl, 1.0);
+      place_rows<kCoords>(sys.row[q], k, k.tu, k.tl, 1.0);
+      sys.rhs[q] = -relative_rate<kCoords>(w.v, k, false);
+    }
+  }
+  if (!sys.solve(inv_mass_, w.x)) return false;
+  w.vp = w.v;
+  for (int j = 0; j < sys.n; ++j)
+    for (int c = 0; c < kCoords; ++c) w.vp[c] += inv_mass_[c] * sys.col[j][c] * w.x[j];
+  w.pn.fill(0.0);
+  w.pt.fill(0.0);
+  for (int p = 0; p < 2 * ni_; ++p) {
+    if (jn[p] < 0) continue;
+    w.pn[p] = w.x[jn[p]];
+    if (w.slip[p / 2] != 0) w.pt[p] = -mu_k_[p / 2] * w.slip[p / 2] * w.pn[p];
+  }
+  for (int i = 0; i < ni_; ++i) w.tsum[i] = jt[i] >= 0 ? w.x[jt[i]] : 0.0;
+  return true;
+}
+
+template <int Cap>
+bool RigidAssemblyModel<Cap>::change_impact_set(ImpactWork& w) const {
+  // The most violated condition, if any: a pulling impulse, a point approaching, friction
+  // beyond the cone, a slip reversing.
+  double worst = 1.0;
+  int kind = 0, at = -1;
+  for (int p = 0; p < 2 * ni_; ++p) {
+    if (!w.in[p]) continue;
+    const double un = relative_rate<kCoords>(w.vp, w.r[p], true);
+    if (w.active[p] && -w.pn[p] / (kTol * w.p_scale) > worst) worst = -w.pn[p] / (kTol * w.p_scale), kind = 1, at = p;
+    if (!w.active[p] && (w.target[p] - un) / w.tol_v > worst) worst = (w.target[p] - un) / w.tol_v, kind = 2, at = p;
+  }
+  for (int i = 0; i < ni_; ++i) {
+    double sn = 0.0;
+    int p0 = -1;
+    for (int p = 2 * i; p < 2 * i + 2; ++p)
+      if (w.active[p]) sn += w.pn[p], p0 = p0 < 0 ? p : p0;
+    if (p0 < 0) continue;
+    if (w.slip[i] == 0 && mu_s_[i] < kNoSlipFriction) {
+      const double v_ex = (std::fabs(w.tsum[i]) - mu_s_[i] * sn) / (kTol * w.p_scale);
+      if (v_ex > worst) worst = v_ex, kind = 3, at = p0;
+    } else if (w.slip[i] != 0 && mu_s_[i] > 0.0) {
+      const double back = -w.slip[i] * relative_rate<kCoords>(w.vp, w.r[p0], false) / w.tol_v;
+      if (back > worst) worst = back, kind = 4, at = p0;
+    }
+  }
+  if (kind == 1) w.active[at] = false;
+  if (kind == 2) w.active[at] = true;
+  if (kind == 3) w.slip[at / 2] = w.tsum[at / 2] > 0 ? -1 : 1;
+  if (kind == 4) w.slip[at / 2] = 0;
+  return kind != 0;
+}
+
+template <int Cap>
+void RigidAssemblyModel<Cap>::apply_impact(const ImpactWork& w, Mode& m, State& z) const {
+  // The impulses' works (exact: P (u+ + u-) / 2), and the new velocities.
+  double w_n = 0.0, w_t = 0.0;
+  std::array<bool, kIfaces> booked{};
+  for (int p = 0; p < 2 * ni_; ++p) {
+    if (!w.active[p]) continue;
+    const PointRows& k = w.r[p];
+    w_n += w.pn[p] * 0.5 * (relative_rate<kCoords>(w.vp, k, true) + k.vn);
+    w_t += w.pt[p] * 0.5 * (relative_rate<kCoords>(w.vp, k, false) + k.vt);
+    // A sticking interface's impulse, at the point its constraint was written for.
+    if (w.slip[p / 2] == 0 && !booked[p / 2]) {
+      booked[p / 2] = true;
+      w_t += w.tsum[p / 2] * 0.5 * (relative_rate<kCoords>(w.vp, k, false) + k.vt);
+    }
+  }
+  z[kWNormal] += w_n;
+  z[kWFriction] += w_t;
+  for (int b = 0; b < nb_; ++b)
+    for (int k = 0; k < 3; ++k) z[iv(b) + k] = w.vp[3 * b + k];
+  // The points that stay in contact: those whose normal velocity after is zero.
   Geometry geo;
   geo_.geometry(z, geo);
   std::array<PointRows, kPoints> r;
   rows(z, geo, m, r);
-  const double tol_g = 1e-7 * len_, tol_v = kTol * v_scale_;
-  const std::array<double, kCoords>& inv_mass = inv_mass_;
-  std::array<double, kCoords> v{};
-  for (int b = 0; b < nb_; ++b) {
-    for (int k = 0; k < 3; ++k) v[3 * b + k] = z[iv(b) + k];
-  }
-  // The impact set: closed points and the open ones touching.
-  std::array<bool, kPoints> in{}, active{};
-  std::array<int, kIfaces> slip{};  // per interface: 0 stick, +-1 slipping that way
-  std::array<double, kPoints> target{};
+  const double tol_v = w.tol_v;
   for (int p = 0; p < 2 * ni_; ++p) {
-    in[p] = is_closed(m.point[p]) || (r[p].gap <= tol_g && r[p].vn < tol_v);
-    active[p] = in[p] && (is_closed(m.point[p]) || r[p].vn < -tol_v);
-    target[p] = -e_[p / 2] * std::fmin(r[p].vn, 0.0);
+    if (!w.in[p] || r[p].vn > tol_v) {
+      m.point[p] = PointState::Open;
+      continue;
+    }
+    if (std::fabs(r[p].vt) > tol_v)
+      m.point[p] = r[p].vt > 0 ? PointState::SlipPos : PointState::SlipNeg;
+    else
+      m.point[p] = mu_k_[p / 2] == 0.0 ? PointState::SlipPos : PointState::Stick;
   }
-  for (int i = 0; i < ni_; ++i) slip[i] = mu_s_[i] <= 0.0 ? (r[2 * i].vt >= 0 ? 1 : -1) : 0;
-  constexpr int kMaxU = kPoints + kIfaces;
-  ContactSystem<kCoords, kMaxU> sys;
-  std::array<double, kMaxU> x{};
-  std::array<double, kCoords> vp{};
-  std::array<double, kPoints> pn{}, pt{};
-  auto place = [&](std::array<double, kCoords>& w, const PointRows& k, const std::array<double, 3>& u,
-                   const std::array<double, 3>& l, double s) {
-    for (int c = 0; c < 3; ++c) {
-      w[3 * k.upper + c] += s * u[c];
-      if (k.lower >= 0) w[3 * k.lower + c] += s * l[c];
-    }
-  };
-  auto rel = [&](const std::array<double, kCoords>& w, const PointRows& k, bool normal) {
-    const auto& u = normal ? k.nu : k.tu;
-    const auto& l = normal ? k.nl : k.tl;
-    double s = 0.0;
-    for (int c = 0; c < 3; ++c) {
-      s += u[c] * w[3 * k.upper + c];
-      if (k.lower >= 0) s += l[c] * w[3 * k.lower + c];
-    }
-    return s;
-  };
-  const double p_scale = f_scale_ / g_ * v_scale_;  // momentum scale
+}
+
+template <int Cap>
+bool RigidAssemblyModel<Cap>::impact(double t, Mode& m, State& z) const {
+  ImpactWork w;
+  Geometry geo;
+  geo_.geometry(z, geo);
+  rows(z, geo, m, w.r);
+  const double tol_g = 1e-7 * len_;
+  w.tol_v = kTol * v_scale_;
+  w.p_scale = f_scale_ / g_ * v_scale_;  // momentum scale
+  for (int b = 0; b < nb_; ++b)
+    for (int k = 0; k < 3; ++k) w.v[3 * b + k] = z[iv(b) + k];
+  // The impact set: closed points and the open ones touching.
+  for (int p = 0; p < 2 * ni_; ++p) {
+    const PointRows& k = w.r[p];
+    w.in[p] = is_closed(m.point[p]) || (k.gap <= tol_g && k.vn < w.tol_v);
+    w.active[p] = w.in[p] && (is_closed(m.point[p]) || k.vn < -w.tol_v);
+    w.target[p] = -e_[p / 2] * std::fmin(k.vn, 0.0);
+  }
+  for (int i = 0; i < ni_; ++i) w.slip[i] = mu_s_[i] <= 0.0 ? (w.r[2 * i].vt >= 0 ? 1 : -1) : 0;
   bool settled = false;
-  std::array<double, kIfaces> tsum{};
-  auto solve_set = [&]() -> bool {
-    sys.clear();
-    std::array<int, kPoints> jn{};
-    std::array<int, kIfaces> jt{};
-    jn.fill(-1);
-    jt.fill(-1);
-    for (int p = 0; p < 2 * ni_; ++p) {
-      if (!active[p]) continue;
-      const int i = p / 2, j = sys.add();
-      jn[p] = j;
-      place(sys.col[j], r[p], r[p].nu, r[p].nl, 1.0);
-      if (slip[i] != 0) place(sys.col[j], r[p], r[p].tu, r[p].tl, -mu_k_[i] * slip[i]);
-      place(sys.row[j], r[p], r[p].nu, r[p].nl, 1.0);
-      sys.rhs[j] = target[p] - rel(v, r[p], true);
-      if (slip[i] == 0 && jt[i] < 0) {
-        const int k = sys.add();
-        jt[i] = k;
-        place(sys.col[k], r[p], r[p].tu, r[p].tl, 1.0);
-        place(sys.row[k], r[p], r[p].tu, r[p].tl, 1.0);
-        sys.rhs[k] = -rel(v, r[p], false);
-      }
-    }
-    if (!sys.solve(inv_mass, x)) return false;
-    vp = v;
-    for (int j = 0; j < sys.n; ++j)
-      for (int c = 0; c < kCoords; ++c) vp[c] += inv_mass[c] * sys.col[j][c] * x[j];
-    pn.fill(0.0);
-    pt.fill(0.0);
-    for (int p = 0; p < 2 * ni_; ++p) {
-      if (jn[p] < 0) continue;
-      pn[p] = x[jn[p]];
-      if (slip[p / 2] != 0) pt[p] = -mu_k_[p / 2] * slip[p / 2] * pn[p];
-    }
-    for (int i = 0; i < ni_; ++i) tsum[i] = jt[i] >= 0 ? x[jt[i]] : 0.0;
-    return true;
-  };
   for (int it = 0; it < kMaxActiveSet && !settled; ++it) {
-    if (!solve_set()) return false;
-    // The most violated condition, if any.
-    double worst = 1.0;
-    int kind = 0, at = -1;
-    for (int p = 0; p < 2 * ni_; ++p) {
-      if (!in[p]) continue;
-      const double un = rel(vp, r[p], true);
-      if (active[p] && -pn[p] / (kTol * p_scale) > worst) worst = -pn[p] / (kTol * p_scale), kind = 1, at = p;
-      if (!active[p] && (target[p] - un) / tol_v > worst) worst = (target[p] - un) / tol_v, kind = 2, at = p;
-    }
-    for (int i = 0; i < ni_; ++i) {
-      double sn = 0.0;
-      int p0 = -1;
-      for (int p = 2 * i; p < 2 * i + 2; ++p)
-        if (active[p]) sn += pn[p], p0 = p0 < 0 ? p : p0;
-      if (p0 < 0) continue;
-      if (slip[i] == 0 && mu_s_[i] < kNoSlipFriction) {
-        const double v_ex = (std::fabs(tsum[i]) - mu_s_[i] * sn) / (kTol * p_scale);
-        if (v_ex > worst) worst = v_ex, kind = 3, at = p0;
-      } else if (slip[i] != 0 && mu_s_[i] > 0.0) {
-        const double back = -slip[i] * rel(vp, r[p0], false) / tol_v;
-        if (back > worst) worst = back, kind = 4, at = p0;
-      }
-    }
-    switch (kind) {
-      case 0:
-        settled = true;
-        break;
-      case 1:
-        active[at] = false;
-        break;
-      case 2:
-        active[at] = true;
-        break;
-      case 3:
-        slip[at / 2] = tsum[at / 2] > 0 ? -1 : 1;
-        break;
-      case 4:
-        slip[at / 2] = 0;
-        break;
-    }
+    if (!solve_impact(w)) return false;
+    settled = !change_impact_set(w);
   }
   if (!settled) return false;
   // The end of an accumulation of impacts: a point that leaves its face slower than
@@ -513,46 +556,16 @@ bool RigidAssemblyModel<Cap>::impact(double t, Mode& m, State& z) const {
   // velocity is set to zero by one more solve with it held (the impulse this takes is of that order).
   bool held = false;
   for (int p = 0; p < 2 * ni_; ++p) {
-    if (!in[p] || active[p]) continue;
-    const double un = rel(vp, r[p], true);
-    if (un > 0.0 && un < settle_velocity_ && target[p] < settle_velocity_) {
-      active[p] = true;
-      target[p] = 0.0;
+    if (!w.in[p] || w.active[p]) continue;
+    const double un = relative_rate<kCoords>(w.vp, w.r[p], true);
+    if (un > 0.0 && un < settle_velocity_ && w.target[p] < settle_velocity_) {
+      w.active[p] = true;
+      w.target[p] = 0.0;
       held = true;
     }
   }
-  if (held && !solve_set()) return false;
-  // The impulses' works (exact: P (u+ + u-) / 2), and the new velocities.
-  double w_n = 0.0, w_t = 0.0;
-  std::array<bool, kIfaces> booked{};
-  for (int p = 0; p < 2 * ni_; ++p) {
-    if (!active[p]) continue;
-    w_n += pn[p] * 0.5 * (rel(vp, r[p], true) + r[p].vn);
-    w_t += pt[p] * 0.5 * (rel(vp, r[p], false) + r[p].vt);
-    // A sticking interface's impulse, at the point its constraint was written for.
-    if (slip[p / 2] == 0 && !booked[p / 2]) {
-      booked[p / 2] = true;
-      w_t += tsum[p / 2] * 0.5 * (rel(vp, r[p], false) + r[p].vt);
-    }
-  }
-  z[kWNormal] += w_n;
-  z[kWFriction] += w_t;
-  for (int b = 0; b < nb_; ++b)
-    for (int k = 0; k < 3; ++k) z[iv(b) + k] = vp[3 * b + k];
-  // The points that stay in contact: those whose normal velocity after is zero.
-  geo_.geometry(z, geo);
-  rows(z, geo, m, r);
-  for (int p = 0; p < 2 * ni_; ++p) {
-    if (!in[p] || r[p].vn > tol_v) {
-      m.point[p] = PointState::Open;
-      continue;
-    }
-    const int i = p / 2;
-    if (std::fabs(r[p].vt) > tol_v)
-      m.point[p] = r[p].vt > 0 ? PointState::SlipPos : PointState::SlipNeg;
-    else
-      m.point[p] = mu_k_[i] == 0.0 ? PointState::SlipPos : PointState::Stick;
-  }
+  if (held && !solve_impact(w)) return false;
+  apply_impact(w, m, z);
   (void)t;
   return true;
 }

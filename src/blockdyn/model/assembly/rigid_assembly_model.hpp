@@ -154,6 +154,13 @@ class RigidAssemblyModel {
   bool select_mode(double t, Mode& m, const State& z) const;
   // The impact at (t, z): new velocities in z, work booked; the mode's closed set updated.
   bool impact(double t, Mode& m, State& z) const;
+  struct ImpactWork;  // the velocity-level problem of one impact (rigid_assembly_model.cpp)
+  // Solves the impact set as it stands; false if the system is singular.
+  bool solve_impact(ImpactWork& w) const;
+  // Applies the most violated change to the set; false when none is violated (settled).
+  bool change_impact_set(ImpactWork& w) const;
+  // The solution into z (velocities, works) and the new mode of every point.
+  void apply_impact(const ImpactWork& w, Mode& m, State& z) const;
   // The closed points back on their constraints: gaps (velocities = false) or rates.
   void project(const Mode& m, State& z, bool velocities) const;
   // Enter rest if every point touches, nothing moves and rest holds at t.
