@@ -7,6 +7,7 @@
 
 #include "blockdyn/api/motion_generate.hpp"
 #include "blockdyn/api/motion_info.hpp"
+#include "blockdyn/io/progress.hpp"
 #include "cli_common.hpp"
 #include "cli_registry.hpp"
 
@@ -58,7 +59,13 @@ void add_generate(CLI::App& motion) {
   s->add_flag("--quiet", f->quiet, "no summary line");
   s->callback([s, f] {
     const Settings given = settings_of(*s, {"--json", "--json-out", "--plot", "--quiet"});
-    const nlohmann::ordered_json j = motion_generate(given);
+    std::unique_ptr<Progress> bar;
+    const nlohmann::ordered_json j = motion_generate(given, [&](std::size_t done, std::size_t total) {
+      if (f->quiet || f->json) return;
+      if (!bar) bar = std::make_unique<Progress>("motion generate", total, 0, ProgressMode::Auto);
+      bar->advance();
+      if (done == total) bar->finish();
+    });
     if (!f->plot.empty()) run_python("plot_motions.py", {given.text("out") + "/motions.json", f->plot});
     if (!f->json_out.empty()) emit_json(j, f->json_out);
     if (f->json) emit_json(j, "-");

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <mutex>
 #include <stdexcept>
 
 #include "blockdyn/analysis/sweep/parallel_map.hpp"
@@ -156,11 +157,13 @@ std::string at2_text(const std::vector<double>& a, double dt, const std::string&
   return t;
 }
 
-json motion_generate(const Settings& s) {
+json motion_generate(const Settings& s, const std::function<void(std::size_t, std::size_t)>& progress) {
   const Plan p = plan_of(s);
   make_directory(p.out, s.flag("overwrite"));
   const std::size_t n = std::size_t(std::floor(p.rz.t_end / p.rz.dt + 1e-9)) + 1;
   const int width = std::max(4, int(std::to_string(p.count).size()));
+  std::mutex done_lock;
+  std::size_t done = 0;
   const std::vector<json> rows = parallel_map<json>(std::size_t(p.count), p.threads, [&](std::size_t k) {
     GeneratedRecord r;
     if (p.background) r = rezaeian_record(p.rz, p.q, p.seed, k);
@@ -178,6 +181,10 @@ json motion_generate(const Settings& s) {
     const json measures = measures_json(m);
     for (auto it = measures.begin(); it != measures.end(); ++it) row[it.key()] = it.value();
     row["baseline_correction"] = r.baseline_correction;
+    if (progress) {
+      const std::lock_guard<std::mutex> lock(done_lock);
+      progress(++done, std::size_t(p.count));
+    }
     return row;
   });
   json j;

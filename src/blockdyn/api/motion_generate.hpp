@@ -4,6 +4,8 @@
 // written as PEER .AT2 files (g) into a directory with `motions.json`: per record its file and
 // measured pga, pgv, pgd, arias, d5_95, t_mid, mean period and end state, and the suite's
 // medians against the targets. Same seed, the same bytes whatever the thread count.
+#include <cstddef>
+#include <functional>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -16,8 +18,10 @@ namespace blockdyn {
 const std::vector<StudyOption>& motion_generate_options();
 // Checks every option first (std::invalid_argument naming it), then writes the records and
 // motions.json into `out` (created if missing; an existing motions.json needs `overwrite`) and
-// returns that document.
-nlohmann::ordered_json motion_generate(const Settings& s);
+// returns that document. `progress` (may be empty) is called as records complete (done of
+// total), from one thread at a time.
+nlohmann::ordered_json motion_generate(const Settings& s,
+                                       const std::function<void(std::size_t, std::size_t)>& progress = {});
 // A PEER .AT2 text of samples a (g) at spacing dt.
 std::string at2_text(const std::vector<double>& a, double dt, const std::string& title);
 
