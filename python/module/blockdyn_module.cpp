@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 #include <exception>
+#include <functional>
 #include <memory>
 #include <string>
 #include <thread>
@@ -144,7 +145,7 @@ py::dict study_columns(const StudyTable& t) {
 }
 
 // A library call from options by name to a JSON document, without the GIL: the document's text.
-std::string json_call(nlohmann::ordered_json (*call)(const Settings&), const OptionList& options) {
+std::string json_call(const std::function<nlohmann::ordered_json(const Settings&)>& call, const OptionList& options) {
   const Settings s = settings_of(options);
   nlohmann::ordered_json j;
   {
@@ -286,7 +287,10 @@ void add_studies(py::module_& m) {
       py::arg("options"), py::arg("threads") = 0,
       "Runs `blockdyn map` in memory; returns (columns, sidecar JSON text, boundary columns, their meta JSON).");
   m.def(
-      "motion_generate", [](const OptionList& options) { return json_call(motion_generate, options); },
+      "motion_generate",
+      [](const OptionList& options) {
+        return json_call([](const Settings& s) { return motion_generate(s); }, options);
+      },
       py::arg("options"), "Writes a suite of synthetic records (`blockdyn motion generate`): motions.json's text.");
   m.def(
       "motion_info", [](const OptionList& options) { return json_call(motion_info, options); }, py::arg("options"),
