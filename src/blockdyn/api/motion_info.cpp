@@ -3,6 +3,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <memory>
 #include <stdexcept>
 #include <utility>
 
@@ -17,12 +18,6 @@ namespace {
 
 using json = nlohmann::ordered_json;
 using Invalid = std::invalid_argument;
-
-Accelerogram record_of(const Settings& s) {
-  if (auto r = s.record("record")) return *r;
-  if (!s.has("record")) throw Invalid("record: give a record file (PEER .AT2, or CSV 't, a' in s, g)");
-  return load_accelerogram(s.text("record"), "record");
-}
 
 // --periods, else a logarithmic grid from --period-min to --period-max.
 std::vector<double> periods_of(const Settings& s) {
@@ -70,7 +65,8 @@ json motion_info(const Settings& s) {
   const bool spectrum =
       s.flag("spectrum") || s.has("periods") || s.has("period-min") || s.has("period-max") || s.has("period-points");
   const std::vector<double> periods = spectrum ? periods_of(s) : std::vector<double>{};
-  const Accelerogram rec = record_of(s);
+  const std::shared_ptr<const Accelerogram> held = record_from(s);
+  const Accelerogram& rec = *held;
   const IntensityMeasures m = intensity_measures(rec, g);
   json j;
   j["schema"] = schema_name("motion-info", "summary");
@@ -92,6 +88,12 @@ json motion_info(const Settings& s) {
     j["spectrum"] = rows;
   }
   return j;
+}
+
+std::shared_ptr<const Accelerogram> record_from(const Settings& s) {
+  if (auto r = s.record("record")) return r;
+  if (!s.has("record")) throw Invalid("record: give a record file (PEER .AT2, or CSV 't, a' in s, g)");
+  return std::make_shared<const Accelerogram>(load_accelerogram(s.text("record"), "record"));
 }
 
 json measures_json(const IntensityMeasures& m) {

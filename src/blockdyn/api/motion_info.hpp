@@ -4,6 +4,7 @@
 // t_mid, mean period) and, on request, its pseudo-acceleration spectrum, from options by name:
 // `record` (a file: PEER .AT2 or CSV "t, a" in s, g; or arrays), `spectrum`, `periods` or
 // `period-min/max/points`, `damping`, `g`.
+#include <memory>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -19,6 +20,9 @@ const std::vector<StudyOption>& motion_info_options();
 // option for bad input (a record with non-monotone times, NaN, zero dt; periods <= 0; damping
 // outside [0, 1)).
 nlohmann::ordered_json motion_info(const Settings& s);
+// The option `record`: a record given as arrays, or a file (PEER .AT2, CSV); std::invalid_argument
+// naming "record".
+std::shared_ptr<const Accelerogram> record_from(const Settings& s);
 // The measures as JSON keys pga, pgv, pgd, arias, d5_95, t5, t95, t_mid, mean_period,
 // final_velocity, final_displacement (null where not finite).
 nlohmann::ordered_json measures_json(const IntensityMeasures& m);

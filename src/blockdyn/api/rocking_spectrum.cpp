@@ -9,6 +9,7 @@
 
 #include "blockdyn/analysis/forced/forced_model.hpp"
 #include "blockdyn/analysis/sweep/grid_table.hpp"
+#include "blockdyn/api/motion_info.hpp"
 #include "blockdyn/base/range_check.hpp"
 #include "blockdyn/io/json_io.hpp"
 #include "blockdyn/model/rigid/rigid_params.hpp"
@@ -59,12 +60,6 @@ std::vector<double> p_values(const StudyOptions& o) {
   }
   for (double x : p) require_in_range("p-values", x, 0, 1e4, false);
   return p;
-}
-
-std::shared_ptr<const Accelerogram> record_of(const Settings& s) {
-  if (auto r = s.record("record")) return r;
-  if (!s.has("record")) throw Invalid("record: give a record file (PEER .AT2, or CSV 't, a' in s, g)");
-  return std::make_shared<const Accelerogram>(load_accelerogram(s.text("record"), "record"));
 }
 
 // The block of slenderness alpha and frequency parameter p (its size R = 3 g / (4 p^2)).
@@ -132,7 +127,7 @@ GridStudy rocking_grid(const Settings& given, const std::string& output) {
   if (!law) throw Invalid("impact = '" + so.text("impact") + "' is not one of: housner, newton");
   base.impact = *law;
   if (so.given("restitution")) base.restitution = so.number("restitution");
-  const auto rec = record_of(given);
+  const auto rec = record_from(given);
   if (so.given("t-end") && so.given("t-after")) throw Invalid("--t-end and --t-after: give only one");
   const double t_end = so.given("t-end") ? so.number("t-end") : rec->t_last() + t_after;
   require_in_range("t-end", t_end, 0, 1e5, false);
