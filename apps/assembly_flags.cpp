@@ -15,8 +15,9 @@ void add_assembly_options(CLI::App& app, AssemblyFlags& f) {
     if (o) o->check(CLI::IsMember(std::vector<std::string>(names)));
   };
   members(
-      opt("--preset", f.preset, "block (one block), trilith (seed 002: two columns and a lintel), column (n drums)"),
-      {"block", "trilith", "column"});
+      opt("--preset", f.preset,
+          "block (one block), trilith (seed 002: two columns and a lintel), column (n drums), arch (voussoirs)"),
+      {"block", "trilith", "column", "arch"});
   members(opt("--contact", f.contact,
               "contact law: deformable (spring-dashpot + elastic Coulomb, default) or rigid (unilateral, Coulomb, "
               "Newton impacts; see --scheme)"),
@@ -29,6 +30,11 @@ void add_assembly_options(CLI::App& app, AssemblyFlags& f) {
   opt("--lintel-length", f.preset_opt.lintel_length, "trilith: lintel length [m] (default: column height)");
   opt("--overhang", f.preset_opt.overhang,
       "trilith: lintel beyond each column's outer face [m] (default 0: flush, seed 002)");
+  opt("--voussoirs", f.preset_opt.voussoirs, "arch: number of equal voussoirs (default 9; at most 24 in the dynamics)");
+  opt("--thickness-ratio", f.preset_opt.thickness_ratio,
+      "arch: ring thickness / centreline radius, in (0, 2) (default 0.15)");
+  opt("--radius", f.preset_opt.radius, "arch: centreline radius [m] (default 1)");
+  opt("--embrace", f.preset_opt.embrace, "arch: angle spanned [deg], in (0, 180] (default 180: semicircular)");
   opt("--phi-s", f.phi_s, "friction angle column-ground [deg], 0 to 90 (90: no sliding; default 90)");
   opt("--phi-l", f.phi_l, "friction angle between blocks [deg], 0 to 90 (default 90)");
   opt("--phi-s-kinetic", f.phi_s_kinetic,

@@ -401,7 +401,7 @@ TEST(AssemblyInput, InvalidAssembliesAreRejectedWithTheField) {
   b.interfaces.pop_back();
   b.interfaces.pop_back();
   EXPECT_NE(msg(b).find("stands on nothing"), std::string::npos) << msg(b);
-  EXPECT_THROW(make_preset("arch", seed_preset()), std::invalid_argument);
+  EXPECT_THROW(make_preset("dome", seed_preset()), std::invalid_argument);
 }
 
 // ---- The rigid contact law (Moreau-Jean time-stepping, nonsmooth Gauss-Seidel per step).

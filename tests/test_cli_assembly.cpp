@@ -188,7 +188,7 @@ TEST(CliAssembly, BadInputIsAUsageError) {
       {{"assembly", "malformed.toml"}, "malformed.toml"},
       {{"assembly", "unknown.toml"}, "colour"},
       {{"assembly", "missing.toml"}, "missing.toml"},
-      {{"assembly", "--preset", "arch"}, "preset"},
+      {{"assembly", "--preset", "dome"}, "preset"},
       {{"assembly", "--preset", "trilith", "--contact", "elastic"}, "contact"},
       {{"assembly", "--preset", "trilith", "--contact", "rigid", "--normal-stiffness", "1e8"}, "deformable"},
       {{"assembly", "--preset", "trilith", "--step", "1e-3"}, "step"},

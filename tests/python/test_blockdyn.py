@@ -147,7 +147,7 @@ def test_assembly_spectrum_and_survival_from_python():
     v = blockdyn.survival(model="housner", width=0.3, height=1.5, beta_points=3, omega_points=2, t_end=5)
     assert len(v["beta"]) == 6 and v["motion"][0] == "rest"
     with pytest.raises(ValueError, match="preset"):
-        blockdyn.assembly(preset="arch")
+        blockdyn.assembly(preset="dome")
 
 
 def test_response_curve_equals_the_command_line():

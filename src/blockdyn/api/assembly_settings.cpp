@@ -28,8 +28,6 @@ Values values_of(const Settings& s) {
   v.contact = s.text("contact", "deformable");
   if (v.contact != "deformable" && v.contact != "rigid")
     throw Invalid("--contact = '" + v.contact + "' is not one of: deformable, rigid");
-  if (!v.preset.empty() && v.preset != "block" && v.preset != "trilith" && v.preset != "column")
-    throw Invalid("--preset = '" + v.preset + "' is not one of: block, trilith, column");
   v.rigid = v.contact == "rigid";
   v.phi_s = s.number("phi-s", 90);
   v.phi_l = s.number("phi-l", 90);
@@ -48,7 +46,7 @@ Values values_of(const Settings& s) {
 
 void check_values(const Settings& s, const Values& v) {
   if (v.file.empty() == v.preset.empty())
-    throw Invalid(v.file.empty() ? "give --preset block|trilith|column or an assembly FILE.toml"
+    throw Invalid(v.file.empty() ? "give --preset block|trilith|column|arch or an assembly FILE.toml"
                                  : "give either --preset or an assembly file, not both");
   require_in_range("phi-s", v.phi_s, 0, 90);
   require_in_range("phi-l", v.phi_l, 0, 90);
@@ -93,9 +91,8 @@ void set_kinetic(ContactLaw& l, const std::optional<double>& phi_kinetic, const 
 }
 
 Assembly from_file(const Settings& s, const Values& v) {
-  for (const char* n :
-       {"slenderness", "drums", "block-width", "thickness", "density", "lintel-length", "overhang", "tilt"})
-    if (s.has(n)) throw Invalid(std::string("--") + n + " belongs to --preset (an assembly file gives its blocks)");
+  for (const std::string& n : preset_geometry_option_names())
+    if (s.has(n)) throw Invalid("--" + n + " belongs to --preset (an assembly file gives its blocks)");
   Assembly a = read_assembly_file(v.file);
   // Options given override the file's contact laws.
   for (AssemblyInterface& i : a.interfaces) {
@@ -114,6 +111,68 @@ Assembly from_file(const Settings& s, const Values& v) {
 }
 
 Assembly from_preset(const Settings& s, const Values& v) {
+  PresetOptions o = preset_geometry_from(s, v.preset);
+  o.tilt = v.tilt;
+  o.ground_law = preset_law(v, v.phi_s, "phi-s");
+  o.block_law = preset_law(v, v.phi_l, "phi-l");
+  set_kinetic(o.ground_law, v.phi_s_kinetic, "phi-s-kinetic");
+  set_kinetic(o.block_law, v.phi_l_kinetic, "phi-l-kinetic");
+  o.rigid_contacts = v.rigid;
+  if (v.preset == "arch" && s.has("tilt")) throw Invalid("--tilt belongs to --preset block|trilith|column");
+  Assembly a = make_preset(v.preset, o);
+  a.g = v.g;
+  return a;
+}
+
+// Options that belong to some presets only, and those presets.
+const std::vector<std::pair<std::string, std::vector<std::string>>>& preset_only_options() {
+  static const std::vector<std::pair<std::string, std::vector<std::string>>> t{
+      {"slenderness", {"block", "trilith", "column"}},
+      {"block-width", {"block", "trilith", "column"}},
+      {"drums", {"column"}},
+      {"lintel-length", {"trilith"}},
+      {"overhang", {"trilith"}},
+      {"voussoirs", {"arch"}},
+      {"thickness-ratio", {"arch"}},
+      {"radius", {"arch"}},
+      {"embrace", {"arch"}}};
+  return t;
+}
+
+}  // namespace
+
+const std::vector<std::string>& preset_names() {
+  static const std::vector<std::string> n{"block", "trilith", "column", "arch"};
+  return n;
+}
+
+const std::vector<std::string>& preset_geometry_option_names() {
+  static const std::vector<std::string> n = [] {
+    std::vector<std::string> out{"thickness", "density", "tilt"};
+    for (const auto& [name, presets] : preset_only_options()) out.push_back(name);
+    return out;
+  }();
+  return n;
+}
+
+PresetOptions preset_geometry_from(const Settings& s, const std::string& preset) {
+  std::string names;
+  bool known = false;
+  for (const std::string& p : preset_names()) {
+    names += (names.empty() ? "" : ", ") + p;
+    known = known || p == preset;
+  }
+  if (!known) throw Invalid("--preset = '" + preset + "' is not one of: " + names);
+  for (const auto& [name, presets] : preset_only_options()) {
+    if (!s.has(name)) continue;
+    std::string owners;
+    bool ok = false;
+    for (const std::string& p : presets) {
+      owners += (owners.empty() ? "" : "|") + p;
+      ok = ok || p == preset;
+    }
+    if (!ok) throw Invalid("--" + name + " belongs to --preset " + owners);
+  }
   PresetOptions o;
   o.slenderness = s.number("slenderness", o.slenderness);
   o.drums = int(s.integer("drums", o.drums));
@@ -122,21 +181,12 @@ Assembly from_preset(const Settings& s, const Values& v) {
   o.density = s.number("density", o.density);
   o.lintel_length = s.number("lintel-length", o.lintel_length);
   o.overhang = s.number("overhang", o.overhang);
-  o.tilt = v.tilt;
-  o.ground_law = preset_law(v, v.phi_s, "phi-s");
-  o.block_law = preset_law(v, v.phi_l, "phi-l");
-  set_kinetic(o.ground_law, v.phi_s_kinetic, "phi-s-kinetic");
-  set_kinetic(o.block_law, v.phi_l_kinetic, "phi-l-kinetic");
-  o.rigid_contacts = v.rigid;
-  if (s.has("drums") && v.preset != "column") throw Invalid("--drums belongs to --preset column");
-  for (const char* n : {"lintel-length", "overhang"})
-    if (s.has(n) && v.preset != "trilith") throw Invalid(std::string("--") + n + " belongs to --preset trilith");
-  Assembly a = make_preset(v.preset, o);
-  a.g = v.g;
-  return a;
+  o.voussoirs = int(s.integer("voussoirs", o.voussoirs));
+  o.thickness_ratio = s.number("thickness-ratio", o.thickness_ratio);
+  o.radius = s.number("radius", o.radius);
+  o.embrace = s.number("embrace", o.embrace);
+  return o;
 }
-
-}  // namespace
 
 const std::vector<std::string>& assembly_option_names() {
   static const std::vector<std::string> names = [] {
@@ -152,6 +202,10 @@ const std::vector<std::string>& assembly_option_names() {
                                "density",
                                "lintel-length",
                                "overhang",
+                               "voussoirs",
+                               "thickness-ratio",
+                               "radius",
+                               "embrace",
                                "phi-s",
                                "phi-l",
                                "phi-s-kinetic",
@@ -177,17 +231,20 @@ const std::vector<std::string>& assembly_option_names() {
   return names;
 }
 
-AssemblySetup assembly_from(const Settings& s) {
+Assembly assembly_geometry_from(const Settings& s, int max_blocks) {
   const Values v = values_of(s);
   check_values(s, v);
-  AssemblySetup setup;
-  Assembly& a = setup.assembly;
-  a = v.file.empty() ? from_preset(s, v) : from_file(s, v);
+  Assembly a = v.file.empty() ? from_preset(s, v) : from_file(s, v);
   if (s.flag("columns-rock-only")) restrict_to_rocking_on_ground(a);
-
   if (s.has("collapse-rotation") || v.file.empty()) a.collapse_rotation = v.collapse_rotation;
   if (s.has("min-bearing") || v.file.empty()) a.min_bearing = v.min_bearing;
-  validate(a);
+  validate(a, max_blocks);
+  return a;
+}
+
+AssemblySetup assembly_from(const Settings& s) {
+  AssemblySetup setup;
+  setup.assembly = assembly_geometry_from(s, kMaxDynamicBlocks);
   apply_ground_settings(s, setup.ground);
   AssemblyRunOptions& o = setup.run;
   o.t_end = s.number("t-end", o.t_end);

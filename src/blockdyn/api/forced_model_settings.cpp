@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "blockdyn/api/forced_model_settings.hpp"
 
+#include "blockdyn/api/assembly_settings.hpp"
+
 #include <cmath>
 #include <stdexcept>
 #include <utility>
@@ -42,16 +44,11 @@ ForcedModel block_model(const Settings& s, const std::string& model, bool housne
 
 ForcedModel assembly_model(const Settings& s) {
   const std::string preset = s.text("preset");
-  if (preset.empty()) throw Invalid("--model assembly needs --preset block|trilith|column");
-  if (preset != "block" && preset != "trilith" && preset != "column")
-    throw Invalid("--preset = '" + preset + "' is not one of: block, trilith, column");
+  if (preset.empty()) throw Invalid("--model assembly needs --preset block|trilith|column|arch");
   const std::string contact = s.text("contact", "deformable");
   if (contact != "deformable" && contact != "rigid")
     throw Invalid("--contact = '" + contact + "' is not one of: deformable, rigid");
-  PresetOptions po;
-  po.slenderness = s.number("slenderness", po.slenderness);
-  po.block_width = s.number("block-width", po.block_width);
-  po.drums = int(s.integer("drums", po.drums));
+  PresetOptions po = preset_geometry_from(s, preset);
   po.rigid_contacts = contact == "rigid";
   const double phi_s = s.number("phi-s", 90), phi_l = s.number("phi-l", 90);
   require_in_range("phi-s", phi_s, 0, 90);
@@ -84,8 +81,12 @@ struct ForcedFamily {
 };
 
 const std::vector<ForcedFamily>& forced_families() {
-  static const std::vector<std::string> assembly_only = {"preset", "contact", "slenderness", "block-width",
-                                                         "drums",  "phi-s",   "phi-l",       "columns-rock-only"};
+  static const std::vector<std::string> assembly_only = [] {
+    std::vector<std::string> n{"preset", "contact", "phi-s", "phi-l", "columns-rock-only"};
+    for (const std::string& o : preset_geometry_option_names())
+      if (o != "tilt") n.push_back(o);
+    return n;
+  }();
   static const std::string not_block = "applies to --model assembly only";
   static const std::vector<ForcedFamily> families = {
       {"housner",
@@ -105,9 +106,14 @@ const std::vector<ForcedFamily>& forced_families() {
 }  // namespace
 
 const std::vector<std::string>& forced_model_option_names() {
-  static const std::vector<std::string> n{
-      "model",  "width",   "height",      "mass",        "g",     "mu-s",  "mu-k",  "impact",           "restitution",
-      "preset", "contact", "slenderness", "block-width", "drums", "phi-s", "phi-l", "columns-rock-only"};
+  static const std::vector<std::string> n = [] {
+    std::vector<std::string> out{"model",   "width", "height", "mass",  "g",
+                                 "mu-s",    "mu-k",  "impact", "restitution", "preset",
+                                 "contact", "phi-s", "phi-l",  "columns-rock-only"};
+    for (const std::string& o : preset_geometry_option_names())
+      if (o != "tilt") out.push_back(o);
+    return out;
+  }();
   return n;
 }
 

@@ -34,6 +34,51 @@ void read_law(const toml::table& t, const std::string& where, ContactLaw& l) {
   if (muk) l.mu_k = *muk;
 }
 
+// [[x, y], ...] at rest, counter-clockwise.
+std::vector<Vec2> read_vertices(const toml::table& t, const std::string& w) {
+  const toml::array* arr = t["vertices"].as_array();
+  if (!arr) fail(w + ".vertices", "must be an array of [x, y] pairs (m, counter-clockwise)");
+  std::vector<Vec2> v;
+  for (std::size_t k = 0; k < arr->size(); ++k) {
+    const std::string f = w + ".vertices[" + std::to_string(k) + "]";
+    const toml::array* xy = (*arr)[k].as_array();
+    if (!xy || xy->size() != 2) fail(f, "must be a pair [x, y] of numbers (m)");
+    v.push_back({number(*xy->get(0), f + "[0]"), number(*xy->get(1), f + "[1]")});
+  }
+  return v;
+}
+
+AssemblyBlock read_block(const toml::table& t, const std::string& w, std::size_t i) {
+  const auto mass = opt_number(t, w, "mass"), rho = opt_number(t, w, "density"), depth = opt_number(t, w, "thickness");
+  if (mass && rho) fail(w, "give mass or density (with thickness), not both");
+  if (!mass && !(rho && depth)) fail(w + ".mass", "is missing (or give density and thickness)");
+  const std::string name = opt_string(t, w, "name").value_or("block " + std::to_string(i));
+  AssemblyBlock b;
+  if (t.contains("vertices")) {
+    for (const char* k : {"width", "height", "x", "y"})
+      if (t.contains(k))
+        fail(w + "." + k, "belongs to a rectangular block (a polygon's vertices give its size and place)");
+    b = polygon_block(w, read_vertices(t, w), mass ? *mass : 0.0, rho ? *rho : 0.0, depth ? *depth : 0.0);
+  } else {
+    const auto width = opt_number(t, w, "width"), height = opt_number(t, w, "height");
+    if (!width) fail(w + ".width", "is missing (or give vertices)");
+    if (!height) fail(w + ".height", "is missing (or give vertices)");
+    b.width = *width;
+    b.height = *height;
+    b.mass = mass ? *mass : *rho * b.width * b.height * *depth;
+    b.x = opt_number(t, w, "x").value_or(0.0);
+    const auto y = opt_number(t, w, "y");
+    if (!y) fail(w + ".y", "is missing (the height of the block's centre)");
+    b.y = *y;
+  }
+  b.name = name;
+  b.theta = opt_number(t, w, "theta").value_or(0.0);
+  b.vx = opt_number(t, w, "vx").value_or(0.0);
+  b.vy = opt_number(t, w, "vy").value_or(0.0);
+  b.omega = opt_number(t, w, "omega").value_or(0.0);
+  return b;
+}
+
 }  // namespace
 
 double friction_of_angle(double deg, const std::string& field) {
@@ -64,45 +109,20 @@ Assembly read_assembly_file(const std::string& path) {
   }
   const toml::array* blocks = root["block"].as_array();
   if (!blocks || blocks->empty()) fail("block", "at least one [[block]] is needed");
-  const std::set<std::string> block_keys{"name", "width", "height", "mass", "density", "thickness",
-                                         "x", "y", "theta", "vx", "vy", "omega"};
+  const std::set<std::string> block_keys{"name", "width",  "height", "mass", "density", "thickness", "x",
+                                         "y",    "theta",  "vx",     "vy",   "omega",   "vertices"};
   for (std::size_t i = 0; i < blocks->size(); ++i) {
     const std::string w = "block[" + std::to_string(i) + "]";
     const toml::table* t = (*blocks)[i].as_table();
     if (!t) fail(w, "must be a table");
     if (auto k = first_unknown_key(*t, block_keys); !k.empty())
       fail(w + "." + k, "unknown key (allowed: " + joined(block_keys) + ")");
-    AssemblyBlock b;
-    b.name = opt_string(*t, w, "name").value_or("block " + std::to_string(i));
-    const auto width = opt_number(*t, w, "width"), height = opt_number(*t, w, "height");
-    if (!width) fail(w + ".width", "is missing");
-    if (!height) fail(w + ".height", "is missing");
-    b.width = *width;
-    b.height = *height;
-    const auto mass = opt_number(*t, w, "mass"), rho = opt_number(*t, w, "density"),
-               depth = opt_number(*t, w, "thickness");
-    if (mass && rho) fail(w, "give mass or density (with thickness), not both");
-    if (mass) {
-      b.mass = *mass;
-    } else if (rho && depth) {
-      b.mass = *rho * b.width * b.height * *depth;
-    } else {
-      fail(w + ".mass", "is missing (or give density and thickness)");
-    }
-    b.x = opt_number(*t, w, "x").value_or(0.0);
-    b.theta = opt_number(*t, w, "theta").value_or(0.0);
-    const auto y = opt_number(*t, w, "y");
-    if (!y) fail(w + ".y", "is missing (the height of the block's centre)");
-    b.y = *y;
-    b.vx = opt_number(*t, w, "vx").value_or(0.0);
-    b.vy = opt_number(*t, w, "vy").value_or(0.0);
-    b.omega = opt_number(*t, w, "omega").value_or(0.0);
-    a.blocks.push_back(b);
+    a.blocks.push_back(read_block(*t, w, i));
   }
   const toml::array* faces = root["interface"].as_array();
   if (!faces || faces->empty()) fail("interface", "at least one [[interface]] is needed (lower, upper)");
   std::set<std::string> iface_keys = kLawKeys;
-  iface_keys.insert({"lower", "upper"});
+  iface_keys.insert({"lower", "upper", "lower_edge", "upper_edge"});
   const long long nb = static_cast<long long>(a.blocks.size());
   for (std::size_t i = 0; i < faces->size(); ++i) {
     const std::string w = "interface[" + std::to_string(i) + "]";
@@ -124,6 +144,9 @@ Assembly read_assembly_file(const std::string& path) {
       f.lower = int(*lower);
     }
     read_law(*t, w, f.law);
+    if (auto e = opt_integer(*t, w, "upper_edge", 0, 63)) f.upper_edge = int(*e);
+    if (auto e = opt_integer(*t, w, "lower_edge", 0, 63)) f.lower_edge = int(*e);
+    if (f.lower < 0 && f.lower_edge >= 0) fail(w + ".lower_edge", "belongs to a block (the ground has no edges)");
     a.interfaces.push_back(f);
   }
   return a;

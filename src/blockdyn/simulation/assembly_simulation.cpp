@@ -365,7 +365,8 @@ AssemblyResult simulate_assembly(const Assembly& a, const GroundMotion& g, const
     throw std::invalid_argument("a probed run takes at most " + std::to_string(RunProbe::kMaxBlocks) + " blocks");
   const bool rigid = a.contact == "rigid";
   const int n = int(a.blocks.size());
-  const int cap = (n == 1 && a.interfaces.size() <= 2) ? 1 : (n <= 3 && a.interfaces.size() <= 4) ? 3 : 8;
+  const std::size_t ni = a.interfaces.size();
+  const int cap = (n == 1 && ni <= 2) ? 1 : (n <= 3 && ni <= 4) ? 3 : (n <= 8 && ni <= 9) ? 8 : 24;
   switch (cap) {
     case 1:
       return rigid ? run<RigidAssemblyModel<1>>(a, g, o, trajectory, probe)
@@ -373,9 +374,12 @@ AssemblyResult simulate_assembly(const Assembly& a, const GroundMotion& g, const
     case 3:
       return rigid ? run<RigidAssemblyModel<3>>(a, g, o, trajectory, probe)
                    : run<AssemblyModel<3>>(a, g, o, trajectory, probe);
-    default:
+    case 8:
       return rigid ? run<RigidAssemblyModel<8>>(a, g, o, trajectory, probe)
                    : run<AssemblyModel<8>>(a, g, o, trajectory, probe);
+    default:
+      return rigid ? run<RigidAssemblyModel<24>>(a, g, o, trajectory, probe)
+                   : run<AssemblyModel<24>>(a, g, o, trajectory, probe);
   }
 }
 

@@ -299,5 +299,8 @@ template RunOutcome<RigidAssemblyModel<3>> run_rigid_assembly(const RigidAssembl
 template RunOutcome<RigidAssemblyModel<8>> run_rigid_assembly(const RigidAssemblyModel<8>&, RigidAssemblyModel<8>::Mode,
                                                               RigidAssemblyModel<8>::State, const AssemblyRunOptions&,
                                                               Observer<RigidAssemblyModel<8>>&, TimeSteppingWindows&);
+template RunOutcome<RigidAssemblyModel<24>> run_rigid_assembly(const RigidAssemblyModel<24>&, RigidAssemblyModel<24>::Mode,
+                                                              RigidAssemblyModel<24>::State, const AssemblyRunOptions&,
+                                                              Observer<RigidAssemblyModel<24>>&, TimeSteppingWindows&);
 
 }  // namespace blockdyn

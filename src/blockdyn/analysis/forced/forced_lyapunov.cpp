@@ -234,6 +234,9 @@ ForcedLyapunovOutcome assembly_lyapunov(const Assembly& a, const GroundMotion& g
   const std::size_t n = a.blocks.size();
   if (n == 1 && a.interfaces.size() <= 2) return assembly_run<1>(a, g, o);
   if (n <= 3 && a.interfaces.size() <= 4) return assembly_run<3>(a, g, o);
+  if (n > 8 || a.interfaces.size() > 9)
+    throw std::invalid_argument("blocks: " + std::to_string(n) +
+                                " given; the Lyapunov exponent of an assembly takes at most 8 blocks");
   return assembly_run<8>(a, g, o);
 }
 

@@ -51,8 +51,6 @@ AssemblyModel<Cap>::AssemblyModel(const Assembly& a, const GroundMotion& g, doub
     I_[b] = k.inertia();
     inv_m_[b] = 1.0 / m_[b];
     inv_I_[b] = 1.0 / I_[b];
-    b_[b] = k.width;
-    h_[b] = k.height;
     limit_[b] = a.collapse_rotation * std::atan2(k.width, k.height);
     y0_[b] = k.y;
     min_size = std::fmin(min_size, std::fmin(k.width, k.height));
@@ -64,6 +62,9 @@ AssemblyModel<Cap>::AssemblyModel(const Assembly& a, const GroundMotion& g, doub
     const AssemblyInterface& f = a.interfaces[i];
     lower_[i] = f.lower;
     upper_[i] = f.upper;
+    const InterfaceFaces faces = interface_faces(a, i);
+    lface_[i] = faces.lower;
+    uface_[i] = faces.upper;
     PointLaw& l = law_[i];
     l.kn = f.law.k_normal;
     l.kt = f.law.k_tangential > 0 ? f.law.k_tangential : f.law.k_normal / 3.0;
@@ -105,11 +106,9 @@ void AssemblyModel<Cap>::geometry(const State& z, Geometry& g) const {
   for (int b = 0; b < nb_; ++b) g.pose[b] = pose(z, b);
   for (int i = 0; i < ni_; ++i) {
     const int l = lower_[i], u = upper_[i];
-    if (l < 0)
-      g.lower[i] = ground_face();
-    else
-      g.lower[i] = top_face(g.pose[l], b_[l], h_[l]);
-    g.upper[i] = base_face(g.pose[u], b_[u], h_[u]);
+    const LocalFace& lf = lface_[i];
+    g.lower[i] = l < 0 ? Face{lf.c, lf.t, lf.n, lf.half} : face_at(g.pose[l], lf);
+    g.upper[i] = face_at(g.pose[u], uface_[i]);
   }
 }
 
@@ -529,5 +528,6 @@ typename AssemblyModel<Cap>::Energy AssemblyModel<Cap>::energy_terms(const Mode&
 template class AssemblyModel<1>;
 template class AssemblyModel<3>;
 template class AssemblyModel<8>;
+template class AssemblyModel<24>;
 
 }  // namespace blockdyn

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 #pragma once
-// An assembly of rigid rectangular blocks with deformable unilateral frictional contacts (spec
+// An assembly of rigid blocks (rectangles or convex polygons) with deformable unilateral frictional contacts (spec
 // block-assemblies.md; seed 002), as a hybrid model for the generic integrator. Every block has
 // all three planar degrees of freedom. Contacts sit at the two ends of each interface's overlap
 // (contact_point.hpp); each point's law (deformable_contact.hpp) is smooth inside a mode, and
@@ -25,6 +25,7 @@
 #include "blockdyn/model/assembly/assembly_params.hpp"
 #include "blockdyn/model/assembly/contact_point.hpp"
 #include "blockdyn/model/assembly/deformable_contact.hpp"
+#include "blockdyn/model/assembly/interface_faces.hpp"
 
 namespace blockdyn {
 
@@ -183,9 +184,10 @@ class AssemblyModel {
   GroundMotion ground_;
   bool forced_;
   int nb_, ni_;
-  std::array<double, Cap> m_{}, I_{}, inv_m_{}, inv_I_{}, b_{}, h_{}, limit_{}, y0_{};
+  std::array<double, Cap> m_{}, I_{}, inv_m_{}, inv_I_{}, limit_{}, y0_{};
   std::array<PointLaw, kIfaces> law_{};
   std::array<int, kIfaces> lower_{}, upper_{};
+  std::array<LocalFace, kIfaces> lface_{}, uface_{};  // in the blocks' frames (the ground's: fixed)
   double g_, step_hint_, d_max_, switch_band_, rotation_band_;
 };
 

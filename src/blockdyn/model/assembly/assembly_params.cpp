@@ -1,10 +1,13 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "blockdyn/model/assembly/assembly_params.hpp"
 
+#include <array>
 #include <cmath>
 #include <stdexcept>
 
 #include "blockdyn/model/assembly/contact_point.hpp"
+#include "blockdyn/model/assembly/interface_faces.hpp"
+#include "blockdyn/model/common/polygon.hpp"
 
 namespace blockdyn {
 
@@ -106,7 +109,54 @@ void turn_about(AssemblyBlock& k, const Vec2& pivot, double theta) {
   k.theta = theta;
 }
 
+// A circular arch of n equal voussoirs with radial joints (chords for the intrados and extrados),
+// voussoir 0 at the left springing; the springings' centreline points at y = 0.
+void build_arch(Assembly& a, const PresetOptions& o) {
+  if (o.voussoirs < 1 || o.voussoirs > kMaxStaticBlocks)
+    throw std::invalid_argument("voussoirs = " + std::to_string(o.voussoirs) + " must be in [1, " +
+                                std::to_string(kMaxStaticBlocks) + "]");
+  if (!(o.radius >= kMinBlockSize && o.radius <= 1e3))
+    throw std::invalid_argument("radius = " + num(o.radius) + " must be in [1e-3, 1000] m");
+  if (!(o.thickness_ratio > 0 && o.thickness_ratio < 2))
+    throw std::invalid_argument("thickness-ratio = " + num(o.thickness_ratio) + " must be in (0, 2)");
+  if (!(o.embrace > 0 && o.embrace <= 180))
+    throw std::invalid_argument("embrace = " + num(o.embrace) + " must be in (0, 180] degrees");
+  const int n = o.voussoirs;
+  const double R = o.radius, ri = R * (1 - 0.5 * o.thickness_ratio), re = R * (1 + 0.5 * o.thickness_ratio);
+  const double half = 0.5 * o.embrace * M_PI / 180.0, step = 2.0 * half / n, yc = -R * std::cos(half);
+  auto at = [&](double r, double phi) { return Vec2{r * std::cos(phi), yc + r * std::sin(phi)}; };
+  for (int k = 0; k < n; ++k) {
+    const double pa = 0.5 * M_PI + half - k * step, pb = 0.5 * M_PI + half - (k + 1) * step;
+    AssemblyBlock b = polygon_block("voussoir " + std::to_string(k), {at(ri, pa), at(ri, pb), at(re, pb), at(re, pa)},
+                                    0.0, o.density, o.thickness);
+    b.name = "voussoir " + std::to_string(k);
+    a.blocks.push_back(b);
+  }
+  // Edge 1 of a voussoir is its joint towards the right springing, edge 3 towards the left.
+  AssemblyInterface left{-1, 0, o.ground_law, -1, 3};
+  a.interfaces.push_back(left);
+  for (int k = 1; k < n; ++k) a.interfaces.push_back({k - 1, k, o.block_law, 1, 3});
+  a.interfaces.push_back({-1, n - 1, o.ground_law, -1, 1});
+}
+
 }  // namespace
+
+AssemblyBlock polygon_block(const std::string& what, const std::vector<Vec2>& vertices, double mass, double density,
+                            double thickness) {
+  if (const std::string why = polygon_problem(vertices); !why.empty())
+    throw std::invalid_argument(what + ".vertices: the polygon " + why);
+  const PolygonProperties p = polygon_properties(vertices);
+  AssemblyBlock b;
+  b.name = what;
+  b.width = p.width;
+  b.height = p.height;
+  b.x = p.centroid.x;
+  b.y = p.centroid.y;
+  b.gyration_sq = p.gyration_sq;
+  b.mass = mass > 0 ? mass : density * thickness * p.area;
+  for (const Vec2& v : vertices) b.vertices.push_back(v - p.centroid);
+  return b;
+}
 
 Assembly make_preset(const std::string& name, const PresetOptions& o) {
   if (!(o.slenderness >= 0.1 && o.slenderness <= 100))
@@ -181,13 +231,42 @@ Assembly make_preset(const std::string& name, const PresetOptions& o) {
     li.y -= sink_g + sink_l;
     a.blocks = {c0, c1, li};
     a.interfaces = {{-1, 0, o.ground_law}, {-1, 1, o.ground_law}, {0, 2, o.block_law}, {1, 2, o.block_law}};
+  } else if (name == "arch") {
+    build_arch(a, o);
   } else {
-    throw std::invalid_argument("preset = '" + name + "' must be block, trilith or column");
+    throw std::invalid_argument("preset = '" + name + "' must be block, trilith, column or arch");
   }
   return a;
 }
 
 namespace {
+
+// No two blocks may interpenetrate at the start, with or without an interface between them (the
+// contact laws act only across interfaces: others would pass through each other).
+void check_overlaps(const Assembly& a, double min_size) {
+  const int nb = int(a.blocks.size());
+  std::vector<std::vector<Vec2>> outline(nb);
+  std::vector<std::array<double, 4>> box(nb);
+  for (int i = 0; i < nb; ++i) {
+    outline[i] = initial_outline(a.blocks[i]);
+    box[i] = {INFINITY, -INFINITY, INFINITY, -INFINITY};
+    for (const Vec2& v : outline[i])
+      box[i] = {std::fmin(box[i][0], v.x), std::fmax(box[i][1], v.x), std::fmin(box[i][2], v.y),
+                std::fmax(box[i][3], v.y)};
+  }
+  const double deep = 0.02 * min_size;
+  for (int i = 0; i < nb; ++i)
+    for (int j = i + 1; j < nb; ++j) {
+      if (box[i][0] >= box[j][1] - deep || box[j][0] >= box[i][1] - deep || box[i][2] >= box[j][3] - deep ||
+          box[j][2] >= box[i][3] - deep)
+        continue;
+      const double d = penetration_depth(outline[i], outline[j]);
+      if (d > deep)
+        throw std::invalid_argument("block " + std::to_string(i) + " (" + a.blocks[i].name + ") and block " +
+                                    std::to_string(j) + " (" + a.blocks[j].name + ") overlap by " + num(d) +
+                                    " m at the start (at most " + num(deep) + " m, 2% of the smallest block size)");
+    }
+}
 
 void check_law(const ContactLaw& l, const std::string& where, bool rigid) {
   if (!(l.k_normal >= 1.0 && l.k_normal <= 1e13))
@@ -206,9 +285,14 @@ void check_law(const ContactLaw& l, const std::string& where, bool rigid) {
 
 }  // namespace
 
-void validate(const Assembly& a) {
+void validate(const Assembly& a, int max_blocks) {
   const int nb = int(a.blocks.size());
-  if (nb < 1 || nb > 8) throw std::invalid_argument("blocks: " + std::to_string(nb) + " given, 1 to 8 allowed");
+  if (nb < 1 || nb > max_blocks)
+    throw std::invalid_argument("blocks: " + std::to_string(nb) + " given, 1 to " + std::to_string(max_blocks) +
+                                " allowed" +
+                                (max_blocks < kMaxStaticBlocks ? std::string(" in the dynamics (limit-analysis takes ") +
+                                                                     std::to_string(kMaxStaticBlocks) + ")"
+                                                               : std::string()));
   if (a.interfaces.empty() || a.interfaces.size() > std::size_t(nb + 1))
     throw std::invalid_argument("interfaces: " + std::to_string(a.interfaces.size()) + " given, 1 to " +
                                 std::to_string(nb + 1) + " allowed for " + std::to_string(nb) + " blocks");
@@ -233,6 +317,11 @@ void validate(const Assembly& a) {
     for (double v : {k.x, k.y, k.theta, k.vx, k.vy, k.omega})
       if (!(std::isfinite(v) && std::fabs(v) <= 1e6)) throw std::invalid_argument(w + ": initial pose and rates must be finite");
     if (!(std::fabs(k.theta) < 1.5)) throw std::invalid_argument(w + ".theta = " + num(k.theta) + " must be in (-1.5, 1.5) rad");
+    if (!k.vertices.empty()) {
+      if (const std::string why = polygon_problem(k.vertices); !why.empty())
+        throw std::invalid_argument(w + " (" + k.name + ").vertices: the polygon " + why);
+      if (!(k.gyration_sq > 0)) throw std::invalid_argument(w + ": a polygon needs its radius of gyration");
+    }
     min_size = std::fmin(min_size, std::fmin(k.width, k.height));
   }
   std::vector<int> supports(nb, 0);
@@ -250,6 +339,7 @@ void validate(const Assembly& a) {
   }
   for (int i = 0; i < nb; ++i)
     if (supports[i] == 0) throw std::invalid_argument("block " + std::to_string(i) + " stands on nothing (no interface has it as upper)");
+  check_overlaps(a, min_size);
   // The initial configuration: every interface bears, touches (a block floating above its
   // support is an input error, not a drop test) and does not interpenetrate.
   auto pose_of = [&](int i) {
@@ -266,8 +356,9 @@ void validate(const Assembly& a) {
   for (std::size_t j = 0; j < a.interfaces.size(); ++j) {
     const AssemblyInterface& f = a.interfaces[j];
     const BodyPose lp = pose_of(f.lower), up = pose_of(f.upper);
-    const Face lf = f.lower < 0 ? ground_face() : top_face(lp, a.blocks[f.lower].width, a.blocks[f.lower].height);
-    const Face uf = base_face(up, a.blocks[f.upper].width, a.blocks[f.upper].height);
+    const InterfaceFaces faces = interface_faces(a, int(j));
+    const Face lf = face_at(lp, faces.lower);  // the ground's pose is the identity
+    const Face uf = face_at(up, faces.upper);
     const std::string w = "interface " + std::to_string(j) + " (block " + std::to_string(f.upper) + " on " +
                           (f.lower < 0 ? std::string("the ground") : "block " + std::to_string(f.lower)) + ")";
     if (!(overlap(lf, uf) > 0)) throw std::invalid_argument(w + ": the faces do not overlap at the start");

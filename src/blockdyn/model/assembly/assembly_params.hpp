@@ -1,11 +1,13 @@
 // SPDX-License-Identifier: Apache-2.0
 #pragma once
-// An assembly of rectangular blocks on the moving ground (spec block-assemblies.md): the blocks
-// (size, mass, initial pose), the interfaces between a block's base and the face it stands on,
-// and each interface's contact law. Presets build seed 002's trilith, a single block and a
-// column of drums. Units are SI; angles in radians.
+// An assembly of rigid blocks on the moving ground (spec block-assemblies.md): the blocks
+// (rectangles or convex polygons: size, mass, initial pose), the interfaces between facing faces,
+// and each interface's contact law. Presets build seed 002's trilith, a single block, a column of
+// drums and a circular arch of voussoirs. Units are SI; angles in radians.
 #include <string>
 #include <vector>
+
+#include "blockdyn/model/common/block_kinematics.hpp"
 
 namespace blockdyn {
 
@@ -23,20 +25,33 @@ struct ContactLaw {
 
 struct AssemblyBlock {
   std::string name;
-  double width = 0, height = 0, mass = 0;  // m, m, kg
-  double x = 0, y = 0, theta = 0;          // initial centre and rotation (counter-clockwise)
+  double width = 0, height = 0, mass = 0;  // m, m, kg (a polygon: its bounding box at rest)
+  double x = 0, y = 0, theta = 0;          // initial centre of mass and rotation (counter-clockwise)
   double vx = 0, vy = 0, omega = 0;        // initial rates
-  double inertia() const { return mass * (width * width + height * height) / 12.0; }
+  // A convex polygon: its vertices, counter-clockwise, relative to the centre of mass with the
+  // block unturned (empty: the width x height rectangle), and its squared radius of gyration.
+  std::vector<Vec2> vertices;
+  double gyration_sq = 0;
+  double inertia() const {
+    return vertices.empty() ? mass * (width * width + height * height) / 12.0 : mass * gyration_sq;
+  }
 };
 
-// The base of block `upper` on the top face of block `lower` (-1: the ground).
+// Block `upper` standing on block `lower` (-1: the ground): a rectangle's base on the top face
+// below, or the facing edges of polygons (interface_faces.hpp). Edges may be named (edge k runs
+// from vertex k to k + 1; -1: found from the geometry at the start).
 struct AssemblyInterface {
   int lower = -1, upper = 0;
   ContactLaw law;
+  int lower_edge = -1, upper_edge = -1;
 };
 
+// Blocks an assembly's dynamics takes (the state's capacity); the static analysis takes more.
+inline constexpr int kMaxDynamicBlocks = 24;
+inline constexpr int kMaxStaticBlocks = 2000;
+
 struct Assembly {
-  std::string preset = "custom";  // block | trilith | column | custom
+  std::string preset = "custom";  // block | trilith | column | arch | custom
   std::string contact = "deformable";  // deformable | rigid (Moreau-Jean time-stepping)
   std::vector<AssemblyBlock> blocks;
   std::vector<AssemblyInterface> interfaces;
@@ -58,6 +73,10 @@ struct PresetOptions {
   double lintel_length = -1;  // trilith: < 0 means the column height (seed 002's layout)
   double overhang = 0;        // trilith: lintel beyond each column's outer face (m; < 0 inset)
   double tilt = 0;            // initial rotation of the assembly's rocking mode (rad)
+  int voussoirs = 9;          // arch: number of equal voussoirs
+  double thickness_ratio = 0.15;  // arch: ring thickness / centreline radius
+  double radius = 1.0;        // arch: centreline radius (m)
+  double embrace = 180;       // arch: angle the arch spans (degrees)
   bool rigid_contacts = false;  // no settlement into the contacts (the rigid law)
   ContactLaw ground_law, block_law;
 };
@@ -69,9 +88,17 @@ Assembly make_preset(const std::string& name, const PresetOptions& o);
 // Throws std::invalid_argument for an assembly with deformable contacts.
 void restrict_to_rocking_on_ground(Assembly& a);
 
-// Checks sizes, masses, friction, indices and the initial configuration (overlapping blocks, a
-// block floating above its support); throws std::invalid_argument naming the field.
-void validate(const Assembly& a);
+// Checks sizes, masses, polygons, friction, indices and the initial configuration (overlapping
+// blocks, a block floating above its support, interfaces whose faces do not face each other);
+// throws std::invalid_argument naming the field. max_blocks: the dynamics' capacity, or the
+// static analysis' larger one.
+void validate(const Assembly& a, int max_blocks = kMaxDynamicBlocks);
+
+// A convex polygonal block from its vertices at rest (counter-clockwise, ground frame) and its
+// mass (kg) or, with mass <= 0, density (kg/m^3) times thickness (m) times area. Throws
+// std::invalid_argument naming `what` for a polygon that is not convex and counter-clockwise.
+AssemblyBlock polygon_block(const std::string& what, const std::vector<Vec2>& vertices, double mass, double density,
+                            double thickness);
 
 // Damping per point that gives restitution e to a flat drop of mass m on two points of
 // stiffness k each, with the force released when it vanishes (max(0, k d + c d')).

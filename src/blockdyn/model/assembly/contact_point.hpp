@@ -33,17 +33,6 @@ struct Face {
   double half = INFINITY;  // half-length (ground: infinite)
 };
 
-// Upper block's base (normal pointing down, out of the block) and lower block's top face.
-inline Face base_face(const BodyPose& p, double b, double h) {
-  const Vec2 c = Vec2{p.x, p.y} + p.q.offset(0, -0.5 * h);
-  return {c, p.q.offset(1, 0), p.q.offset(0, -1), 0.5 * b};
-}
-inline Face top_face(const BodyPose& p, double b, double h) {
-  const Vec2 c = Vec2{p.x, p.y} + p.q.offset(0, 0.5 * h);
-  return {c, p.q.offset(1, 0), p.q.offset(0, 1), 0.5 * b};
-}
-inline Face ground_face() { return {{0, 0}, {1, 0}, {0, 1}, INFINITY}; }
-
 // Corner `side` (-1 left, +1 right) of a face.
 inline Vec2 face_corner(const Face& f, int side) { return f.c + (side * f.half) * f.t; }
 

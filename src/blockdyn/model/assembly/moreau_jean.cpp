@@ -148,6 +148,7 @@ MoreauJean::MoreauJean(const Assembly& a, const GroundMotion& g, const MoreauJea
   rot_.resize(nb_);
   lower_face_.resize(ni_);
   upper_face_.resize(ni_);
+  for (int i = 0; i < ni_; ++i) local_faces_.push_back(interface_faces(a, i));
   qm_.resize(n);
   vfree_.resize(n);
   vnew_.resize(n);
@@ -200,9 +201,7 @@ double MoreauJean::gravity_energy(const std::vector<double>& q) const {
 std::pair<Face, Face> MoreauJean::faces(const std::vector<double>& q, int i) const {
   const AssemblyInterface& f = asm_.interfaces[i];
   const BodyPose up = pose(q, q, f.upper), lp = pose(q, q, f.lower);  // rates unused
-  const Face uf = base_face(up, asm_.blocks[f.upper].width, asm_.blocks[f.upper].height);
-  const Face lf = f.lower < 0 ? ground_face() : top_face(lp, asm_.blocks[f.lower].width, asm_.blocks[f.lower].height);
-  return {lf, uf};
+  return {lower_face_at(i, lp), upper_face_at(i, up)};
 }
 
 double MoreauJean::overlap_of(const std::vector<double>& q, int i) const {
@@ -230,9 +229,8 @@ void MoreauJean::measure_interfaces(const std::vector<double>& q, std::vector<do
   };
   for (int i = 0; i < ni_; ++i) {
     const AssemblyInterface& f = asm_.interfaces[i];
-    const Face uf = base_face(pose_of(f.upper), asm_.blocks[f.upper].width, asm_.blocks[f.upper].height);
-    const Face lf = f.lower < 0 ? ground_face()
-                                : top_face(pose_of(f.lower), asm_.blocks[f.lower].width, asm_.blocks[f.lower].height);
+    const Face uf = upper_face_at(i, pose_of(f.upper));
+    const Face lf = lower_face_at(i, pose_of(f.lower));
     ov[i] = overlap(lf, uf);
     base[i] = base_position(lf, uf);
   }
@@ -294,9 +292,8 @@ void MoreauJean::free_motion(const std::vector<double>& q, const std::vector<dou
   for (int b = 0; b < nb_; ++b) poses_[b] = pose(qm_, v, b);
   for (int i = 0; i < ni_; ++i) {
     const AssemblyInterface& f = asm_.interfaces[i];
-    upper_face_[i] = base_face(poses_[f.upper], asm_.blocks[f.upper].width, asm_.blocks[f.upper].height);
-    lower_face_[i] = f.lower < 0 ? ground_face()
-                                 : top_face(poses_[f.lower], asm_.blocks[f.lower].width, asm_.blocks[f.lower].height);
+    upper_face_[i] = upper_face_at(i, poses_[f.upper]);
+    lower_face_[i] = f.lower < 0 ? lower_face_at(i, BodyPose{}) : lower_face_at(i, poses_[f.lower]);
   }
 }
 

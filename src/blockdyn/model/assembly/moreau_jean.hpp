@@ -36,6 +36,7 @@
 
 #include "blockdyn/excitation/ground_motion.hpp"
 #include "blockdyn/model/assembly/assembly_params.hpp"
+#include "blockdyn/model/assembly/interface_faces.hpp"
 #include "blockdyn/model/assembly/contact_point.hpp"
 
 namespace blockdyn {
@@ -123,6 +124,13 @@ class MoreauJean {
   std::vector<BodyPose> poses_;
   mutable std::vector<BodyRotation> rot_;  // measure_interfaces' scratch
   std::vector<Face> lower_face_, upper_face_;
+  std::vector<InterfaceFaces> local_faces_;  // each interface's faces in its blocks' frames
+  // Interface i's faces placed with the poses of its blocks.
+  Face lower_face_at(int i, const BodyPose& lower) const {
+    const LocalFace& f = local_faces_[i].lower;
+    return asm_.interfaces[i].lower < 0 ? Face{f.c, f.t, f.n, f.half} : face_at(lower, f);
+  }
+  Face upper_face_at(int i, const BodyPose& upper) const { return face_at(upper, local_faces_[i].upper); }
   // Per active end: the blocks (upper, lower; -1 the ground), the Jacobian rows (normal x, y,
   // theta, then tangent) on each, and the same rows scaled by the inverse masses.
   std::vector<int> ub_, lb_, active_;

@@ -20,7 +20,7 @@ struct LpDeleter {
 
 // Columns: N per contact (>= 0), T per interface (free), lambda (free). Rows: the three
 // equilibrium equations per block, then |T| <= mu (N_1 + N_2) as two rows per interface.
-LoadMultiplier max_load_multiplier(const StaticProblem& p, int direction) {
+LoadMultiplier max_load_multiplier(const StaticProblem& p, int direction, bool exact) {
   const int nb = int(p.mass.size()), nc = int(p.contacts.size()), ni = int(p.mu.size());
   std::unique_ptr<glp_prob, LpDeleter> lp(glp_create_prob());
   glp_set_obj_dir(lp.get(), GLP_MAX);
@@ -33,8 +33,11 @@ LoadMultiplier max_load_multiplier(const StaticProblem& p, int direction) {
 
   std::vector<int> ia{0}, ja{0};
   std::vector<double> ar{0.0};
+  // Rounding leaves entries of 1e-16 where the geometry has zeros (cos(pi/2) in a joint's normal):
+  // the rational simplex takes them as they are, the floating-point one alone stalls on them.
+  const double zero = exact ? 0.0 : 1e-13;
   auto put = [&](int row, int col, double v) {
-    if (v == 0.0) return;
+    if (std::fabs(v) <= zero) return;
     ia.push_back(row);
     ja.push_back(col);
     ar.push_back(v);
@@ -48,8 +51,11 @@ LoadMultiplier max_load_multiplier(const StaticProblem& p, int direction) {
     glp_set_row_bnds(lp.get(), 3 * b + 3, GLP_FX, 0.0, 0.0);
     put(3 * b + 1, col_lambda, -w * direction);
   }
+  std::vector<char> has_t(static_cast<std::size_t>(ni), 0);
   for (int c = 0; c < nc; ++c) {
     const StaticContact& k = p.contacts[c];
+    const bool first = !has_t[k.iface];
+    has_t[k.iface] = 1;
     for (int side : {+1, -1}) {
       const int b = side > 0 ? k.upper : k.lower;
       if (b < 0) continue;
@@ -59,9 +65,6 @@ LoadMultiplier max_load_multiplier(const StaticProblem& p, int direction) {
       put(3 * b + 3, c + 1, side * cross(r, k.n));
       // A tangential force along the face has the same moment wherever on the face it acts:
       // one T per interface, applied at any of its points.
-      bool first = true;
-      for (int c2 = 0; c2 < c; ++c2)
-        if (p.contacts[c2].iface == k.iface) first = false;
       if (first) {
         put(3 * b + 1, col_t + k.iface, side * k.t.x);
         put(3 * b + 2, col_t + k.iface, side * k.t.y);
@@ -69,14 +72,15 @@ LoadMultiplier max_load_multiplier(const StaticProblem& p, int direction) {
       }
     }
   }
+  std::vector<std::vector<int>> of_iface(static_cast<std::size_t>(ni));
+  for (int c = 0; c < nc; ++c) of_iface[p.contacts[c].iface].push_back(c);
   for (int i = 0; i < ni; ++i) {
     if (!(p.mu[i] < kNoSlipFriction)) continue;
     const int r0 = glp_add_rows(lp.get(), 2);
     for (int s = 0; s < 2; ++s) {
       glp_set_row_bnds(lp.get(), r0 + s, GLP_UP, 0.0, 0.0);
       put(r0 + s, col_t + i, s == 0 ? 1.0 : -1.0);
-      for (int c = 0; c < nc; ++c)
-        if (p.contacts[c].iface == i) put(r0 + s, c + 1, -p.mu[i]);
+      for (int c : of_iface[i]) put(r0 + s, c + 1, -p.mu[i]);
     }
   }
   glp_load_matrix(lp.get(), int(ar.size()) - 1, ia.data(), ja.data(), ar.data());
@@ -85,11 +89,21 @@ LoadMultiplier max_load_multiplier(const StaticProblem& p, int direction) {
   parm.msg_lev = GLP_MSG_OFF;
   parm.presolve = GLP_OFF;
   LoadMultiplier out;
-  if (glp_simplex(lp.get(), &parm) != 0) return out;
+  if (!exact) {
+    // Scaled, the floating-point simplex settles arches of thick rings that it calls infeasible
+    // unscaled (its row norms span 1e-3 to 1e2).
+    const int was = glp_term_out(GLP_OFF);
+    glp_scale_prob(lp.get(), GLP_SF_AUTO);
+    glp_term_out(was);
+  }
+  const int rc = glp_simplex(lp.get(), &parm);
+  const int status = glp_get_status(lp.get());
   // The floating-point simplex ends within its tolerances (1e-7); the exact (rational) simplex
   // from its basis makes the limit exact to the rounding of the result: rest must end at the
-  // crossing itself.
-  if (glp_exact(lp.get(), &parm) != 0 || glp_get_status(lp.get()) != GLP_OPT) return out;
+  // crossing itself. It also settles what the floating-point one leaves open.
+  const bool settled = rc == 0 && (status == GLP_OPT || status == GLP_NOFEAS);
+  if ((exact || !settled) && glp_exact(lp.get(), &parm) != 0) return out;
+  if (glp_get_status(lp.get()) != GLP_OPT) return out;
   out.feasible = true;
   out.lambda = glp_get_obj_val(lp.get());
   out.mechanism.assign(3 * std::size_t(nb), 0.0);
@@ -100,6 +114,8 @@ LoadMultiplier max_load_multiplier(const StaticProblem& p, int direction) {
   }
   if (power < 0)
     for (double& v : out.mechanism) v = -v;
+  for (int c = 0; c < nc; ++c) out.normal.push_back(glp_get_col_prim(lp.get(), c + 1));
+  for (int i = 0; i < ni; ++i) out.tangential.push_back(glp_get_col_prim(lp.get(), col_t + i));
   return out;
 }
 

@@ -32,9 +32,13 @@ struct LoadMultiplier {
   bool feasible = false;          // false: no distribution holds the blocks even without a horizontal load
   double lambda = 0;              // largest a_H / (g + a_V) in the direction asked (capped at 1e6)
   std::vector<double> mechanism;  // virtual velocity (vx, vy, omega) per block, moving with the load
+  std::vector<double> normal;     // a distribution of forces at the limit: N per contact (>= 0)
+  std::vector<double> tangential;  // and T per interface, on the upper block along its t
 };
 
-// direction +1: a_H > 0 (inertial load towards -x); -1: a_H < 0.
-LoadMultiplier max_load_multiplier(const StaticProblem& p, int direction);
+// direction +1: a_H > 0 (inertial load towards -x); -1: a_H < 0. exact: refine the floating-point
+// simplex's optimum with GLPK's exact (rational) simplex (the limit to the last bit; slower by
+// far on large assemblies).
+LoadMultiplier max_load_multiplier(const StaticProblem& p, int direction, bool exact = true);
 
 }  // namespace blockdyn

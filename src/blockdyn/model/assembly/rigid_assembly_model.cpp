@@ -962,5 +962,6 @@ typename RigidAssemblyModel<Cap>::PointForce RigidAssemblyModel<Cap>::point_forc
 template class RigidAssemblyModel<1>;
 template class RigidAssemblyModel<3>;
 template class RigidAssemblyModel<8>;
+template class RigidAssemblyModel<24>;
 
 }  // namespace blockdyn

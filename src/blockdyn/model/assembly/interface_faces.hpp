@@ -1,0 +1,40 @@
+// SPDX-License-Identifier: Apache-2.0
+#pragma once
+// The two faces of each interface, fixed in their blocks: a rectangle's base on the top face of
+// the block below (or the ground, y = 0), or for polygonal blocks the pair of edges that face each
+// other at rest (the vertices as given: antiparallel, collinear, overlapping), or the edges the
+// interface names. A polygon stands on the ground (y = 0) by its lowest downward edge, or on the
+// line of a named edge (an abutment). Every contact law builds its contact points on these faces.
+#include <vector>
+
+#include "blockdyn/model/assembly/assembly_params.hpp"
+#include "blockdyn/model/assembly/contact_point.hpp"
+
+namespace blockdyn {
+
+// A face in its block's frame (relative to the centre of mass, the block unturned); the ground's
+// in the ground frame.
+struct LocalFace {
+  Vec2 c, t, n;
+  double half = INFINITY;
+};
+
+struct InterfaceFaces {
+  LocalFace lower, upper;  // lower: in the ground frame when the lower body is the ground
+};
+
+// The faces of interface j; throws std::invalid_argument naming the interface and the blocks when
+// the edges do not face each other.
+InterfaceFaces interface_faces(const Assembly& a, int j);
+
+// A face placed with its block's pose.
+inline Face face_at(const BodyPose& p, const LocalFace& f) {
+  const Vec2 c = Vec2{p.x, p.y} + p.q.offset(f.c.x, f.c.y);
+  return {c, p.q.offset(f.t.x, f.t.y), p.q.offset(f.n.x, f.n.y), f.half};
+}
+
+// A block's outline (counter-clockwise vertices) in the block frame, and at its initial pose.
+std::vector<Vec2> block_outline(const AssemblyBlock& b);
+std::vector<Vec2> initial_outline(const AssemblyBlock& b);
+
+}  // namespace blockdyn
