@@ -14,10 +14,9 @@ void add_assembly_options(CLI::App& app, AssemblyFlags& f) {
   auto members = [](CLI::Option* o, std::initializer_list<std::string> names) {
     if (o) o->check(CLI::IsMember(std::vector<std::string>(names)));
   };
-  members(
-      opt("--preset", f.preset,
-          "block (one block), trilith (seed 002: two columns and a lintel), column (n drums), arch (voussoirs)"),
-      {"block", "trilith", "column", "arch"});
+  members(opt("--preset", f.preset,
+              "block (one block), trilith (seed 002: two columns and a lintel), column (n drums), arch (voussoirs)"),
+          {"block", "trilith", "column", "arch"});
   members(opt("--contact", f.contact,
               "contact law: deformable (spring-dashpot + elastic Coulomb, default) or rigid (unilateral, Coulomb, "
               "Newton impacts; see --scheme)"),

@@ -1,6 +1,6 @@
 # SPDX-License-Identifier: Apache-2.0
 """Animation of an assembly run: the blocks over the moving ground, the contact points with their
-normal forces as arrows (open points hollow), the time and the ground acceleration.
+normal forces as arrows (drawn upwards: the faces of rectangles at rest), the time and the ground acceleration.
 Usage: animate_assembly.py TRAJECTORY.csv OUT.gif|OUT.mp4 [--frames N] [--title T]"""
 
 import matplotlib
@@ -15,19 +15,31 @@ from assembly_csv import load  # noqa: E402
 from plotkit import figure_parser  # noqa: E402
 
 
-def corners(x, y, th, b, h):
+def placed(x, y, th, pts):
     c, s = np.cos(th), np.sin(th)
-    pts = [(-b / 2, -h / 2), (b / 2, -h / 2), (b / 2, h / 2), (-b / 2, h / 2)]
     return [(x + c * px - s * py, y + s * px + c * py) for px, py in pts]
+
+
+def outlines(a, nb):
+    """Each block's vertices about its centre: --polygons "x,y x,y ...;..." or the --sizes rectangles."""
+    if a.polygons:
+        return [[tuple(float(v) for v in p.split(",")) for p in blk.split()] for blk in a.polygons.split(";")]
+    dims = [float(v) for v in a.sizes.split(",")]
+    out = []
+    for b in range(nb):
+        w, h = dims[2 * b], dims[2 * b + 1]
+        out.append([(-w / 2, -h / 2), (w / 2, -h / 2), (w / 2, h / 2), (-w / 2, h / 2)])
+    return out
 
 
 def main():
     ap = figure_parser()
     ap.add_argument("--frames", type=int, default=120)
-    ap.add_argument("--sizes", required=True, help="b0,h0,b1,h1,... block widths and heights (m)")
+    ap.add_argument("--sizes", help="b0,h0,b1,h1,... block widths and heights (m)")
+    ap.add_argument("--polygons", help="polygonal blocks: 'x,y x,y ...;...' vertices about each centre (m)")
     a = ap.parse_args()
     c, nb, npts = load(a.csv)
-    dims = [float(v) for v in a.sizes.split(",")]
+    shapes = outlines(a, nb)
     t = c["t"]
     keep = np.array([e == "" or e == "start" for e in c["event"]])
     t_k = t[keep]
@@ -36,14 +48,14 @@ def main():
     rows = np.nonzero(keep)[0][idx]
     xs = [c[f"x_{b}"] for b in range(nb)]
     ys = [c[f"y_{b}"] for b in range(nb)]
-    span = max(dims[2 * b + 1] + ys[b][0] for b in range(nb))
-    width = max(abs(xs[b][0]) + dims[2 * b] for b in range(nb))
+    span = max(max(p[1] for p in shapes[b]) + ys[b][0] for b in range(nb))
+    width = max(abs(xs[b][0]) + max(abs(p[0]) for p in shapes[b]) for b in range(nb))
     fig, (ax, ax2) = plt.subplots(2, 1, figsize=(6, 7), gridspec_kw={"height_ratios": [4, 1]})
     ax.set_aspect("equal")
     ax.set_xlim(-1.6 * width - 0.2 * span, 1.6 * width + 0.2 * span)
     ax.set_ylim(-0.1 * span, 1.2 * span)
     ax.axhspan(-0.1 * span, 0, color="0.85")
-    polys = [Polygon(np.zeros((4, 2)), closed=True, fc="#c8b89a", ec="k") for _ in range(nb)]
+    polys = [Polygon(np.zeros((len(shapes[b]), 2)), closed=True, fc="#c8b89a", ec="k") for b in range(nb)]
     for p in polys:
         ax.add_patch(p)
     fmax = max(np.nanmax(c[f"fn_{p // 2}_{p % 2}"]) for p in range(npts)) or 1.0
@@ -59,7 +71,7 @@ def main():
     def draw(k):
         r = rows[k]
         for b in range(nb):
-            polys[b].set_xy(corners(xs[b][r], ys[b][r], c[f"theta_{b}"][r], dims[2 * b], dims[2 * b + 1]))
+            polys[b].set_xy(placed(xs[b][r], ys[b][r], c[f"theta_{b}"][r], shapes[b]))
         px = [c[f"px_{p // 2}_{p % 2}"][r] for p in range(npts)]
         py = [c[f"py_{p // 2}_{p % 2}"][r] for p in range(npts)]
         fn = [c[f"fn_{p // 2}_{p % 2}"][r] / fmax * 0.15 * span for p in range(npts)]

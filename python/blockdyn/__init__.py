@@ -28,7 +28,7 @@ import numpy as np
 from . import _core
 
 __version__ = _core.__version__
-__all__ = ["simulate", "simulate_many", "motion_generate", "motion_info", "rocking_spectrum", "fragility", "Simulator", "assembly", "spectrum", "survival", "response_curve", "cycles", "impact_map", "sweep", "map", "run",
+__all__ = ["simulate", "simulate_many", "motion_generate", "motion_info", "limit_analysis", "rocking_spectrum", "fragility", "Simulator", "assembly", "spectrum", "survival", "response_curve", "cycles", "impact_map", "sweep", "map", "run",
            "Simulation", "Assembly", "lyapunov", "chaos_map", "periodic_orbits", "__version__"]
 
 # Where the plot scripts are once installed (share/blockdyn/python beside lib/python3/...).
@@ -479,6 +479,17 @@ def motion_info(record, **options):
         for key in ("period", "sa", "sd", "t_peak"):
             j[key] = np.array([row[key] for row in j["spectrum"]], dtype=float)
     return j
+
+
+def limit_analysis(file=None, **options):
+    """Static limit analysis (`blockdyn limit-analysis`) of a preset (preset="arch", voussoirs=20,
+    thickness_ratio=0.15, ...) or an assembly file: a dict with "lambda" (a_H / g at collapse),
+    "status", "mechanism" (per block vx, vy, omega; per interface hinge / sliding / separating /
+    closed), "thrust" (per joint: forces, centre of pressure) and, with min_thickness=True (arch),
+    "min_thickness_ratio". direction=-1 loads towards +x."""
+    if file is not None:
+        options["file"] = os.fspath(file)
+    return json.loads(_core.limit_analysis(_options(options)))
 
 
 class StudyResult:

@@ -20,6 +20,7 @@
 
 #include "blockdyn/analysis/sweep/sweep_runner.hpp"
 #include "blockdyn/api/grid_studies.hpp"
+#include "blockdyn/api/limit_analysis_command.hpp"
 #include "blockdyn/api/map_study.hpp"
 #include "blockdyn/api/motion_generate.hpp"
 #include "blockdyn/api/motion_info.hpp"
@@ -295,6 +296,9 @@ void add_studies(py::module_& m) {
   m.def(
       "motion_info", [](const OptionList& options) { return json_call(motion_info, options); }, py::arg("options"),
       "A record's intensity measures and spectrum (`blockdyn motion info`): JSON text.");
+  m.def(
+      "limit_analysis", [](const OptionList& options) { return json_call(limit_analysis_run, options); },
+      py::arg("options"), "Static limit analysis of an assembly (`blockdyn limit-analysis`): JSON text.");
   m.def(
       "studies",
       [] {

@@ -164,3 +164,18 @@ def test_fragility_in_memory_equals_the_command_line(tmp_path):
         cli = json.load(f)
     assert [r["max_abs_rotation"] for r in cli["runs"]] == [r["max_abs_rotation"] for r in j["runs"]]
     assert cli["fit"] == j["fit"]
+
+
+def test_limit_analysis_and_the_arch_from_python():
+    j = blockdyn.limit_analysis(preset="column", drums=3, slenderness=5)
+    assert abs(j["lambda"] - 0.2) < 1e-12 and j["status"] == "ok"
+    arch = blockdyn.limit_analysis(preset="arch", voussoirs=15, thickness_ratio=0.12, min_thickness=True)
+    assert 0.1 < arch["min_thickness_ratio"] < 0.1075
+    assert [m["state"] for m in arch["mechanism"]["interfaces"]].count("hinge") == 4
+    # Thinner than its minimum the arch falls in the dynamics; thicker it stands.
+    t = arch["min_thickness_ratio"]
+    fall = blockdyn.assembly(preset="arch", voussoirs=15, thickness_ratio=0.9 * t, contact="rigid", t_end=3)
+    stand = blockdyn.assembly(preset="arch", voussoirs=15, thickness_ratio=1.1 * t, contact="rigid", t_end=3)
+    assert fall.summary["motion"] == "collapse" and stand.summary["motion"] == "rest"
+    with pytest.raises(ValueError, match="direction"):
+        blockdyn.limit_analysis(preset="block", direction=2)

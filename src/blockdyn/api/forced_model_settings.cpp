@@ -107,9 +107,8 @@ const std::vector<ForcedFamily>& forced_families() {
 
 const std::vector<std::string>& forced_model_option_names() {
   static const std::vector<std::string> n = [] {
-    std::vector<std::string> out{"model",   "width", "height", "mass",  "g",
-                                 "mu-s",    "mu-k",  "impact", "restitution", "preset",
-                                 "contact", "phi-s", "phi-l",  "columns-rock-only"};
+    std::vector<std::string> out{"model",  "width",       "height", "mass",    "g",     "mu-s",  "mu-k",
+                                 "impact", "restitution", "preset", "contact", "phi-s", "phi-l", "columns-rock-only"};
     for (const std::string& o : preset_geometry_option_names())
       if (o != "tilt") out.push_back(o);
     return out;

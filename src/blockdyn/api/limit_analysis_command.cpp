@@ -48,8 +48,8 @@ json analysis_json(const Assembly& a, const LimitAnalysis& r) {
   j["exact_for_non_associative"] = r.exact_for_non_associative;
   json blocks = json::array();
   for (std::size_t b = 0; b * 3 < r.mechanism.size(); ++b)
-    blocks.push_back({{"block", b}, {"vx", r.mechanism[3 * b]}, {"vy", r.mechanism[3 * b + 1]},
-                      {"omega", r.mechanism[3 * b + 2]}});
+    blocks.push_back(
+        {{"block", b}, {"vx", r.mechanism[3 * b]}, {"vy", r.mechanism[3 * b + 1]}, {"omega", r.mechanism[3 * b + 2]}});
   json ifs = json::array();
   for (std::size_t i = 0; i < r.interfaces.size(); ++i) {
     const InterfaceMotion& m = r.interfaces[i];
@@ -104,8 +104,7 @@ json limit_analysis_run(const Settings& given) {
   given.require_known(limit_analysis_options(), {"file"}, "limit-analysis");
   const auto start = std::chrono::steady_clock::now();
   const long direction = given.integer("direction", 1);
-  if (direction != 1 && direction != -1)
-    throw Invalid("direction = " + std::to_string(direction) + " must be 1 or -1");
+  if (direction != 1 && direction != -1) throw Invalid("direction = " + std::to_string(direction) + " must be 1 or -1");
   Settings s;
   for (const std::string& n : given.names())
     if (n != "direction" && n != "min-thickness" && n != "tolerance")
@@ -126,7 +125,8 @@ json limit_analysis_run(const Settings& given) {
   if (given.flag("min-thickness")) {
     if (a.preset != "arch") throw Invalid("--min-thickness needs --preset arch");
     const double tol = given.number("tolerance", 1e-7);
-    if (!(tol >= 1e-9 && tol <= 1e-2)) throw Invalid("tolerance = " + Settings::exact(tol) + " must be in [1e-9, 1e-2]");
+    if (!(tol >= 1e-9 && tol <= 1e-2))
+      throw Invalid("tolerance = " + Settings::exact(tol) + " must be in [1e-9, 1e-2]");
     const PresetOptions geometry = preset_geometry_from(s, "arch");
     const MinThickness m = min_thickness_ratio(geometry, tol);
     j["min_thickness_ratio"] = m.ratio;
@@ -156,10 +156,10 @@ std::string limit_analysis_text(const json& j) {
   if (j["lambda"].is_null()) {
     out += "status unstable: no distribution of contact forces holds the blocks under their own weight\n";
   } else {
-    std::snprintf(buf, sizeof buf, "lambda = %.10g (a_H = %.6g m/s^2), status %s%s\n", j["lambda"].get<double>(),
-                  j["a_h"].get<double>(), j["status"].get<std::string>().c_str(),
-                  j["sliding"].get<bool>() ? " (the mechanism slides: an upper estimate for non-associative friction)"
-                                           : "");
+    std::snprintf(
+        buf, sizeof buf, "lambda = %.10g (a_H = %.6g m/s^2), status %s%s\n", j["lambda"].get<double>(),
+        j["a_h"].get<double>(), j["status"].get<std::string>().c_str(),
+        j["sliding"].get<bool>() ? " (the mechanism slides: an upper estimate for non-associative friction)" : "");
     out += buf;
     for (const auto& m : j["mechanism"]["interfaces"]) {
       const std::string st = m["state"].get<std::string>();

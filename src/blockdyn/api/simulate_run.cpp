@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "blockdyn/api/simulate_run.hpp"
 
+#include "blockdyn/model/assembly/interface_faces.hpp"
+
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
@@ -275,6 +277,23 @@ class PreparedAssembly final : public PreparedRun {
     rep.figure.plot_script = "plot_assembly.py";
     rep.figure.plot_args = {"--title", title};
     rep.figure.animate_args = {"--title", title, "--sizes", sizes};
+    std::string polygons;
+    bool any_polygon = false;
+    for (const AssemblyBlock& b : a.blocks) {
+      any_polygon = any_polygon || !b.vertices.empty();
+      if (!polygons.empty()) polygons += ";";
+      std::string one;
+      for (const Vec2& v : block_outline(b)) {
+        char buf[64];
+        std::snprintf(buf, sizeof buf, "%s%.17g,%.17g", one.empty() ? "" : " ", v.x, v.y);
+        one += buf;
+      }
+      polygons += one;
+    }
+    if (any_polygon) {
+      rep.figure.animate_args.push_back("--polygons");
+      rep.figure.animate_args.push_back(polygons);
+    }
     rep.figure.animate_script = "animate_assembly.py";
     return rep;
   }

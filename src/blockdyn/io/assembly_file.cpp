@@ -12,8 +12,8 @@ namespace {
 
 using namespace toml_read;
 
-const std::set<std::string> kLawKeys{"k_normal", "k_tangential", "restitution", "damping", "phi", "phi_kinetic",
-                                     "mu_s", "mu_k"};
+const std::set<std::string> kLawKeys{"k_normal", "k_tangential", "restitution", "damping",
+                                     "phi",      "phi_kinetic",  "mu_s",        "mu_k"};
 
 // Friction from an angle in degrees (90: no sliding) or from coefficients.
 void read_law(const toml::table& t, const std::string& where, ContactLaw& l) {
@@ -109,8 +109,8 @@ Assembly read_assembly_file(const std::string& path) {
   }
   const toml::array* blocks = root["block"].as_array();
   if (!blocks || blocks->empty()) fail("block", "at least one [[block]] is needed");
-  const std::set<std::string> block_keys{"name", "width",  "height", "mass", "density", "thickness", "x",
-                                         "y",    "theta",  "vx",     "vy",   "omega",   "vertices"};
+  const std::set<std::string> block_keys{"name", "width", "height", "mass", "density", "thickness", "x",
+                                         "y",    "theta", "vx",     "vy",   "omega",   "vertices"};
   for (std::size_t i = 0; i < blocks->size(); ++i) {
     const std::string w = "block[" + std::to_string(i) + "]";
     const toml::table* t = (*blocks)[i].as_table();

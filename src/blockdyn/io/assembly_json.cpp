@@ -39,13 +39,17 @@ json to_json(const Assembly& a) {
   j["min_bearing"] = a.min_bearing;
   j["columns_rock_only"] = a.rock_only_on_ground;
   json blocks = json::array();
-  for (const AssemblyBlock& b : a.blocks)
-    blocks.push_back({{"name", b.name},
-                      {"width", b.width},
-                      {"height", b.height},
-                      {"mass", b.mass},
-                      {"inertia", b.inertia()},
-                      {"initial_state", {b.x, b.y, b.theta, b.vx, b.vy, b.omega}}});
+  for (const AssemblyBlock& b : a.blocks) {
+    json k = {{"name", b.name}, {"width", b.width},       {"height", b.height},
+              {"mass", b.mass}, {"inertia", b.inertia()}, {"initial_state", {b.x, b.y, b.theta, b.vx, b.vy, b.omega}}};
+    if (!b.vertices.empty()) {
+      // A polygon: its vertices about the centre of mass, unturned (width, height: its bounding box).
+      json v = json::array();
+      for (const Vec2& p : b.vertices) v.push_back({p.x, p.y});
+      k["vertices"] = v;
+    }
+    blocks.push_back(k);
+  }
   j["blocks"] = blocks;
   return j;
 }

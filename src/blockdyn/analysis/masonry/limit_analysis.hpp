@@ -19,19 +19,19 @@ namespace blockdyn {
 StaticProblem static_problem_at_start(const Assembly& a);
 
 struct InterfaceMotion {
-  std::string state;          // closed | hinge | sliding | separating
-  int hinge_end = -1;         // hinge: the end (0 left, 1 right along the lower face) that stays closed
-  double normal_rate[2]{};    // opening rates at the two ends (> 0: opening)
-  double slip_rate = 0;       // tangential rate of the upper block against the lower
+  std::string state;        // closed | hinge | sliding | separating
+  int hinge_end = -1;       // hinge: the end (0 left, 1 right along the lower face) that stays closed
+  double normal_rate[2]{};  // opening rates at the two ends (> 0: opening)
+  double slip_rate = 0;     // tangential rate of the upper block against the lower
 };
 
 struct InterfaceThrust {
-  double normal[2]{};         // N at the two ends (N)
-  double tangential = 0;      // T (N) on the upper block along the lower face
-  Vec2 point[2];              // the contact points
-  bool bears = false;         // N1 + N2 > 0
-  Vec2 centre;                // centre of pressure (where the resultant crosses the joint)
-  double eccentricity = 0;    // of the centre from the joint's middle, over half the joint
+  double normal[2]{};       // N at the two ends (N)
+  double tangential = 0;    // T (N) on the upper block along the lower face
+  Vec2 point[2];            // the contact points
+  bool bears = false;       // N1 + N2 > 0
+  Vec2 centre;              // centre of pressure (where the resultant crosses the joint)
+  double eccentricity = 0;  // of the centre from the joint's middle, over half the joint
 };
 
 struct LimitAnalysis {
@@ -43,7 +43,7 @@ struct LimitAnalysis {
   std::vector<double> mechanism;  // (vx, vy, omega) per block, scaled to max |v| of a point = 1
   std::vector<InterfaceMotion> interfaces;
   std::vector<InterfaceThrust> thrust;
-  bool sliding = false;           // the mechanism slides somewhere
+  bool sliding = false;  // the mechanism slides somewhere
   // Whether the value holds for non-associative friction too (no sliding in the mechanism).
   bool exact_for_non_associative = false;
 };

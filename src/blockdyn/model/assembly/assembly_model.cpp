@@ -8,19 +8,32 @@ namespace blockdyn {
 
 const char* assembly_event_name(int kind) {
   switch (kind) {
-    case kAsmOpen: return "open";
-    case kAsmClose: return "close";
-    case kAsmSlip: return "slip";
-    case kAsmStick: return "stick";
-    case kAsmEndSwitch: return "end_switch";
-    case kAsmWZero: return "w_zero";
-    case kAsmCollapse1: return "failure";
-    case kAsmCollapse2: return "failure";
-    case kAsmInvalid: return "invalid";
-    case kAsmBreakpoint: return "breakpoint";
-    case kAsmImpact: return "impact";
-    case kAsmTimeStepping: return "time_stepping";
-    case kAsmEventDriven: return "event_driven";
+    case kAsmOpen:
+      return "open";
+    case kAsmClose:
+      return "close";
+    case kAsmSlip:
+      return "slip";
+    case kAsmStick:
+      return "stick";
+    case kAsmEndSwitch:
+      return "end_switch";
+    case kAsmWZero:
+      return "w_zero";
+    case kAsmCollapse1:
+      return "failure";
+    case kAsmCollapse2:
+      return "failure";
+    case kAsmInvalid:
+      return "invalid";
+    case kAsmBreakpoint:
+      return "breakpoint";
+    case kAsmImpact:
+      return "impact";
+    case kAsmTimeStepping:
+      return "time_stepping";
+    case kAsmEventDriven:
+      return "event_driven";
   }
   return "?";
 }
@@ -39,8 +52,13 @@ constexpr double kStepHintFactor = 0.5;
 
 template <int Cap>
 AssemblyModel<Cap>::AssemblyModel(const Assembly& a, const GroundMotion& g, double noise_band)
-    : asm_(a), ground_(g), forced_(!g.is_zero()), nb_(int(a.blocks.size())), ni_(int(a.interfaces.size())),
-      g_(a.g), rotation_band_(noise_band) {
+    : asm_(a),
+      ground_(g),
+      forced_(!g.is_zero()),
+      nb_(int(a.blocks.size())),
+      ni_(int(a.interfaces.size())),
+      g_(a.g),
+      rotation_band_(noise_band) {
   if (nb_ < 1 || nb_ > Cap || ni_ < 1 || ni_ > kIfaces)
     throw std::invalid_argument("assembly: " + std::to_string(nb_) + " blocks and " + std::to_string(ni_) +
                                 " interfaces do not fit this model's capacity");

@@ -31,10 +31,20 @@ namespace blockdyn {
 
 // Kinds of assembly events reported to observers.
 enum AssemblyEventKind : int {
-  kAsmOpen = 1, kAsmClose, kAsmSlip, kAsmStick, kAsmEndSwitch, kAsmWZero, kAsmCollapse1, kAsmCollapse2,
-  kAsmInvalid, kAsmBreakpoint, kAsmImpact,
+  kAsmOpen = 1,
+  kAsmClose,
+  kAsmSlip,
+  kAsmStick,
+  kAsmEndSwitch,
+  kAsmWZero,
+  kAsmCollapse1,
+  kAsmCollapse2,
+  kAsmInvalid,
+  kAsmBreakpoint,
+  kAsmImpact,
   // The rigid law, event-driven: a window handed to time-stepping, and the return from it.
-  kAsmTimeStepping, kAsmEventDriven
+  kAsmTimeStepping,
+  kAsmEventDriven
 };
 const char* assembly_event_name(int kind);
 
@@ -43,7 +53,7 @@ struct AssemblyMode {
   static constexpr int kIfaces = Cap + 1, kPoints = 2 * kIfaces;
   std::array<PointState, kPoints> point{};
   std::array<std::uint8_t, kPoints> owner{};  // 0: the upper block's corner, 1: the lower's
-  std::array<std::int8_t, Cap> side{};         // sign of each block's rotation (+1 for 0)
+  std::array<std::int8_t, Cap> side{};        // sign of each block's rotation (+1 for 0)
 };
 
 template <int Cap>

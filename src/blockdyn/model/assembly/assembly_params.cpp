@@ -177,14 +177,16 @@ Assembly make_preset(const std::string& name, const PresetOptions& o) {
   const double settle = o.rigid_contacts ? 0.0 : 1.0;
   if (name == "block") {
     AssemblyBlock k = make_block("block", b, h, o);
-    const double sink = settle * (o.tilt == 0 ? k.mass * g / (2 * o.ground_law.k_normal) : k.mass * g / o.ground_law.k_normal);
+    const double sink =
+        settle * (o.tilt == 0 ? k.mass * g / (2 * o.ground_law.k_normal) : k.mass * g / o.ground_law.k_normal);
     k.y = 0.5 * h;
     turn_about(k, {-s * 0.5 * b, 0}, o.tilt);
     k.y -= sink;
     a.blocks = {k};
     a.interfaces = {{-1, 0, o.ground_law}};
   } else if (name == "column") {
-    if (o.drums < 1 || o.drums > 8) throw std::invalid_argument("drums = " + std::to_string(o.drums) + " must be in [1, 8]");
+    if (o.drums < 1 || o.drums > 8)
+      throw std::invalid_argument("drums = " + std::to_string(o.drums) + " must be in [1, 8]");
     const double hd = h / o.drums;
     double total = 0;
     for (int k = 0; k < o.drums; ++k) {
@@ -288,11 +290,11 @@ void check_law(const ContactLaw& l, const std::string& where, bool rigid) {
 void validate(const Assembly& a, int max_blocks) {
   const int nb = int(a.blocks.size());
   if (nb < 1 || nb > max_blocks)
-    throw std::invalid_argument("blocks: " + std::to_string(nb) + " given, 1 to " + std::to_string(max_blocks) +
-                                " allowed" +
-                                (max_blocks < kMaxStaticBlocks ? std::string(" in the dynamics (limit-analysis takes ") +
-                                                                     std::to_string(kMaxStaticBlocks) + ")"
-                                                               : std::string()));
+    throw std::invalid_argument(
+        "blocks: " + std::to_string(nb) + " given, 1 to " + std::to_string(max_blocks) + " allowed" +
+        (max_blocks < kMaxStaticBlocks
+             ? std::string(" in the dynamics (limit-analysis takes ") + std::to_string(kMaxStaticBlocks) + ")"
+             : std::string()));
   if (a.interfaces.empty() || a.interfaces.size() > std::size_t(nb + 1))
     throw std::invalid_argument("interfaces: " + std::to_string(a.interfaces.size()) + " given, 1 to " +
                                 std::to_string(nb + 1) + " allowed for " + std::to_string(nb) + " blocks");
@@ -313,10 +315,13 @@ void validate(const Assembly& a, int max_blocks) {
       throw std::invalid_argument(w + ".width = " + num(k.width) + " must be in [1e-3, 1000] m" + kMinBlockSizeWhy);
     if (!(k.height >= kMinBlockSize && k.height <= 1e3))
       throw std::invalid_argument(w + ".height = " + num(k.height) + " must be in [1e-3, 1000] m" + kMinBlockSizeWhy);
-    if (!(k.mass > 0 && k.mass <= 1e12)) throw std::invalid_argument(w + ".mass = " + num(k.mass) + " must be in (0, 1e12] kg");
+    if (!(k.mass > 0 && k.mass <= 1e12))
+      throw std::invalid_argument(w + ".mass = " + num(k.mass) + " must be in (0, 1e12] kg");
     for (double v : {k.x, k.y, k.theta, k.vx, k.vy, k.omega})
-      if (!(std::isfinite(v) && std::fabs(v) <= 1e6)) throw std::invalid_argument(w + ": initial pose and rates must be finite");
-    if (!(std::fabs(k.theta) < 1.5)) throw std::invalid_argument(w + ".theta = " + num(k.theta) + " must be in (-1.5, 1.5) rad");
+      if (!(std::isfinite(v) && std::fabs(v) <= 1e6))
+        throw std::invalid_argument(w + ": initial pose and rates must be finite");
+    if (!(std::fabs(k.theta) < 1.5))
+      throw std::invalid_argument(w + ".theta = " + num(k.theta) + " must be in (-1.5, 1.5) rad");
     if (!k.vertices.empty()) {
       if (const std::string why = polygon_problem(k.vertices); !why.empty())
         throw std::invalid_argument(w + " (" + k.name + ").vertices: the polygon " + why);
@@ -328,7 +333,8 @@ void validate(const Assembly& a, int max_blocks) {
   for (std::size_t j = 0; j < a.interfaces.size(); ++j) {
     const AssemblyInterface& f = a.interfaces[j];
     const std::string w = "interface " + std::to_string(j);
-    if (f.upper < 0 || f.upper >= nb) throw std::invalid_argument(w + ".upper = " + std::to_string(f.upper) + " is not a block");
+    if (f.upper < 0 || f.upper >= nb)
+      throw std::invalid_argument(w + ".upper = " + std::to_string(f.upper) + " is not a block");
     if (f.lower < -1 || f.lower >= nb || f.lower == f.upper)
       throw std::invalid_argument(w + ".lower = " + std::to_string(f.lower) + " must be -1 (ground) or another block");
     for (std::size_t k = 0; k < j; ++k)
@@ -338,7 +344,8 @@ void validate(const Assembly& a, int max_blocks) {
     ++supports[f.upper];
   }
   for (int i = 0; i < nb; ++i)
-    if (supports[i] == 0) throw std::invalid_argument("block " + std::to_string(i) + " stands on nothing (no interface has it as upper)");
+    if (supports[i] == 0)
+      throw std::invalid_argument("block " + std::to_string(i) + " stands on nothing (no interface has it as upper)");
   check_overlaps(a, min_size);
   // The initial configuration: every interface bears, touches (a block floating above its
   // support is an input error, not a drop test) and does not interpenetrate.

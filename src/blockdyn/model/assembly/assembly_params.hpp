@@ -16,11 +16,11 @@ inline constexpr double kNoSlipFriction = 1e12;
 
 // The per-point deformable law of an interface (deformable_contact.hpp).
 struct ContactLaw {
-  double k_normal = 1e7;      // N/m per contact point (seed 002: k_C = 1e4 kN/m)
-  double k_tangential = -1;   // N/m per point; < 0: k_normal / 3 (seed 002's k_E)
-  double restitution = 0.5;   // normal restitution of a flat drop of the upper block
+  double k_normal = 1e7;                                  // N/m per contact point (seed 002: k_C = 1e4 kN/m)
+  double k_tangential = -1;                               // N/m per point; < 0: k_normal / 3 (seed 002's k_E)
+  double restitution = 0.5;                               // normal restitution of a flat drop of the upper block
   double mu_s = kNoSlipFriction, mu_k = kNoSlipFriction;  // static and kinetic friction
-  double damping = -1;        // N s/m per point; < 0: calibrated from restitution
+  double damping = -1;                                    // N s/m per point; < 0: calibrated from restitution
 };
 
 struct AssemblyBlock {
@@ -51,7 +51,7 @@ inline constexpr int kMaxDynamicBlocks = 24;
 inline constexpr int kMaxStaticBlocks = 2000;
 
 struct Assembly {
-  std::string preset = "custom";  // block | trilith | column | arch | custom
+  std::string preset = "custom";       // block | trilith | column | arch | custom
   std::string contact = "deformable";  // deformable | rigid (Moreau-Jean time-stepping)
   std::vector<AssemblyBlock> blocks;
   std::vector<AssemblyInterface> interfaces;
@@ -65,19 +65,19 @@ struct Assembly {
 
 // Preset geometry (seed 002: b = 0.12 m, thickness 0.06 m, density 2700 kg/m^3).
 struct PresetOptions {
-  double slenderness = 4;     // column height / width
-  double block_width = 0.12;  // m
-  double thickness = 0.06;    // m, out of plane
-  double density = 2700;      // kg/m^3
-  int drums = 4;              // column preset
-  double lintel_length = -1;  // trilith: < 0 means the column height (seed 002's layout)
-  double overhang = 0;        // trilith: lintel beyond each column's outer face (m; < 0 inset)
-  double tilt = 0;            // initial rotation of the assembly's rocking mode (rad)
-  int voussoirs = 9;          // arch: number of equal voussoirs
+  double slenderness = 4;         // column height / width
+  double block_width = 0.12;      // m
+  double thickness = 0.06;        // m, out of plane
+  double density = 2700;          // kg/m^3
+  int drums = 4;                  // column preset
+  double lintel_length = -1;      // trilith: < 0 means the column height (seed 002's layout)
+  double overhang = 0;            // trilith: lintel beyond each column's outer face (m; < 0 inset)
+  double tilt = 0;                // initial rotation of the assembly's rocking mode (rad)
+  int voussoirs = 9;              // arch: number of equal voussoirs
   double thickness_ratio = 0.15;  // arch: ring thickness / centreline radius
-  double radius = 1.0;        // arch: centreline radius (m)
-  double embrace = 180;       // arch: angle the arch spans (degrees)
-  bool rigid_contacts = false;  // no settlement into the contacts (the rigid law)
+  double radius = 1.0;            // arch: centreline radius (m)
+  double embrace = 180;           // arch: angle the arch spans (degrees)
+  bool rigid_contacts = false;    // no settlement into the contacts (the rigid law)
   ContactLaw ground_law, block_law;
 };
 

@@ -116,8 +116,8 @@ InterfaceFaces interface_faces(const Assembly& a, int j) {
   const std::string w =
       "interface " + std::to_string(j) + " (" + name_of(a, f.upper) + " on " + name_of(a, f.lower) + ")";
   // Rectangles keep their base-on-top faces whatever their poses (a tilted frame's lintel).
-  const bool rect_pair = is_rectangle(up) && (f.lower < 0 || is_rectangle(a.blocks[f.lower])) && f.lower_edge < 0 &&
-                         f.upper_edge < 0;
+  const bool rect_pair =
+      is_rectangle(up) && (f.lower < 0 || is_rectangle(a.blocks[f.lower])) && f.lower_edge < 0 && f.upper_edge < 0;
   if (rect_pair) {
     InterfaceFaces out;
     out.upper = {{0, -0.5 * up.height}, {1, 0}, {0, -1}, 0.5 * up.width};
@@ -169,12 +169,12 @@ InterfaceFaces interface_faces(const Assembly& a, int j) {
     }
   }
   if (best_u < 0 || !(best_angle <= kFacingAngle && best_dist <= tol && best_overlap > 0)) {
-    const std::string why =
-        best_u < 0 ? "no edge of " + name_of(a, f.upper) + " faces an edge of " + name_of(a, f.lower) +
-                         " (antiparallel within " + num(kFacingAngle) + " rad, collinear within " + num(tol) +
-                         " m, overlapping)"
-                   : "the named edges do not face each other (angle " + num(best_angle) + " rad, distance " +
-                         num(best_dist) + " m, overlap " + num(best_overlap) + " m)";
+    const std::string why = best_u < 0
+                                ? "no edge of " + name_of(a, f.upper) + " faces an edge of " + name_of(a, f.lower) +
+                                      " (antiparallel within " + num(kFacingAngle) + " rad, collinear within " +
+                                      num(tol) + " m, overlapping)"
+                                : "the named edges do not face each other (angle " + num(best_angle) +
+                                      " rad, distance " + num(best_dist) + " m, overlap " + num(best_overlap) + " m)";
     throw std::invalid_argument(w + ": " + why);
   }
   InterfaceFaces out;

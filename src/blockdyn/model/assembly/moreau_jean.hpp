@@ -36,17 +36,17 @@
 
 #include "blockdyn/excitation/ground_motion.hpp"
 #include "blockdyn/model/assembly/assembly_params.hpp"
-#include "blockdyn/model/assembly/interface_faces.hpp"
 #include "blockdyn/model/assembly/contact_point.hpp"
+#include "blockdyn/model/assembly/interface_faces.hpp"
 
 namespace blockdyn {
 
 struct MoreauJeanOptions {
-  double h = 1e-4;               // time step (s)
-  double max_friction = 1e3;     // friction coefficients above this (90 degrees) are capped here
-  double regularisation = 0.0;   // relative compliance added to the Delassus diagonal
-  int max_sweeps = 20000;        // Gauss-Seidel sweeps per step before the step is refused
-  bool direct = true;            // active-set direct solve first (false: Gauss-Seidel only)
+  double h = 1e-4;              // time step (s)
+  double max_friction = 1e3;    // friction coefficients above this (90 degrees) are capped here
+  double regularisation = 0.0;  // relative compliance added to the Delassus diagonal
+  int max_sweeps = 20000;       // Gauss-Seidel sweeps per step before the step is refused
+  bool direct = true;           // active-set direct solve first (false: Gauss-Seidel only)
 };
 
 class MoreauJean {
@@ -56,7 +56,7 @@ class MoreauJean {
     int slip = 0;  // slip direction (+1 / -1) when slipping: sign of the tangential velocity after the step
     int owner = 0;
     FaceContact c;
-    double pn = 0, pt = 0;        // impulses of the last step on the upper block (N s)
+    double pn = 0, pt = 0;                             // impulses of the last step on the upper block (N s)
     double un_before = 0, un_after = 0, ut_after = 0;  // normal and tangential relative velocities
     double pn_prev = 0, pt_prev = 0;                   // the previous step's impulses (warm start)
   };

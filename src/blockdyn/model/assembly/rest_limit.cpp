@@ -6,6 +6,9 @@
 #include <cmath>
 #include <memory>
 
+#include <Eigen/SparseCore>
+#include <Eigen/SparseLU>
+
 #include "blockdyn/model/assembly/assembly_params.hpp"
 
 namespace blockdyn {
@@ -16,6 +19,62 @@ constexpr double kLambdaCap = 1e6;
 struct LpDeleter {
   void operator()(glp_prob* p) const { glp_delete_prob(p); }
 };
+
+// The value of a non-basic variable: the bound its status names.
+double at_bound(int stat, double lo, double up) { return stat == GLP_NU ? up : stat == GLP_NF ? 0.0 : lo; }
+
+// The optimal basis's primal (structural values x) and dual (row prices pi) solutions, solved
+// again in double precision: GLPK's exact simplex turns the data into nearby rationals (to about
+// 1e-11 relative), so its solution satisfies the equations only to that; one sparse LU solve and
+// a step of refinement satisfy them to the rounding. Rows: sum_j a_ij x_j - r_i = 0, with the
+// non-basic columns and rows' auxiliaries at their bounds.
+bool polish(glp_prob* lp, const std::vector<int>& ia, const std::vector<int>& ja, const std::vector<double>& ar,
+            std::vector<double>& x, std::vector<double>& pi) {
+  const int m = glp_get_num_rows(lp), n = glp_get_num_cols(lp);
+  std::vector<int> slot(std::size_t(n + m), -1);  // the basic variables' positions in the LU
+  int k = 0;
+  for (int j = 1; j <= n; ++j)
+    if (glp_get_col_stat(lp, j) == GLP_BS) slot[j - 1] = k++;
+  for (int i = 1; i <= m; ++i)
+    if (glp_get_row_stat(lp, i) == GLP_BS) slot[n + i - 1] = k++;
+  if (k != m) return false;
+  x.assign(std::size_t(n), 0.0);
+  for (int j = 1; j <= n; ++j)
+    if (slot[j - 1] < 0) x[j - 1] = at_bound(glp_get_col_stat(lp, j), glp_get_col_lb(lp, j), glp_get_col_ub(lp, j));
+  Eigen::VectorXd rhs = Eigen::VectorXd::Zero(m), cost = Eigen::VectorXd::Zero(m);
+  for (int i = 1; i <= m; ++i)
+    if (slot[n + i - 1] < 0)
+      rhs[i - 1] = at_bound(glp_get_row_stat(lp, i), glp_get_row_lb(lp, i), glp_get_row_ub(lp, i));
+  std::vector<Eigen::Triplet<double>> entries;
+  for (std::size_t e = 1; e < ar.size(); ++e) {
+    const int i = ia[e] - 1, j = ja[e] - 1;
+    if (slot[j] >= 0)
+      entries.emplace_back(i, slot[j], ar[e]);
+    else
+      rhs[i] -= ar[e] * x[j];
+  }
+  for (int i = 0; i < m; ++i)
+    if (slot[n + i] >= 0) entries.emplace_back(i, slot[n + i], -1.0);
+  for (int j = 1; j <= n; ++j)
+    if (slot[j - 1] >= 0) cost[slot[j - 1]] = glp_get_obj_coef(lp, j);
+  Eigen::SparseMatrix<double> B(m, m);
+  B.setFromTriplets(entries.begin(), entries.end());
+  B.makeCompressed();
+  Eigen::SparseLU<Eigen::SparseMatrix<double>> lu(B);
+  if (lu.info() != Eigen::Success) return false;
+  Eigen::VectorXd v = lu.solve(rhs);
+  v += lu.solve(rhs - B * v);
+  const Eigen::SparseMatrix<double> Bt = B.transpose();
+  Eigen::SparseLU<Eigen::SparseMatrix<double>> lut(Bt);
+  if (lut.info() != Eigen::Success) return false;
+  Eigen::VectorXd y = lut.solve(cost);
+  y += lut.solve(cost - Bt * y);
+  if (!v.allFinite() || !y.allFinite()) return false;
+  for (int j = 0; j < n; ++j)
+    if (slot[j] >= 0) x[j] = v[slot[j]];
+  pi.assign(y.data(), y.data() + m);
+  return true;
+}
 }  // namespace
 
 // Columns: N per contact (>= 0), T per interface (free), lambda (free). Rows: the three
@@ -96,26 +155,43 @@ LoadMultiplier max_load_multiplier(const StaticProblem& p, int direction, bool e
     glp_scale_prob(lp.get(), GLP_SF_AUTO);
     glp_term_out(was);
   }
-  const int rc = glp_simplex(lp.get(), &parm);
-  const int status = glp_get_status(lp.get());
+  int rc = glp_simplex(lp.get(), &parm);
+  int status = glp_get_status(lp.get());
+  if (!exact && (rc != 0 || status != GLP_OPT)) {
+    // A second opinion before "no equilibrium": the dual simplex from an advanced basis (the
+    // primal one stalls on some thick arches).
+    const int was = glp_term_out(GLP_OFF);
+    glp_adv_basis(lp.get(), 0);
+    glp_term_out(was);
+    parm.meth = GLP_DUALP;
+    rc = glp_simplex(lp.get(), &parm);
+    status = glp_get_status(lp.get());
+  }
   // The floating-point simplex ends within its tolerances (1e-7); the exact (rational) simplex
   // from its basis makes the limit exact to the rounding of the result: rest must end at the
   // crossing itself. It also settles what the floating-point one leaves open.
   const bool settled = rc == 0 && (status == GLP_OPT || status == GLP_NOFEAS);
   if ((exact || !settled) && glp_exact(lp.get(), &parm) != 0) return out;
   if (glp_get_status(lp.get()) != GLP_OPT) return out;
+  std::vector<double> x, pi;
+  if (!polish(lp.get(), ia, ja, ar, x, pi)) {
+    x.clear();
+    pi.clear();
+    for (int j = 1; j <= glp_get_num_cols(lp.get()); ++j) x.push_back(glp_get_col_prim(lp.get(), j));
+    for (int i = 1; i <= glp_get_num_rows(lp.get()); ++i) pi.push_back(glp_get_row_dual(lp.get(), i));
+  }
   out.feasible = true;
-  out.lambda = glp_get_obj_val(lp.get());
+  out.lambda = x[col_lambda - 1];
   out.mechanism.assign(3 * std::size_t(nb), 0.0);
   double power = 0.0;
   for (int b = 0; b < nb; ++b) {
-    for (int k = 0; k < 3; ++k) out.mechanism[3 * b + k] = glp_get_row_dual(lp.get(), 3 * b + k + 1);
+    for (int k = 0; k < 3; ++k) out.mechanism[3 * b + k] = pi[3 * b + k];
     power -= p.mass[b] * direction * out.mechanism[3 * b];
   }
   if (power < 0)
     for (double& v : out.mechanism) v = -v;
-  for (int c = 0; c < nc; ++c) out.normal.push_back(glp_get_col_prim(lp.get(), c + 1));
-  for (int i = 0; i < ni; ++i) out.tangential.push_back(glp_get_col_prim(lp.get(), col_t + i));
+  for (int c = 0; c < nc; ++c) out.normal.push_back(x[c]);
+  for (int i = 0; i < ni; ++i) out.tangential.push_back(x[col_t - 1 + i]);
   return out;
 }
 

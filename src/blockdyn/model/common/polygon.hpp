@@ -11,9 +11,9 @@
 namespace blockdyn {
 
 struct PolygonProperties {
-  double area = 0;          // > 0 for counter-clockwise vertices
-  Vec2 centroid;            //
-  double gyration_sq = 0;   // polar second moment about the centroid over the area (m^2)
+  double area = 0;               // > 0 for counter-clockwise vertices
+  Vec2 centroid;                 //
+  double gyration_sq = 0;        // polar second moment about the centroid over the area (m^2)
   double width = 0, height = 0;  // bounding box
 };
 

@@ -1,0 +1,327 @@
+// SPDX-License-Identifier: Apache-2.0
+// Masonry: convex polygonal blocks (mass properties, validity, the rectangle given as vertices),
+// the arch preset and the static limit analysis against closed forms (b/h for a block, a column
+// of drums and a trilith; mu when sliding governs; the semicircular arch's minimum thickness),
+// the mechanism's virtual work, and statics against the dynamics of both contact laws.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include "blockdyn/analysis/masonry/limit_analysis.hpp"
+#include "blockdyn/model/assembly/assembly_params.hpp"
+#include "blockdyn/model/assembly/interface_faces.hpp"
+#include "blockdyn/model/common/polygon.hpp"
+#include "blockdyn/simulation/assembly_simulation.hpp"
+#include "test_support.hpp"
+
+using namespace blockdyn;
+
+namespace {
+
+// The same assembly with every rectangle given as its four vertices.
+Assembly as_polygons(Assembly a) {
+  for (AssemblyBlock& b : a.blocks) {
+    b.vertices = rectangle_vertices(b.width, b.height);
+    b.gyration_sq = (b.width * b.width + b.height * b.height) / 12.0;
+  }
+  return a;
+}
+
+PresetOptions arch_options(int n, double ratio, bool rigid = true) {
+  PresetOptions o;
+  o.voussoirs = n;
+  o.thickness_ratio = ratio;
+  o.radius = 1.0;
+  o.thickness = 0.2;
+  o.rigid_contacts = rigid;
+  for (ContactLaw* l : {&o.ground_law, &o.block_law}) {
+    l->restitution = rigid ? 0.0 : 0.5;
+    l->k_normal = 1e9;  // stiff: the deformable arch settles by micrometres
+  }
+  return o;
+}
+
+PresetOptions rigid_preset(double slenderness) {
+  PresetOptions o;
+  o.slenderness = slenderness;
+  o.rigid_contacts = true;
+  o.ground_law.restitution = o.block_law.restitution = 0.0;
+  return o;
+}
+
+GroundMotion constant_push(double a_g) {
+  GroundMotion g;
+  g.horizontal.constant = a_g;
+  return g;
+}
+
+AssemblyRunOptions run_to(double t_end) {
+  AssemblyRunOptions o;
+  o.t_end = t_end;
+  return o;
+}
+
+// The virtual power of the loads on a mechanism (weights and the horizontal inertial load
+// -a_H m = -lambda g m direction): zero at the collapse load, whatever dissipates nothing (hinges,
+// and associative sliding, whose dilatancy makes the friction's power equal the normal force's).
+double load_power(const Assembly& a, const LimitAnalysis& r) {
+  double p = 0;
+  for (std::size_t b = 0; b < a.blocks.size(); ++b)
+    p += a.blocks[b].mass * a.g * (-r.direction * r.lambda * r.mechanism[3 * b] - r.mechanism[3 * b + 1]);
+  return p;
+}
+
+double weight(const Assembly& a) {
+  double w = 0;
+  for (const AssemblyBlock& b : a.blocks) w += b.mass * a.g;
+  return w;
+}
+
+}  // namespace
+
+TEST(Polygon, MassPropertiesMatchClosedForms) {
+  const PolygonProperties r = polygon_properties(rectangle_vertices(0.3, 1.2));
+  EXPECT_NEAR(r.area, 0.36, 1e-15);
+  EXPECT_NEAR(r.centroid.x, 0, 1e-15);
+  EXPECT_NEAR(r.centroid.y, 0, 1e-15);
+  EXPECT_NEAR(r.gyration_sq, (0.09 + 1.44) / 12, 1e-15);
+  // A right triangle with legs a, b far from the origin: centroid at a third of the legs, polar
+  // moment about it a b (a^2 + b^2) / 36.
+  const double a = 2.0, b = 0.5, x0 = 1e3, y0 = -2e3;
+  const PolygonProperties t = polygon_properties({{x0, y0}, {x0 + a, y0}, {x0, y0 + b}});
+  EXPECT_NEAR(t.area, a * b / 2, 1e-12);
+  EXPECT_NEAR(t.centroid.x, x0 + a / 3, 1e-11);
+  EXPECT_NEAR(t.centroid.y, y0 + b / 3, 1e-11);
+  EXPECT_NEAR(t.gyration_sq, (a * a + b * b) / 18, 1e-10);
+  EXPECT_NEAR(t.width, a, 1e-12);
+  EXPECT_NEAR(t.height, b, 1e-12);
+}
+
+TEST(Polygon, InvalidPolygonsAreNamed) {
+  EXPECT_EQ(polygon_problem(rectangle_vertices(1, 2)), "");
+  EXPECT_NE(polygon_problem({{0, 0}, {0, 1}, {1, 1}, {1, 0}}).find("clockwise"), std::string::npos);
+  EXPECT_NE(polygon_problem({{0, 0}, {2, 0}, {1, 0.5}, {2, 2}, {0, 2}}).find("concave"), std::string::npos);
+  EXPECT_NE(polygon_problem({{0, 0}, {1, 0}, {2, 0}, {1, 1}}).find("collinear"), std::string::npos);
+  EXPECT_NE(polygon_problem({{0, 0}, {1, 0}}).find("3 vertices"), std::string::npos);
+  EXPECT_NE(polygon_problem({{0, 0}, {1, 0}, {1, 0}, {0, 1}}).find("repeats"), std::string::npos);
+  // A pentagram: every turn is to the left, but it winds twice.
+  std::vector<Vec2> star;
+  for (int k = 0; k < 5; ++k)
+    star.push_back({std::cos(0.5 * M_PI + 4 * M_PI * k / 5), std::sin(0.5 * M_PI + 4 * M_PI * k / 5)});
+  EXPECT_NE(polygon_problem(star).find("intersects itself"), std::string::npos);
+  // Separating axes: squares overlapping by 0.25 along x, and apart.
+  std::vector<Vec2> s1 = rectangle_vertices(1, 1), s2 = s1, s3 = s1;
+  for (Vec2& v : s2) v.x += 0.75;
+  for (Vec2& v : s3) v.x += 1.5;
+  EXPECT_NEAR(penetration_depth(s1, s2), 0.25, 1e-15);
+  EXPECT_LT(penetration_depth(s1, s3), 0);
+}
+
+TEST(MasonryInput, BadPolygonsOverlapsAndFacesExitWithTheBlockNamed) {
+  auto message = [](const Assembly& a) {
+    try {
+      validate(a);
+    } catch (const std::invalid_argument& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  PresetOptions o = rigid_preset(4);
+  o.drums = 2;
+  // Two rectangles placed through each other with no interface between them.
+  Assembly two = make_preset("block", o);
+  AssemblyBlock other = two.blocks[0];
+  other.x += 0.05;
+  two.blocks.push_back(other);
+  two.interfaces.push_back({-1, 1, two.interfaces[0].law});
+  EXPECT_NE(message(two).find("block 0 (block) and block 1"), std::string::npos) << message(two);
+  EXPECT_NE(message(as_polygons(two)).find("overlap"), std::string::npos);
+  // Clockwise and concave polygons: the block is named.
+  EXPECT_THROW(polygon_block("block[2]", {{0, 0}, {0, 1}, {1, 1}, {1, 0}}, 1, 0, 0), std::invalid_argument);
+  try {
+    polygon_block("block[2]", {{0, 0}, {2, 0}, {1, 0.5}, {2, 2}, {0, 2}}, 1, 0, 0);
+    ADD_FAILURE();
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("block[2].vertices"), std::string::npos) << e.what();
+  }
+  // An interface between blocks whose edges do not face each other (side by side on the ground).
+  Assembly apart = make_preset("block", o);
+  AssemblyBlock right = polygon_block("right", {{0.2, 0}, {0.32, 0}, {0.32, 0.48}, {0.2, 0.48}}, 1.0, 0, 0);
+  apart.blocks.push_back(right);
+  apart.interfaces.push_back({-1, 1, apart.interfaces[0].law});
+  EXPECT_EQ(message(apart), "");
+  apart.interfaces.push_back({0, 1, apart.interfaces[0].law});
+  EXPECT_NE(message(apart).find("no edge of block 1 (right) faces an edge of block 0"), std::string::npos)
+      << message(apart);
+}
+
+TEST(MasonryGeometry, ARectangleAsVerticesIsTheRectangle) {
+  // Free rocking of a tilted block and a trilith under a harmonic push, both contact laws: the
+  // same events at the same times.
+  struct Case {
+    const char* preset;
+    bool rigid;
+    double tilt, amplitude;
+  };
+  for (const Case c : {Case{"block", false, 0.05, 0}, Case{"block", true, 0.05, 0}, Case{"trilith", false, 0, 0.5},
+                       Case{"trilith", true, 0, 0.5}, Case{"column", true, 0, 0.4}}) {
+    PresetOptions o = rigid_preset(4);
+    o.rigid_contacts = c.rigid;
+    if (!c.rigid) o.ground_law.restitution = o.block_law.restitution = 0.5;
+    o.drums = 3;
+    o.tilt = c.tilt;
+    const Assembly rect = make_preset(c.preset, o), poly = as_polygons(rect);
+    GroundMotion g;
+    g.horizontal.amplitude = c.amplitude;
+    g.horizontal.frequency = 2.0;
+    const AssemblyResult r1 = simulate_assembly(rect, g, run_to(1.5)), r2 = simulate_assembly(poly, g, run_to(1.5));
+    SCOPED_TRACE(std::string(c.preset) + (c.rigid ? " rigid" : " deformable"));
+    ASSERT_EQ(r1.events.size(), r2.events.size());
+    ASSERT_GT(r1.events.size(), 2u);
+    double worst = 0;
+    for (std::size_t k = 0; k < r1.events.size(); ++k) {
+      EXPECT_EQ(r1.events[k].kind, r2.events[k].kind);
+      worst = std::fmax(worst, std::fabs(r1.events[k].t - r2.events[k].t));
+    }
+    EXPECT_LT(worst, 1e-9);
+    EXPECT_EQ(r1.motion, r2.motion);
+    for (std::size_t b = 0; b < r1.blocks.size(); ++b)
+      EXPECT_NEAR(r1.blocks[b].max_abs_rotation, r2.blocks[b].max_abs_rotation, 1e-9);
+  }
+}
+
+TEST(LimitAnalysis, BlockColumnAndTrilithCollapseAtBOverH) {
+  for (double s : {2.0, 4.0, 7.5}) {
+    PresetOptions o = rigid_preset(s);
+    o.drums = 5;
+    o.lintel_length = 3 * o.block_width;
+    for (const char* p : {"block", "column", "trilith"})
+      for (int d : {1, -1}) {
+        SCOPED_TRACE(std::string(p) + " slenderness " + std::to_string(s) + " direction " + std::to_string(d));
+        const Assembly a = make_preset(p, o);
+        const LimitAnalysis r = limit_analysis(a, d);
+        EXPECT_EQ(r.status, "ok");
+        EXPECT_NEAR(r.lambda, 1.0 / s, 1e-12);
+        EXPECT_TRUE(r.exact_for_non_associative);
+        EXPECT_NEAR(load_power(a, r) / weight(a), 0, 1e-9);
+        // The block turns about the corner the inertial load pushes it over (end 0 for d = +1).
+        EXPECT_EQ(r.interfaces[0].state, "hinge");
+        EXPECT_EQ(r.interfaces[0].hinge_end, d > 0 ? 0 : 1);
+        EXPECT_GT(d * r.mechanism[2], 0);  // counter-clockwise for a load towards -x
+      }
+  }
+  // Any lintel covering the column tops: longer, flush or overhanging. (An inset lintel bears
+  // inside the columns' inner edges: its hinges no longer form a parallelogram with the columns'
+  // pivots, the lintel turns in the mechanism and lambda falls below b/h.)
+  for (double L : {0.5, 0.8, 1.5})
+    for (double overhang : {0.0, 0.02, 0.04}) {
+      PresetOptions o = rigid_preset(4);
+      o.lintel_length = L;
+      o.overhang = overhang;
+      const Assembly a = make_preset("trilith", o);
+      const LimitAnalysis r = limit_analysis(a, 1);
+      EXPECT_NEAR(r.lambda, 0.25, 1e-12) << L << " " << overhang;
+      // The four-bar mechanism: equal column rotations, the lintel translating.
+      EXPECT_NEAR(r.mechanism[2], r.mechanism[5], 1e-9);
+      EXPECT_NEAR(r.mechanism[8], 0, 1e-9);
+      EXPECT_NEAR(load_power(a, r) / weight(a), 0, 1e-9);
+    }
+  PresetOptions o = rigid_preset(4);
+  o.lintel_length = 0.8;
+  o.overhang = -0.03;
+  const Assembly inset = make_preset("trilith", o);
+  const LimitAnalysis r = limit_analysis(inset, 1);
+  EXPECT_LT(r.lambda, 0.25);
+  EXPECT_GT(r.lambda, 0.2);
+  EXPECT_GT(std::fabs(r.mechanism[8]), 1e-3);
+  EXPECT_NEAR(load_power(inset, r) / weight(inset), 0, 1e-9);
+}
+
+TEST(LimitAnalysis, SlidingGovernsBelowBOverH) {
+  for (double phi : {5.0, 10.0, 12.0}) {
+    PresetOptions o = rigid_preset(4);
+    o.ground_law.mu_s = o.ground_law.mu_k = std::tan(phi * M_PI / 180);
+    const Assembly a = make_preset("block", o);
+    const LimitAnalysis r = limit_analysis(a, 1);
+    EXPECT_NEAR(r.lambda, std::tan(phi * M_PI / 180), 1e-12);
+    EXPECT_EQ(r.interfaces[0].state, "sliding");
+    EXPECT_LT(r.interfaces[0].slip_rate, 0);  // the block slides towards -x
+    EXPECT_TRUE(r.sliding);
+    EXPECT_FALSE(r.exact_for_non_associative);
+    EXPECT_NEAR(load_power(a, r) / weight(a), 0, 1e-9);
+  }
+  // Above b/h the friction no longer matters.
+  PresetOptions o = rigid_preset(4);
+  o.ground_law.mu_s = o.ground_law.mu_k = 0.3;
+  EXPECT_NEAR(limit_analysis(make_preset("block", o), 1).lambda, 0.25, 1e-12);
+}
+
+TEST(LimitAnalysis, ArchMinimumThicknessTendsToMilankovitchs) {
+  // Heyman and Milankovitch: a semicircular arch of uniform section stands only for t/R >=
+  // 0.1075 (the continuous arch). Voussoirs hinge only at their joints, so the discrete arch stands a
+  // little thinner and approaches it from below as the joints multiply.
+  const MinThickness m20 = min_thickness_ratio(arch_options(20, 0.15), 1e-8);
+  const MinThickness m100 = min_thickness_ratio(arch_options(100, 0.15), 1e-8);
+  blockdyn::test::record("arch_min_thickness_20", m20.ratio);
+  blockdyn::test::record("arch_min_thickness_100", m100.ratio);
+  EXPECT_LT(m20.ratio, m100.ratio);
+  EXPECT_LT(m100.ratio, 0.10755);
+  EXPECT_NEAR(m100.ratio, 0.1075, 2e-4);
+  // The thinnest arch is a mechanism under its own weight: lambda 0 with hinges at the joints.
+  EXPECT_NEAR(m100.at_minimum.lambda, 0, 1e-5);
+  int hinges = 0;
+  for (const InterfaceMotion& i : m100.at_minimum.interfaces) hinges += i.state == "hinge";
+  EXPECT_GE(hinges, 4);
+  // A thicker arch resists a horizontal load; its mechanism's virtual work balances.
+  const Assembly a = make_preset("arch", arch_options(20, 0.15));
+  const LimitAnalysis r = limit_analysis(a, 1);
+  EXPECT_EQ(r.status, "ok");
+  EXPECT_GT(r.lambda, 0.1);
+  EXPECT_NEAR(load_power(a, r) / weight(a), 0, 1e-9);
+  int h = 0;
+  for (const InterfaceMotion& i : r.interfaces) h += i.state == "hinge";
+  EXPECT_EQ(h, 4);  // the four-hinge mechanism
+  // Symmetry: the mirror load gives the same multiplier.
+  EXPECT_NEAR(limit_analysis(a, -1).lambda, r.lambda, 1e-9);
+}
+
+TEST(MasonryDynamics, ConstantPushBelowLambdaRestsAboveMoves) {
+  // The rigid law's dynamics against the statics, a block, a trilith and an arch.
+  struct Case {
+    const char* preset;
+    PresetOptions o;
+  };
+  for (const Case& c :
+       {Case{"block", rigid_preset(4)}, Case{"trilith", rigid_preset(4)}, Case{"arch", arch_options(9, 0.2)}}) {
+    const Assembly a = make_preset(c.preset, c.o);
+    const double lambda = limit_analysis(a, 1).lambda;
+    SCOPED_TRACE(std::string(c.preset) + " lambda " + std::to_string(lambda));
+    const AssemblyResult below = simulate_assembly(a, constant_push(0.98 * lambda), run_to(1.0));
+    EXPECT_EQ(below.motion, "rest");
+    EXPECT_EQ(below.events_total, 0);
+    const AssemblyResult above = simulate_assembly(a, constant_push(1.02 * lambda), run_to(3.0));
+    EXPECT_NE(above.motion, "rest");
+    double moved = 0;
+    for (const auto& b : above.blocks) moved = std::fmax(moved, b.max_abs_rotation);
+    EXPECT_GT(moved, 1e-3);
+  }
+}
+
+TEST(MasonryDynamics, ArchesThinnerThanTheMinimumFallThickerOnesStand) {
+  const double t_min = min_thickness_ratio(arch_options(9, 0.15), 1e-7).ratio;
+  EXPECT_GT(t_min, 0.09);
+  EXPECT_LT(t_min, 0.1075);
+  for (bool rigid : {true, false}) {
+    SCOPED_TRACE(rigid ? "rigid" : "deformable");
+    const AssemblyResult thin =
+        simulate_assembly(make_preset("arch", arch_options(9, 0.85 * t_min, rigid)), GroundMotion{}, run_to(4.0));
+    EXPECT_EQ(thin.motion, "collapse");
+    const AssemblyResult thick =
+        simulate_assembly(make_preset("arch", arch_options(9, 1.15 * t_min, rigid)), GroundMotion{}, run_to(4.0));
+    EXPECT_NE(thick.motion, "collapse");
+    double rot = 0;
+    for (const auto& b : thick.blocks) rot = std::fmax(rot, b.max_abs_rotation);
+    EXPECT_LT(rot, 1e-3);
+  }
+}
