@@ -1,6 +1,9 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "blockdyn/analysis/forced/forced_model.hpp"
 
+#include "blockdyn/analysis/masonry/limit_analysis.hpp"
+#include "blockdyn/model/assembly/interface_faces.hpp"
+
 #include <cmath>
 #include <optional>
 
@@ -82,6 +85,24 @@ ForcedModel forced_assembly_model(const Assembly& a, nlohmann::ordered_json desc
   fm.alpha = std::atan2(a.blocks[0].width, a.blocks[0].height);
   fm.width = a.blocks[0].width;
   fm.p = std::sqrt(0.75 * a.g / (0.5 * std::hypot(a.blocks[0].width, a.blocks[0].height)));
+  bool polygons = false;
+  for (const AssemblyBlock& b : a.blocks) polygons = polygons || !b.vertices.empty();
+  if (polygons) {
+    // No first block stands for an arch: alpha is the angle whose tangent is the static collapse
+    // multiplier (a rectangle's b/h: the block's own alpha), p and the width those of the
+    // assembly's bounding box at rest.
+    fm.alpha = std::atan(std::fmax(limit_analysis(a, +1).lambda, 1e-6));
+    double x0 = INFINITY, x1 = -INFINITY, y0 = INFINITY, y1 = -INFINITY;
+    for (const AssemblyBlock& b : a.blocks)
+      for (const Vec2& v : initial_outline(b)) {
+        x0 = std::fmin(x0, v.x);
+        x1 = std::fmax(x1, v.x);
+        y0 = std::fmin(y0, v.y);
+        y1 = std::fmax(y1, v.y);
+      }
+    fm.width = x1 - x0;
+    fm.p = std::sqrt(0.75 * a.g / (0.5 * std::hypot(x1 - x0, y1 - y0)));
+  }
   fm.description = std::move(description);
   fm.overturn_rule = "collapse mode 1 (rotation) or 2 (bearing)";
   fm.tolerances = to_json(AssemblyRunOptions{}.integrator);

@@ -19,8 +19,11 @@
 namespace blockdyn {
 
 struct ForcedModel {
-  double alpha = 0, p = 0;  // of the (first) block: slenderness angle and frequency parameter
-  double width = 0;         // of the (first) block (m): the scale of sliding
+  // Of the (first) block: slenderness angle and frequency parameter; width (m), the scale of
+  // sliding. Polygonal assemblies: atan(lambda) of the static limit analysis, and the assembly's
+  // bounding box.
+  double alpha = 0, p = 0;
+  double width = 0;
   nlohmann::ordered_json description;
   nlohmann::ordered_json tolerances;  // of every run (recorded in the table's sidecar)
   std::string overturn_rule;
@@ -32,7 +35,7 @@ struct ForcedModel {
   std::function<SurvivalOutcome(const GroundMotion& g, double t_end, RunProbe* probe)> traced;
   ImpactRule impact_rule = ImpactRule::VelocityJump;  // what an impact is for this model (forced_trace.hpp)
   std::vector<std::string> block_names;               // one per block (1 for housner/rigid)
-  std::string impact_definition;                       // the same in words, for the outputs
+  std::string impact_definition;                      // the same in words, for the outputs
   // Thread-safe: the largest Lyapunov exponent of one run under g (the initial state is used by
   // the rigid-ground models; assemblies start as built).
   std::function<ForcedLyapunovOutcome(const GroundMotion& g, const ForcedLyapunovOptions& o, const RigidInitial& init)>
