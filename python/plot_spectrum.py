@@ -46,8 +46,8 @@ def picture(rows, d, amin, a):
     z = np.array([[int(ch) for ch in rows[i]["scan"]] for i in order], dtype=float).T
     ds = [d[i] for i in order]
     fig, ax = plt.subplots(figsize=(7, 4.8))
-    ax.pcolormesh(cell_edges(ds, log=True), cell_edges(amps, log=True), z, cmap=ListedColormap(["#cfe3f3", "#d9534f"]),
-                  vmin=0, vmax=1, shading="flat")
+    ax.pcolormesh(cell_edges(ds, log=True), cell_edges(amps, log=True), z,
+                  cmap=ListedColormap(["#cfe3f3", "#d9534f", "#9e9e9e"]), vmin=0, vmax=2, shading="flat")
     ax.plot(ds, [amin[i] for i in order], "k-", lw=1.2, label="smallest overturning amplitude (bisection)")
     if any(r["linearised_rect"] for r in rows):
         ax.plot(ds, [float(rows[i]["linearised_rect"]) if rows[i]["linearised_rect"] else float("nan")
@@ -55,6 +55,8 @@ def picture(rows, d, amin, a):
     from matplotlib.patches import Patch
     h, _ = ax.get_legend_handles_labels()
     h += [Patch(color="#d9534f", label="overturns"), Patch(color="#cfe3f3", label="survives")]
+    if (z == 2).any():
+        h.append(Patch(color="#9e9e9e", label="outside the model"))
     ax.set_xscale("log")
     ax.set_yscale("log")
     ax.set_xlabel("pulse duration t_p [s]")

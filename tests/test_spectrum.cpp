@@ -4,6 +4,8 @@
 // rectangular pulse against the exact threshold (quadrature) and the linearised closed form.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include <cmath>
 
 #include "blockdyn/analysis/forced/overturning_spectrum.hpp"
@@ -55,6 +57,29 @@ TEST(Spectrum, FindsTheLowestBandAndTheSafeIslandAbove) {
   // wider than it is found however far below the top band it lies.
   const OverturnTest none = [](double, double) { return false; };
   EXPECT_FALSE(overturning_spectrum(none, o)[0].min_overturning_amplitude);
+}
+
+TEST(Spectrum, RunsOutsideTheModelAreNoSafeIsland) {
+  // Overturns from 0.3 d; above 0.8 d the model gives up (an unsolvable contact problem): those
+  // runs neither survive nor overturn, and no safe island may be claimed there.
+  const OverturnTest t = [](double a, double d) {
+    return a >= 0.8 * d ? kOutsideModel : a >= 0.3 * d ? kOverturns : kSurvives;
+  };
+  SpectrumOptions o;
+  o.durations = {1.0};
+  o.amplitude_min = 0.01;
+  o.amplitude_max = 10;
+  o.scan_points = 40;
+  o.rel_tol = 1e-9;
+  o.threads = 1;
+  const SpectrumRow r = overturning_spectrum(t, o)[0];
+  ASSERT_TRUE(r.min_overturning_amplitude);
+  EXPECT_NEAR(*r.min_overturning_amplitude, 0.3, 1e-9);
+  EXPECT_TRUE(r.safe_islands.empty());
+  const std::vector<double> amp = scan_amplitudes(o);
+  const long above = std::count_if(amp.begin(), amp.end(), [](double a) { return a >= 0.8; });
+  EXPECT_EQ(r.outside_model, above);
+  EXPECT_EQ(std::count(r.scan.begin(), r.scan.end(), char(kOutsideModel)), above);
 }
 
 TEST(Spectrum, ResultsDoNotDependOnTheThreadCount) {

@@ -20,8 +20,8 @@
 #include "blockdyn/analysis/sweep/sweep_axis.hpp"
 #include "blockdyn/analysis/sweep/sweep_runner.hpp"
 #include "blockdyn/api/forced_model_settings.hpp"
-#include "blockdyn/api/harmonic_run.hpp"
 #include "blockdyn/api/fragility.hpp"
+#include "blockdyn/api/harmonic_run.hpp"
 #include "blockdyn/api/rocking_spectrum.hpp"
 #include "blockdyn/base/range_check.hpp"
 #include "blockdyn/io/json_io.hpp"
@@ -268,8 +268,9 @@ GridStudy spectrum_grid(const Settings& given, const std::string& output) {
   const auto fm = std::make_shared<const ForcedModel>(forced_model_of(so));
   const PulseShape pulse = *shape;
   const OverturnTest test = [fm, pulse, t_after](double amplitude, double duration) {
-    return fm->run(pulse_motion(pulse, amplitude, duration), pulse_support(pulse) * duration + t_after)
-        .collapse_mode.has_value();
+    const SurvivalOutcome r =
+        fm->run(pulse_motion(pulse, amplitude, duration), pulse_support(pulse) * duration + t_after);
+    return r.collapse_mode ? kOverturns : r.invalid ? kOutsideModel : kSurvives;
   };
   const json options = {{"amplitude_min", o.amplitude_min},
                         {"amplitude_max", o.amplitude_max},
@@ -519,14 +520,16 @@ const std::vector<GridStudyCommand>& grid_study_commands() {
          "plot theta_MAX / alpha (and the slip) versus omega or phi_l, one curve per beta and phi_s (PNG + "
          "SVG)"}},
        "no summary line, no progress"},
-      rocking_spectrum_command(), fragility_command()};
+      rocking_spectrum_command(),
+      fragility_command()};
   return all;
 }
 
 const GridStudyCommand& grid_study_command(const std::string& name) {
   for (const GridStudyCommand& c : grid_study_commands())
     if (c.name == name) return c;
-  throw std::invalid_argument("grid study '" + name + "' is not one of: spectrum, survival, response-curve, rocking-spectrum, fragility");
+  throw std::invalid_argument("grid study '" + name +
+                              "' is not one of: spectrum, survival, response-curve, rocking-spectrum, fragility");
 }
 
 Table compute_table(const PointTable& t, int threads, PointPlan* plan,

@@ -16,18 +16,18 @@ void validate(const SpectrumOptions& o) {
     if (!(d > 0 && d <= 1e4)) throw std::invalid_argument("duration = " + std::to_string(d) + " must be in (0, 1e4] s");
   if (!(o.amplitude_min > 0 && o.amplitude_max > o.amplitude_min && o.amplitude_max <= 1e3))
     throw std::invalid_argument("amplitude-min, amplitude-max: need 0 < min < max <= 1000 g");
-  if (!(o.scan_points >= 2 && o.scan_points <= 100000)) throw std::invalid_argument("scan-points must be in [2, 100000]");
+  if (!(o.scan_points >= 2 && o.scan_points <= 100000))
+    throw std::invalid_argument("scan-points must be in [2, 100000]");
   if (!(o.rel_tol >= 1e-12 && o.rel_tol <= 0.1)) throw std::invalid_argument("rel-tol must be in [1e-12, 0.1]");
 }
 
-double rect_pulse_overturning_linear(double alpha, double p, double t_p) {
-  return alpha / (1.0 - std::exp(-p * t_p));
-}
+double rect_pulse_overturning_linear(double alpha, double p, double t_p) { return alpha / (1.0 - std::exp(-p * t_p)); }
 
 std::vector<double> scan_amplitudes(const SpectrumOptions& o) {
   const int n = o.scan_points;
   std::vector<double> amp(n);
-  for (int j = 0; j < n; ++j) amp[j] = o.amplitude_min * std::pow(o.amplitude_max / o.amplitude_min, double(j) / (n - 1));
+  for (int j = 0; j < n; ++j)
+    amp[j] = o.amplitude_min * std::pow(o.amplitude_max / o.amplitude_min, double(j) / (n - 1));
   return amp;
 }
 
@@ -39,11 +39,12 @@ SpectrumRow spectrum_row(const OverturnTest& overturns, const SpectrumOptions& o
   std::vector<char>& over = row.scan;
   over.resize(n);
   for (int j = 0; j < n; ++j) {
-    over[j] = overturns(amp[j], duration) ? 1 : 0;
+    over[j] = char(overturns(amp[j], duration));
+    row.outside_model += over[j] == kOutsideModel;
     ++row.runs;
   }
   int k = 0;
-  while (k < n && !over[k]) ++k;
+  while (k < n && over[k] != kOverturns) ++k;
   if (k == n) return row;
   if (k == 0) {
     row.at_scan_floor = true;
@@ -52,16 +53,18 @@ SpectrumRow spectrum_row(const OverturnTest& overturns, const SpectrumOptions& o
     double lo = amp[k - 1], hi = amp[k];
     while ((hi - lo) > o.rel_tol * hi) {
       const double mid = std::sqrt(lo * hi);
-      const bool o_mid = overturns(mid, duration);
+      const int o_mid = overturns(mid, duration);
+      row.outside_model += o_mid == kOutsideModel;
       ++row.runs;
-      (o_mid ? hi : lo) = mid;
+      (o_mid == kOverturns ? hi : lo) = mid;
     }
     row.min_overturning_amplitude = hi;
   }
+  // Safe islands: runs of scanned amplitudes that survive (a run outside the model is no island).
   for (int j = k + 1; j < n; ++j) {
-    if (over[j]) continue;
+    if (over[j] != kSurvives) continue;
     SpectrumIsland is{amp[j], amp[j]};
-    while (j + 1 < n && !over[j + 1]) is.to = amp[++j];
+    while (j + 1 < n && over[j + 1] == kSurvives) is.to = amp[++j];
     row.safe_islands.push_back(is);
   }
   return row;

@@ -15,12 +15,12 @@
 namespace blockdyn {
 
 struct SpectrumOptions {
-  std::vector<double> durations;       // pulse durations (s)
-  double amplitude_min = 0.01;         // scanned amplitudes (g), geometric grid
+  std::vector<double> durations;  // pulse durations (s)
+  double amplitude_min = 0.01;    // scanned amplitudes (g), geometric grid
   double amplitude_max = 10.0;
   int scan_points = 40;
-  double rel_tol = 1e-6;               // bisection: (hi - lo) / hi
-  int threads = 0;                     // 0: all cores
+  double rel_tol = 1e-6;  // bisection: (hi - lo) / hi
+  int threads = 0;        // 0: all cores
 };
 
 struct SpectrumIsland {
@@ -30,14 +30,20 @@ struct SpectrumIsland {
 struct SpectrumRow {
   double duration = 0;
   std::optional<double> min_overturning_amplitude;  // g; nullopt: nothing in the scan overturns
-  bool at_scan_floor = false;   // the smallest scanned amplitude already overturns
+  bool at_scan_floor = false;                       // the smallest scanned amplitude already overturns
   std::vector<SpectrumIsland> safe_islands;
   long runs = 0;
-  std::vector<char> scan;  // per scan amplitude (scan_amplitudes()): 1 overturns, 0 survives
+  // Per scan amplitude (scan_amplitudes()): kOverturns, kSurvives or kOutsideModel.
+  std::vector<char> scan;
+  long outside_model = 0;  // runs that left the model's validity (scan and bisection)
 };
 
-// overturns(amplitude_g, duration_s) must be thread-safe (it runs one simulation).
-using OverturnTest = std::function<bool(double amplitude, double duration)>;
+// What one run says: a run that leaves the model's validity (a state the model does not
+// describe, an unsolvable contact problem) neither survives nor overturns.
+inline constexpr int kSurvives = 0, kOverturns = 1, kOutsideModel = 2;
+// overturns(amplitude_g, duration_s) -> kSurvives | kOverturns | kOutsideModel (a bool is read as
+// survives / overturns); thread-safe (it runs one simulation).
+using OverturnTest = std::function<int(double amplitude, double duration)>;
 
 std::vector<SpectrumRow> overturning_spectrum(const OverturnTest& overturns, const SpectrumOptions& o,
                                               const std::function<void(std::size_t done)>& progress = {});

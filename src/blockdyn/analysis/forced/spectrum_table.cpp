@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "blockdyn/analysis/forced/spectrum_table.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 
 namespace blockdyn {
@@ -33,7 +34,7 @@ void add_spectrum_cells(const SpectrumRow& r, std::optional<double> linearised_r
   row.add(isl);
   row.add(static_cast<long long>(r.runs));
   std::string scan;
-  for (char c : r.scan) scan += c ? '1' : '0';
+  for (char c : r.scan) scan += char('0' + c);
   row.add(scan);
 }
 
@@ -55,7 +56,10 @@ SpectrumRow spectrum_row_from(const Table& t, const TableRow& r) {
     pos = end + 1;
   }
   s.runs = long(cell_integer(cell("runs")));
-  for (char c : cell("scan")) s.scan.push_back(c == '1' ? 1 : 0);
+  for (char c : cell("scan")) {
+    s.scan.push_back(c == '1' ? kOverturns : c == '2' ? kOutsideModel : kSurvives);
+    s.outside_model += c == '2';
+  }
   return s;
 }
 
@@ -74,8 +78,9 @@ SpectrumPoints spectrum_points(const Table& t, PulseShape pulse, double alpha, d
     x["safe_islands"] = isl;
     x["runs"] = r.runs;
     json scan = json::array();
-    for (char c : r.scan) scan.push_back(c != 0);
-    x["scan_overturned"] = scan;
+    for (char c : r.scan) scan.push_back(c == kOutsideModel ? json(nullptr) : json(c == kOverturns));
+    x["scan_overturned"] = scan;  // null: the run left the model's validity
+    x["scan_outside_model"] = std::count(r.scan.begin(), r.scan.end(), char(kOutsideModel));
     out.runs += r.runs;
     out.json.push_back(x);
     out.rows.push_back(r);
