@@ -50,9 +50,10 @@ PresetOptions rigid_preset(double slenderness) {
   return o;
 }
 
+// A constant horizontal ground acceleration (g) from t = 0 on.
 GroundMotion constant_push(double a_g) {
   GroundMotion g;
-  g.horizontal.constant = a_g;
+  g.horizontal.constant = a_g;  // horizontal
   return g;
 }
 

@@ -15,17 +15,6 @@ constexpr double kNoMechanism = 1e6;
 // Rates below this fraction of the mechanism's largest point speed are zero.
 constexpr double kRateZero = 1e-7;
 
-BodyPose initial_pose(const Assembly& a, int b) {
-  BodyPose p;
-  if (b < 0) return p;
-  const AssemblyBlock& k = a.blocks[b];
-  p.x = k.x;
-  p.y = k.y;
-  p.theta = k.theta;
-  p.q = BodyRotation::of(k.theta);
-  return p;
-}
-
 Vec2 velocity_at(const std::vector<double>& u, const StaticProblem& sp, int b, const Vec2& P) {
   if (b < 0) return {};
   return point_velocity(u[3 * b], u[3 * b + 1], u[3 * b + 2], P - sp.centre[b]);

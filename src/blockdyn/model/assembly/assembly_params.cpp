@@ -349,16 +349,7 @@ void validate(const Assembly& a, int max_blocks) {
   check_overlaps(a, min_size);
   // The initial configuration: every interface bears, touches (a block floating above its
   // support is an input error, not a drop test) and does not interpenetrate.
-  auto pose_of = [&](int i) {
-    BodyPose p;
-    if (i < 0) return p;
-    const AssemblyBlock& k = a.blocks[i];
-    p.x = k.x;
-    p.y = k.y;
-    p.theta = k.theta;
-    p.q = BodyRotation::of(k.theta);
-    return p;
-  };
+  auto pose_of = [&](int i) { return initial_pose(a, i); };
   const double touch = 1e-3 * min_size, deep = 0.02 * min_size;
   for (std::size_t j = 0; j < a.interfaces.size(); ++j) {
     const AssemblyInterface& f = a.interfaces[j];

@@ -103,6 +103,17 @@ InterfaceFaces ground_faces(const Assembly& a, const AssemblyInterface& f, const
 
 }  // namespace
 
+BodyPose initial_pose(const Assembly& a, int b) {
+  BodyPose p;
+  if (b < 0) return p;
+  const AssemblyBlock& k = a.blocks[b];
+  p.x = k.x;
+  p.y = k.y;
+  p.theta = k.theta;
+  p.q = BodyRotation::of(k.theta);
+  return p;
+}
+
 std::vector<Vec2> initial_outline(const AssemblyBlock& b) {
   std::vector<Vec2> v = block_outline(b);
   const BodyRotation q = BodyRotation::of(b.theta);

@@ -33,6 +33,9 @@ inline Face face_at(const BodyPose& p, const LocalFace& f) {
   return {c, p.q.offset(f.t.x, f.t.y), p.q.offset(f.n.x, f.n.y), f.half};
 }
 
+// A block's pose at the start (-1: the ground, at rest at the origin).
+BodyPose initial_pose(const Assembly& a, int b);
+
 // A block's outline (counter-clockwise vertices) in the block frame, and at its initial pose.
 std::vector<Vec2> block_outline(const AssemblyBlock& b);
 std::vector<Vec2> initial_outline(const AssemblyBlock& b);
