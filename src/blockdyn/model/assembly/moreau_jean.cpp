@@ -12,9 +12,18 @@ namespace {
 constexpr double kSolveTolerance = 1e-12;
 // A pivot this small against the Delassus diagonal: the guessed active set is degenerate (the
 // impulses of redundant ends are not unique) and Gauss-Seidel takes over.
-constexpr double kSingularPivot = 1e-10;
-// Guesses of the active-set iteration before Gauss-Seidel takes over (one or two in practice).
+constexpr double kSingularPivot = 1e-13;
+// Guesses of the active-set iteration before Gauss-Seidel takes over, besides 4 per end (one or
+// two in practice).
 constexpr int kMaxActiveSetIterations = 12;
+// Block pivoting steps without fewer violated conditions before single changes take over.
+constexpr int kBlockPivotStalls = 2;
+// The compliance added to the Delassus matrix's diagonal, relative to its largest entry: the
+// contact problem of a statically indeterminate assembly (an arch's joints, a face's two ends)
+// has many impulses for one motion; the compliance picks the one of least norm and makes the
+// problem positive definite, so the active-set iteration ends. It moves the velocities by about
+// 1e-10 of an impulse's effect per step.
+constexpr double kRedundancyCompliance = 1e-10;
 // After a degenerate problem, steps with the same active ends go to Gauss-Seidel directly for
 // this many steps before the direct solve is tried again.
 constexpr int kSkipAfterDegenerate = 32;
@@ -57,67 +66,116 @@ void solve_local(double a, double c, double d, double bn, double bt, double mu, 
 }
 
 // Solves A x = b in place (x into b) by Gaussian elimination with partial pivoting; A is m x m
-// with row stride `stride`. False when a pivot is not above `min_pivot` (singular).
-bool gauss_solve(double* __restrict A, double* __restrict b, int m, int stride, double min_pivot) {
+// with row stride `stride`. A column whose best pivot is not above `min_pivot` belongs to a
+// constraint that depends on the others (a redundant contact of a statically indeterminate
+// assembly): its unknown is set to zero and its equation left to the consistency of the
+// others, which the caller checks on the velocities. `piv_row` is scratch of size m.
+void gauss_solve(double* __restrict A, double* __restrict b, int m, int stride, double min_pivot,
+                 int* __restrict piv_row) {
   const std::size_t S = std::size_t(stride);
+  int r = 0;  // the next pivot row
   for (int k = 0; k < m; ++k) {
-    int piv = k;
-    for (int r = k + 1; r < m; ++r)
-      if (std::fabs(A[std::size_t(r) * S + k]) > std::fabs(A[std::size_t(piv) * S + k])) piv = r;
-    if (!(std::fabs(A[std::size_t(piv) * S + k]) > min_pivot)) return false;
-    if (piv != k) {
-      std::swap_ranges(A + std::size_t(k) * S + k, A + std::size_t(k) * S + m, A + std::size_t(piv) * S + k);
-      std::swap(b[k], b[piv]);
+    piv_row[k] = -1;
+    if (r >= m) continue;
+    int piv = r;
+    for (int i = r + 1; i < m; ++i)
+      if (std::fabs(A[std::size_t(i) * S + k]) > std::fabs(A[std::size_t(piv) * S + k])) piv = i;
+    if (!(std::fabs(A[std::size_t(piv) * S + k]) > min_pivot)) continue;
+    if (piv != r) {
+      std::swap_ranges(A + std::size_t(r) * S + k, A + std::size_t(r) * S + m, A + std::size_t(piv) * S + k);
+      std::swap(b[r], b[piv]);
     }
-    const double* rk = A + std::size_t(k) * S;
+    const double* rk = A + std::size_t(r) * S;
     const double inv = 1.0 / rk[k];
-    for (int r = k + 1; r < m; ++r) {
-      double* rr = A + std::size_t(r) * S;
-      const double f = rr[k] * inv;
+    for (int i = r + 1; i < m; ++i) {
+      double* ri = A + std::size_t(i) * S;
+      const double f = ri[k] * inv;
       if (f == 0.0) continue;
-      for (int c = k + 1; c < m; ++c) rr[c] -= f * rk[c];
-      b[r] -= f * b[k];
+      for (int c = k + 1; c < m; ++c) ri[c] -= f * rk[c];
+      b[i] -= f * b[r];
     }
+    piv_row[k] = r++;
   }
+  // Back substitution over the pivot columns; the rows left over are the dependent equations.
   for (int k = m - 1; k >= 0; --k) {
-    const double* rk = A + std::size_t(k) * S;
-    double s = b[k];
-    for (int c = k + 1; c < m; ++c) s -= rk[c] * b[c];
-    b[k] = s / rk[k];
+    if (piv_row[k] < 0) continue;
+    const double* rk = A + std::size_t(piv_row[k]) * S;
+    double s = b[piv_row[k]];
+    for (int c = k + 1; c < m; ++c)
+      if (piv_row[c] >= 0) s -= rk[c] * b[piv_row[c]];
+    b[piv_row[k]] = s / rk[k];
   }
-  return true;
+  for (int k = 0; k < m; ++k) A[k] = piv_row[k] >= 0 ? b[piv_row[k]] : 0.0;  // first row as scratch
+  for (int k = 0; k < m; ++k) b[k] = A[k];
 }
 
-// Solves A x = b in place for a symmetric positive definite A (the Delassus matrix of sticking
-// and separating ends) by Cholesky's factorisation (the lower triangle is used and overwritten).
-bool cholesky_solve(double* __restrict A, double* __restrict b, int m, int stride, double min_pivot) {
+// Solves A x = b in place for a symmetric positive semi-definite A (the Delassus matrix of
+// sticking and separating ends) by Cholesky's factorisation (the lower triangle is used and
+// overwritten). A row whose pivot is not above `min_pivot` depends on the rows before it (a
+// redundant contact): its unknown is set to zero, as in gauss_solve.
+void cholesky_solve(double* __restrict A, double* __restrict b, int m, int stride, double min_pivot,
+                    int* __restrict dropped) {
   const std::size_t S = std::size_t(stride);
+  // The envelope of the lower triangle (each row's first non-zero column; the contacts of blocks
+  // that share no block have exact zeros): the factor fills only inside it, so a chain of blocks
+  // costs O(m b^2) for a band of width b. `dropped` holds the envelope until a row is done.
+  int* first = dropped;
+  for (int j = 0; j < m; ++j) {
+    const double* rj = A + std::size_t(j) * S;
+    int f = 0;
+    while (f < j && rj[f] == 0.0) ++f;
+    first[j] = f;
+  }
   for (int j = 0; j < m; ++j) {
     double* rj = A + std::size_t(j) * S;
+    const int fj = first[j];
     double d = rj[j];
-    for (int k = 0; k < j; ++k) d -= rj[k] * rj[k];
-    if (!(d > min_pivot)) return false;
-    const double l = std::sqrt(d), inv = 1.0 / l;
-    rj[j] = l;
-    for (int i = j + 1; i < m; ++i) {
-      double* ri = A + std::size_t(i) * S;
-      double s = ri[j];
-      for (int k = 0; k < j; ++k) s -= ri[k] * rj[k];
-      ri[j] = s * inv;
+    for (int k = fj; k < j; ++k) d -= rj[k] * rj[k];
+    const bool drop = !(d > min_pivot);
+    if (drop) {
+      // A unit pivot and a zero column: the unknown decouples and is solved as zero.
+      for (int k = fj; k < j; ++k) rj[k] = 0.0;
+      rj[j] = 1.0;
+      for (int i = j + 1; i < m; ++i) A[std::size_t(i) * S + j] = 0.0;
+    } else {
+      const double l = std::sqrt(d), inv = 1.0 / l;
+      rj[j] = l;
+      for (int i = j + 1; i < m; ++i) {
+        double* ri = A + std::size_t(i) * S;
+        if (first[i] > j) continue;  // outside row i's envelope: stays zero
+        double s = ri[j];
+        for (int k = std::max(fj, first[i]); k < j; ++k) s -= ri[k] * rj[k];
+        ri[j] = s * inv;
+      }
     }
+    first[j] = fj;  // (kept: the solves below use it)
+    b[j] = drop ? 0.0 : b[j];
+    rj[j] = drop ? -1.0 : rj[j];  // marks a dropped row for the solves (a real pivot is > 0)
   }
   for (int i = 0; i < m; ++i) {
     const double* ri = A + std::size_t(i) * S;
+    if (ri[i] < 0.0) {
+      b[i] = 0.0;
+      continue;
+    }
     double s = b[i];
-    for (int k = 0; k < i; ++k) s -= ri[k] * b[k];
+    for (int k = first[i]; k < i; ++k) s -= ri[k] * b[k];
     b[i] = s / ri[i];
   }
   for (int i = m - 1; i >= 0; --i) {
+    const double* ri = A + std::size_t(i) * S;
+    if (ri[i] < 0.0) {
+      b[i] = 0.0;
+      continue;
+    }
     double s = b[i];
-    for (int k = i + 1; k < m; ++k) s -= A[std::size_t(k) * S + i] * b[k];
-    b[i] = s / A[std::size_t(i) * S + i];
+    for (int k = i + 1; k < m; ++k) {
+      const double* rk = A + std::size_t(k) * S;
+      if (first[k] <= i) s -= rk[i] * b[k];
+    }
+    b[i] = s / ri[i];
   }
-  return true;
+  for (int i = 0; i < m; ++i) dropped[i] = A[std::size_t(i) * S + i] < 0.0;
 }
 
 inline double dot3(const double* a, const double* b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
@@ -156,6 +214,14 @@ MoreauJean::MoreauJean(const Assembly& a, const GroundMotion& g, const MoreauJea
   W_.resize(std::size_t(m_cap_) * std::size_t(m_cap_));
   A_.resize(std::size_t(m_cap_) * std::size_t(m_cap_));
   rhs_.resize(m_cap_);
+  pivots_.resize(m_cap_);
+  lcp_m_.resize(std::size_t(4 * np) * std::size_t(4 * np));
+  lcp_q_.resize(std::size_t(4 * np));
+  lcp_z_.resize(std::size_t(4 * np));
+  lemke_.reserve(4 * np);
+  face_end_.resize(np);
+  face_of_.resize(np);
+  next_.resize(np);
   for (auto* x : {&bn_, &bt_, &mu_, &mu_k_, &pn_, &pt_, &un_shift_}) x->resize(np);
   for (auto* x : {&ub_, &lb_, &active_, &col_n_, &col_t_}) x->resize(np);
   for (auto* x : {&ju_, &jl_, &mju_, &mjl_}) x->resize(np);
@@ -388,8 +454,8 @@ void MoreauJean::delassus(int nc) {
       if (i == j) diag_max = std::max({diag_max, w[0], w[3]});
     }
   // An optional compliance on the Delassus diagonal (0 by default).
-  if (o_.regularisation > 0)
-    for (int k = 0; k < 2 * nc; ++k) W_[std::size_t(k) * (S + 1)] += o_.regularisation * diag_max;
+  compliance_ = std::max(o_.regularisation, kRedundancyCompliance) * diag_max;
+  for (int k = 0; k < 2 * nc; ++k) W_[std::size_t(k) * (S + 1)] += compliance_;
 }
 
 void MoreauJean::conclude(int nc, const std::vector<double>& v, const std::array<double, 2>& a) {
@@ -414,7 +480,10 @@ void MoreauJean::conclude(int nc, const std::vector<double>& v, const std::array
     const double ut_before = row_dot(1, v);
     e.pushing = e.pn > 0.0;
     // Slipping is a velocity (unique where the redundant ends' impulses are not).
-    e.slipping = e.pushing && std::fabs(e.ut_after) > slip_velocity_;
+    // A slip is the solution's class where the problem was solved exactly (unique with the
+    // compliance); after Gauss-Seidel, a tangential speed above the scheme's noise.
+    e.slipping = e.pushing && (classes_solved_ ? cls_[i] == kSlipPos || cls_[i] == kSlipNeg
+                                               : std::fabs(e.ut_after) > slip_threshold(nc, i));
     e.slip = !e.slipping ? 0 : e.ut_after > 0 ? 1 : -1;
     work_normal += e.pn * 0.5 * (e.un_after + e.un_before);
     work_tangential += e.pt * 0.5 * (e.ut_after + ut_before);
@@ -448,7 +517,7 @@ bool MoreauJean::solve(int nc, double v_scale, bool same_ends) {
       if (!(mu_[i] > mu_k_[i]) || !(pn_[i] > 0.0)) continue;
       double ut = dot3(&ju_[i][3], &vnew_[3 * ub_[i]]);
       if (lb_[i] >= 0) ut += dot3(&jl_[i][3], &vnew_[3 * lb_[i]]);
-      if (std::fabs(ut) > slip_velocity_) {
+      if (classes_solved_ ? cls_[i] == kSlipPos || cls_[i] == kSlipNeg : std::fabs(ut) > slip_threshold(nc, i)) {
         mu_[i] = mu_k_[i];
         dropped = true;
       }
@@ -460,6 +529,7 @@ bool MoreauJean::solve(int nc, double v_scale, bool same_ends) {
 }
 
 bool MoreauJean::solve_coulomb(int nc, double v_scale) {
+  classes_solved_ = true;
   if (o_.direct && skip_direct_ == 0) {
     const DirectOutcome d = solve_direct(nc, v_scale);
     if (d == kSolved) {
@@ -468,8 +538,104 @@ bool MoreauJean::solve_coulomb(int nc, double v_scale) {
     }
     if (d == kDegenerate) skip_direct_ = kSkipAfterDegenerate;
   }
+  // Lemke's solution as the active-set guess: its classes, solved again directly, are checked
+  // against every condition (and sharpened to the direct solve's accuracy).
+  if (solve_lemke(nc) && solve_direct(nc, v_scale) == kSolved) {
+    ++stats_.lemke;
+    return true;
+  }
   ++stats_.gauss_seidel;
+  classes_solved_ = false;
   return solve_gauss_seidel(nc, v_scale);
+}
+
+// The step's contact problem as one LCP (Anitescu and Potra's form of the 2D Coulomb cone, exact
+// in the plane): per end in contact the normal impulse P_N, per face the tangential impulse's two
+// parts beta+ and beta- (P_T = beta+ - beta-, on the face's first end: a face's two ends lie on
+// one line along its tangent, so one tangential impulse stands for both) and the slip speed
+// lambda,
+//   u_N = W_NN P_N + W_NT P_T + b_N >= 0  _|_ P_N >= 0
+//   u_T + lambda >= 0 _|_ beta+ >= 0,  -u_T + lambda >= 0 _|_ beta- >= 0
+//   sum mu P_N - beta+ - beta- >= 0 _|_ lambda >= 0.
+// Lemke's method solves it whatever the redundancy of the contacts; the classes of its solution
+// warm-start the next step's active-set guess.
+bool MoreauJean::solve_lemke(int nc) {
+  int nf = 0;
+  for (int i = 0; i < nc; ++i) {
+    if (i == 0 || active_[i - 1] / 2 != active_[i] / 2) face_end_[nf++] = i;
+    face_of_[i] = nf - 1;
+  }
+  const int N = nc + 3 * nf, bp = nc, bm = nc + nf, lm = nc + 2 * nf;
+  const std::size_t S = std::size_t(N);
+  std::fill(lcp_m_.begin(), lcp_m_.begin() + std::ptrdiff_t(S * S), 0.0);
+  auto M = [&](int i, int j) -> double& { return lcp_m_[std::size_t(i) * S + std::size_t(j)]; };
+  // Scaled so that every unknown is an impulse and the entries are of order one: the velocity
+  // rows by 1 / d (d the Delassus matrix's largest diagonal entry), the slip speed as d times an
+  // impulse (a row's positive scale keeps its complementarity).
+  double d = 0.0;
+  for (int k = 0; k < 2 * nc; ++k) d = std::max(d, W(k, k));
+  const double inv_d = 1.0 / d;
+  for (int i = 0; i < nc; ++i) {
+    for (int j = 0; j < nc; ++j) M(i, j) = W(2 * i, 2 * j) * inv_d;
+    for (int f = 0; f < nf; ++f) {
+      const double nt = W(2 * i, 2 * face_end_[f] + 1) * inv_d;
+      M(i, bp + f) = nt;
+      M(i, bm + f) = -nt;
+    }
+    lcp_q_[std::size_t(i)] = bn_[i] * inv_d;
+  }
+  for (int f = 0; f < nf; ++f) {
+    const int r = face_end_[f];
+    for (int j = 0; j < nc; ++j) {
+      const double tn = W(2 * r + 1, 2 * j) * inv_d;
+      M(bp + f, j) = tn;
+      M(bm + f, j) = -tn;
+    }
+    for (int g = 0; g < nf; ++g) {
+      const double tt = W(2 * r + 1, 2 * face_end_[g] + 1) * inv_d;
+      M(bp + f, bp + g) = tt;
+      M(bp + f, bm + g) = -tt;
+      M(bm + f, bp + g) = -tt;
+      M(bm + f, bm + g) = tt;
+    }
+    M(bp + f, lm + f) = 1.0;
+    M(bm + f, lm + f) = 1.0;
+    // The face's cone, scaled by its largest coefficient.
+    double mu_max = 0.0;
+    for (int i = r; i < nc && face_of_[i] == f; ++i) mu_max = std::max(mu_max, mu_[i]);
+    const double cs = mu_max > 0.0 ? 1.0 / mu_max : 1.0;
+    for (int i = r; i < nc && face_of_[i] == f; ++i) M(lm + f, i) = mu_[i] * cs;
+    M(lm + f, bp + f) = -cs;
+    M(lm + f, bm + f) = -cs;
+    lcp_q_[std::size_t(bp + f)] = bt_[r] * inv_d;
+    lcp_q_[std::size_t(bm + f)] = -bt_[r] * inv_d;
+    lcp_q_[std::size_t(lm + f)] = 0.0;
+  }
+  if (!lemke_.solve(N, lcp_m_.data(), N, lcp_q_.data(), lcp_z_.data())) return false;
+  for (int i = 0; i < nc; ++i) {
+    const int f = face_of_[i];
+    pn_[i] = lcp_z_[std::size_t(i)];
+    pt_[i] = face_end_[f] == i ? lcp_z_[std::size_t(bp + f)] - lcp_z_[std::size_t(bm + f)] : 0.0;
+  }
+  for (int i = 0; i < nc; ++i) {
+    const int f = face_of_[i], r = face_end_[f];
+    const double slip = lcp_z_[std::size_t(lm + f)];
+    cls_[i] = !(pn_[i] > 0.0) ? kSeparate : slip > 0.0 ? (pt_[r] > 0.0 ? kSlipNeg : kSlipPos) : kStick;
+  }
+  // The face's tangential impulse shared by its ends as their normal impulses (slipping ends:
+  // each -s mu P_N, as the active-set solution has them).
+  for (int f = 0; f < nf; ++f) {
+    const int r = face_end_[f];
+    double T = pt_[r], N_sum = 0.0;
+    for (int i = r; i < nc && face_of_[i] == f; ++i) N_sum += pn_[i];
+    for (int i = r; i < nc && face_of_[i] == f; ++i) {
+      if (cls_[i] == kSlipPos || cls_[i] == kSlipNeg)
+        pt_[i] = (cls_[i] == kSlipPos ? -1.0 : 1.0) * mu_[i] * pn_[i];
+      else
+        pt_[i] = N_sum > 0.0 ? T * pn_[i] / N_sum : (i == r ? T : 0.0);
+    }
+  }
+  return true;
 }
 
 // Active-set iteration: for the guessed pattern (separate, stick, slip +/-) the impulses solve
@@ -481,11 +647,20 @@ MoreauJean::DirectOutcome MoreauJean::solve_direct(int nc, double v_scale) {
   const std::size_t S = std::size_t(m_cap_);
   double diag_max = 0;
   for (int k = 0; k < 2 * nc; ++k) diag_max = std::max(diag_max, W_[std::size_t(k) * (S + 1)]);
-  for (int iter = 0; iter < kMaxActiveSetIterations; ++iter) {
+  int best = nc + 1, stalls = 0;
+  const int max_iterations = kMaxActiveSetIterations;
+  for (int iter = 0; iter < max_iterations; ++iter) {
     ++stats_.active_set_iterations;
     int m = 0;
-    for (int i = 0; i < nc; ++i) col_n_[i] = cls_[i] != kSeparate ? m++ : -1;
-    for (int i = 0; i < nc; ++i) col_t_[i] = cls_[i] == kStick ? m++ : -1;
+    // One tangential unknown per sticking face, on its first sticking end: the two ends of a face
+    // lie on one line along its tangent, so only the sum of their tangential impulses acts (the
+    // split, a redundancy, is shared out once solved). The unknowns go end by end, so that a
+    // chain of blocks (a column, an arch) gives a banded matrix.
+    for (int i = 0; i < nc; ++i) {
+      col_n_[i] = cls_[i] != kSeparate ? m++ : -1;
+      const int j = cls_[i] == kStick ? sticking_partner(nc, i) : 0;
+      col_t_[i] = cls_[i] == kStick && (j < 0 || j > i) ? m++ : -1;
+    }
     // Equation rows in the same order as the unknowns: u_N of ends in contact, u_T of sticking ones.
     auto coeff_row = [&](int wrow, double* out) {
       for (int j = 0; j < nc; ++j) {
@@ -511,9 +686,10 @@ MoreauJean::DirectOutcome MoreauJean::solve_direct(int nc, double v_scale) {
     // definite unless degenerate).
     bool any_slip = false;
     for (int i = 0; i < nc; ++i) any_slip = any_slip || cls_[i] == kSlipPos || cls_[i] == kSlipNeg;
-    if (!(any_slip ? gauss_solve(A_.data(), rhs_.data(), m, m_cap_, kSingularPivot * diag_max)
-                   : cholesky_solve(A_.data(), rhs_.data(), m, m_cap_, kSingularPivot * diag_max)))
-      return iter == 0 ? kDegenerate : kFailed;
+    if (any_slip)
+      gauss_solve(A_.data(), rhs_.data(), m, m_cap_, kSingularPivot * diag_max, pivots_.data());
+    else
+      cholesky_solve(A_.data(), rhs_.data(), m, m_cap_, kSingularPivot * diag_max, pivots_.data());
     for (int i = 0; i < nc; ++i) {
       pn_[i] = col_n_[i] >= 0 ? rhs_[col_n_[i]] : 0.0;
       pt_[i] = col_t_[i] >= 0        ? rhs_[col_t_[i]]
@@ -525,7 +701,12 @@ MoreauJean::DirectOutcome MoreauJean::solve_direct(int nc, double v_scale) {
     // velocities after the step from the blocks' (sparse: two blocks per end).
     velocity_change(nc, dv_);
     for (int k = 0; k < 3 * nb_; ++k) vnew_[k] = vfree_[k] + dv_[k];
-    bool ok = true, accurate = true;
+    // The conditions of the regularised problem (u + c P = 0 where an end holds); each violated
+    // one proposes a new guess for its end (for the face's cone: for both its ends).
+    const double p_tol = tol / diag_max;
+    int violations = 0, first = -1;
+    bool accurate = true;
+    for (int i = 0; i < nc; ++i) next_[i] = cls_[i];
     for (int i = 0; i < nc; ++i) {
       double un = dot3(&ju_[i][0], &vnew_[3 * ub_[i]]), ut = dot3(&ju_[i][3], &vnew_[3 * ub_[i]]);
       if (lb_[i] >= 0) {
@@ -533,36 +714,98 @@ MoreauJean::DirectOutcome MoreauJean::solve_direct(int nc, double v_scale) {
         ut += dot3(&jl_[i][3], &vnew_[3 * lb_[i]]);
       }
       un += un_shift_[i];  // Newton's law and the gap allowance (see step())
+      const double cn = un + compliance_ * pn_[i], ct = ut + compliance_ * pt_[i];
+      bool violated = false;
       switch (cls_[i]) {
         case kSeparate:
-          if (un < -tol) cls_[i] = kStick, ok = false;
+          if (un < -tol) next_[i] = kStick, violated = true;
           break;
-        case kStick:
-          accurate = accurate && std::fabs(un) <= tol && std::fabs(ut) <= tol;
-          if (pn_[i] < 0.0) {
-            cls_[i] = kSeparate, ok = false;
-          } else if (std::fabs(pt_[i]) > mu_[i] * pn_[i]) {
-            // Outside the cone: slip against the impulse's tendency.
-            cls_[i] = pt_[i] > 0 ? kSlipNeg : kSlipPos;
-            ok = false;
+        case kStick: {
+          accurate = accurate && std::fabs(cn) <= tol && (col_t_[i] < 0 || std::fabs(ct) <= tol);
+          // The face's two ends lie on one line along its tangent, so only their tangential
+          // impulses' sum is defined (a redundant pair may put it all on one end): the cone is
+          // the face's, sum |P_T| <= sum mu P_N.
+          const int j = sticking_partner(nc, i);
+          const double pt = pt_[i] + (j >= 0 ? pt_[j] : 0.0);
+          const double cap = mu_[i] * pn_[i] + (j >= 0 ? mu_[j] * pn_[j] : 0.0);
+          if (pn_[i] < -p_tol) {
+            next_[i] = kSeparate, violated = true;
+          } else if (std::fabs(pt) > cap + p_tol && (j < 0 || pn_[j] >= -p_tol)) {
+            // Outside the cone: the face slips against the impulse's tendency.
+            next_[i] = pt > 0 ? kSlipNeg : kSlipPos;
+            if (j >= 0) next_[j] = next_[i];
+            violated = true;
           }
           break;
+        }
         case kSlipPos:
         case kSlipNeg: {
-          accurate = accurate && std::fabs(un) <= tol;
-          const double s = cls_[i] == kSlipPos ? 1.0 : -1.0;
-          if (pn_[i] < 0.0) {
-            cls_[i] = kSeparate, ok = false;
-          } else if (s * ut < -tol) {
-            cls_[i] = kStick, ok = false;
+          accurate = accurate && std::fabs(cn) <= tol;
+          const double sg = cls_[i] == kSlipPos ? 1.0 : -1.0;
+          if (pn_[i] < -p_tol) {
+            next_[i] = kSeparate, violated = true;
+          } else if (sg * ut < -tol) {
+            next_[i] = kStick, violated = true;
           }
           break;
         }
       }
+      if (violated && first < 0) first = i;
+      violations += violated;
     }
-    if (ok) return accurate ? kSolved : kFailed;
+    if (violations == 0) {
+      if (!accurate) return kFailed;
+      share_sticking_friction(nc);
+      return kSolved;
+    }
+    // Block pivoting (every violated guess changed at once) while it makes progress; then
+    // Murty's rule, one change at a time at the lowest violated index, which ends for the
+    // positive definite (regularised) problem.
+    if (violations < best)
+      best = violations, stalls = 0;
+    else
+      ++stalls;
+    if (stalls <= kBlockPivotStalls) {
+      for (int i = 0; i < nc; ++i) cls_[i] = next_[i];
+    } else {
+      const int j = sticking_partner(nc, first);
+      cls_[first] = next_[first];
+      if (j >= 0 && next_[j] == next_[first] && (next_[first] == kSlipPos || next_[first] == kSlipNeg))
+        cls_[j] = next_[j];
+    }
   }
   return kFailed;
+}
+
+double MoreauJean::slip_threshold(int nc, int i) const {
+  // The compliance lets a sticking face creep by c |P_T| (c the compliance, P_T its tangential
+  // impulse): not a slip.
+  double pt = std::fabs(pt_[i]);
+  for (int j : {i - 1, i + 1})
+    if (j >= 0 && j < nc && active_[j] / 2 == active_[i] / 2) pt += std::fabs(pt_[j]);
+  return slip_velocity_ + 2.0 * compliance_ * pt;
+}
+
+int MoreauJean::sticking_partner(int nc, int i) const {
+  for (int j : {i - 1, i + 1})
+    if (j >= 0 && j < nc && active_[j] / 2 == active_[i] / 2 && cls_[j] == kStick) return j;
+  return -1;
+}
+
+void MoreauJean::share_sticking_friction(int nc) {
+  // A sticking face's tangential impulse shared by its two ends as their normal impulses (the
+  // split is not unique; this one keeps each end inside its own cone and warm-starts the next
+  // step's Gauss-Seidel well).
+  for (int i = 0; i + 1 < nc; ++i) {
+    const int j = i + 1;
+    if (cls_[i] != kStick || sticking_partner(nc, i) != j) continue;
+    const double T = pt_[i] + pt_[j], N = pn_[i] + pn_[j];
+    if (N > 0.0) {
+      pt_[i] = T * pn_[i] / N;
+      pt_[j] = T * pn_[j] / N;
+    }
+    ++i;
+  }
 }
 
 // Nonsmooth Gauss-Seidel (Moreau; Jean): each end's 2 x 2 Coulomb problem solved exactly with

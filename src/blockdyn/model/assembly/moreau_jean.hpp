@@ -38,6 +38,7 @@
 #include "blockdyn/model/assembly/assembly_params.hpp"
 #include "blockdyn/model/assembly/contact_point.hpp"
 #include "blockdyn/model/assembly/interface_faces.hpp"
+#include "blockdyn/model/common/lemke.hpp"
 
 namespace blockdyn {
 
@@ -62,7 +63,8 @@ class MoreauJean {
   };
   // How the contact problems were solved (counts over the run).
   struct SolveStats {
-    long steps = 0, empty = 0, direct = 0, gauss_seidel = 0, sweeps = 0, active_set_iterations = 0, static_drops = 0;
+    long steps = 0, empty = 0, direct = 0, gauss_seidel = 0, sweeps = 0, active_set_iterations = 0, static_drops = 0,
+         lemke = 0;
   };
 
   MoreauJean(const Assembly& a, const GroundMotion& g, const MoreauJeanOptions& o);
@@ -112,6 +114,12 @@ class MoreauJean {
   enum DirectOutcome { kSolved, kDegenerate, kFailed };
   DirectOutcome solve_direct(int nc, double v_scale);
   bool solve_gauss_seidel(int nc, double v_scale);
+  bool solve_lemke(int nc);
+  // The other end of active end i's face if it is sticking too (-1: none).
+  int sticking_partner(int nc, int i) const;
+  // The tangential speed above which active end i slips.
+  double slip_threshold(int nc, int i) const;
+  void share_sticking_friction(int nc);
   double W(int i, int j) const { return W_[std::size_t(i) * std::size_t(m_cap_) + std::size_t(j)]; }
   // Velocity change of the blocks from the impulses (sparse: each end touches two blocks).
   void velocity_change(int nc, std::vector<double>& dv) const;
@@ -137,11 +145,15 @@ class MoreauJean {
   std::vector<std::array<double, 6>> ju_, jl_, mju_, mjl_;
   std::vector<double> qm_, vfree_, vnew_, dv_, W_, bn_, bt_, mu_, mu_k_, pn_, pt_, un_shift_;
   std::vector<double> A_, rhs_;  // the active-set iteration's linear system
-  std::vector<int> col_n_, col_t_;
-  std::vector<Class> cls_;
+  std::vector<int> col_n_, col_t_, pivots_;
+  std::vector<Class> cls_, next_;
+  std::vector<double> lcp_m_, lcp_q_, lcp_z_;  // the step's problem as one LCP (solve_lemke)
+  Lemke lemke_;
+  std::vector<int> face_end_, face_of_;  // solve_lemke's faces: first active end; face of each end
   std::vector<End> ends_;
   int sweeps_ = 0, skip_direct_ = 0;
-  double touch_ = 0, slip_velocity_ = 0;
+  bool classes_solved_ = true;  // cls_ holds the last solution's classes (not after Gauss-Seidel)
+  double touch_ = 0, slip_velocity_ = 0, compliance_ = 0;
   SolveStats stats_;
 };
 
