@@ -52,9 +52,9 @@ void add_assembly_options(CLI::App& app, AssemblyFlags& f) {
       "collapse mode 2 when the overlap of two blocks' faces falls to this length [m] (default 0)");
   opt("--g", f.g, "gravity [m/s^2] (default 9.81)");
   members(opt("--scheme", f.scheme,
-              "rigid: event-driven (default: exact events, each mode's contact forces, impacts where they "
-              "occur; windows of chattering contacts handed to time-stepping) or time-stepping (Moreau-Jean, "
-              "fixed --step, events known to a step)"),
+              "rigid: event-driven (default up to 8 blocks: exact events, each mode's contact forces, impacts "
+              "where they occur; windows of chattering contacts handed to time-stepping) or time-stepping "
+              "(Moreau-Jean, fixed --step, events known to a step; default above 8 blocks)"),
           {"event-driven", "time-stepping"});
   opt("--step", f.step,
       "rigid: Moreau-Jean time step [s] (default 1e-4): the whole run with --scheme time-stepping, the "

@@ -249,8 +249,16 @@ AssemblySetup assembly_from(const Settings& s) {
   AssemblyRunOptions& o = setup.run;
   o.t_end = s.number("t-end", o.t_end);
   o.step = s.number("step", o.step);
-  o.scheme =
-      s.text("scheme", "event-driven") == "event-driven" ? AssemblyScheme::EventDriven : AssemblyScheme::TimeStepping;
+  o.scheme = !s.has("scheme")                         ? AssemblyScheme::Auto
+             : s.text("scheme", "") == "event-driven" ? AssemblyScheme::EventDriven
+                                                      : AssemblyScheme::TimeStepping;
+  // Above kEventDrivenMaxBlocks blocks the rigid law's default is time-stepping, whose options
+  // are not the integrator's.
+  if (setup.assembly.contact == "rigid" && effective_scheme(setup.assembly, o) == AssemblyScheme::TimeStepping)
+    for (const char* n : {"rtol", "atol", "method"})
+      if (s.has(n))
+        throw Invalid(std::string("--") + n + " belongs to --scheme event-driven (time-stepping, the rigid law's " +
+                      "default above " + std::to_string(kEventDrivenMaxBlocks) + " blocks, has --step)");
   apply_integrator_settings(s, o.integrator);
   o.output_interval = s.number("output-interval", o.output_interval);
   validate(o);

@@ -128,6 +128,11 @@ json assembly_result_json(const Assembly& a, const GroundMotion& g, const Assemb
                             {"steps", r.time_stepping_steps},
                             {"reason", r.time_stepping_windows > 0 ? json(r.time_stepping_reason) : json(nullptr)}};
     j["impacts"] = r.impacts;
+    j["contact_solves"] = {{"direct", r.direct_solves},
+                           {"lemke", r.lemke_solves},
+                           {"active_set_iterations", r.active_set_iterations},
+                           {"gauss_seidel", r.gauss_seidel_solves},
+                           {"gauss_seidel_sweeps", r.gauss_seidel_sweeps}};
   }
   j["max_abs_energy_change"] = r.max_abs_energy_change;
   j["steps"] = r.steps;

@@ -18,10 +18,16 @@
 
 namespace blockdyn {
 
-const char* to_string(AssemblyScheme s) { return s == AssemblyScheme::EventDriven ? "event-driven" : "time-stepping"; }
+const char* to_string(AssemblyScheme s) {
+  return s == AssemblyScheme::EventDriven    ? "event-driven"
+         : s == AssemblyScheme::TimeStepping ? "time-stepping"
+                                             : "auto";
+}
 
 AssemblyScheme effective_scheme(const Assembly& a, const AssemblyRunOptions& o) {
-  return a.rock_only_on_ground ? AssemblyScheme::TimeStepping : o.scheme;
+  if (a.rock_only_on_ground) return AssemblyScheme::TimeStepping;
+  if (o.scheme != AssemblyScheme::Auto) return o.scheme;
+  return int(a.blocks.size()) > kEventDrivenMaxBlocks ? AssemblyScheme::TimeStepping : AssemblyScheme::EventDriven;
 }
 
 void validate(const AssemblyRunOptions& o) {
@@ -311,6 +317,8 @@ AssemblyResult run(const Assembly& a, const GroundMotion& g, const AssemblyRunOp
     r.time_stepping_reason = w.first;
     r.direct_solves = w.direct;
     r.gauss_seidel_solves = w.gauss_seidel;
+    r.lemke_solves = w.lemke;
+    r.active_set_iterations = w.active_set_iterations;
     r.gauss_seidel_sweeps = w.sweeps;
     if (effective_scheme(a, o) == AssemblyScheme::TimeStepping) r.impacts = r.event_counts[kAsmImpact];
     if (w.count > 0 && r.note.empty())

@@ -35,8 +35,10 @@ struct AssemblyEventRecord {
 
 // How the rigid contact law is integrated: event-driven (exact events: smooth phases with the
 // contact forces of each mode, impacts resolved where they occur) or Moreau-Jean time-stepping
-// (a fixed step; events known to within a step; for accumulations of impacts).
-enum class AssemblyScheme { EventDriven, TimeStepping };
+// (a fixed step; events known to within a step; for accumulations of impacts). Auto: event-driven
+// up to kEventDrivenMaxBlocks blocks, time-stepping above (an arch's many joints switch so often
+// that exact events cost minutes where Moreau-Jean takes seconds).
+enum class AssemblyScheme { EventDriven, TimeStepping, Auto };
 const char* to_string(AssemblyScheme s);
 
 // An assembly's run: the shared options (from t = 0; tolerances 1e-8, 1e-10 by default) and the
@@ -46,17 +48,17 @@ struct AssemblyRunOptions : RunOptions {
     integrator.rtol = 1e-8;
     integrator.atol = 1e-10;
   }
-  double output_interval = 0.01;                        // trajectory CSV (s)
-  long max_events = 1'000'000;                          // kept in the list; further events are counted only
-  double step = 1e-4;                                   // rigid law: Moreau-Jean time step (s)
-  AssemblyScheme scheme = AssemblyScheme::EventDriven;  // rigid law only
+  double output_interval = 0.01;                 // trajectory CSV (s)
+  long max_events = 1'000'000;                   // kept in the list; further events are counted only
+  double step = 1e-4;                            // rigid law: Moreau-Jean time step (s)
+  AssemblyScheme scheme = AssemblyScheme::Auto;  // rigid law only
   // Called with every event as it happens, whatever record_events and max_events say: a caller
   // that streams the events (the command line's JSON spool) holds O(1) memory on a run of any length.
   std::function<void(const AssemblyEventRecord&)> on_event;
 };
 void validate(const AssemblyRunOptions& o);
-// The scheme a rigid assembly is run with: the options', except seed 001's 5-DOF restriction
-// (rock_only_on_ground), which only time-stepping integrates.
+// The scheme a rigid assembly is run with: the options' (Auto resolved by the block count),
+// except seed 001's 5-DOF restriction (rock_only_on_ground), which only time-stepping integrates.
 AssemblyScheme effective_scheme(const Assembly& a, const AssemblyRunOptions& o);
 
 struct AssemblyBlockSummary {
@@ -98,9 +100,10 @@ struct AssemblyResult {
   long steps = 0, rejected_steps = 0, rhs_evals = 0;
   std::vector<double> damping;  // calibrated damping per interface (N s/m per point)
   long impacts = 0;             // rigid law: contact ends closing with an approach velocity
-  // Rigid law: how the steps' contact problems were solved (direct active-set solves, Gauss-Seidel
-  // for degenerate ones and its sweeps).
-  long direct_solves = 0, gauss_seidel_solves = 0, gauss_seidel_sweeps = 0;
+  // Rigid law: how the time steps' contact problems were solved (direct active-set solves, Lemke's
+  // method where the active set did not settle, Gauss-Seidel as the last resort and its sweeps).
+  long direct_solves = 0, lemke_solves = 0, gauss_seidel_solves = 0, gauss_seidel_sweeps = 0;
+  long active_set_iterations = 0;  // the active-set guesses of all the solves
   // Rigid law, event-driven: the windows handed to time-stepping (count, total duration in s,
   // their steps) and why the first was needed.
   long time_stepping_windows = 0, time_stepping_steps = 0;

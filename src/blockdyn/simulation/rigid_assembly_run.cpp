@@ -233,6 +233,8 @@ RunOutcome<RigidAssemblyModel<Cap>> run_rigid_assembly(const RigidAssemblyModel<
     const auto& st = window->scheme().solve_stats();
     windows.direct = st.direct;
     windows.gauss_seidel = st.gauss_seidel;
+    windows.lemke = st.lemke;
+    windows.active_set_iterations = st.active_set_iterations;
     windows.sweeps = st.sweeps;
   };
   if (effective_scheme(m.assembly(), o) == AssemblyScheme::TimeStepping) {
@@ -299,8 +301,9 @@ template RunOutcome<RigidAssemblyModel<3>> run_rigid_assembly(const RigidAssembl
 template RunOutcome<RigidAssemblyModel<8>> run_rigid_assembly(const RigidAssemblyModel<8>&, RigidAssemblyModel<8>::Mode,
                                                               RigidAssemblyModel<8>::State, const AssemblyRunOptions&,
                                                               Observer<RigidAssemblyModel<8>>&, TimeSteppingWindows&);
-template RunOutcome<RigidAssemblyModel<24>> run_rigid_assembly(const RigidAssemblyModel<24>&, RigidAssemblyModel<24>::Mode,
-                                                              RigidAssemblyModel<24>::State, const AssemblyRunOptions&,
-                                                              Observer<RigidAssemblyModel<24>>&, TimeSteppingWindows&);
+template RunOutcome<RigidAssemblyModel<24>> run_rigid_assembly(const RigidAssemblyModel<24>&,
+                                                               RigidAssemblyModel<24>::Mode,
+                                                               RigidAssemblyModel<24>::State, const AssemblyRunOptions&,
+                                                               Observer<RigidAssemblyModel<24>>&, TimeSteppingWindows&);
 
 }  // namespace blockdyn

@@ -23,7 +23,7 @@ struct TimeSteppingWindows {
   long steps = 0;     // their steps
   std::string first;  // why the first one was needed
   // How the steps' contact problems were solved (moreau_jean.hpp).
-  long direct = 0, gauss_seidel = 0, sweeps = 0;
+  long direct = 0, lemke = 0, gauss_seidel = 0, sweeps = 0, active_set_iterations = 0;
 };
 
 // Time-stepping steps without a contact change before the events take over again.

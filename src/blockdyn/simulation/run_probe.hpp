@@ -27,7 +27,7 @@ struct ProbeEvent {
 
 class RunProbe {
  public:
-  static constexpr int kMaxBlocks = 24;  // kMaxDynamicBlocks (assembly_params.hpp)
+  static constexpr int kMaxBlocks = 24;      // kMaxDynamicBlocks (assembly_params.hpp)
   using BlockState = std::array<double, 6>;  // x, y, theta, vx, vy, omega (ground frame of the model)
 
   // period <= 0: no samples, only step ends and events.

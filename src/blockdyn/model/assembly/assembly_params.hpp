@@ -49,6 +49,8 @@ struct AssemblyInterface {
 // Blocks an assembly's dynamics takes (the state's capacity); the static analysis takes more.
 inline constexpr int kMaxDynamicBlocks = 24;
 inline constexpr int kMaxStaticBlocks = 2000;
+// Above this many blocks the rigid law runs by time-stepping unless told otherwise.
+inline constexpr int kEventDrivenMaxBlocks = 8;
 
 struct Assembly {
   std::string preset = "custom";       // block | trilith | column | arch | custom

@@ -21,12 +21,9 @@ constexpr int kBlockPivotStalls = 2;
 // The compliance added to the Delassus matrix's diagonal, relative to its largest entry: the
 // contact problem of a statically indeterminate assembly (an arch's joints, a face's two ends)
 // has many impulses for one motion; the compliance picks the one of least norm and makes the
-// problem positive definite, so the active-set iteration ends. It moves the velocities by about
-// 1e-10 of an impulse's effect per step.
+// problem positive definite, so the active-set iteration ends. It lets a resting contact creep by
+// about 1e-10 of the velocity one step's gravity gives (an arch at rest: 1e-12 rad in 10 s).
 constexpr double kRedundancyCompliance = 1e-10;
-// After a degenerate problem, steps with the same active ends go to Gauss-Seidel directly for
-// this many steps before the direct solve is tried again.
-constexpr int kSkipAfterDegenerate = 32;
 // An end slips when its tangential velocity after the step exceeds this fraction of the
 // problem's velocity scale (the solve's own accuracy is 1e-12 of it).
 constexpr double kSlipVelocity = 1e-9;
@@ -196,6 +193,7 @@ MoreauJean::MoreauJean(const Assembly& a, const GroundMotion& g, const MoreauJea
   // rounding, and a rocking corner rises by O(h^2) per step off its pivot through the midpoint
   // positions; g h^2 is the fall of a free end in one step.
   touch_ = std::fmax(1e-9 * min_size, a.g * o.h * o.h);
+  for (const AssemblyBlock& k : a.blocks) reach_ = std::fmax(reach_, 0.5 * std::hypot(k.width, k.height));
   minv_.resize(3 * nb_);
   for (int b = 0; b < nb_; ++b) {
     minv_[3 * b] = minv_[3 * b + 1] = 1.0 / a.blocks[b].mass;
@@ -322,16 +320,21 @@ bool MoreauJean::step(double t, std::vector<double>& q, std::vector<double>& v) 
   const int n = 3 * nb_;
   const auto a = ground_acceleration(t + 0.5 * h);
   free_motion(q, v, a);
-  bool same_ends = true;
-  const int nc = assemble_ends(v, same_ends);
+  const int nc = assemble_ends(v);
   delassus(nc);
   ++stats_.steps;
   sweeps_ = 0;
   if (nc > 0) {
+    // The velocity scale of the problem's tolerances: the contacts' free velocities and the
+    // blocks' own (a whole arch swinging on its hinges: the rounding of its blocks' velocities
+    // reaches the contacts' small relative ones).
     double v_scale = asm_.g * h;
     for (int i = 0; i < nc; ++i) v_scale = std::max({v_scale, std::fabs(bn_[i]), std::fabs(bt_[i])});
+    for (int b = 0; b < nb_; ++b)
+      v_scale = std::max(
+          {v_scale, std::fabs(vfree_[3 * b]), std::fabs(vfree_[3 * b + 1]), std::fabs(vfree_[3 * b + 2]) * reach_});
     slip_velocity_ = kSlipVelocity * v_scale;
-    if (!solve(nc, v_scale, same_ends)) return false;
+    if (!solve(nc, v_scale)) return false;
   } else {
     ++stats_.empty;
   }
@@ -363,7 +366,7 @@ void MoreauJean::free_motion(const std::vector<double>& q, const std::vector<dou
   }
 }
 
-int MoreauJean::assemble_ends(const std::vector<double>& v, bool& same_ends) {
+int MoreauJean::assemble_ends(const std::vector<double>& v) {
   const double h = o_.h;
   const int np = 2 * ni_;
   const BodyPose ground{};
@@ -379,11 +382,10 @@ int MoreauJean::assemble_ends(const std::vector<double>& v, bool& same_ends) {
     // What the end did in the previous step: its friction cone and the first guess.
     const bool was_pushing = e.active && e.pushing;
     const int was_slip = was_pushing && e.slipping ? e.slip : 0;
+    const bool was_active = e.active;
     e.owner = owner_margin(lf, uf, p % 2, 0) >= 0.0 ? 0 : 1;
     e.c = contact_point(pose_of(f.lower), lf, pose_of(f.upper), uf, p % 2, e.owner);
-    const bool was_active = e.active;
     e.active = e.c.gap <= touch_;
-    same_ends = same_ends && was_active == e.active;
     e.pushing = e.slipping = false;
     e.slip = 0;
     e.pn = e.pt = 0;
@@ -422,7 +424,13 @@ int MoreauJean::assemble_ends(const std::vector<double>& v, bool& same_ends) {
     // Warm start from the end's impulses and pattern of the previous step.
     pn_[i] = e.pn_prev;
     pt_[i] = e.pt_prev;
-    cls_[i] = was_slip > 0 ? kSlipPos : was_slip < 0 ? kSlipNeg : (was_pushing || bn_[i] < 0.0) ? kStick : kSeparate;
+    // An end that was in contact keeps its class (one without an impulse stays separate: at a
+    // hinge of a redundant assembly the free motion pushes on it, the solution does not); a new
+    // one is guessed by its free motion.
+    cls_[i] = was_slip > 0                                   ? kSlipPos
+              : was_slip < 0                                 ? kSlipNeg
+              : was_pushing || (!was_active && bn_[i] < 0.0) ? kStick
+                                                             : kSeparate;
   }
   return nc;
 }
@@ -479,7 +487,6 @@ void MoreauJean::conclude(int nc, const std::vector<double>& v, const std::array
     e.ut_after = row_dot(1, vnew_);
     const double ut_before = row_dot(1, v);
     e.pushing = e.pn > 0.0;
-    // Slipping is a velocity (unique where the redundant ends' impulses are not).
     // A slip is the solution's class where the problem was solved exactly (unique with the
     // compliance); after Gauss-Seidel, a tangential speed above the scheme's noise.
     e.slipping = e.pushing && (classes_solved_ ? cls_[i] == kSlipPos || cls_[i] == kSlipNeg
@@ -498,13 +505,7 @@ void MoreauJean::conclude(int nc, const std::vector<double>& v, const std::array
                    (a[0] * 0.5 * (v[3 * b] + vnew_[3 * b]) + a[1] * 0.5 * (v[3 * b + 1] + vnew_[3 * b + 1]));
 }
 
-bool MoreauJean::solve(int nc, double v_scale, bool same_ends) {
-  // A degenerate problem (a resting face's redundant ends) usually stays so while the same ends
-  // are active: Gauss-Seidel directly for a while.
-  if (!same_ends)
-    skip_direct_ = 0;
-  else if (skip_direct_ > 0)
-    --skip_direct_;
+bool MoreauJean::solve(int nc, double v_scale) {
   // Each pass solves a Coulomb problem with one coefficient per end; an end that slips with its
   // static coefficient gets the kinetic one and the problem is solved again (at most once per
   // end: the coefficients only drop).
@@ -530,17 +531,13 @@ bool MoreauJean::solve(int nc, double v_scale, bool same_ends) {
 
 bool MoreauJean::solve_coulomb(int nc, double v_scale) {
   classes_solved_ = true;
-  if (o_.direct && skip_direct_ == 0) {
-    const DirectOutcome d = solve_direct(nc, v_scale);
-    if (d == kSolved) {
-      ++stats_.direct;
-      return true;
-    }
-    if (d == kDegenerate) skip_direct_ = kSkipAfterDegenerate;
+  if (o_.direct && solve_direct(nc, v_scale) == kSolved) {
+    ++stats_.direct;
+    return true;
   }
   // Lemke's solution as the active-set guess: its classes, solved again directly, are checked
   // against every condition (and sharpened to the direct solve's accuracy).
-  if (solve_lemke(nc) && solve_direct(nc, v_scale) == kSolved) {
+  if (o_.direct && solve_lemke(nc) && solve_direct(nc, v_scale) == kSolved) {
     ++stats_.lemke;
     return true;
   }

@@ -15,19 +15,28 @@
 // (sticking, or just coming into contact) has the static coefficient mu_s, an end that was
 // slipping the kinetic one mu_k. The step's problem is solved with these; an end that slips all
 // the same (static friction exceeded) gets mu_k and the problem is solved again (the
-// coefficients only drop, so this ends after at most one pass per end). An end slips when its
-// tangential velocity after the step is not zero (beyond 1e-9 of the problem's velocity scale):
-// a velocity, unique even where the impulses of a face's two ends are not, so a face slides or
-// sticks as a whole. A sliding end sticks again once the kinetic impulse can stop it, as the
+// coefficients only drop, so this ends after at most one pass per end). A face slips when the
+// step's solution has it on its cone's edge with a tangential velocity (after Gauss-Seidel: a
+// tangential velocity above 1e-9 of the problem's velocity scale and the compliance's creep); a
+// face slides or sticks as a whole. A sliding end sticks again once the kinetic impulse can stop it, as the
 // deformable law's slip ends where the slip rate vanishes; then mu_s holds it.
-// The contact problem of a step is solved exactly: the previous step's stick / slip / separation
-// pattern is the first guess of an active-set iteration (each guess one small dense linear solve,
-// checked against every complementarity and cone condition; a violated condition changes that
-// end's guess); where the problem is degenerate (the redundant ends of a resting face: impulses
-// not unique) or the guesses cycle, nonsmooth Gauss-Seidel (each end's 2 x 2 Coulomb problem
-// exactly, sweeps until the blocks' velocities change by less than 1e-12 of the problem's scale)
-// from the same warm start. Events (contacts opening and closing, impacts, stick and slip) are
-// known to within one step.
+// The contact problem of a step is solved exactly, for the problem with a compliance of 1e-10 of
+// the Delassus matrix's largest diagonal entry on its diagonal: an assembly's joints are
+// redundant (a face's two ends; an arch, statically indeterminate three times), so the impulses
+// of the rigid problem are not unique; the compliance picks one (near the least-norm one) and
+// makes the problem positive definite; it moves the velocities by about 1e-10 of an impulse's
+// effect. A face has one tangential impulse (its two ends lie on one line along its tangent) and
+// its Coulomb cone is the face's (|P_T| <= sum mu P_N). The solvers, in turn:
+//  1. an active-set iteration from the previous step's stick / slip / separation pattern (each
+//     guess one banded Cholesky solve, checked against every complementarity and cone condition;
+//     block changes while they reduce the violations, then Murty's rule, one at a time);
+//  2. where it does not settle within a few guesses (a joint pattern changing at once along an
+//     arch), Lemke's method on the LCP form of the problem (lemke.hpp), whose classes are solved
+//     and checked again as in 1;
+//  3. nonsmooth Gauss-Seidel (each end's 2 x 2 Coulomb problem exactly, sweeps until the blocks'
+//     velocities change by less than 1e-12 of the problem's scale) from the same warm start.
+// The run's JSON counts each (contact_solves). Events (contacts opening and closing, impacts,
+// stick and slip) are known to within one step.
 #include <array>
 #include <cstdint>
 #include <string>
@@ -101,17 +110,17 @@ class MoreauJean {
   BodyPose pose(const std::vector<double>& q, const std::vector<double>& v, int b) const;
   std::pair<Face, Face> faces(const std::vector<double>& q, int iface) const;  // lower, upper
   // The contact problem of the nc active ends (W_, bn_, bt_, mu_*): impulses into pn_, pt_ and
-  // the classes into cls_. False when Gauss-Seidel does not converge.
-  bool solve(int nc, double v_scale, bool same_ends);
+  // the classes into cls_. False when no method solves it.
+  bool solve(int nc, double v_scale);
   // The steps of step(): the free velocities and the faces at the midpoint; the active ends with
-  // their Jacobian rows and right-hand sides (returns their count; same_ends: no end opened or
-  // closed); the Delassus matrix; the new velocities, impulses, end states and works.
+  // their Jacobian rows and right-hand sides (returns their count); the Delassus matrix; the new
+  // velocities, impulses, end states and works.
   void free_motion(const std::vector<double>& q, const std::vector<double>& v, const std::array<double, 2>& a);
-  int assemble_ends(const std::vector<double>& v, bool& same_ends);
+  int assemble_ends(const std::vector<double>& v);
   void delassus(int nc);
   void conclude(int nc, const std::vector<double>& v, const std::array<double, 2>& a);
   bool solve_coulomb(int nc, double v_scale);
-  enum DirectOutcome { kSolved, kDegenerate, kFailed };
+  enum DirectOutcome { kSolved, kFailed };
   DirectOutcome solve_direct(int nc, double v_scale);
   bool solve_gauss_seidel(int nc, double v_scale);
   bool solve_lemke(int nc);
@@ -151,9 +160,10 @@ class MoreauJean {
   Lemke lemke_;
   std::vector<int> face_end_, face_of_;  // solve_lemke's faces: first active end; face of each end
   std::vector<End> ends_;
-  int sweeps_ = 0, skip_direct_ = 0;
+  int sweeps_ = 0;
   bool classes_solved_ = true;  // cls_ holds the last solution's classes (not after Gauss-Seidel)
   double touch_ = 0, slip_velocity_ = 0, compliance_ = 0;
+  double reach_ = 0;  // the largest block's half diagonal (m)
   SolveStats stats_;
 };
 
