@@ -9,6 +9,7 @@
 #include <string>
 
 #include "blockdyn/analysis/masonry/limit_analysis.hpp"
+#include "blockdyn/model/assembly/rigid_assembly_model.hpp"
 #include "blockdyn/model/assembly/assembly_params.hpp"
 #include "blockdyn/model/assembly/interface_faces.hpp"
 #include "blockdyn/model/common/polygon.hpp"
@@ -155,6 +156,29 @@ TEST(MasonryInput, BadPolygonsOverlapsAndFacesExitWithTheBlockNamed) {
   apart.interfaces.push_back({0, 1, apart.interfaces[0].law});
   EXPECT_NE(message(apart).find("no edge of block 1 (right) faces an edge of block 0"), std::string::npos)
       << message(apart);
+}
+
+TEST(MasonryGeometry, APolygonTipsWhenItsCentroidPassesOverTheEndOfItsBase) {
+  // A trapezoid (base B, top T, height h) on the ground: its centroid is h (B + 2T) / (3 (B + T))
+  // above the base, over its middle, so it tips at atan((B / 2) / y_c); standing on its short
+  // side, at atan((T / 2) / (h - y_c)). Collapse mode 1 takes these, not the bounding box's.
+  const double B = 0.4, T = 0.1, h = 0.6, yc = h * (B + 2 * T) / (3 * (B + T));
+  for (bool upside_down : {false, true}) {
+    Assembly a = make_preset("block", rigid_preset(4));
+    const std::vector<Vec2> v = upside_down ? std::vector<Vec2>{{-T / 2, 0}, {T / 2, 0}, {B / 2, h}, {-B / 2, h}}
+                                            : std::vector<Vec2>{{-B / 2, 0}, {B / 2, 0}, {T / 2, h}, {-T / 2, h}};
+    a.blocks[0] = polygon_block("trapezoid", v, 0, 2000, 0.1);
+    ASSERT_NO_THROW(validate(a));
+    const double expected = upside_down ? std::atan2(T / 2, h - yc) : std::atan2(B / 2, yc);
+    EXPECT_NEAR(tipping_angle(a, 0), expected, 1e-14) << (upside_down ? "on its short side" : "on its base");
+    a.collapse_rotation = 0.5;
+    GroundMotion none;
+    RigidAssemblyModel<1> m(a, none);
+    EXPECT_NEAR(m.rotation_limit(0), 0.5 * expected, 1e-14);
+  }
+  // A rectangle keeps atan(width / height) exactly.
+  const Assembly r = make_preset("block", rigid_preset(4));
+  EXPECT_EQ(tipping_angle(r, 0), std::atan2(r.blocks[0].width, r.blocks[0].height));
 }
 
 TEST(MasonryGeometry, ARectangleAsVerticesIsTheRectangle) {

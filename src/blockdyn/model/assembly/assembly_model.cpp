@@ -69,7 +69,7 @@ AssemblyModel<Cap>::AssemblyModel(const Assembly& a, const GroundMotion& g, doub
     I_[b] = k.inertia();
     inv_m_[b] = 1.0 / m_[b];
     inv_I_[b] = 1.0 / I_[b];
-    limit_[b] = a.collapse_rotation * std::atan2(k.width, k.height);
+    limit_[b] = a.collapse_rotation * tipping_angle(a, b);
     y0_[b] = k.y;
     min_size = std::fmin(min_size, std::fmin(k.width, k.height));
   }

@@ -103,6 +103,18 @@ InterfaceFaces ground_faces(const Assembly& a, const AssemblyInterface& f, const
 
 }  // namespace
 
+double tipping_angle(const Assembly& a, int b) {
+  const AssemblyBlock& k = a.blocks[std::size_t(b)];
+  if (k.vertices.empty()) return std::atan2(k.width, k.height);
+  for (int j = 0; j < int(a.interfaces.size()); ++j) {
+    if (a.interfaces[std::size_t(j)].upper != b) continue;
+    const LocalFace f = interface_faces(a, j).upper;  // relative to the centroid
+    const double normal = std::fabs(dot(f.c, f.n)), along = dot(f.c, f.t);
+    return std::atan2(std::fmin(std::fabs(f.half - along), std::fabs(f.half + along)), normal);
+  }
+  return std::atan2(k.width, k.height);
+}
+
 BodyPose initial_pose(const Assembly& a, int b) {
   BodyPose p;
   if (b < 0) return p;

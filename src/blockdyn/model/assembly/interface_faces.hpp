@@ -33,6 +33,13 @@ inline Face face_at(const BodyPose& p, const LocalFace& f) {
   return {c, p.q.offset(f.t.x, f.t.y), p.q.offset(f.n.x, f.n.y), f.half};
 }
 
+// The rotation of block b about an end of the face it stands on (its first interface as the upper
+// block) at which its centre of mass passes over that end: atan(width / height) for a rectangle;
+// for a polygon the smaller of the two ends' angles between the face's normal and the line from
+// the end to the centroid (a block standing on nothing: its bounding box's). Collapse mode 1
+// compares |theta| with a fraction of it.
+double tipping_angle(const Assembly& a, int b);
+
 // A block's pose at the start (-1: the ground, at rest at the origin).
 BodyPose initial_pose(const Assembly& a, int b);
 

@@ -205,6 +205,7 @@ MoreauJean::MoreauJean(const Assembly& a, const GroundMotion& g, const MoreauJea
   lower_face_.resize(ni_);
   upper_face_.resize(ni_);
   for (int i = 0; i < ni_; ++i) local_faces_.push_back(interface_faces(a, i));
+  for (int b = 0; b < nb_; ++b) limit_.push_back(a.collapse_rotation * tipping_angle(a, b));
   qm_.resize(n);
   vfree_.resize(n);
   vnew_.resize(n);
@@ -245,7 +246,7 @@ std::array<double, 2> MoreauJean::ground_acceleration(double t) const {
 }
 
 double MoreauJean::rotation_limit(int b) const {
-  return asm_.collapse_rotation * std::atan2(asm_.blocks[b].width, asm_.blocks[b].height);
+  return limit_[std::size_t(b)];
 }
 
 double MoreauJean::kinetic_energy(const std::vector<double>& v) const {

@@ -142,6 +142,7 @@ class MoreauJean {
   mutable std::vector<BodyRotation> rot_;  // measure_interfaces' scratch
   std::vector<Face> lower_face_, upper_face_;
   std::vector<InterfaceFaces> local_faces_;  // each interface's faces in its blocks' frames
+  std::vector<double> limit_;                // collapse mode 1's rotation per block
   // Interface i's faces placed with the poses of its blocks.
   Face lower_face_at(int i, const BodyPose& lower) const {
     const LocalFace& f = local_faces_[i].lower;
