@@ -9,6 +9,7 @@
 #include <cmath>
 
 #include "blockdyn/analysis/forced/overturning_spectrum.hpp"
+#include "blockdyn/analysis/forced/spectrum_table.hpp"
 #include "blockdyn/simulation/rigid_simulation.hpp"
 #include "housner_reference.hpp"
 
@@ -80,6 +81,47 @@ TEST(Spectrum, RunsOutsideTheModelAreNoSafeIsland) {
   const long above = std::count_if(amp.begin(), amp.end(), [](double a) { return a >= 0.8; });
   EXPECT_EQ(r.outside_model, above);
   EXPECT_EQ(std::count(r.scan.begin(), r.scan.end(), char(kOutsideModel)), above);
+}
+
+TEST(Spectrum, AMinimumWithRunsOutsideTheModelBelowItIsAnUpperBound) {
+  // Overturns from 0.3; the model gives up on a narrow band in the bisection's bracket, or on one
+  // scanned amplitude below the minimum: the minimum is then only an upper bound, and says so.
+  SpectrumOptions o;
+  o.durations = {1.0};
+  o.amplitude_min = 0.01;
+  o.amplitude_max = 10;
+  o.scan_points = 40;
+  o.rel_tol = 1e-9;
+  o.threads = 1;
+  const std::vector<double> amp = scan_amplitudes(o);
+  const auto first_over = std::find_if(amp.begin(), amp.end(), [](double a) { return a >= 0.3; });
+  const double lo = *(first_over - 1), hi = *first_over;
+  // A clean threshold: exact, not a bound.
+  const SpectrumRow clean = spectrum_row([](double a, double) { return a >= 0.3 ? kOverturns : kSurvives; }, o, 1.0);
+  EXPECT_FALSE(clean.upper_bound);
+  EXPECT_NEAR(*clean.min_overturning_amplitude, 0.3, 1e-9);
+  // Outside the model just below 0.3, inside the bracket: the bisection stops there.
+  const SpectrumRow in_bracket = spectrum_row(
+      [](double a, double) { return a >= 0.3    ? kOverturns
+                                    : a >= 0.29 ? kOutsideModel
+                                                : kSurvives; }, o, 1.0);
+  ASSERT_GT(0.29, lo);  // the band lies inside the scan's bracket
+  EXPECT_TRUE(in_bracket.upper_bound);
+  EXPECT_EQ(in_bracket.bisection_outside_model, 1);
+  EXPECT_GE(*in_bracket.min_overturning_amplitude, 0.3);
+  EXPECT_LE(*in_bracket.min_overturning_amplitude, hi);
+  // Outside the model at one scanned amplitude far below.
+  const double odd = amp[5];
+  const SpectrumRow below = spectrum_row(
+      [odd](double a, double) { return a == odd   ? kOutsideModel
+                                       : a >= 0.3 ? kOverturns
+                                                  : kSurvives; }, o, 1.0);
+  EXPECT_TRUE(below.upper_bound);
+  EXPECT_EQ(below.bisection_outside_model, 0);
+  EXPECT_NEAR(*below.min_overturning_amplitude, 0.3, 1e-9);
+  // The table's row carries it (resume, JSON).
+  const std::vector<std::string> cols = spectrum_columns();
+  EXPECT_EQ(cols.back(), "bisection_outside_model");
 }
 
 TEST(Spectrum, ResultsDoNotDependOnTheThreadCount) {

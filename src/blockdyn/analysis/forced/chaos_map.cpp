@@ -5,7 +5,6 @@
 #include <cstdio>
 #include <stdexcept>
 
-
 namespace blockdyn {
 
 void validate(const ChaosMapOptions& o) {
@@ -78,7 +77,8 @@ std::vector<ChaosPoint> chaos_map(const ForcedLyapunovRun& run, const ChaosMapOp
 }
 
 const std::vector<std::string>& chaos_motions() {
-  static const std::vector<std::string> m{"rest", "superstable", "periodic", "neutral", "chaotic", "collapse", "failed"};
+  static const std::vector<std::string> m{"rest",    "superstable", "periodic", "neutral",
+                                          "chaotic", "collapse",    "failed"};
   return m;
 }
 

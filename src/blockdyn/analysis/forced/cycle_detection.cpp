@@ -54,7 +54,8 @@ long count_in(const std::vector<double>& t, double a, double b) {
 // The label of every window of W periods from the transient on: periodic (the smallest period n
 // at which theta and omega return within the tolerance, with c impacts per cycle), no-impacts, or
 // non-periodic.
-std::vector<WindowLabel> window_labels(const StrobeSeries& s, const std::vector<double>& impacts, const CycleOptions& o) {
+std::vector<WindowLabel> window_labels(const StrobeSeries& s, const std::vector<double>& impacts,
+                                       const CycleOptions& o) {
   const long K = long(s.theta.size());
   const int W = o.window;
   auto tk = [&](long k) { return s.t0 + double(k) * s.period; };

@@ -24,8 +24,8 @@ json forced_lyapunov_summary(const ForcedModel& fm, const GroundMotion& g, const
   j["ground"] = to_json(g);
   if (!excitation.is_null()) j["excitation"] = excitation;
   j["integrator"] = to_json(o.integrator);
-  j["options"] = {{"method", "tangent"}, {"t_end", o.t_end}, {"t_transient", o.t_transient}, {"interval", o.interval},
-                  {"twin_d0", o.twin_d0}, {"metric", r.metric}};
+  j["options"] = {{"method", "tangent"},    {"t_end", o.t_end},     {"t_transient", o.t_transient},
+                  {"interval", o.interval}, {"twin_d0", o.twin_d0}, {"metric", r.metric}};
   j["exponent"] = num(tl.exponent);
   j["exponent_nondim"] = num(tl.exponent / fm.p);
   j["exponent_second_half"] = num(r.exponent_second_half);
@@ -38,11 +38,15 @@ json forced_lyapunov_summary(const ForcedModel& fm, const GroundMotion& g, const
   j["impacts"] = r.impacts;
   j["collapse_mode"] = r.collapse_mode ? json(*r.collapse_mode) : json(nullptr);
   j["t_failure"] = r.t_failure ? json(*r.t_failure) : json(nullptr);
-  j["saltation"] = {{"events", tl.stats.saltations}, {"one_sided", tl.stats.one_sided}, {"unmatched", tl.stats.unmatched},
-                    {"grazing", tl.stats.grazing}, {"max_gain", tl.stats.max_gain}};
+  j["saltation"] = {{"events", tl.stats.saltations},
+                    {"one_sided", tl.stats.one_sided},
+                    {"unmatched", tl.stats.unmatched},
+                    {"grazing", tl.stats.grazing},
+                    {"max_gain", tl.stats.max_gain}};
   json h = json::array();
   const std::size_t n = tl.history.size(), stride = std::max<std::size_t>(1, n / 20);
-  for (std::size_t i = stride - 1; i < n; i += stride) h.push_back({{"t", tl.history[i].t}, {"estimate", tl.history[i].estimate}});
+  for (std::size_t i = stride - 1; i < n; i += stride)
+    h.push_back({{"t", tl.history[i].t}, {"estimate", tl.history[i].estimate}});
   j["history_coarse"] = h;
   if (!r.twin.empty()) {
     // Sensitive dependence: when the two orbits' separation first exceeds 1e-3 (metric units),
@@ -60,8 +64,7 @@ json forced_lyapunov_summary(const ForcedModel& fm, const GroundMotion& g, const
     }
     tw["max_separation"] = mx;
     tw["time_to_1e-3"] = t_sep;
-    tw["predicted_time_to_1e-3"] =
-        tl.exponent > 0 ? json(std::log(1e-3 / o.twin_d0) / tl.exponent) : json(nullptr);
+    tw["predicted_time_to_1e-3"] = tl.exponent > 0 ? json(std::log(1e-3 / o.twin_d0) / tl.exponent) : json(nullptr);
     tw["note"] = r.twin_note;
     j["sensitivity"] = tw;
   }

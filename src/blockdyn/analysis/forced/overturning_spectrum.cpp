@@ -54,12 +54,19 @@ SpectrumRow spectrum_row(const OverturnTest& overturns, const SpectrumOptions& o
     while ((hi - lo) > o.rel_tol * hi) {
       const double mid = std::sqrt(lo * hi);
       const int o_mid = overturns(mid, duration);
-      row.outside_model += o_mid == kOutsideModel;
       ++row.runs;
+      if (o_mid == kOutsideModel) {
+        // The model cannot decide here: the bracket stops narrowing, hi stays an upper bound.
+        ++row.outside_model;
+        ++row.bisection_outside_model;
+        break;
+      }
       (o_mid == kOverturns ? hi : lo) = mid;
     }
     row.min_overturning_amplitude = hi;
   }
+  row.upper_bound = row.bisection_outside_model > 0;
+  for (int j = 0; j < k; ++j) row.upper_bound = row.upper_bound || over[j] == kOutsideModel;
   // Safe islands: runs of scanned amplitudes that survive (a run outside the model is no island).
   for (int j = k + 1; j < n; ++j) {
     if (over[j] != kSurvives) continue;

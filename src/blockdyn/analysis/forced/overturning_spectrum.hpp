@@ -35,7 +35,11 @@ struct SpectrumRow {
   long runs = 0;
   // Per scan amplitude (scan_amplitudes()): kOverturns, kSurvives or kOutsideModel.
   std::vector<char> scan;
-  long outside_model = 0;  // runs that left the model's validity (scan and bisection)
+  long outside_model = 0;            // runs that left the model's validity (scan and bisection)
+  long bisection_outside_model = 0;  // of which in the bisection (it then stops: 0 or 1)
+  // A run below min_overturning_amplitude left the model, so the minimum may lie lower: the value
+  // is an upper bound.
+  bool upper_bound = false;
 };
 
 // What one run says: a run that leaves the model's validity (a state the model does not

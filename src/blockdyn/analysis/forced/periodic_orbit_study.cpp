@@ -49,8 +49,9 @@ void put(std::ostream& os, const char* fmt, auto... v) {
 json orbit_study_header(const RockingForcing& f, const OrbitType& type, const ShootingOptions& so) {
   json j;
   j["run"] = run_info();
-  j["model"] = {{"model", "housner"},   {"width", f.shape.width}, {"height", f.shape.height}, {"g", f.shape.g},
-                {"restitution", f.e()}, {"alpha", f.alpha()},     {"p", f.p()}};
+  j["model"] = {{"model", "housner"}, {"width", f.shape.width}, {"height", f.shape.height},
+                {"g", f.shape.g},     {"restitution", f.e()},   {"alpha", f.alpha()},
+                {"p", f.p()}};
   j["forcing"] =
       "a_H = K_s g sin(Omega t + phi), Omega = omega p; phase = Omega t + phi mod 2 pi at an impact onto "
       "theta > 0, velocity = theta'/(alpha p) right after it";

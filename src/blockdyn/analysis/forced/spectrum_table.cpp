@@ -9,7 +9,7 @@ namespace blockdyn {
 const std::vector<std::string>& spectrum_columns() {
   static const std::vector<std::string> c{
       "duration", "min_overturning_amplitude", "linearised_rect", "safe_islands", "at_scan_floor", "islands", "runs",
-      "scan"};
+      "scan",     "bisection_outside_model"};
   return c;
 }
 
@@ -36,6 +36,7 @@ void add_spectrum_cells(const SpectrumRow& r, std::optional<double> linearised_r
   std::string scan;
   for (char c : r.scan) scan += char('0' + c);
   row.add(scan);
+  row.add(static_cast<long long>(r.bisection_outside_model));
 }
 
 SpectrumRow spectrum_row_from(const Table& t, const TableRow& r) {
@@ -60,6 +61,11 @@ SpectrumRow spectrum_row_from(const Table& t, const TableRow& r) {
     s.scan.push_back(c == '1' ? kOverturns : c == '2' ? kOutsideModel : kSurvives);
     s.outside_model += c == '2';
   }
+  s.bisection_outside_model = long(cell_integer(cell("bisection_outside_model")));
+  s.outside_model += s.bisection_outside_model;
+  s.upper_bound = s.bisection_outside_model > 0;
+  for (std::size_t j = 0; j < s.scan.size() && s.scan[j] != kOverturns; ++j)
+    s.upper_bound = s.upper_bound || s.scan[j] == kOutsideModel;
   return s;
 }
 
@@ -72,6 +78,8 @@ SpectrumPoints spectrum_points(const Table& t, PulseShape pulse, double alpha, d
     x["duration"] = r.duration;
     x["min_overturning_amplitude"] = r.min_overturning_amplitude ? json(*r.min_overturning_amplitude) : json(nullptr);
     x["at_scan_floor"] = r.at_scan_floor;
+    // true: a run below it left the model's validity, so the minimum may lie lower.
+    x["min_overturning_upper_bound"] = r.upper_bound;
     if (pulse == PulseShape::Rect) x["linearised_rect"] = rect_pulse_overturning_linear(alpha, p, r.duration);
     json isl = json::array();
     for (const SpectrumIsland& i : r.safe_islands) isl.push_back({i.from, i.to});

@@ -9,7 +9,8 @@
 namespace blockdyn {
 
 void validate(const SurvivalOptions& o) {
-  if (o.excitation != "harmonic" && o.excitation != "half-sine" && o.excitation != "half-cosine" && o.excitation != "rect")
+  if (o.excitation != "harmonic" && o.excitation != "half-sine" && o.excitation != "half-cosine" &&
+      o.excitation != "rect")
     throw std::invalid_argument("excitation = '" + o.excitation + "' must be harmonic, half-sine, half-cosine or rect");
   for (double b : o.betas)
     if (!(b > 0 && b <= 1e3)) throw std::invalid_argument("betas: each must be in (0, 1000]");
@@ -39,9 +40,9 @@ GroundMotion survival_motion(const SurvivalOptions& o, double beta, double omega
   } else {
     g.horizontal.amplitude = beta * alpha;
     g.horizontal.duration = M_PI / Omega;  // half a forcing period
-    g.horizontal.pulse = o.excitation == "half-sine" ? PulseShape::HalfSine
+    g.horizontal.pulse = o.excitation == "half-sine"     ? PulseShape::HalfSine
                          : o.excitation == "half-cosine" ? PulseShape::HalfCosine
-                                                          : PulseShape::Rect;
+                                                         : PulseShape::Rect;
   }
   return g;
 }
@@ -49,7 +50,8 @@ GroundMotion survival_motion(const SurvivalOptions& o, double beta, double omega
 std::string t_star_class(const SurvivalOptions& o, double t) {
   static const char* names[] = {"<=5 s", "short", "medium", "long", "very long"};
   for (std::size_t k = 0; k < o.t_star_classes.size() && k < 4; ++k)
-    if (t <= o.t_star_classes[k]) return k == 0 ? "<=" + std::to_string(int(std::lround(o.t_star_classes[0]))) + " s" : names[k];
+    if (t <= o.t_star_classes[k])
+      return k == 0 ? "<=" + std::to_string(int(std::lround(o.t_star_classes[0]))) + " s" : names[k];
   return names[4];
 }
 
@@ -67,10 +69,14 @@ SurvivalPoint survival_point(const SurvivalRun& run, const SurvivalOptions& o, d
   pt.collapse_mode = r.collapse_mode;
   pt.t_failure = r.t_failure;
   pt.cycle = r.cycle;
-  if (r.invalid) pt.motion = "invalid";
-  else if (r.collapse_mode) pt.motion = "collapse";
-  else if (r.moved) pt.motion = "stable";
-  else pt.motion = "rest";
+  if (r.invalid)
+    pt.motion = "invalid";
+  else if (r.collapse_mode)
+    pt.motion = "collapse";
+  else if (r.moved)
+    pt.motion = "stable";
+  else
+    pt.motion = "rest";
   if (r.collapse_mode && r.t_failure) pt.t_star_class = t_star_class(o, *r.t_failure);
   return pt;
 }

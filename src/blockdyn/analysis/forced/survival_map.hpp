@@ -18,11 +18,11 @@ namespace blockdyn {
 
 struct SurvivalOptions {
   std::string excitation = "harmonic";  // harmonic | half-sine | half-cosine | rect
-  double phase = 0.0;                    // rad, of cos(Omega t + phase)
+  double phase = 0.0;                   // rad, of cos(Omega t + phase)
   double beta_min = 0.5, beta_max = 5, omega_min = 1, omega_max = 20;
   int beta_points = 10, omega_points = 10;
-  std::vector<double> betas;             // when given: these betas instead of the uniform range
-  double t_end = 20;                     // s; with periods > 0: that many forcing periods instead
+  std::vector<double> betas;  // when given: these betas instead of the uniform range
+  double t_end = 20;          // s; with periods > 0: that many forcing periods instead
   double periods = 0;
   std::vector<double> t_star_classes{5, 30, 100, 300};  // upper bounds of the t* classes (s)
   int threads = 0;
@@ -36,8 +36,8 @@ struct SurvivalPoint {
   std::optional<double> t_failure;
   std::string t_star_class;  // "<=5 s", "short", "medium", "long", "very long" (collapse only)
   double max_abs_rotation = 0;
-  double max_sliding = 0;    // m (assemblies: the largest slip between blocks)
-  std::string cycle;         // harmonic: the dominant (m, n) cycle label of the run, "" if none
+  double max_sliding = 0;  // m (assemblies: the largest slip between blocks)
+  std::string cycle;       // harmonic: the dominant (m, n) cycle label of the run, "" if none
 };
 
 struct SurvivalOutcome {

@@ -4,8 +4,9 @@
 namespace blockdyn {
 
 const std::vector<std::string>& survival_columns() {
-  static const std::vector<std::string> c{"beta",         "omega",            "motion",      "collapse_mode", "t_failure",
-                                          "t_star_class", "max_abs_rotation", "max_sliding", "cycle"};
+  static const std::vector<std::string> c{"beta",      "omega",        "motion",           "collapse_mode",
+                                          "t_failure", "t_star_class", "max_abs_rotation", "max_sliding",
+                                          "cycle"};
   return c;
 }
 
@@ -13,10 +14,14 @@ void add_survival_cells(const SurvivalPoint& p, RowBuilder& row) {
   row.add(p.beta);
   row.add(p.omega);
   row.add(csv_escape(p.motion));
-  if (p.collapse_mode) row.add(static_cast<long long>(*p.collapse_mode));
-  else row.empty();
-  if (p.t_failure) row.add(*p.t_failure);
-  else row.empty();
+  if (p.collapse_mode)
+    row.add(static_cast<long long>(*p.collapse_mode));
+  else
+    row.empty();
+  if (p.t_failure)
+    row.add(*p.t_failure);
+  else
+    row.empty();
   row.add(csv_escape(p.t_star_class));
   row.add(p.max_abs_rotation);
   row.add(p.max_sliding);
