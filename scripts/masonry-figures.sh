@@ -33,6 +33,9 @@ run $B limit-analysis --preset arch --voussoirs 9 --thickness-ratio 0.15 --json-
 run $B spectrum --model assembly --preset arch --voussoirs 9 --thickness-ratio 0.15 --pulse half-sine \
   --durations 0.1,0.2,0.5,1,2 --t-after 2 --scan-points 16 --amplitude-min 0.05 --amplitude-max 3 \
   --json-out "$D/spectrum_arch.json" --quiet --plot "$F/masonry_arch_spectrum.png"
+run $B spectrum --model assembly --preset arch --voussoirs 9 --thickness-ratio 0.15 --contact rigid --pulse half-sine \
+  --durations 0.1,0.2,0.5,1,2 --t-after 2 --scan-points 16 --amplitude-min 0.05 --amplitude-max 3 \
+  --json-out "$D/spectrum_arch_rigid.json" --quiet
 for c in deformable rigid; do
   run $B spectrum --model assembly --preset trilith --contact $c --pulse half-sine --durations 0.1,0.2,0.5,1,2 \
     --t-after 2 --scan-points 16 --amplitude-min 0.05 --amplitude-max 3 --json-out "$D/spectrum_trilith_$c.json" --quiet

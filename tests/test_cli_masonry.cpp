@@ -104,6 +104,37 @@ TEST(CliMasonry, PolygonFilesInTheStaticsAndTheDynamics) {
   EXPECT_EQ(a["assembly"]["blocks"].size(), 7u);
 }
 
+TEST(CliMasonry, ATwentyVoussoirRigidArchRunsByTimeSteppingAndSaysHow) {
+  TmpDir d("rigid_arch");
+  // Above 8 blocks the rigid law's default scheme is time-stepping; the JSON names it and counts
+  // the contact solves. 0.3 g at 1 Hz brings the arch down.
+  const json a =
+      cli_json({"simulate", "--model", "assembly", "--preset", "arch", "--voussoirs", "20", "--contact", "rigid",
+                "--ground-h-amplitude", "0.3", "--ground-h-frequency", "1", "--t-end", "2", "--json"},
+               d.path);
+  EXPECT_EQ(a["scheme"], "time-stepping");
+  EXPECT_EQ(a["status"], "collapsed");
+  EXPECT_EQ(a["collapse_mode"], 1);
+  const json& c = a["contact_solves"];
+  EXPECT_GT(c["direct"].get<long>(), 7000);
+  EXPECT_EQ(c["gauss_seidel"].get<long>(), 0);
+  for (const char* k : {"lemke", "active_set_iterations", "gauss_seidel_sweeps"}) EXPECT_TRUE(c.contains(k)) << k;
+  // Up to 8 blocks the default stays event-driven.
+  const json b = cli_json(
+      {"assembly", "--preset", "arch", "--voussoirs", "7", "--contact", "rigid", "--t-end", "0.1", "--json"}, d.path);
+  EXPECT_EQ(b["scheme"], "event-driven");
+  // The integrator's tolerances belong to the event-driven scheme: refused where the default is
+  // time-stepping, accepted once event-driven is asked for.
+  const auto r =
+      run_cli({"assembly", "--preset", "arch", "--voussoirs", "12", "--contact", "rigid", "--rtol", "1e-9"}, d.path);
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("--rtol belongs to --scheme event-driven"), std::string::npos) << r.err;
+  const auto ok = run_cli({"assembly", "--preset", "arch", "--voussoirs", "12", "--contact", "rigid", "--scheme",
+                           "event-driven", "--rtol", "1e-9", "--t-end", "0.05", "--quiet"},
+                          d.path);
+  EXPECT_EQ(ok.code, 0) << ok.err;
+}
+
 TEST(CliMasonry, BadInputIsAUsageErrorNamingTheBlock) {
   TmpDir d("polygon_bad");
   std::string stack = kStack;

@@ -221,6 +221,7 @@ MoreauJean::MoreauJean(const Assembly& a, const GroundMotion& g, const MoreauJea
   face_end_.resize(np);
   face_of_.resize(np);
   next_.resize(np);
+  flips_.resize(np);
   for (auto* x : {&bn_, &bt_, &mu_, &mu_k_, &pn_, &pt_, &un_shift_}) x->resize(np);
   for (auto* x : {&ub_, &lb_, &active_, &col_n_, &col_t_}) x->resize(np);
   for (auto* x : {&ju_, &jl_, &mju_, &mjl_}) x->resize(np);
@@ -245,9 +246,7 @@ std::array<double, 2> MoreauJean::ground_acceleration(double t) const {
   return {forced_ ? ground_.ah(t) : 0.0, forced_ ? ground_.av(t) : 0.0};
 }
 
-double MoreauJean::rotation_limit(int b) const {
-  return limit_[std::size_t(b)];
-}
+double MoreauJean::rotation_limit(int b) const { return limit_[std::size_t(b)]; }
 
 double MoreauJean::kinetic_energy(const std::vector<double>& v) const {
   double e = 0;
@@ -646,6 +645,7 @@ MoreauJean::DirectOutcome MoreauJean::solve_direct(int nc, double v_scale) {
   double diag_max = 0;
   for (int k = 0; k < 2 * nc; ++k) diag_max = std::max(diag_max, W_[std::size_t(k) * (S + 1)]);
   int best = nc + 1, stalls = 0;
+  for (int i = 0; i < nc; ++i) flips_[i] = 0;
   const int max_iterations = kMaxActiveSetIterations;
   for (int iter = 0; iter < max_iterations; ++iter) {
     ++stats_.active_set_iterations;
@@ -727,7 +727,10 @@ MoreauJean::DirectOutcome MoreauJean::solve_direct(int nc, double v_scale) {
           const double pt = pt_[i] + (j >= 0 ? pt_[j] : 0.0);
           const double cap = mu_[i] * pn_[i] + (j >= 0 ? mu_[j] * pn_[j] : 0.0);
           if (pn_[i] < -p_tol) {
-            next_[i] = kSeparate, violated = true;
+            // Sticking pulls and separating penetrates (the end has gone back and forth): what
+            // remains is sliding at a vanishing normal impulse, against the tangential one.
+            next_[i] = flips_[i] >= 2 && j < 0 ? (pt > 0 ? kSlipNeg : kSlipPos) : kSeparate;
+            violated = true;
           } else if (std::fabs(pt) > cap + p_tol && (j < 0 || pn_[j] >= -p_tol)) {
             // Outside the cone: the face slips against the impulse's tendency.
             next_[i] = pt > 0 ? kSlipNeg : kSlipPos;
@@ -763,6 +766,7 @@ MoreauJean::DirectOutcome MoreauJean::solve_direct(int nc, double v_scale) {
       best = violations, stalls = 0;
     else
       ++stalls;
+    for (int i = 0; i < nc; ++i) flips_[i] += next_[i] != cls_[i];
     if (stalls <= kBlockPivotStalls) {
       for (int i = 0; i < nc; ++i) cls_[i] = next_[i];
     } else {

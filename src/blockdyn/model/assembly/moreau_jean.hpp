@@ -157,6 +157,7 @@ class MoreauJean {
   std::vector<double> A_, rhs_;  // the active-set iteration's linear system
   std::vector<int> col_n_, col_t_, pivots_;
   std::vector<Class> cls_, next_;
+  std::vector<int> flips_;                     // solve_direct: class changes of each end
   std::vector<double> lcp_m_, lcp_q_, lcp_z_;  // the step's problem as one LCP (solve_lemke)
   Lemke lemke_;
   std::vector<int> face_end_, face_of_;  // solve_lemke's faces: first active end; face of each end
