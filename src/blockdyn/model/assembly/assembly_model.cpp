@@ -2,6 +2,8 @@
 #include "blockdyn/model/assembly/assembly_model.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 #include <stdexcept>
 
 namespace blockdyn {
@@ -62,9 +64,10 @@ AssemblyModel<Cap>::AssemblyModel(const Assembly& a, const GroundMotion& g, doub
   if (nb_ < 1 || nb_ > Cap || ni_ < 1 || ni_ > kIfaces)
     throw std::invalid_argument("assembly: " + std::to_string(nb_) + " blocks and " + std::to_string(ni_) +
                                 " interfaces do not fit this model's capacity");
-  double min_size = INFINITY;
+  double min_size = INFINITY, reach = 0.0;
   for (int b = 0; b < nb_; ++b) {
     const AssemblyBlock& k = a.blocks[b];
+    reach = std::fmax(reach, std::fabs(k.x) + std::fabs(k.y) + std::hypot(k.width, k.height));
     m_[b] = k.mass;
     I_[b] = k.inertia();
     inv_m_[b] = 1.0 / m_[b];
@@ -90,6 +93,8 @@ AssemblyModel<Cap>::AssemblyModel(const Assembly& a, const GroundMotion& g, doub
     l.mu_k = f.law.mu_k;
     l.no_slip = f.law.mu_s >= kNoSlipFriction;
     l.stick_band = l.kt * kStickBand;
+    // 64 ulps of the coordinates' magnitude as a penetration: below what the geometry resolves.
+    l.close_band = l.kn * 64.0 * std::numeric_limits<double>::epsilon() * reach;
     // Calibration mass: the upper block's share on this interface, dropped flat on its two points.
     const double m_share = m_[f.upper] / std::max(1, supports[f.upper]);
     l.cn = f.law.damping >= 0 ? f.law.damping : damping_for_restitution(f.law.restitution, m_share, l.kn);
@@ -352,7 +357,7 @@ void AssemblyModel<Cap>::event_values(const Mode& m, const State& z, const Geome
     const PointLaw& l = law_[i];
     const PointState s = m.point[p];
     if (!is_closed(s)) {
-      g[ev_normal(p)] = closing_margin(l, pf.d, pf.d_rate);
+      g[ev_normal(p)] = closing_margin(l, pf.d, pf.d_rate, m.held[p]);
     } else {
       g[ev_normal(p)] = pf.fn;
       g[ev_tangent(p)] = s == PointState::Stick ? sticking_margin(l, pf.fn, z[iu(p)])
@@ -372,6 +377,8 @@ void AssemblyModel<Cap>::event_values(const Mode& m, const State& z, const Geome
 
 template <int Cap>
 void AssemblyModel<Cap>::complete(const Mode& m, State& z) const {
+  for (int p = 0; p < 2 * ni_; ++p)
+    if (!is_closed(m.point[p])) z[iu(p)] = 0.0;  // an open point has no tangential spring
   if (!any_slip(m)) return;
   Geometry geo;
   geometry(z, geo);
@@ -384,13 +391,36 @@ void AssemblyModel<Cap>::complete(const Mode& m, State& z) const {
 }
 
 template <int Cap>
+std::optional<Transition<typename AssemblyModel<Cap>::Mode>> AssemblyModel<Cap>::resolve_chatter(double, const Mode& m,
+                                                                                                 const State& z) const {
+  Geometry geo;
+  geometry(z, geo);
+  Transition<Mode> tr;
+  tr.next = m;
+  tr.kind = kAsmOpen;
+  bool any = false;
+  for (int p = 0; p < 2 * ni_; ++p) {
+    if (m.held[p]) continue;
+    Mode probe = m;
+    probe.point[p] = PointState::Stick;
+    const PointForce pf = point_force(probe, z, geo, p);
+    if (std::fabs(normal_force(law_[p / 2], pf.d, pf.d_rate)) > law_[p / 2].close_band) continue;
+    tr.next.point[p] = PointState::Open;
+    tr.next.held[p] = 1;
+    any = true;
+  }
+  if (!any) return std::nullopt;
+  return tr;  // complete() releases the opened points' tangential springs
+}
+
+template <int Cap>
 PointState AssemblyModel<Cap>::consistent_state(const Mode& m, const State& z, const Geometry& g, int p) const {
   const PointLaw& l = law_[p / 2];
   Mode probe = m;
   probe.point[p] = PointState::Stick;
   const PointForce pf = point_force(probe, z, g, p);
   const PointState closed = l.frictionless() ? PointState::SlipPos : PointState::Stick;
-  if (!is_closed(m.point[p])) return closing_margin(l, pf.d, pf.d_rate) < 0.0 ? closed : PointState::Open;
+  if (!is_closed(m.point[p])) return closing_margin(l, pf.d, pf.d_rate, m.held[p]) < 0.0 ? closed : PointState::Open;
   if (pf.fn <= 0.0) return PointState::Open;
   if (m.point[p] == PointState::Stick && sticking_margin(l, pf.fn, z[iu(p)]) < 0.0)
     return z[iu(p)] > 0 ? PointState::SlipPos : PointState::SlipNeg;
@@ -415,6 +445,7 @@ Transition<typename AssemblyModel<Cap>::Mode> AssemblyModel<Cap>::transition(dou
       tr.kind = kAsmOpen;
     } else {
       tr.next.point[p] = law_[p / 2].frictionless() ? PointState::SlipPos : PointState::Stick;
+      tr.next.held[p] = 0;
       tr.kind = kAsmClose;
     }
     z[iu(p)] = 0.0;

@@ -54,6 +54,7 @@ struct AssemblyMode {
   std::array<PointState, kPoints> point{};
   std::array<std::uint8_t, kPoints> owner{};  // 0: the upper block's corner, 1: the lower's
   std::array<std::int8_t, Cap> side{};        // sign of each block's rotation (+1 for 0)
+  std::array<std::uint8_t, kPoints> held{};   // open points held open after chatter (PointLaw::close_band)
 };
 
 template <int Cap>
@@ -110,7 +111,10 @@ class AssemblyModel {
                    std::array<double, kNumEvents>& g_rate) const;
   void complete(const Mode& m, State& z) const;
   Transition<Mode> transition(double t, const Mode& m, State& z, int event) const;
-  std::optional<Transition<Mode>> resolve_chatter(double, const Mode&, const State&) const { return std::nullopt; }
+  // Zero-time open/close chatter of points whose force is zero to rounding: they are held open
+  // until their force would push beyond the rounding (PointLaw::close_band); nullopt if no point
+  // is such.
+  std::optional<Transition<Mode>> resolve_chatter(double t, const Mode& m, const State& z) const;
   double step_hint(const Mode&) const { return step_hint_; }
   State abs_tol_scale() const;
   double next_breakpoint(double t) const { return forced_ ? ground_.next_break(t) : INFINITY; }

@@ -73,15 +73,15 @@ inline double contact_gap(const Face& lower, const Face& upper, int end, int own
 // The contact point of an end: the corner P of block A on the face of block B.
 struct FaceContact {
   Vec2 P, n, t;
-  double gap = 0;     // (P - face centre) . n; < 0 is interpenetration
-  double gap_rate = 0;  // exactly d(gap)/dt
+  double gap = 0;        // (P - face centre) . n; < 0 is interpenetration
+  double gap_rate = 0;   // exactly d(gap)/dt
   double slip_rate = 0;  // tangential relative velocity of A's material point against B's
   Vec2 v_rel;
   bool corner_of_upper = true;
 };
 
 inline FaceContact contact_point(const BodyPose& lower_pose, const Face& lower, const BodyPose& upper_pose,
-                                  const Face& upper, int end, int owner) {
+                                 const Face& upper, int end, int owner) {
   const int side = end == 0 ? -1 : +1;
   FaceContact c;
   c.corner_of_upper = owner == 0;

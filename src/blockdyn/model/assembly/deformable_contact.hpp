@@ -30,16 +30,22 @@ struct PointLaw {
   // zero slope (equal static and kinetic friction) and the integration error of the spring would
   // decide alone whether it slips again at once (zero-time stick/slip chatter).
   double stick_band = 0.0;
+  // Hysteresis of the open-to-closed switch (N) of a point held open after zero-time chatter: it
+  // closes once its force would push by this much, the rounding of k_N d at the blocks'
+  // coordinates. (A point that opened where its force fell to zero, penetrating by rounding and
+  // separating too slowly to leave, otherwise closes and opens again at one instant.)
+  double close_band = 0.0;
   // mu_s = 0: the point never sticks; it stays in slip (no tangential force) while closed.
   bool frictionless() const { return mu_s == 0.0; }
 };
 
 inline double normal_force(const PointLaw& l, double d, double d_rate) { return l.kn * d + l.cn * d_rate; }
 
-// Open points: >= 0 while the point stays open (negative once d > 0 and the force is pushing).
-inline double closing_margin(const PointLaw& l, double d, double d_rate) {
+// Open points: >= 0 while the point stays open (negative once d > 0 and the force is pushing; by
+// more than the band for a point held open).
+inline double closing_margin(const PointLaw& l, double d, double d_rate, bool held = false) {
   const double f = normal_force(l, d, d_rate);
-  return std::fmax(-l.kn * d, -f);
+  return std::fmax(-l.kn * d, -f) + (held ? l.close_band : 0.0);
 }
 
 // Sticking points: >= 0 while the spring is inside the static cone.

@@ -29,10 +29,10 @@ struct StaticProblem {
 };
 
 struct LoadMultiplier {
-  bool feasible = false;          // false: no distribution holds the blocks even without a horizontal load
-  double lambda = 0;              // largest a_H / (g + a_V) in the direction asked (capped at 1e6)
-  std::vector<double> mechanism;  // virtual velocity (vx, vy, omega) per block, moving with the load
-  std::vector<double> normal;     // a distribution of forces at the limit: N per contact (>= 0)
+  bool feasible = false;           // false: no distribution holds the blocks even without a horizontal load
+  double lambda = 0;               // largest a_H / (g + a_V) in the direction asked (capped at 1e6)
+  std::vector<double> mechanism;   // virtual velocity (vx, vy, omega) per block, moving with the load
+  std::vector<double> normal;      // a distribution of forces at the limit: N per contact (>= 0)
   std::vector<double> tangential;  // and T per interface, on the upper block along its t
 };
 
