@@ -177,5 +177,9 @@ def test_limit_analysis_and_the_arch_from_python():
     fall = blockdyn.assembly(preset="arch", voussoirs=15, thickness_ratio=0.9 * t, contact="rigid", t_end=3)
     stand = blockdyn.assembly(preset="arch", voussoirs=15, thickness_ratio=1.1 * t, contact="rigid", t_end=3)
     assert fall.summary["motion"] == "collapse" and stand.summary["motion"] == "rest"
+    # 15 voussoirs run by time-stepping (the rigid law's default above 8 blocks), every contact
+    # problem solved exactly.
+    assert stand.summary["scheme"] == "time-stepping"
+    assert stand.summary["contact_solves"]["gauss_seidel"] == 0
     with pytest.raises(ValueError, match="direction"):
         blockdyn.limit_analysis(preset="block", direction=2)
