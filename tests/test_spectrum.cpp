@@ -60,12 +60,9 @@ TEST(Spectrum, FindsTheLowestBandAndTheSafeIslandAbove) {
   EXPECT_FALSE(overturning_spectrum(none, o)[0].min_overturning_amplitude);
 }
 
-TEST(Spectrum, RunsOutsideTheModelAreNoSafeIsland) {
-  // Overturns from 0.3 d; above 0.8 d the model gives up (an unsolvable contact problem): those
-  // runs neither survive nor overturn, and no safe island may be claimed there.
-  const OverturnTest t = [](double a, double d) {
-    return a >= 0.8 * d ? kOutsideModel : a >= 0.3 * d ? kOverturns : kSurvives;
-  };
+namespace {
+// One duration (1 s), 40 amplitudes from 0.01 g to 10 g, bisection to 1e-9, one thread.
+SpectrumOptions one_duration_fine_scan() {
   SpectrumOptions o;
   o.durations = {1.0};
   o.amplitude_min = 0.01;
@@ -73,6 +70,17 @@ TEST(Spectrum, RunsOutsideTheModelAreNoSafeIsland) {
   o.scan_points = 40;
   o.rel_tol = 1e-9;
   o.threads = 1;
+  return o;
+}
+}  // namespace
+
+TEST(Spectrum, RunsOutsideTheModelAreNoSafeIsland) {
+  // Overturns from 0.3 d; above 0.8 d the model gives up (an unsolvable contact problem): those
+  // runs neither survive nor overturn, and no safe island may be claimed there.
+  const OverturnTest t = [](double a, double d) {
+    return a >= 0.8 * d ? kOutsideModel : a >= 0.3 * d ? kOverturns : kSurvives;
+  };
+  const SpectrumOptions o = one_duration_fine_scan();
   const SpectrumRow r = overturning_spectrum(t, o)[0];
   ASSERT_TRUE(r.min_overturning_amplitude);
   EXPECT_NEAR(*r.min_overturning_amplitude, 0.3, 1e-9);
@@ -86,13 +94,7 @@ TEST(Spectrum, RunsOutsideTheModelAreNoSafeIsland) {
 TEST(Spectrum, AMinimumWithRunsOutsideTheModelBelowItIsAnUpperBound) {
   // Overturns from 0.3; the model gives up on a narrow band in the bisection's bracket, or on one
   // scanned amplitude below the minimum: the minimum is then only an upper bound, and says so.
-  SpectrumOptions o;
-  o.durations = {1.0};
-  o.amplitude_min = 0.01;
-  o.amplitude_max = 10;
-  o.scan_points = 40;
-  o.rel_tol = 1e-9;
-  o.threads = 1;
+  const SpectrumOptions o = one_duration_fine_scan();
   const std::vector<double> amp = scan_amplitudes(o);
   const auto first_over = std::find_if(amp.begin(), amp.end(), [](double a) { return a >= 0.3; });
   const double lo = *(first_over - 1), hi = *first_over;
