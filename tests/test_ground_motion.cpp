@@ -77,7 +77,10 @@ TEST(Accelerogram, MalformedFilesNameTheProblem) {
   EXPECT_NE(error_of([&] { parse_at2("h1\nh2\nh3\nno counts here\n0.1\n", "t.AT2"); }).find("NPTS"), std::string::npos);
   EXPECT_NE(error_of([&] { parse_at2("h1\nh2\n", "t.AT2"); }).find("truncated"), std::string::npos);
   EXPECT_NE(error_of([&] { parse_at2("h1\nh2\nh3\nNPTS= 2, DT= -0.1\n0 1\n", "t.AT2"); }).find("DT"), std::string::npos);
-  EXPECT_NE(error_of([&] { parse_at2(hdr + "0.1 0.2 nan 0.4 0.5\n", "t.AT2"); }).find("sample 3"), std::string::npos);
+  EXPECT_NE(error_of([&] { parse_at2(hdr + "0.1 0.2 nan 0.4 0.5\n", "t.AT2"); }).find("t.AT2:5: 'nan' is not a number"),
+            std::string::npos);
+  EXPECT_NE(error_of([&] { parse_at2(hdr + "0.1 0.2 200 0.4 0.5\n", "t.AT2"); }).find("sample 3 = 200"),
+            std::string::npos);
 }
 
 TEST(Accelerogram, TwoColumnCsv) {

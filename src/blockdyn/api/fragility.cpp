@@ -186,8 +186,11 @@ GridStudy fragility_grid(const Settings& given, const std::string& output) {
     if (!(suite->im.back() > 0))
       throw Invalid("records: '" + f + "' has " + im + " = 0: it cannot be scaled to a level");
   }
+  json digests = json::array();
+  for (const auto& r : suite->records) digests.push_back(r->digest());
   const json definition = {{"model", fm->description},
                            {"records", suite->files},
+                           {"record_digests", digests},
                            {"im", im},
                            {"levels", levels},
                            {"t_end", t_fixed ? json(*t_fixed) : json(nullptr)},

@@ -16,13 +16,13 @@
 namespace blockdyn {
 
 const std::vector<StudyOption>& motion_generate_options();
-// Checks every option first (std::invalid_argument naming it), then writes the records and
-// motions.json into `out` (created if missing; an existing motions.json needs `overwrite`) and
-// returns that document. `progress` (may be empty) is called as records complete (done of
+// Checks every option first (std::invalid_argument naming it; the targets must fit the record, the
+// work and the files a stated budget), then writes the records and motions.json into `out`
+// (created if missing; an existing suite needs `overwrite`, which removes its records) and returns
+// that document. Records are written under temporary names and renamed when all are made: an
+// error leaves the directory as it was. `progress` (may be empty) is called as records complete (done of
 // total), from one thread at a time.
 nlohmann::ordered_json motion_generate(const Settings& s,
                                        const std::function<void(std::size_t, std::size_t)>& progress = {});
-// A PEER .AT2 text of samples a (g) at spacing dt.
-std::string at2_text(const std::vector<double>& a, double dt, const std::string& title);
 
 }  // namespace blockdyn

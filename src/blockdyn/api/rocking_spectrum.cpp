@@ -136,6 +136,7 @@ GridStudy rocking_grid(const Settings& given, const std::string& output) {
   const ForcedModel first = forced_block_model(block_of(base, alpha, ax.p.front()), housner);
   const json definition = {{"model", model},
                            {"record", rec->source()},
+                           {"record_digest", rec->digest()},
                            {"alpha", alpha},
                            {"p", ax.p},
                            {"scales", ax.scales},

@@ -8,6 +8,10 @@
 
 namespace blockdyn {
 
+namespace {
+std::string canonical_alias(const std::string& a) { return Settings::canonical(a); }
+}  // namespace
+
 std::string Settings::canonical(std::string_view name) {
   std::string s(name);
   while (!s.empty() && s.front() == '-') s.erase(s.begin());
@@ -114,8 +118,28 @@ void Settings::require_known(const std::vector<std::string>& known, const std::s
 void Settings::require_known(const std::vector<StudyOption>& specs, const std::vector<std::string>& extra,
                              const std::string& what) const {
   std::vector<std::string> known = extra;
-  for (const StudyOption& o : specs) known.push_back(o.name);
+  for (const StudyOption& o : specs) {
+    known.push_back(o.name);
+    known.insert(known.end(), o.aliases.begin(), o.aliases.end());
+  }
   require_known(known, what);
+}
+
+Settings with_canonical_names(const Settings& s, const std::vector<StudyOption>& specs) {
+  Settings out;
+  for (const std::string& n : s.names()) {
+    std::string name = n;
+    for (const StudyOption& o : specs)
+      for (const std::string& a : o.aliases)
+        if (canonical_alias(a) == n) {
+          if (s.has(o.name)) throw std::invalid_argument("--" + n + " and --" + o.name + ": the same option, give one");
+          name = o.name;
+        }
+    for (const std::string& v : s.values(n)) out.add(name, v);
+    if (s.values(n).empty() && !s.record(n)) out.add(name, "true");
+    if (const auto r = s.record(n)) out.add_record(name, r);
+  }
+  return out;
 }
 
 void apply_integrator_settings(const Settings& s, IntegratorOptions& o) {

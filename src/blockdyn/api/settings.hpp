@@ -60,6 +60,10 @@ class Settings {
   std::map<std::string, Entry, std::less<>> entries_;
 };
 
+// The settings with every alias an option's description gives renamed to the option's name
+// (--d595 -> d5-95); both given is an error naming them.
+Settings with_canonical_names(const Settings& s, const std::vector<StudyOption>& specs);
+
 // --rtol, --atol and --method (auto, dopri5, dop853) where given; std::invalid_argument naming
 // the option. Their ranges are checked with the run's options (simulation/run_options.hpp).
 void apply_integrator_settings(const Settings& s, IntegratorOptions& o);

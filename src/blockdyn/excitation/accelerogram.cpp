@@ -1,6 +1,9 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "blockdyn/excitation/accelerogram.hpp"
 
+#include "blockdyn/base/content_hash.hpp"
+#include "blockdyn/base/number_text.hpp"
+
 #include <algorithm>
 #include <cctype>
 #include <cerrno>
@@ -20,16 +23,8 @@ namespace {
   throw std::invalid_argument(source + ": " + what);
 }
 
-// Parses one number (Fortran 'D' exponents accepted); false if tok is not entirely a number.
-bool to_number(std::string tok, double& v) {
-  if (tok.empty()) return false;
-  for (char& c : tok)
-    if (c == 'D' || c == 'd') c = 'E';
-  char* end = nullptr;
-  errno = 0;
-  v = std::strtod(tok.c_str(), &end);
-  return end == tok.c_str() + tok.size() && errno != ERANGE;
-}
+// One decimal number (Fortran 'D' exponents accepted; hex, inf and nan refused).
+bool to_number(const std::string& tok, double& v) { return parse_decimal(tok, v); }
 
 std::vector<std::string> split_lines(const std::string& text) {
   std::vector<std::string> lines;
@@ -90,12 +85,83 @@ void parse_at2_counts(const std::string& line, const std::string& where, long& n
     fail(where, "line 4 must give NPTS and DT (e.g. 'NPTS=  7807, DT=   .00500 SEC'), found '" + line + "'");
   }
   if (!(n >= 2) || n != std::floor(n) || n > double(kMaxRecordSamples))
-    fail(where, "NPTS = " + std::to_string(n) + " is out of range: must be an integer in [2, " +
+    fail(where, "NPTS = " + number_text(n) + " is out of range: must be an integer in [2, " +
                     std::to_string(kMaxRecordSamples) + "]");
-  if (!(d > 0) || !std::isfinite(d) || d > 10.0)
-    fail(where, "DT = " + std::to_string(d) + " is out of range: must be in (0, 10] s");
+  if (!(d >= kMinRecordDt) || !std::isfinite(d) || d > 10.0)
+    fail(where, "DT = " + number_text(d) + " is out of range: must be in [1e-6, 10] s");
   npts = long(n);
   dt = d;
+}
+
+// The quantity and units line 3 of an AT2 file states: acceleration in g is read; a velocity or
+// displacement series, or accelerations in other units, are refused (never read as g).
+void check_at2_units(const std::string& line, const std::string& where) {
+  const std::string u = upper(line);
+  for (const char* q : {"VELOCITY", "DISPLACEMENT"})
+    if (u.find(q) != std::string::npos)
+      fail(where, std::string("the file is a ") + (q[0] == 'V' ? "velocity" : "displacement") + " time series ('" +
+                      line + "'): a record is a ground acceleration in g");
+  std::istringstream in(u);
+  std::vector<std::string> words;
+  for (std::string w; in >> w;) {
+    while (!w.empty() && (w.back() == '.' || w.back() == ',' || w.back() == ')' || w.back() == ';')) w.pop_back();
+    while (!w.empty() && w.front() == '(') w.erase(w.begin());
+    words.push_back(w);
+  }
+  auto refuse = [&](const std::string& unit) {
+    fail(where, "units '" + unit + "' ('" + line +
+                    "'): blockdyn reads accelerations in units of g; convert the samples (cm/s^2: divide by 980.665) "
+                    "and state UNITS OF G");
+  };
+  for (std::size_t i = 0; i + 2 < words.size(); ++i)
+    if (words[i] == "UNITS" && words[i + 1] == "OF") {
+      if (words[i + 2] != "G") refuse(words[i + 2]);
+      return;
+    }
+  for (const std::string& w : words)
+    if (w.rfind("CM/S", 0) == 0 || w.rfind("M/S", 0) == 0 || w.rfind("MM/S", 0) == 0 || w == "GAL" ||
+        w == "CM/SEC/SEC" || w == "M/SEC/SEC")
+      refuse(w);
+}
+
+// The columns a CSV header names, in order: {time column, acceleration column}; refuses a header
+// that names anything else, or the acceleration in units other than g.
+std::pair<int, int> csv_columns(const std::string& header, const std::string& where) {
+  std::string h = header;
+  if (const auto c = h.find('#'); c != std::string::npos) h.erase(c);
+  const bool delimited = h.find_first_of(",;\t") != std::string::npos;
+  std::vector<std::string> fields;
+  std::string cur;
+  auto flush = [&] {
+    std::string f;
+    for (char c : cur)
+      if (!std::isspace(static_cast<unsigned char>(c))) f += char(std::tolower(static_cast<unsigned char>(c)));
+    if (!f.empty()) fields.push_back(f);
+    cur.clear();
+  };
+  for (char c : h) {
+    if (c == ',' || c == ';' || c == '\t' || (!delimited && c == ' ')) {
+      flush();
+    } else {
+      cur += c;
+    }
+  }
+  flush();
+  auto is_time = [](const std::string& f) { return f == "t" || f.rfind("t(", 0) == 0 || f.rfind("t[", 0) == 0 ||
+                                                   f.rfind("t_", 0) == 0 || f.rfind("time", 0) == 0; };
+  auto is_acc = [](const std::string& f) { return f == "a" || f.rfind("a(", 0) == 0 || f.rfind("a[", 0) == 0 ||
+                                                  f.rfind("a_", 0) == 0 || f.rfind("acc", 0) == 0 ||
+                                                  f.rfind("ag", 0) == 0; };
+  const std::string why = "the header '" + header + "' must name the columns t (s) and a (g), in either order";
+  if (fields.size() != 2) fail(where, why);
+  for (const std::string& f : fields)
+    if (is_acc(f))
+      for (const char* unit : {"m/s", "cm/s", "mm/s", "gal", "m s", "ms^"})
+        if (f.find(unit) != std::string::npos)
+          fail(where, "the acceleration column '" + f + "' is not in g: give a in units of g");
+  if (is_time(fields[0]) && is_acc(fields[1])) return {0, 1};
+  if (is_acc(fields[0]) && is_time(fields[1])) return {1, 0};
+  fail(where, why);
 }
 
 }  // namespace
@@ -103,7 +169,7 @@ void parse_at2_counts(const std::string& line, const std::string& where, long& n
 Accelerogram::Accelerogram(std::vector<double> a, double dt, std::string source)
     : a_(std::move(a)), dt_(dt), uniform_(true), source_(std::move(source)) {
   if (!(dt >= kMinRecordDt) || !(dt <= kMaxRecordDt))
-    fail(source_, "sample spacing dt = " + std::to_string(dt) + " s is out of range: must be in [1e-6, 1e3] s");
+    fail(source_, "sample spacing dt = " + number_text(dt) + " s is out of range: must be in [1e-6, 1e3] s");
   inv_dt_ = 1.0 / dt_;
   check_values();
 }
@@ -117,7 +183,7 @@ Accelerogram::Accelerogram(std::vector<double> t, std::vector<double> a, std::st
     if (i > 0 && !(t_[i] > t_[i - 1]))
       fail(source_, "sample " + std::to_string(i + 1) + ": times must be strictly increasing");
     if (i > 0 && !(t_[i] - t_[i - 1] >= kMinRecordDt))
-      fail(source_, "sample " + std::to_string(i + 1) + ": the time step " + std::to_string(t_[i] - t_[i - 1]) +
+      fail(source_, "sample " + std::to_string(i + 1) + ": the time step " + number_text(t_[i] - t_[i - 1]) +
                         " s is out of range: must be >= 1e-6 s");
   }
   if (t_.front() < 0) fail(source_, "the first sample time must be >= 0");
@@ -140,7 +206,7 @@ void Accelerogram::check_values() const {
   if (a_.size() > kMaxRecordSamples) fail(source_, "more than " + std::to_string(kMaxRecordSamples) + " samples");
   for (std::size_t i = 0; i < a_.size(); ++i)
     if (!std::isfinite(a_[i]) || std::fabs(a_[i]) > 100.0)
-      fail(source_, "sample " + std::to_string(i + 1) + " = " + std::to_string(a_[i]) +
+      fail(source_, "sample " + std::to_string(i + 1) + " = " + number_text(a_[i]) +
                         " is out of range: must be finite, |a| <= 100 g");
 }
 
@@ -190,6 +256,13 @@ double Accelerogram::next_sample_after(double t) const {
   return it == t_.end() ? INFINITY : *it;
 }
 
+std::string Accelerogram::digest() const {
+  std::uint64_t h = fnv1a(&dt_, sizeof dt_);
+  h = fnv1a(t_.data(), t_.size() * sizeof(double), h);
+  h = fnv1a(a_.data(), a_.size() * sizeof(double), h);
+  return hex64(h);
+}
+
 double Accelerogram::peak() const {
   double m = 0;
   for (double v : a_) m = std::fmax(m, std::fabs(v));
@@ -199,6 +272,7 @@ double Accelerogram::peak() const {
 Accelerogram parse_at2(const std::string& text, const std::string& source) {
   const std::vector<std::string> lines = split_lines(text);
   if (lines.size() < 5) fail(source, "truncated AT2 file: 4 header lines and the values expected");
+  check_at2_units(lines[2], source + ":3");
   long npts = 0;
   double dt = 0;
   parse_at2_counts(lines[3], source + ":4", npts, dt);
@@ -225,6 +299,7 @@ Accelerogram parse_record_csv(const std::string& text, const std::string& source
   const std::vector<std::string> lines = split_lines(text);
   std::vector<double> t, a;
   bool first_data = true;
+  std::pair<int, int> col{0, 1};  // the time and acceleration columns (a header may swap them)
   for (std::size_t li = 0; li < lines.size(); ++li) {
     std::string s = lines[li];
     if (const auto h = s.find('#'); h != std::string::npos) s.erase(h);
@@ -234,15 +309,17 @@ Accelerogram parse_record_csv(const std::string& text, const std::string& source
     std::vector<std::string> tok;
     for (std::string x; in >> x;) tok.push_back(x);
     if (tok.empty()) continue;
-    double tv = 0.0, av = 0.0;
-    const bool numeric = tok.size() == 2 && to_number(tok[0], tv) && to_number(tok[1], av);
+    double c0 = 0.0, c1 = 0.0;
+    const bool numeric = tok.size() == 2 && to_number(tok[0], c0) && to_number(tok[1], c1);
     if (!numeric) {
       if (first_data && t.empty()) {  // a header line
+        col = csv_columns(lines[li], source + ":" + std::to_string(li + 1));
         first_data = false;
         continue;
       }
       fail(source + ":" + std::to_string(li + 1), "expected two numbers 't, a' (s, g)");
     }
+    const double tv = col.first == 0 ? c0 : c1, av = col.first == 0 ? c1 : c0;
     first_data = false;
     if (t.size() >= kMaxRecordSamples) fail(source, "more than " + std::to_string(kMaxRecordSamples) + " samples");
     t.push_back(tv);

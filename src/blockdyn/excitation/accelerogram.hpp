@@ -32,6 +32,8 @@ class Accelerogram {
   const std::string& source() const { return source_; }
   const std::vector<double>& values() const { return a_; }
   double time(std::size_t i) const { return uniform_ ? dt_ * double(i) : t_[i]; }
+  // A hash of the samples and their times (16 hex digits): the record's identity in fingerprints.
+  std::string digest() const;
 
  private:
   void check_values() const;

@@ -21,7 +21,7 @@ static json component_json(const GroundComponent& c) {
     j["record"] = {{"source", c.record->source()},      {"samples", c.record->size()},
                    {"dt_s", c.record->dt()},            {"duration_s", c.record->t_last()},
                    {"peak_g", c.record->peak()},        {"scale", c.scale},
-                   {"time_unit_s", c.record_time_unit}};
+                   {"time_unit_s", c.record_time_unit}, {"digest", c.record->digest()}};
   } else {
     j["record"] = nullptr;
   }
