@@ -2,11 +2,15 @@
 // Every library grid study (blockdyn/api/grid_studies.hpp: spectrum, survival) as a subcommand:
 // its options from the study's description, its points on the sweep runner (threads, MPI ranks,
 // journal and --resume, progress), then its report from the finished table: JSON, figures, text.
+#include <sys/stat.h>
+#include <unistd.h>
+
 #include <cstdio>
 #include <map>
 #include <memory>
 
 #include "blockdyn/api/grid_studies.hpp"
+#include "blockdyn/io/atomic_file.hpp"
 #include "cli_common.hpp"
 #include "cli_registry.hpp"
 #include "grid_run.hpp"
@@ -35,6 +39,31 @@ void run_figure(const std::string& script, const std::vector<std::string>& args,
   run_python(script, a);
 }
 
+// The CSV the figure scripts read: the table itself when it is a regular file, else (a FIFO, a
+// device) a scratch copy from memory, removed afterwards.
+class FigureTable {
+ public:
+  FigureTable(const std::string& csv, const Table& t) : path_(csv) {
+    struct stat st {};
+    if (::stat(csv.c_str(), &st) == 0 && S_ISREG(st.st_mode)) return;
+    path_ = "/tmp/blockdyn-figure-table-" + std::to_string(::getpid()) + ".csv";
+    guard_ = std::make_unique<RemoveOnSignal>(path_);
+    write_file_atomically(path_, csv_text(t));
+    scratch_ = true;
+  }
+  ~FigureTable() {
+    if (scratch_) std::remove(path_.c_str());
+  }
+  FigureTable(const FigureTable&) = delete;
+  FigureTable& operator=(const FigureTable&) = delete;
+  const std::string& path() const { return path_; }
+
+ private:
+  std::string path_;
+  bool scratch_ = false;
+  std::unique_ptr<RemoveOnSignal> guard_;
+};
+
 void run(const GridStudyCommand& c, const CLI::App& s, const GridStudyFlags& f) {
   const Settings given = settings_of(s, output_flags(c));
   std::vector<std::string> known;
@@ -47,12 +76,18 @@ void run(const GridStudyCommand& c, const CLI::App& s, const GridStudyFlags& f) 
   const GridStudy study = c.prepare(given, out.csv());
   const GridRunResult res = run_grid(*study.table, f.g, study.threads, f.progress, f.quiet, study.plan.get());
   if (!res.root) return;  // the other ranks computed their share of the points
-  const StudyReport r = study.finish(read_table(out.csv(), study.table->header()));
+  const StudyReport r = study.finish(res.outcome.table);
   const std::string& plot = f.figures.at("plot");
-  if (!plot.empty()) run_figure(r.plot_script, r.plot_args, out.csv(), plot);
+  bool figures = !plot.empty();
   for (const auto& [flag, args] : r.more_figures)
-    if (const auto it = f.figures.find(flag); it != f.figures.end() && !it->second.empty())
-      run_figure(r.plot_script, args, out.csv(), it->second);
+    if (const auto it = f.figures.find(flag); it != f.figures.end() && !it->second.empty()) figures = true;
+  if (figures) {
+    const FigureTable table(out.csv(), res.outcome.table);
+    if (!plot.empty()) run_figure(r.plot_script, r.plot_args, table.path(), plot);
+    for (const auto& [flag, args] : r.more_figures)
+      if (const auto it = f.figures.find(flag); it != f.figures.end() && !it->second.empty())
+        run_figure(r.plot_script, args, table.path(), it->second);
+  }
   if (!f.json_out.empty()) emit_json(r.summary, f.json_out);
   if (f.json) emit_json(r.summary, "-");
   if (!f.json && !f.quiet) std::printf("%s %s\n", r.text.c_str(), grid_run_note(res).c_str());

@@ -36,7 +36,7 @@ SweepRunOptions quiet(int threads) {
   return o;
 }
 
-std::vector<std::string> split_csv_line(const std::string& line) {
+std::vector<std::string> cells_of(const std::string& line) {
   std::vector<std::string> out(1);
   for (char c : line) {
     if (c == ',') out.emplace_back();
@@ -74,7 +74,7 @@ TEST(SweepRun, RowFieldsMatchSimulate) {
   SweepSpec s = small_spec("/dev/null");
   const SweepEvaluator ev(s);
   const std::size_t idx = 2;  // k = 1e4, inv_r = 2, ic2
-  const auto cells = split_csv_line(ev.row(idx).text);
+  const auto cells = cells_of(ev.row(idx).text);
   ASSERT_EQ(cells.size(), ev.columns().size());
   const SweepPoint p = sweep_point(s, idx);
   const SimulationResult r = simulate(p.params, {}, sweep_initial_state(s, p), ev.options());

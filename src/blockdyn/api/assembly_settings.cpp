@@ -105,6 +105,7 @@ Assembly from_file(const Settings& s, const Values& v) {
     if (!ground && s.has("phi-l")) l.mu_s = l.mu_k = friction_of_angle(v.phi_l, "phi-l");
     set_kinetic(l, ground ? v.phi_s_kinetic : v.phi_l_kinetic, ground ? "phi-s-kinetic" : "phi-l-kinetic");
   }
+  apply_default_restitution(a, v.rigid);  // one default per law: the presets' (0.5 deformable, 0 rigid)
   if (s.has("g")) a.g = v.g;
   a.contact = v.contact;
   return a;

@@ -3,6 +3,7 @@
 
 #include "blockdyn/base/content_hash.hpp"
 #include "blockdyn/base/number_text.hpp"
+#include "blockdyn/io/input_files.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -336,6 +337,7 @@ Accelerogram load_accelerogram(const std::string& path, const std::string& field
   if (!S_ISREG(st.st_mode)) throw std::invalid_argument(field + ": '" + path + "' is not a regular file");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw std::invalid_argument(field + ": cannot read '" + path + "'");
+  note_input(path);
   // Bounded read: 20 M samples of ~16 characters at most.
   constexpr std::size_t kMaxBytes = 400u << 20;
   std::string text;

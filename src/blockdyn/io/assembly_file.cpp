@@ -5,6 +5,7 @@
 #include <set>
 
 #include "blockdyn/io/toml_read.hpp"
+#include "blockdyn/model/assembly/interface_faces.hpp"
 
 namespace blockdyn {
 
@@ -19,7 +20,10 @@ const std::set<std::string> kLawKeys{"k_normal", "k_tangential", "restitution", 
 void read_law(const toml::table& t, const std::string& where, ContactLaw& l) {
   if (auto v = opt_number(t, where, "k_normal")) l.k_normal = *v;
   if (auto v = opt_number(t, where, "k_tangential")) l.k_tangential = *v;
-  if (auto v = opt_number(t, where, "restitution")) l.restitution = *v;
+  if (auto v = opt_number(t, where, "restitution")) {
+    if (*v == kUnsetRestitution) fail(where + ".restitution", "= -1 must be in [0, 1]");
+    l.restitution = *v;
+  }
   if (auto v = opt_number(t, where, "damping")) l.damping = *v;
   const auto phi = opt_number(t, where, "phi"), phik = opt_number(t, where, "phi_kinetic");
   const auto mus = opt_number(t, where, "mu_s"), muk = opt_number(t, where, "mu_k");
@@ -79,7 +83,37 @@ AssemblyBlock read_block(const toml::table& t, const std::string& w, std::size_t
   return b;
 }
 
+// A polygon's theta turns it about the end of its base on which it then stands (the end the other
+// rises from), not about its centroid (which would sink a corner into the ground): the block
+// touches the ground exactly at the start, as a tilted rectangle of a preset does.
+void stand_tilted_polygons(Assembly& a) {
+  for (std::size_t j = 0; j < a.interfaces.size(); ++j) {
+    const AssemblyInterface& f = a.interfaces[j];
+    if (f.lower >= 0 || f.upper_edge >= 0) continue;
+    AssemblyBlock& b = a.blocks[std::size_t(f.upper)];
+    if (b.vertices.empty() || b.theta == 0.0) continue;
+    const LocalFace base = interface_faces(a, int(j)).upper;  // relative to the centroid, at rest
+    const BodyRotation q = BodyRotation::of(b.theta);
+    const Vec2 c{b.x, b.y};
+    const Vec2 ends[2] = {c + base.c + base.half * base.t, c + base.c - base.half * base.t};
+    for (int e = 0; e < 2; ++e) {
+      const Vec2 pivot = ends[e], other = ends[1 - e] - pivot;
+      if (q.offset(other.x, other.y).y < 0.0) continue;  // this end would sink the other
+      const Vec2 arm = c - pivot;
+      const Vec2 turned = q.offset(arm.x, arm.y);
+      b.x = pivot.x + turned.x;
+      b.y = pivot.y + turned.y;
+      break;
+    }
+  }
+}
+
 }  // namespace
+
+void apply_default_restitution(Assembly& a, bool rigid) {
+  for (AssemblyInterface& i : a.interfaces)
+    if (i.law.restitution == kUnsetRestitution) i.law.restitution = rigid ? 0.0 : 0.5;
+}
 
 double friction_of_angle(double deg, const std::string& field) {
   if (!(deg >= 0 && deg <= 90)) fail(field, "= " + std::to_string(deg) + " must be in [0, 90] degrees");
@@ -95,6 +129,7 @@ Assembly read_assembly_file(const std::string& path) {
     fail(k, "unknown table (allowed: assembly, contact, [[block]], [[interface]])");
   Assembly a;
   ContactLaw base;
+  base.restitution = kUnsetRestitution;  // the contact law's own default, once the law is known
   if (const toml::table* t = sub_table(root, "assembly", "assembly")) {
     if (auto k = first_unknown_key(*t, {"g", "collapse_rotation", "min_bearing"}); !k.empty())
       fail("assembly." + k, "unknown key (allowed: g, collapse_rotation, min_bearing)");
@@ -149,6 +184,7 @@ Assembly read_assembly_file(const std::string& path) {
     if (f.lower < 0 && f.lower_edge >= 0) fail(w + ".lower_edge", "belongs to a block (the ground has no edges)");
     a.interfaces.push_back(f);
   }
+  stand_tilted_polygons(a);
   return a;
 }
 

@@ -16,6 +16,13 @@ inline constexpr double kNoSlip = kNoSlipFriction;
 // tan(deg) for deg in [0, 90) and kNoSlip at 90; field names the value in errors.
 double friction_of_angle(double deg, const std::string& field);
 
+// An interface's restitution the file does not give: the contact law's default (0.5 for the
+// deformable law, 0 for the rigid one, as the presets), set by the caller that knows the law.
+inline constexpr double kUnsetRestitution = -1.0;
+
+// Every interface without a restitution of its own gets the law's default (see above).
+void apply_default_restitution(Assembly& a, bool rigid);
+
 Assembly read_assembly_file(const std::string& path);
 
 }  // namespace blockdyn

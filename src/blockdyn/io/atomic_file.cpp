@@ -13,6 +13,8 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "blockdyn/io/input_files.hpp"
+
 namespace blockdyn {
 
 namespace {
@@ -58,8 +60,27 @@ void install_signal_cleanup() {
   for (int sig : {SIGINT, SIGTERM, SIGHUP}) ::signal(sig, cleanup_and_reraise);
 }
 
+std::string resolve_symlinks(const std::string& path) {
+  std::string p = path;
+  for (int hops = 0; hops < 40; ++hops) {
+    struct stat st {};
+    if (::lstat(p.c_str(), &st) != 0 || !S_ISLNK(st.st_mode)) return p;
+    char buf[4096];
+    const ssize_t n = ::readlink(p.c_str(), buf, sizeof buf - 1);
+    if (n <= 0) return p;
+    std::string target(buf, std::size_t(n));
+    if (target[0] != '/') {
+      const auto slash = p.find_last_of('/');
+      if (slash != std::string::npos) target = p.substr(0, slash + 1) + target;
+    }
+    p = target;
+  }
+  throw std::invalid_argument("output '" + path + "': too many levels of symbolic links");
+}
+
 AtomicFile::AtomicFile(std::string path)
-    : path_(std::move(path)), tmp_(path_ + ".tmp." + std::to_string(::getpid())), guard_(tmp_) {
+    : path_(resolve_symlinks(path)), tmp_(path_ + ".tmp." + std::to_string(::getpid())), guard_(tmp_) {
+  require_not_input("output", path);
   struct stat st {};
   const bool exists = ::stat(path_.c_str(), &st) == 0;
   if (exists && S_ISDIR(st.st_mode)) throw std::invalid_argument("output '" + path_ + "' is a directory");

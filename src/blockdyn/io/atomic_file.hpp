@@ -25,6 +25,12 @@ class RemoveOnSignal {
 };
 void install_signal_cleanup();
 
+// The file a path finally names, following symbolic links (a link's own name when it dangles at
+// its last hop: the target is created through it).
+std::string resolve_symlinks(const std::string& path);
+
+// A symbolic link given as the path is written through (its target is replaced, the link kept);
+// a path naming one of the run's inputs (input_files.hpp) is refused.
 class AtomicFile {
  public:
   explicit AtomicFile(std::string path);

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "blockdyn/io/toml_read.hpp"
 
+#include "blockdyn/io/input_files.hpp"
+
 #include <cmath>
 #include <sys/stat.h>
 
@@ -31,6 +33,7 @@ std::string read_file(const std::string& path, const std::string& what) {
   in.read(text.data(), std::streamsize(text.size()));
   text.resize(std::size_t(in.gcount()));
   if (text.find('\0') != std::string::npos) throw std::invalid_argument(what + " '" + path + "' is not a text file");
+  note_input(path);
   return text;
 }
 

@@ -278,6 +278,32 @@ AssemblyEnergy energy_of(const M& m, const typename M::Mode& md, const typename 
   return {e.kinetic, e.gravity, e.normal_spring, e.tangential_spring, e.total()};
 }
 
+// Whether a block ended away from its start by more than the start's contact tolerance (2 % of its
+// size, or 1e-3 rad): such a run is not at rest, whatever its events.
+bool moved_from_start(const Assembly& a, const AssemblyResult& r) {
+  for (std::size_t b = 0; b < a.blocks.size(); ++b) {
+    const AssemblyBlock& k = a.blocks[b];
+    const double size = std::fmin(k.width, k.height);
+    const auto& z = r.blocks[b].final_state;
+    if (std::fabs(z[0] - k.x) > 0.02 * size || std::fabs(z[1] - k.y) > 0.02 * size || std::fabs(z[2] - k.theta) > 1e-3)
+      return true;
+  }
+  return false;
+}
+
+// A block whose centre ends more than its own size below its start has passed through what should
+// carry it: the run is outside the model, never at rest.
+std::string fell_through(const Assembly& a, const AssemblyResult& r) {
+  for (std::size_t b = 0; b < a.blocks.size(); ++b) {
+    const AssemblyBlock& k = a.blocks[b];
+    const double drop = k.y - r.blocks[b].final_state[1];
+    if (drop > std::fmax(k.width, k.height))
+      return "block " + std::to_string(b) + " (" + k.name + ") fell " + std::to_string(drop) +
+             " m below its start: nothing carried it";
+  }
+  return "";
+}
+
 template <class M>
 AssemblyResult run(const Assembly& a, const GroundMotion& g, const AssemblyRunOptions& o, TrajectoryTable* csv_out,
                    RunProbe* probe) {
@@ -356,10 +382,15 @@ AssemblyResult run(const Assembly& a, const GroundMotion& g, const AssemblyRunOp
   if (r.collapse_mode)
     r.motion = "collapse";
   else if (r.event_counts[kAsmOpen] > 0 || r.event_counts[kAsmSlip] > 0 || r.event_counts[kAsmClose] > 0 ||
-           r.event_counts[kAsmImpact] > 0)
+           r.event_counts[kAsmImpact] > 0 || moved_from_start(a, r))
     r.motion = "stable";
   else
     r.motion = "rest";
+  // (A collapse stops the run where it is found; its blocks may have fallen by then.)
+  if (const std::string why = fell_through(a, r); !why.empty() && !r.collapse_mode && r.status != SimStatus::Invalid) {
+    r.status = SimStatus::Invalid;
+    r.note = why;
+  }
   return r;
 }
 

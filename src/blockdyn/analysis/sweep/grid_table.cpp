@@ -7,6 +7,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "blockdyn/analysis/sweep/point_table.hpp"
 #include "blockdyn/analysis/sweep/sweep_spec.hpp"
 #include "blockdyn/io/json_io.hpp"
 
@@ -88,6 +89,34 @@ Table read_table(const std::string& path, const std::string& expected_header) {
     t.rows.push_back(std::move(r));
   }
   return t;
+}
+
+Table table_of_rows(const std::string& header, const std::vector<const std::string*>& rows) {
+  Table t;
+  t.columns = split_csv_line(header.substr(0, header.size() - 1));
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    if (!rows[i]) continue;
+    TableRow r;
+    r.cells = split_csv_line(rows[i]->substr(0, rows[i]->size() - 1));
+    r.index = i;
+    t.rows.push_back(std::move(r));
+  }
+  return t;
+}
+
+std::string csv_text(const Table& t) {
+  auto line = [](const std::vector<std::string>& cells) {
+    std::string s;
+    for (std::size_t i = 0; i < cells.size(); ++i) {
+      if (i > 0) s += ',';
+      s += csv_escape(cells[i]);
+    }
+    s += '\n';
+    return s;
+  };
+  std::string out = line(t.columns);
+  for (const TableRow& r : t.rows) out += line(r.cells);
+  return out;
 }
 
 double cell_double(const std::string& cell) {

@@ -64,6 +64,12 @@ class Table {
 // or its header differs from `expected_header` (with '\n').
 Table read_table(const std::string& path, const std::string& expected_header);
 
+// The same table from rows held in memory (each ending in '\n', in index order; null: not computed):
+// what the runner wrote, without reading its output back (which may be a FIFO or a device).
+Table table_of_rows(const std::string& header, const std::vector<const std::string*>& rows);
+// The table as CSV text (the header and the rows, cells quoted where they need it).
+std::string csv_text(const Table& t);
+
 // Splits one CSV line (RFC 4180 quoting; no trailing '\n').
 std::vector<std::string> split_csv_line(const std::string& line);
 

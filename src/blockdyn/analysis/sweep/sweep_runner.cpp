@@ -116,7 +116,11 @@ SweepSession::SweepSession(const PointTable& ev, const SweepRunOptions& o)
   }
   journal_ = std::make_unique<SweepJournal>(paths_.journal, ev.fingerprint(), ev.header(), ev.size(),
                                             o.resume);
-  write_file_atomically(paths_.sidecar, dump_json(sidecar("running", resolve_threads(o.threads))) + "\n");
+  // A table streamed into a FIFO or a device has no sidecar beside it (/dev/null.json): the
+  // command's JSON summary holds the definition.
+  stream_output_ = ::stat(paths_.csv.c_str(), &st) == 0 && !S_ISREG(st.st_mode);
+  if (!stream_output_)
+    write_file_atomically(paths_.sidecar, dump_json(sidecar("running", resolve_threads(o.threads))) + "\n");
 }
 
 SweepSession::~SweepSession() = default;
@@ -197,10 +201,18 @@ SweepOutcome SweepSession::finish(int threads, bool sparse) {
   out.was_complete = was_complete_;
   if (was_complete_) {
     out.resumed = out.points;
+    // The finished table is the input of this run: read back only from a regular file.
+    struct stat st {};
+    if (::stat(paths_.csv.c_str(), &st) != 0 || !S_ISREG(st.st_mode))
+      throw std::invalid_argument("output: '" + paths_.csv + "' is not a regular file: a finished sweep resumes from its CSV");
+    out.table = read_table(paths_.csv, ev_.header());
     return out;
   }
   if (progress_) progress_->finish();
   journal_->write_csv(paths_.csv, sparse);
+  std::vector<const std::string*> rows(journal_->points());
+  for (std::size_t i = 0; i < rows.size(); ++i) rows[i] = journal_->row(i);
+  out.table = table_of_rows(ev_.header(), rows);
   out.resumed = journal_->resumed();
   out.computed = journal_->done() - journal_->resumed();
   out.errors = errors_;
@@ -219,7 +231,7 @@ SweepOutcome SweepSession::finish(int threads, bool sparse) {
                                     double(ru.ru_stime.tv_sec) + 1e-6 * double(ru.ru_stime.tv_usec);
   t["load_average_at_end"] = load_average();
   j["errors"] = errors_;
-  write_file_atomically(paths_.sidecar, dump_json(j) + "\n");
+  if (!stream_output_) write_file_atomically(paths_.sidecar, dump_json(j) + "\n");
   journal_->remove_file();
   return out;
 }

@@ -18,6 +18,7 @@
 #include <string>
 #include <vector>
 
+#include "blockdyn/analysis/sweep/grid_table.hpp"
 #include "blockdyn/analysis/sweep/point_plan.hpp"
 #include "blockdyn/analysis/sweep/point_table.hpp"
 #include "blockdyn/analysis/sweep/sweep_journal.hpp"
@@ -44,6 +45,7 @@ struct SweepOutcome {
   bool was_complete = false;  // --resume found a finished sweep: nothing recomputed
   double wall_seconds = 0;
   SweepPaths paths;
+  Table table;  // the rows written, from memory (the CSV is never read back to build a result)
 };
 
 // Calls on_row(index, row) under a lock for each index as it finishes, on `threads` threads.
@@ -76,6 +78,7 @@ class SweepSession {
   std::unique_ptr<SweepJournal> journal_;
   std::unique_ptr<Progress> progress_;
   bool was_complete_ = false;
+  bool stream_output_ = false;  // the CSV goes into a FIFO or a device: no sidecar
   std::size_t errors_ = 0;
   double t_start_ = 0;  // steady clock seconds
   std::string started_utc_;

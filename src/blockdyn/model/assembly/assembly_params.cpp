@@ -337,9 +337,14 @@ void validate(const Assembly& a, int max_blocks) {
       throw std::invalid_argument(w + ".upper = " + std::to_string(f.upper) + " is not a block");
     if (f.lower < -1 || f.lower >= nb || f.lower == f.upper)
       throw std::invalid_argument(w + ".lower = " + std::to_string(f.lower) + " must be -1 (ground) or another block");
-    for (std::size_t k = 0; k < j; ++k)
-      if (a.interfaces[k].lower == f.lower && a.interfaces[k].upper == f.upper)
-        throw std::invalid_argument(w + " repeats interface " + std::to_string(k));
+    for (std::size_t k = 0; k < j; ++k) {
+      const AssemblyInterface& o = a.interfaces[k];
+      if (o.lower == f.lower && o.upper == f.upper) throw std::invalid_argument(w + " repeats interface " + std::to_string(k));
+      if (o.lower == f.upper && o.upper == f.lower)
+        throw std::invalid_argument(w + " (lower = " + std::to_string(f.lower) + ", upper = " + std::to_string(f.upper) +
+                                    ") repeats interface " + std::to_string(k) +
+                                    " the other way round: one joint is one interface");
+    }
     check_law(f.law, w, a.contact == "rigid");
     ++supports[f.upper];
   }
@@ -351,6 +356,28 @@ void validate(const Assembly& a, int max_blocks) {
   // support is an input error, not a drop test) and does not interpenetrate.
   auto pose_of = [&](int i) { return initial_pose(a, i); };
   const double touch = 1e-3 * min_size, deep = 0.02 * min_size;
+  // A block is carried by an interface whose push on it has an upward part: as the upper block, a
+  // support face whose normal points up; as the lower block, one whose normal points down (an
+  // arch's voussoirs past the crown). A block carried by none falls at the start.
+  std::vector<bool> carried(std::size_t(nb), false);
+  std::vector<std::string> sideways(static_cast<std::size_t>(nb), std::string());
+  constexpr double kCarries = 1e-3;  // the normal's vertical component that carries
+  for (std::size_t j = 0; j < a.interfaces.size(); ++j) {
+    const AssemblyInterface& f = a.interfaces[j];
+    const Face lf = face_at(pose_of(f.lower), interface_faces(a, int(j)).lower);
+    if (lf.n.y > kCarries) carried[std::size_t(f.upper)] = true;
+    if (f.lower >= 0 && lf.n.y < -kCarries) carried[std::size_t(f.lower)] = true;
+    if (!(lf.n.y > kCarries))
+      sideways[std::size_t(f.upper)] = "interface " + std::to_string(j) + "'s support faces " +
+                                       (lf.n.y < -kCarries ? "downwards" : "sideways") + " (normal " + num(lf.n.x) +
+                                       ", " + num(lf.n.y) + ")";
+  }
+  for (int i = 0; i < nb; ++i)
+    if (!carried[std::size_t(i)])
+      throw std::invalid_argument("block " + std::to_string(i) + " (" + a.blocks[i].name +
+                                  ") is carried by none of its interfaces at the start" +
+                                  (sideways[std::size_t(i)].empty() ? std::string() : ": " + sideways[std::size_t(i)]) +
+                                  "; name the edge it stands on (upper_edge), or a support below it");
   for (std::size_t j = 0; j < a.interfaces.size(); ++j) {
     const AssemblyInterface& f = a.interfaces[j];
     const BodyPose lp = pose_of(f.lower), up = pose_of(f.upper);

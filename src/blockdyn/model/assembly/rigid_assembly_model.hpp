@@ -163,6 +163,8 @@ class RigidAssemblyModel {
   void apply_impact(const ImpactWork& w, Mode& m, State& z) const;
   // The closed points back on their constraints: gaps (velocities = false) or rates.
   void project(const Mode& m, State& z, bool velocities) const;
+  // One Newton step of it; false when there is nothing left to correct.
+  bool project_step(const Mode& m, State& z, bool velocities) const;
   // Enter rest if every point touches, nothing moves and rest holds at t.
   bool try_rest(double t, Mode& m, State& z) const;
   Mode mechanism_mode(const Mode& m, const State& z, int direction) const;
