@@ -202,6 +202,13 @@ CliOutcome run_cli(const std::vector<std::string>& args) {
                    std::to_string(ranks) +
                    "): run it without mpirun (sweep, map, survival, spectrum, response-curve and rocking-spectrum "
                    "distribute)"};
+  // A first word that names no command is said so (CLI11 would only say one is required).
+  if (!current_command().empty()) {
+    bool known = false;
+    for (const CLI::App* sub : app.get_subcommands({})) known = known || sub->check_name(current_command());
+    if (!known)
+      return {2, "'" + current_command() + "' is not a blockdyn command (blockdyn --help lists them)"};
+  }
   // CLI11 parses the arguments in reverse order from a vector.
   std::vector<std::string> rev(args.rbegin(), args.rend());
   CliOutcome out;

@@ -399,3 +399,29 @@ TEST(CliRobustness, OutputDirectoriesAreCheckedBeforeTheRun) {
   };
   for (const Case& c : cases) expect_usage_error(c, d.path);
 }
+
+// Issue 37 item 5: an error names the value given (not a value derived from it, not a rounding
+// of it), and the option the user can change.
+TEST(CliRobustness, MessagesNameTheValueGiven) {
+  TmpDir d("messages");
+  const std::string rec = std::string(BLOCKDYN_SOURCE_DIR) + "/tests/fixtures/synthetic_60s.AT2";
+  std::ofstream(d.path + "/poly.toml") << "[[block]]\nvertices = [[0,0],[0.3,0],[0.3,1],[0,1]]\nmass = -5\n"
+                                          "[[interface]]\nlower = \"ground\"\nupper = 0\n";
+  std::ofstream(d.path + "/dens.toml") << "[[block]]\nwidth = 0.3\nheight = 1\ndensity = -5\nthickness = 0.2\n"
+                                          "y = 0.5\n[[interface]]\nlower = \"ground\"\nupper = 0\n";
+  std::ofstream(d.path + "/huge.AT2") << "T\nD\nU\nNPTS= 2, DT= 1e300\n0.5 0.5\n";
+  const std::vector<Case> cases = {
+      {{"assembly", "poly.toml"}, "block[0].mass = -5 is out of range"},
+      {{"assembly", "dens.toml"}, "block[0].density = -5 is out of range"},
+      {{"rocking-spectrum", "--record", rec, "--alpha", "0.2", "--p-values", "1", "--g", "0"}, "g = 0 is out of range"},
+      {{"limit-analysis", "--preset", "arch", "--voussoirs", "1"}, "voussoirs = 1 over embrace = 180 degrees"},
+      {{"limit-analysis", "--preset", "arch", "--radius", "1000", "--thickness-ratio", "1.9"},
+       "radius = 1000 m, thickness-ratio = 1.9 and voussoirs = 9 make voussoirs 1903.02 m across"},
+      {{"limit-analysis", "--preset", "arch", "--voussoirs", "3000000000"}, "voussoirs = 3000000000"},
+      {housner_cmd({"simulate"}, {"--ground-h-record", "huge.AT2"}), "DT = 1e+300 is out of range"},
+      {{"nonexistent"}, "'nonexistent' is not a blockdyn command"},
+  };
+  for (const Case& c : cases) expect_usage_error(c, d.path);
+  const auto r = run_cli({"limit-analysis", "--preset", "arch", "--radius", "1000", "--thickness-ratio", "1.9"}, d.path);
+  EXPECT_EQ(r.err.find("grains"), std::string::npos) << r.err;
+}

@@ -135,17 +135,45 @@ def _is_samples(value):
     return isinstance(value, (tuple, list)) and len(value) == 2 and not isinstance(value[0], (str, bytes))
 
 
+def _threads(value, name="threads"):
+    """A thread count as the command line takes it: an integer in [0, 1024] (0: all cores);
+    ValueError naming the field otherwise."""
+    if isinstance(value, bool) or not isinstance(value, (int, np.integer)):
+        raise ValueError(f"{name} = {value!r} is not an integer")
+    if not 0 <= value <= 1024:
+        raise ValueError(f"{name} = {value} is out of range: must be in [0, 1024] (0: all cores)")
+    return int(value)
+
+
+def _record_samples(name, value):
+    """(t, a) as 1-D float lists; ValueError naming the option for anything else (a 2-D array is
+    not flattened)."""
+    out = []
+    for what, v in zip(("times", "accelerations"), value):
+        try:
+            arr = np.asarray(v, dtype=float)
+        except (TypeError, ValueError) as e:
+            raise ValueError(f"--{name}: the record's {what} are not numbers ({e})") from None
+        if arr.ndim != 1:
+            raise ValueError(f"--{name}: the record's {what} must be a 1-D array, not of shape {arr.shape}")
+        out.append(arr.tolist())
+    return tuple(out)
+
+
 def _options(options):
     """The keyword options as the library's (name, value) list: numbers written exactly (repr),
     a record given as (t, a) arrays passed as samples."""
     out = []
     for key, value in options.items():
+        if not isinstance(key, str):
+            raise ValueError(f"option names are strings: {key!r} is not")
         if value is None or value is False:
             continue
         name = key.replace("_", "-")
+        if name == "threads":
+            value = _threads(value)
         if (name == "record" or name.endswith("-record")) and _is_samples(value):
-            t, a = (np.asarray(v, dtype=float).ravel().tolist() for v in value)
-            out.append((name, (t, a)))
+            out.append((name, _record_samples(name, value)))
         elif value is True:
             out.append((name, "true"))
         elif isinstance(value, (list, tuple)):
@@ -214,11 +242,14 @@ def simulate(scenario=None, **options):
 def simulate_many(runs, threads=1, trajectory=True):
     """Runs a list of option dicts (each as for simulate) on `threads` threads without the GIL; the
     list of Simulations equals that of serial calls, bit for bit."""
+    threads = _threads(threads)
     prepared = []
     for options in runs:
+        if not isinstance(options, dict):
+            raise ValueError(f"runs: each run is a dict of options, not {type(options).__name__}")
         o = dict(options)
         prepared.append(_prepared(o.pop("scenario", None), o))
-    return [_simulation(r) for r in _core.simulate_many(prepared, int(threads), trajectory)]
+    return [_simulation(r) for r in _core.simulate_many(prepared, threads, trajectory)]
 
 
 class Assembly:
@@ -388,7 +419,7 @@ def _table_command(command, definition, options):
         if reserved in options:
             raise ValueError(f"{reserved}: a file-run option; give output= to run blockdyn.{command} on files")
     options.pop("quiet", None)
-    threads = int(options.pop("threads", 0) or 0)
+    threads = _threads(options.pop("threads", 0) or 0)
     if definition is not None:
         options["definition"] = os.fspath(definition)
     result = getattr(_core, command)(_options(options), threads)

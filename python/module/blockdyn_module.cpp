@@ -18,6 +18,7 @@
 #include <variant>
 #include <vector>
 
+#include "blockdyn/analysis/sweep/parallel_map.hpp"
 #include "blockdyn/analysis/sweep/sweep_runner.hpp"
 #include "blockdyn/api/grid_studies.hpp"
 #include "blockdyn/api/limit_analysis_command.hpp"
@@ -198,7 +199,7 @@ void add_runs(py::module_& m) {
         {
           py::gil_scoped_release release;
           const std::size_t n =
-              std::max<std::size_t>(1, std::min<std::size_t>(std::size_t(std::max(threads, 1)), runs.size()));
+              std::max<std::size_t>(1, std::min<std::size_t>(std::size_t(resolve_threads(threads)), runs.size()));
           std::vector<std::thread> pool;
           for (std::size_t w = 0; w < n; ++w)
             pool.emplace_back([&, w] {

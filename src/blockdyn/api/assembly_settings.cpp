@@ -176,13 +176,13 @@ PresetOptions preset_geometry_from(const Settings& s, const std::string& preset)
   }
   PresetOptions o;
   o.slenderness = s.number("slenderness", o.slenderness);
-  o.drums = int(s.integer("drums", o.drums));
+  o.drums = s.small_integer("drums", int(o.drums));
   o.block_width = s.number("block-width", o.block_width);
   o.thickness = s.number("thickness", o.thickness);
   o.density = s.number("density", o.density);
   o.lintel_length = s.number("lintel-length", o.lintel_length);
   o.overhang = s.number("overhang", o.overhang);
-  o.voussoirs = int(s.integer("voussoirs", o.voussoirs));
+  o.voussoirs = s.small_integer("voussoirs", int(o.voussoirs));
   o.thickness_ratio = s.number("thickness-ratio", o.thickness_ratio);
   o.radius = s.number("radius", o.radius);
   o.embrace = s.number("embrace", o.embrace);

@@ -59,10 +59,10 @@ ChaosMapOptions chaos_options_of(const StudyOptions& s) {
   o.grid.phase = s.number("phase");
   o.grid.omega_min = s.number("omega-min");
   o.grid.omega_max = s.number("omega-max");
-  o.grid.omega_points = int(s.integer("omega-points"));
+  o.grid.omega_points = s.small_integer("omega-points");
   o.grid.beta_min = s.number("beta-min");
   o.grid.beta_max = s.number("beta-max");
-  o.grid.beta_points = int(s.integer("beta-points"));
+  o.grid.beta_points = s.small_integer("beta-points");
   o.grid.threads = s.threads();
   if (s.given("t-end") && s.given("periods")) throw std::invalid_argument("give --t-end or --periods, not both");
   o.use_t_end = s.given("t-end");

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "blockdyn/api/forced_model_settings.hpp"
 
+#include "blockdyn/base/number_text.hpp"
+
 #include "blockdyn/api/assembly_settings.hpp"
 
 #include <cmath>
@@ -23,9 +25,9 @@ void refuse(const Settings& s, const std::vector<std::string>& names, const std:
 
 void check_values(const Settings& s) {
   if (auto mu_k = s.number("mu-k"); mu_k && !(std::isfinite(*mu_k) && *mu_k >= 0.0))
-    throw Invalid("mu-k = " + std::to_string(*mu_k) + " is out of range: must be finite and >= 0");
+    throw Invalid("mu-k = " + number_text(*mu_k) + " is out of range: must be finite and >= 0");
   if (auto e = s.number("restitution"); e && !(std::isfinite(*e) && *e >= 0.0 && *e <= 1.0))
-    throw Invalid("restitution = " + std::to_string(*e) + " is out of range: must be in [0, 1]");
+    throw Invalid("restitution = " + number_text(*e) + " is out of range: must be in [0, 1]");
 }
 
 ForcedModel block_model(const Settings& s, const std::string& model, bool housner) {

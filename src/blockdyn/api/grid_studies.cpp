@@ -9,6 +9,8 @@
 // Figs. 3-5, 10-11).
 #include "blockdyn/api/grid_studies.hpp"
 
+#include "blockdyn/base/number_text.hpp"
+
 #include <cmath>
 #include <map>
 #include <sstream>
@@ -51,7 +53,7 @@ SurvivalOptions excitation_grid_of(const StudyOptions& o) {
   s.phase = o.number("phase");
   s.omega_min = o.number("omega-min");
   s.omega_max = o.number("omega-max");
-  s.omega_points = int(o.integer("omega-points"));
+  s.omega_points = o.small_integer("omega-points");
   s.t_end = o.number("t-end");
   if (o.given("periods")) s.periods = o.number("periods");
   s.threads = o.threads();
@@ -87,7 +89,7 @@ SurvivalOptions survival_options_of(const StudyOptions& so, int& refine) {
   SurvivalOptions o = excitation_grid_of(so);
   o.beta_min = so.number("beta-min");
   o.beta_max = so.number("beta-max");
-  o.beta_points = int(so.integer("beta-points"));
+  o.beta_points = so.small_integer("beta-points");
   o.t_star_classes = so.numbers("t-star-classes");
   if (o.t_star_classes.size() != 4)
     throw std::invalid_argument(
@@ -151,8 +153,8 @@ GridStudy survival_grid(const Settings& given, const std::string& output) {
   const auto fm = std::make_shared<const ForcedModel>(forced_model_of(so));
   // The longest run the periods give (at the lowest frequency), before any file is made.
   if (o.periods > 0 && !(o.periods * 2 * M_PI / (o.omega_min * fm->p) <= 1e5))
-    throw std::invalid_argument("periods = " + std::to_string(o.periods) + " gives runs of " +
-                                std::to_string(o.periods * 2 * M_PI / (o.omega_min * fm->p)) +
+    throw std::invalid_argument("periods = " + number_text(o.periods) + " gives runs of " +
+                                number_text(o.periods * 2 * M_PI / (o.omega_min * fm->p), 6) +
                                 " s at omega-min: at most 1e5 s (lower --periods or raise --omega-min)");
   const json options = survival_run_options(o, *fm, refine);
   const json definition = {{"model", fm->description},
@@ -259,7 +261,7 @@ GridStudy spectrum_grid(const Settings& given, const std::string& output) {
   o.durations = durations_of(so);
   o.amplitude_min = so.number("amplitude-min");
   o.amplitude_max = so.number("amplitude-max");
-  o.scan_points = int(so.integer("scan-points"));
+  o.scan_points = so.small_integer("scan-points");
   o.rel_tol = so.number("rel-tol");
   const double t_after = so.number("t-after");
   require_in_range("t-after", t_after, 0, 1e4);

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "blockdyn/api/harmonic_run.hpp"
 
+#include "blockdyn/base/number_text.hpp"
+
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
@@ -104,7 +106,7 @@ HarmonicSetup harmonic_setup(const StudyOptions& o) {
   h.Omega = 2 * M_PI * h.g.horizontal.frequency;
   h.t_end = o.given("t-end") ? o.number("t-end") : periods * h.period;
   if (!(h.t_end <= 1e5))
-    throw std::invalid_argument("periods: the run would last " + std::to_string(h.t_end) + " s, at most 1e5 s");
+    throw std::invalid_argument("periods: the run would last " + number_text(h.t_end, 6) + " s, at most 1e5 s");
   if (h.t_end / h.period > 1e6) throw std::invalid_argument("t-end: more than 1e6 forcing periods");
   h.title = forced_model_label(o) + ", beta = " + short_num(h.beta) + ", omega = " + short_num(h.omega) +
             ", phase = " + short_num(h.phase) + ", " + h.fm.block_names[h.block];
@@ -114,7 +116,7 @@ HarmonicSetup harmonic_setup(const StudyOptions& o) {
 HarmonicRun run_harmonic(const HarmonicSetup& h, double t0, int per_period) {
   if (h.t_end / h.period * per_period > 1e7)
     throw std::invalid_argument("trace-per-period: " + std::to_string(per_period) + " samples per period over " +
-                                std::to_string(h.t_end / h.period) + " periods exceed 1e7 samples");
+                                number_text(h.t_end / h.period, 6) + " periods exceed 1e7 samples");
   HarmonicRun r;
   r.trace = std::make_unique<ForcedTrace>(t0, h.period, per_period);
   r.trace->keep_events_of(h.block);

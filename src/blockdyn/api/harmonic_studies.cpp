@@ -9,6 +9,8 @@
 #include <stdexcept>
 
 #include "blockdyn/analysis/forced/cycle_detection.hpp"
+
+#include "blockdyn/base/number_text.hpp"
 #include "blockdyn/analysis/forced/impact_map.hpp"
 #include "blockdyn/api/harmonic_run.hpp"
 #include "blockdyn/base/range_check.hpp"
@@ -56,10 +58,10 @@ json segment_json(const CycleSegment& s, double period) {
 
 CycleOptions cycle_options_of(const StudyOptions& o) {
   CycleOptions c;
-  c.window = int(o.integer("window"));
-  c.max_period = int(o.integer("max-period"));
+  c.window = o.small_integer("window");
+  c.max_period = o.small_integer("max-period");
   c.tolerance = o.number("tolerance");
-  c.transient = int(o.integer("transient"));
+  c.transient = o.small_integer("transient");
   validate(c);
   return c;
 }
@@ -159,7 +161,7 @@ StudyReport impact_map_study(const Settings& given, const StudyRequest& request)
   const double t_from = double(transient) * h.period;
   if (!(t_from < h.t_end))
     throw std::invalid_argument("transient: " + std::to_string(transient) + " periods leave nothing of a run of " +
-                                std::to_string(h.t_end / h.period) + " periods");
+                                number_text(h.t_end / h.period, 6) + " periods");
   const double t0 = section_time(h.Omega, h.phase, section_phase);
   const HarmonicRun r = run_harmonic(h, t0, request.wants("trace") ? h.trace_per_period : 1);
   const ForcedTrace& tr = *r.trace;

@@ -143,10 +143,10 @@ StudyReport region_report(const StudyOptions& o, const OrbitSetup& st, const Stu
     ro.ks_min = (o.given("beta-min") ? o.number("beta-min") : 0.0) * st.rf.alpha();
     ro.ks_max = (o.given("beta-max") ? o.number("beta-max") : 0.0) * st.rf.alpha();
   }
-  ro.ks_points = int(o.integer("ks-points"));
+  ro.ks_points = o.small_integer("ks-points");
   ro.omega_min = o.number("omega-min");
   ro.omega_max = o.number("omega-max");
-  ro.omega_points = int(o.integer("omega-points"));
+  ro.omega_points = o.small_integer("omega-points");
   ro.shooting = st.so;
   ro.threads = o.threads();
   validate(ro);
@@ -219,7 +219,7 @@ ContinuationOptions continuation_options(const StudyOptions& o, const OrbitSetup
   co.ds = o.number("ds");
   co.ds_max = std::fmax(co.ds, co.ds_max);
   co.ds_min = std::fmin(co.ds_min, co.ds);
-  co.max_points = int(o.integer("max-points"));
+  co.max_points = o.small_integer("max-points");
   co.shooting = st.so;
   validate(co);
   return co;

@@ -117,6 +117,9 @@ GridStudy rocking_grid(const Settings& given, const std::string& output) {
   RigidBlockParams base;
   base.shape.mass = so.number("mass");
   base.shape.g = so.number("g");
+  // The block's size comes from g and p: each is checked as given, before any size is made of it.
+  require_in_range("g", base.shape.g, 0, 1e3, false);
+  require_in_range("mass", base.shape.mass, 0, 1e12, false);
   const bool housner = model == "housner";
   if (housner)
     for (const char* n : {"mu-s", "mu-k", "impact"})

@@ -33,6 +33,8 @@ class Settings {
   double number(std::string_view name, double fallback) const;
   std::optional<double> number(std::string_view name) const;
   long integer(std::string_view name, long fallback) const;
+  // The same for a count held in an int: a value beyond an int's range is refused naming it.
+  int small_integer(std::string_view name, int fallback) const;
   std::string text(std::string_view name, const std::string& fallback = "") const;
   bool flag(std::string_view name) const;  // given without a value, or true/1
   std::vector<std::string> values(std::string_view name) const;

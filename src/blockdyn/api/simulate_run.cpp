@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "blockdyn/api/simulate_run.hpp"
 
+#include "blockdyn/base/number_text.hpp"
+
 #include "blockdyn/model/assembly/interface_faces.hpp"
 
 #include <cmath>
@@ -23,7 +25,7 @@ namespace {
 RunTiming fastest(const RunTiming& a, const RunTiming& b) { return b.cpu_s < a.cpu_s ? b : a; }
 
 // The figure scripts' numbers, as the command line always wrote them (std::to_string).
-std::string arg(double v) { return std::to_string(v); }
+std::string arg(double v) { return number_text(v); }
 
 void require_rows(double interval, double span, double max_rows) {
   require_sample_count("output-interval", interval, span, max_rows);

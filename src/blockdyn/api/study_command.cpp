@@ -85,6 +85,13 @@ long StudyOptions::integer(const std::string& name) const {
   return values_.integer(name, 0);
 }
 
+int StudyOptions::small_integer(const std::string& name) const {
+  const long v = integer(name);
+  if (v < -2147483647L || v > 2147483647L)
+    throw std::invalid_argument(name + " = " + std::to_string(v) + " is out of range: must be at most 2147483647 in size");
+  return int(v);
+}
+
 std::string StudyOptions::text(const std::string& name) const { return values_.text(name); }
 
 bool StudyOptions::flag(const std::string& name) const { return given_.flag(name); }

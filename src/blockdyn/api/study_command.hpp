@@ -106,6 +106,7 @@ class StudyOptions {
   StudyOptions(const Settings& given, const std::vector<StudyOption>& specs);
   double number(const std::string& name) const;
   long integer(const std::string& name) const;
+  int small_integer(const std::string& name) const;  // refused beyond an int's range, naming it
   std::string text(const std::string& name) const;
   bool flag(const std::string& name) const;
   // Every value given (each "a,b,c" or one number), else the default's; std::invalid_argument

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <set>
 
+#include "blockdyn/base/number_text.hpp"
 #include "blockdyn/io/toml_read.hpp"
 #include "blockdyn/model/assembly/interface_faces.hpp"
 
@@ -55,6 +56,15 @@ std::vector<Vec2> read_vertices(const toml::table& t, const std::string& w) {
 AssemblyBlock read_block(const toml::table& t, const std::string& w, std::size_t i) {
   const auto mass = opt_number(t, w, "mass"), rho = opt_number(t, w, "density"), depth = opt_number(t, w, "thickness");
   if (mass && rho) fail(w, "give mass or density (with thickness), not both");
+  // Each as given, before any is combined into a mass.
+  auto check = [&](const std::optional<double>& v, const char* key, double hi, const char* unit) {
+    if (v && !(*v > 0 && *v <= hi))
+      throw std::invalid_argument(w + "." + key + " = " + number_text(*v) + " is out of range: must be in (0, " +
+                                  number_text(hi) + "] " + unit);
+  };
+  check(mass, "mass", 1e12, "kg");
+  check(rho, "density", 1e5, "kg/m^3");
+  check(depth, "thickness", 1e3, "m");
   if (!mass && !(rho && depth)) fail(w + ".mass", "is missing (or give density and thickness)");
   const std::string name = opt_string(t, w, "name").value_or("block " + std::to_string(i));
   AssemblyBlock b;
@@ -116,7 +126,7 @@ void apply_default_restitution(Assembly& a, bool rigid) {
 }
 
 double friction_of_angle(double deg, const std::string& field) {
-  if (!(deg >= 0 && deg <= 90)) fail(field, "= " + std::to_string(deg) + " must be in [0, 90] degrees");
+  if (!(deg >= 0 && deg <= 90)) fail(field, "= " + number_text(deg) + " must be in [0, 90] degrees");
   // 90 degrees: no sliding; a coefficient so large that the static cone is never left, kept
   // finite so that mu N stays a number at N = 0.
   if (deg >= 90) return kNoSlip;

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "blockdyn/io/scenario.hpp"
 
+#include "blockdyn/base/number_text.hpp"
+
 #include <cmath>
 #include <set>
 #include <stdexcept>
@@ -192,7 +194,7 @@ BlockStateVec initial_state(const Scenario& s) {
   const char* names[6] = {"x0", "y0", "w0", "vx0", "vy0", "vw0"};
   for (std::size_t i = 0; i < 6; ++i)
     if (!std::isfinite(z[i]))
-      throw std::invalid_argument(std::string("initial.") + names[i] + " = " + std::to_string(z[i]) +
+      throw std::invalid_argument(std::string("initial.") + names[i] + " = " + number_text(z[i]) +
                                   " is out of range: must be finite");
   return z;
 }

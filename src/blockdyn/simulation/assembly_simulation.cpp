@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "blockdyn/simulation/assembly_simulation.hpp"
 
+#include "blockdyn/base/number_text.hpp"
+
 #include "blockdyn/base/range_check.hpp"
 
 #include <algorithm>
@@ -298,7 +300,7 @@ std::string fell_through(const Assembly& a, const AssemblyResult& r) {
     const AssemblyBlock& k = a.blocks[b];
     const double drop = k.y - r.blocks[b].final_state[1];
     if (drop > std::fmax(k.width, k.height))
-      return "block " + std::to_string(b) + " (" + k.name + ") fell " + std::to_string(drop) +
+      return "block " + std::to_string(b) + " (" + k.name + ") fell " + number_text(drop, 6) +
              " m below its start: nothing carried it";
   }
   return "";
@@ -348,8 +350,8 @@ AssemblyResult run(const Assembly& a, const GroundMotion& g, const AssemblyRunOp
     r.gauss_seidel_sweeps = w.sweeps;
     if (effective_scheme(a, o) == AssemblyScheme::TimeStepping) r.impacts = r.event_counts[kAsmImpact];
     if (w.count > 0 && r.note.empty())
-      r.note = std::to_string(w.count) + " window(s), " + std::to_string(w.time) +
-               " s in all, integrated by Moreau-Jean time-stepping (h = " + std::to_string(o.step) + " s): " + w.first;
+      r.note = std::to_string(w.count) + " window(s), " + number_text(w.time, 6) +
+               " s in all, integrated by Moreau-Jean time-stepping (h = " + number_text(o.step, 6) + " s): " + w.first;
   } else {
     out = run_model(m, md, z, 0.0, o.t_end, o.integrator, fan);
   }

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "blockdyn/simulation/rigid_assembly_run.hpp"
 
+#include "blockdyn/base/number_text.hpp"
+
 #include <cmath>
 #include <vector>
 
@@ -37,7 +39,7 @@ class TimeSteppingWindow {
     while (t < t_end) {
       const State z0 = z;
       if (!mj_.step(t, q_, v_)) {
-        m_.report("the contact problem (LCP) has no solution at t = " + std::to_string(t) + " s");
+        m_.report("the contact problem (LCP) has no solution at t = " + number_text(t, 6) + " s");
         emit(t, z, z, mode, mode, 0, kAsmInvalid, true);
         stopped = true;
         return false;
@@ -185,7 +187,7 @@ class TimeSteppingWindow {
     for (int i = 0; i < ni_; ++i)
       if (m_.assembly().interfaces[i].lower < 0 && !is_closed(mode.point[2 * i]) && !is_closed(mode.point[2 * i + 1])) {
         m_.report("block " + std::to_string(m_.assembly().interfaces[i].upper) + " left the ground at t = " +
-                  std::to_string(t1) + " s: outside seed 001's 5-DOF restriction (blocks on the ground only rock)");
+                  number_text(t1, 6) + " s: outside seed 001's 5-DOF restriction (blocks on the ground only rock)");
         emit(t1, z, z, mode, mode, M::ev_normal(2 * i), kAsmInvalid, true);
         return false;
       }

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "blockdyn/simulation/rigid_simulation.hpp"
 
+#include "blockdyn/base/number_text.hpp"
+
 #include <cmath>
 #include <stdexcept>
 
@@ -74,11 +76,11 @@ void finish(const Model& m, const RunOutcome<Model>& out, const EnergyBalance<Mo
   if (res.event_counts[int(RigidEventKind::Painleve)] > 0 || (out.status == RunStatus::ModelStop && !res.overturn_time))
     res.status = SimStatus::Invalid;
   if (res.event_counts[int(RigidEventKind::Painleve)] > 0)
-    res.note = "Painleve: no unique consistent mechanism (or impulse) at t = " + std::to_string(out.t) +
+    res.note = "Painleve: no unique consistent mechanism (or impulse) at t = " + number_text(out.t, 6) +
                " s; the rigid model with this friction and slenderness has no unique motion";
   else if (res.status == SimStatus::Invalid)
     res.note =
-        "the state left the model at t = " + std::to_string(out.t) + " s (e.g. vertical ground acceleration above g)";
+        "the state left the model at t = " + number_text(out.t, 6) + " s (e.g. vertical ground acceleration above g)";
 }
 
 template <class Model>
@@ -129,7 +131,7 @@ RigidResult simulate_rigid(const RigidBlockParams& p, const GroundMotion& g, con
   const auto mode = m.initial_mode(opt.t_start, z);
   if (!mode)
     throw std::invalid_argument("initial state: no unique consistent mechanism (Painleve's paradox for mu-k = " +
-                                std::to_string(p.interface.mu_k) + " and this slenderness)");
+                                number_text(p.interface.mu_k, 6) + " and this slenderness)");
   return run_rigid_family(m, *mode, z, opt, extra, events, "rigid");
 }
 

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "blockdyn/analysis/forced/overturning_spectrum.hpp"
 
+#include "blockdyn/base/number_text.hpp"
+
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -13,7 +15,7 @@ void validate(const SpectrumOptions& o) {
   if (o.durations.empty() || o.durations.size() > 100000)
     throw std::invalid_argument("durations: 1 to 100000 values are needed");
   for (double d : o.durations)
-    if (!(d > 0 && d <= 1e4)) throw std::invalid_argument("duration = " + std::to_string(d) + " must be in (0, 1e4] s");
+    if (!(d > 0 && d <= 1e4)) throw std::invalid_argument("duration = " + number_text(d) + " must be in (0, 1e4] s");
   if (!(o.amplitude_min > 0 && o.amplitude_max > o.amplitude_min && o.amplitude_max <= 1e3))
     throw std::invalid_argument("amplitude-min, amplitude-max: need 0 < min < max <= 1000 g");
   if (!(o.scan_points >= 2 && o.scan_points <= 100000))

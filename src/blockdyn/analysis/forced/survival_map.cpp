@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "blockdyn/analysis/forced/survival_map.hpp"
 
+#include "blockdyn/base/number_text.hpp"
+
 #include <cmath>
 #include <stdexcept>
 
@@ -24,7 +26,7 @@ void validate(const SurvivalOptions& o) {
   // A run shorter than a hundredth of a forcing period observes nothing (4.9e-324 periods gave
   // every point a t-end of 0).
   if (!(o.periods == 0 || (o.periods >= 1e-2 && o.periods <= 1e5)))
-    throw std::invalid_argument("periods = " + std::to_string(o.periods) +
+    throw std::invalid_argument("periods = " + number_text(o.periods) +
                                 " is out of range: must be in [0.01, 1e5] forcing periods (or 0: use t-end)");
   if (!(std::isfinite(o.phase))) throw std::invalid_argument("phase must be finite");
 }

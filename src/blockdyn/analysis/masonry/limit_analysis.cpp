@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "blockdyn/analysis/masonry/limit_analysis.hpp"
 
+#include "blockdyn/base/number_text.hpp"
+
 #include <cmath>
 #include <stdexcept>
 
@@ -151,7 +153,7 @@ MinThickness min_thickness_ratio(const PresetOptions& arch, double tol) {
     try {
       ok = stands(lo, &out.at_minimum, &out.arch);
     } catch (const std::invalid_argument&) {
-      throw std::invalid_argument("the arch stands at thickness-ratio = " + std::to_string(hi) +
+      throw std::invalid_argument("the arch stands at thickness-ratio = " + number_text(hi, 6) +
                                   " and its voussoirs are too thin to try less (1 mm)");
     }
     if (!ok) break;

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "blockdyn/analysis/sweep/boundary_search.hpp"
 
+#include "blockdyn/base/number_text.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -21,7 +23,7 @@ const char* to_string(BoundaryStatus s) {
 std::vector<double> log_grid(double lo, double hi, int n) {
   if (!(lo > 0) || !(hi > lo) || !std::isfinite(hi) || n < 2)
     throw std::invalid_argument("log grid needs 0 < lo < hi (finite) and at least 2 points; got lo = " +
-                                std::to_string(lo) + ", hi = " + std::to_string(hi) +
+                                number_text(lo) + ", hi = " + number_text(hi) +
                                 ", points = " + std::to_string(n));
   std::vector<double> g(n);
   const double a = std::log(lo), b = std::log(hi);

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "blockdyn/analysis/winkler/equilibrium_bifurcation.hpp"
 
+#include "blockdyn/base/number_text.hpp"
+
 #include <algorithm>
 #include <boost/math/tools/minima.hpp>
 #include <boost/math/tools/roots.hpp>
@@ -98,14 +100,14 @@ double find_k_uns(double r) {
   }
   auto m = [r](double k) { return reduced_arm_minimum(params(r, k)); };
   double hi = k_os, mhi = m(hi);
-  if (!(mhi < 0.0)) throw std::domain_error("no stable tilted branch below k_os for r = " + std::to_string(r));
+  if (!(mhi < 0.0)) throw std::domain_error("no stable tilted branch below k_os for r = " + number_text(r));
   // Walk down from k_os to the first k with no tilted equilibrium left.
   for (double step = 0.25;; step *= 2.0) {
     const double lo = std::max(kMinK, k_os - step);
     const double mlo = m(lo);
     if (mlo > 0.0) return solve_in_k(m, lo, hi, mlo, mhi);
     if (mlo == 0.0) return lo;
-    if (lo == kMinK) throw std::domain_error("a stable equilibrium persists down to k = 2 for r = " + std::to_string(r));
+    if (lo == kMinK) throw std::domain_error("a stable equilibrium persists down to k = 2 for r = " + number_text(r));
     hi = lo;
     mhi = mlo;
   }

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "blockdyn/analysis/winkler/response_type.hpp"
 
+#include "blockdyn/base/number_text.hpp"
+
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
@@ -23,7 +25,7 @@ const char* to_string(ResponseType t) {
 
 void validate(const ResponseOptions& o) {
   auto bad = [](const std::string& f, const std::string& range, double v) {
-    throw std::invalid_argument(f + " = " + std::to_string(v) + " is out of range: must be " + range);
+    throw std::invalid_argument(f + " = " + number_text(v) + " is out of range: must be " + range);
   };
   if (!std::isfinite(o.t_end) || o.t_end <= 0) bad("t-end", "finite and > 0", o.t_end);
   if (!(o.late_fraction >= 0 && o.late_fraction < 1)) bad("late-fraction", "in [0, 1)", o.late_fraction);

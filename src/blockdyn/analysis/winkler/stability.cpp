@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "blockdyn/analysis/winkler/stability.hpp"
 
+#include "blockdyn/base/number_text.hpp"
+
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -14,7 +16,7 @@ namespace {
 
 void check_search(const StabilitySearchOptions& s) {
   if (!(s.eps > 0) || !(s.eps < 1))
-    throw std::invalid_argument("eps = " + std::to_string(s.eps) + " is out of range: must be in (0, 1)");
+    throw std::invalid_argument("eps = " + number_text(s.eps) + " is out of range: must be in (0, 1)");
 }
 
 }  // namespace

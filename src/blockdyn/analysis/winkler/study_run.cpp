@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "blockdyn/analysis/winkler/study_run.hpp"
 
+#include "blockdyn/base/number_text.hpp"
+
 #include <stdexcept>
 #include <string>
 
@@ -20,8 +22,8 @@ SimulationResult run_checked(const BlockParams& p, const IcChoice& ic, const Sim
   SimulationResult res = simulate(p, {}, ic.state(p), s, sink);
   if (res.status == SimStatus::NumericalFailure)
     throw std::runtime_error("integration failed (" + std::string(to_string(res.run_status)) + ") for " +
-                             ic.name() + ", r = " + std::to_string(p.r) + ", mu = " + std::to_string(p.mu) +
-                             ", k = " + std::to_string(p.k) + " at t = " + std::to_string(res.t_final));
+                             ic.name() + ", r = " + number_text(p.r) + ", mu = " + number_text(p.mu) +
+                             ", k = " + number_text(p.k) + " at t = " + number_text(res.t_final));
   return res;
 }
 

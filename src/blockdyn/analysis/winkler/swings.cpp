@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "blockdyn/analysis/winkler/swings.hpp"
 
+#include "blockdyn/base/number_text.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <iomanip>
@@ -13,7 +15,7 @@ namespace blockdyn {
 
 void validate(const SwingOptions& o) {
   auto bad = [](const std::string& f, const std::string& range, double v) {
-    throw std::invalid_argument(f + " = " + std::to_string(v) + " is out of range: must be " + range);
+    throw std::invalid_argument(f + " = " + number_text(v) + " is out of range: must be " + range);
   };
   if (!std::isfinite(o.quadrature_dt) || o.quadrature_dt <= 0) bad("quadrature-dt", "finite and > 0", o.quadrature_dt);
   if (o.min_samples_per_step < 1 || o.min_samples_per_step > 1000)

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "blockdyn/model/assembly/assembly_model.hpp"
 
+#include "blockdyn/base/number_text.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -548,8 +550,8 @@ std::optional<std::string> AssemblyModel<Cap>::validity_problem(const Mode& m, c
   for (int p = 0; p < 2 * ni_; ++p) {
     const PointForce pf = point_force(m, z, p);
     if (pf.d > d_max_)
-      return "interpenetration " + std::to_string(pf.d) + " m at interface " + std::to_string(p / 2) +
-             " exceeds the model's limit " + std::to_string(d_max_) + " m (2% of the smallest block size)";
+      return "interpenetration " + number_text(pf.d, 6) + " m at interface " + std::to_string(p / 2) +
+             " exceeds the model's limit " + number_text(d_max_, 6) + " m (2% of the smallest block size)";
   }
   return std::nullopt;
 }

@@ -122,6 +122,12 @@ void build_arch(Assembly& a, const PresetOptions& o) {
   if (!(o.embrace > 0 && o.embrace <= 180))
     throw std::invalid_argument("embrace = " + num(o.embrace) + " must be in (0, 180] degrees");
   const int n = o.voussoirs;
+  // A voussoir spanning 180 degrees or more is no convex block (one over a semicircle has its four
+  // corners on one line).
+  if (!(o.embrace / n < 180.0))
+    throw std::invalid_argument("voussoirs = " + std::to_string(n) + " over embrace = " + num(o.embrace) +
+                                " degrees: each voussoir must span less than 180 degrees (give at least " +
+                                std::to_string(int(std::floor(o.embrace / 180.0)) + 1) + ")");
   const double R = o.radius, ri = R * (1 - 0.5 * o.thickness_ratio), re = R * (1 + 0.5 * o.thickness_ratio);
   const double half = 0.5 * o.embrace * M_PI / 180.0, step = 2.0 * half / n, yc = -R * std::cos(half);
   auto at = [&](double r, double phi) { return Vec2{r * std::cos(phi), yc + r * std::sin(phi)}; };
@@ -130,6 +136,15 @@ void build_arch(Assembly& a, const PresetOptions& o) {
     AssemblyBlock b = polygon_block("voussoir " + std::to_string(k), {at(ri, pa), at(ri, pb), at(re, pb), at(re, pa)},
                                     0.0, o.density, o.thickness);
     b.name = "voussoir " + std::to_string(k);
+    const double size = std::fmax(b.width, b.height), least = std::fmin(b.width, b.height);
+    if (size > 1e3)
+      throw std::invalid_argument("radius = " + num(o.radius) + " m, thickness-ratio = " + num(o.thickness_ratio) +
+                                  " and voussoirs = " + std::to_string(n) + " make voussoirs " + num(size) +
+                                  " m across: at most 1000 m (a smaller radius or more voussoirs)");
+    if (least < kMinBlockSize)
+      throw std::invalid_argument("radius = " + num(o.radius) + " m, thickness-ratio = " + num(o.thickness_ratio) +
+                                  " and voussoirs = " + std::to_string(n) + " make voussoirs " + num(least) +
+                                  " m thin: at least 1e-3 m" + kMinBlockSizeWhy);
     a.blocks.push_back(b);
   }
   // Edge 1 of a voussoir is its joint towards the right springing, edge 3 towards the left.
@@ -162,7 +177,8 @@ Assembly make_preset(const std::string& name, const PresetOptions& o) {
   if (!(o.slenderness >= 0.1 && o.slenderness <= 100))
     throw std::invalid_argument("slenderness = " + num(o.slenderness) + " must be in [0.1, 100]");
   if (!(o.block_width >= kMinBlockSize && o.block_width <= 100))
-    throw std::invalid_argument("block-width = " + num(o.block_width) + " must be in [1e-3, 100] m" + kMinBlockSizeWhy);
+    throw std::invalid_argument("block-width = " + num(o.block_width) + " must be in [1e-3, 100] m" +
+                                (o.block_width < kMinBlockSize ? kMinBlockSizeWhy : ""));
   if (!(o.thickness > 0 && o.thickness <= 100))
     throw std::invalid_argument("thickness = " + num(o.thickness) + " must be in (0, 100] m");
   if (!(o.density > 0 && o.density <= 1e5))
@@ -312,9 +328,11 @@ void validate(const Assembly& a, int max_blocks) {
     const AssemblyBlock& k = a.blocks[i];
     const std::string w = "block " + std::to_string(i);
     if (!(k.width >= kMinBlockSize && k.width <= 1e3))
-      throw std::invalid_argument(w + ".width = " + num(k.width) + " must be in [1e-3, 1000] m" + kMinBlockSizeWhy);
+      throw std::invalid_argument(w + ".width = " + num(k.width) + " must be in [1e-3, 1000] m" +
+                                  (k.width < kMinBlockSize ? kMinBlockSizeWhy : ""));
     if (!(k.height >= kMinBlockSize && k.height <= 1e3))
-      throw std::invalid_argument(w + ".height = " + num(k.height) + " must be in [1e-3, 1000] m" + kMinBlockSizeWhy);
+      throw std::invalid_argument(w + ".height = " + num(k.height) + " must be in [1e-3, 1000] m" +
+                                  (k.height < kMinBlockSize ? kMinBlockSizeWhy : ""));
     if (!(k.mass > 0 && k.mass <= 1e12))
       throw std::invalid_argument(w + ".mass = " + num(k.mass) + " must be in (0, 1e12] kg");
     for (double v : {k.x, k.y, k.theta, k.vx, k.vy, k.omega})
@@ -339,8 +357,12 @@ void validate(const Assembly& a, int max_blocks) {
       throw std::invalid_argument(w + ".lower = " + std::to_string(f.lower) + " must be -1 (ground) or another block");
     for (std::size_t k = 0; k < j; ++k) {
       const AssemblyInterface& o = a.interfaces[k];
-      if (o.lower == f.lower && o.upper == f.upper) throw std::invalid_argument(w + " repeats interface " + std::to_string(k));
-      if (o.lower == f.upper && o.upper == f.lower)
+      // Two ground interfaces of one block on different named edges are two abutments (a single
+      // voussoir between its springings), not one joint twice.
+      const bool same_edges = o.upper_edge == f.upper_edge && o.lower_edge == f.lower_edge;
+      if (o.lower == f.lower && o.upper == f.upper && same_edges)
+        throw std::invalid_argument(w + " repeats interface " + std::to_string(k));
+      if (o.lower == f.upper && o.upper == f.lower && o.upper_edge == f.lower_edge && o.lower_edge == f.upper_edge)
         throw std::invalid_argument(w + " (lower = " + std::to_string(f.lower) + ", upper = " + std::to_string(f.upper) +
                                     ") repeats interface " + std::to_string(k) +
                                     " the other way round: one joint is one interface");

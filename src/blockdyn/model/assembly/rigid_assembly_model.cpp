@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "blockdyn/model/assembly/rigid_assembly_model.hpp"
 
+#include "blockdyn/base/number_text.hpp"
+
 #include <Eigen/Dense>
 
 #include <algorithm>
@@ -931,7 +933,7 @@ std::optional<std::string> RigidAssemblyModel<Cap>::validity_problem(const Mode&
   for (int p = 0; p < 2 * ni_; ++p) {
     const double gap = contact_gap(geo.lower[p / 2], geo.upper[p / 2], p % 2, m.owner[p]);
     if (gap < -0.02 * len_)
-      return "interpenetration " + std::to_string(-gap) + " m at interface " + std::to_string(p / 2);
+      return "interpenetration " + number_text(-gap, 6) + " m at interface " + std::to_string(p / 2);
   }
   return std::nullopt;
 }

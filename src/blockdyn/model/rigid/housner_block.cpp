@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "blockdyn/model/rigid/housner_block.hpp"
 
+#include "blockdyn/base/number_text.hpp"
+
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -10,14 +12,14 @@ namespace blockdyn {
 double housner_coefficient(const BlockShape& shape, std::optional<double> restitution) {
   if (restitution) {
     if (!(std::isfinite(*restitution) && *restitution >= 0.0 && *restitution <= 1.0))
-      throw std::invalid_argument("restitution = " + std::to_string(*restitution) + " is out of range: must be in [0, 1]");
+      throw std::invalid_argument("restitution = " + number_text(*restitution) + " is out of range: must be in [0, 1]");
     return *restitution;
   }
   const double e = shape.housner_restitution();
   if (!(e >= 0.0))
     throw std::invalid_argument(
-        "restitution: Housner's 1 - 1.5 sin^2(alpha) = " + std::to_string(e) + " is negative for this block (b/h = " +
-        std::to_string(shape.width / shape.height) +
+        "restitution: Housner's 1 - 1.5 sin^2(alpha) = " + number_text(e, 6) + " is negative for this block (b/h = " +
+        number_text(shape.width / shape.height, 6) +
         " > sqrt(2)): it would bounce back onto the same corner; give --restitution in [0, 1], or use --model rigid "
         "(impacts by the impact law, --impact)");
   return e;
@@ -134,7 +136,7 @@ HousnerMode HousnerBlock::initial_mode(double t, const State& z) const {
 std::optional<std::string> HousnerBlock::validity_problem(const State& z) const {
   if (!std::isfinite(z[kTheta]) || !std::isfinite(z[kOmega])) return std::string("the state is not finite");
   if (std::fabs(z[kTheta]) >= 0.5 * M_PI)
-    return "|w0| = " + std::to_string(std::fabs(z[kTheta])) + " rad: the block lies on its side (|w0| must be < pi/2)";
+    return "|w0| = " + number_text(std::fabs(z[kTheta])) + " rad: the block lies on its side (|w0| must be < pi/2)";
   return std::nullopt;
 }
 

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "blockdyn/model/rigid/rigid_block.hpp"
 
+#include "blockdyn/base/number_text.hpp"
+
 #include <cmath>
 #include <string>
 
@@ -407,12 +409,12 @@ std::optional<std::string> RigidBlock::validity_problem(const State& z) const {
   for (std::size_t i = 0; i < 6; ++i)
     if (!std::isfinite(z[i])) return std::string("the state is not finite");
   if (std::fabs(z[kTheta]) >= 0.5 * M_PI)
-    return "|w0| = " + std::to_string(std::fabs(z[kTheta])) + " rad: the block lies on its side (|w0| must be < pi/2)";
+    return "|w0| = " + number_text(std::fabs(z[kTheta])) + " rad: the block lies on its side (|w0| must be < pi/2)";
   for (int side : {1, -1}) {
     const Vec2 r = corner(z[kTheta], side);
     const double gap = z[kY] + r.y;
     if (gap < -tol_gap_)
-      return std::string("corner ") + corner_name(side) + " is " + std::to_string(-gap) +
+      return std::string("corner ") + corner_name(side) + " is " + number_text(-gap, 6) +
              " m below the ground (y0 too low for this w0)";
     if (gap <= tol_gap_ && z[kVY] + z[kOmega] * r.x < -tol_v_)
       return std::string("corner ") + corner_name(side) + " touches the ground and moves into it (vy0, vw0)";

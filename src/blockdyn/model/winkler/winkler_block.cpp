@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "blockdyn/model/winkler/winkler_block.hpp"
 
+#include "blockdyn/base/number_text.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -319,8 +321,8 @@ std::optional<std::string> WinklerBlock::validity_problem(const State& z) const 
   for (std::size_t i = 0; i < 6; ++i)
     if (!std::isfinite(z[i])) return std::string("state contains a non-finite value");
   if (std::fabs(z[kW]) > alpha_)
-    return "|w| = " + std::to_string(std::fabs(z[kW])) + " exceeds the overturning angle alpha = atan(r) = " +
-           std::to_string(alpha_);
+    return "|w| = " + number_text(std::fabs(z[kW]), 6) + " exceeds the overturning angle alpha = atan(r) = " +
+           number_text(alpha_, 6);
   const CornerHeights ch = corner_heights(p_.r, z[kH], z[kW]);
   if (std::max(ch.other_bottom, ch.upper_pivot_side) < 0.0)
     return std::string("more than two corners are below the foundation surface (the model allows at most two)");
