@@ -292,6 +292,14 @@ TEST(LimitAnalysis, ArchMinimumThicknessTendsToMilankovitchs) {
   blockdyn::test::record("arch_min_thickness_100", m100.ratio);
   EXPECT_LT(m20.ratio, m100.ratio);
   EXPECT_LT(m100.ratio, 0.10755);
+  // The search brackets the root to its tolerance: the arch just thinner falls.
+  {
+    PresetOptions thinner = arch_options(20, 0.15);
+    thinner.thickness_ratio = m20.ratio - 1e-8;
+    EXPECT_EQ(limit_analysis(make_preset("arch", thinner), 1, false).status, "unstable");
+    // Extrapolated from the standing side, not bisected (a bisection to 1e-8 takes 28 analyses).
+    EXPECT_LE(m20.evaluations, 16);
+  }
   EXPECT_NEAR(m100.ratio, 0.1075, 2e-4);
   // The thinnest arch is a mechanism under its own weight: lambda 0 with hinges at the joints.
   EXPECT_NEAR(m100.at_minimum.lambda, 0, 1e-5);

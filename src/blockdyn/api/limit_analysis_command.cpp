@@ -120,7 +120,9 @@ json limit_analysis_run(const Settings& given) {
   j["friction"] =
       "associative Coulomb (the linear programme's pyramid |T| <= mu N per interface; sliding dilates): exact for "
       "mechanisms without sliding, an upper estimate for non-associative friction when the mechanism slides";
-  j["solver"] = {{"lp", "GLPK simplex, then its exact (rational) simplex from the optimal basis"}};
+  j["solver"] = {{"lp",
+                  "GLPK's floating-point simplex; its optimal basis solved again in double precision and certified "
+                  "(primal and dual feasible to 1e-9), else GLPK's exact (rational) simplex from it"}};
   j.update(analysis_json(a, r));
   if (given.flag("min-thickness")) {
     if (a.preset != "arch") throw Invalid("--min-thickness needs --preset arch");

@@ -131,40 +131,94 @@ MinThickness min_thickness_ratio(const PresetOptions& arch, double tol) {
     validate(a, kMaxStaticBlocks);
     return a;
   };
-  auto stands = [&](double ratio, LimitAnalysis* keep, Assembly* arch_out) {
-    ++out.evaluations;
-    const Assembly a = build(ratio);
-    // The floating-point simplex: its 1e-9 on lambda is far inside the bisection's tolerance.
-    const LimitAnalysis pos = limit_analysis(a, +1, false);
-    if (pos.status == "unstable") return false;
-    const LimitAnalysis neg = limit_analysis(a, -1, false);
-    if (neg.status == "unstable") return false;
-    if (keep) *keep = pos.lambda <= neg.lambda ? pos : neg;
-    if (arch_out) *arch_out = a;
-    return true;
+  // The margin of an arch of this thickness: the smaller load multiplier of the two directions
+  // (negative: it cannot stand under its own weight; NaN: no equilibrium at all). It rises with
+  // the thickness through 0 at the minimum.
+  struct Trial {
+    double margin;
+    LimitAnalysis analysis;
+    Assembly arch;
   };
+  auto trial = [&](double ratio) {
+    ++out.evaluations;
+    Trial t{NAN, {}, build(ratio)};
+    // The floating-point simplex: its 1e-9 on lambda is far inside the search's tolerance.
+    const LimitAnalysis pos = limit_analysis(t.arch, +1, false), neg = limit_analysis(t.arch, -1, false);
+    t.analysis = pos.lambda <= neg.lambda ? pos : neg;
+    const bool feasible = !pos.interfaces.empty() && !neg.interfaces.empty();
+    if (feasible) t.margin = std::fmin(pos.lambda, neg.lambda);
+    return t;
+  };
+  auto stands = [](const Trial& t) { return t.margin >= 0.0; };
   double hi = 1.9, lo = 0.02;
-  if (!stands(hi, &out.at_minimum, &out.arch))
-    throw std::invalid_argument("the arch does not stand under its own weight even at thickness-ratio = 1.9");
+  Trial th = trial(hi);
+  if (!stands(th)) throw std::invalid_argument("the arch does not stand under its own weight even at thickness-ratio = 1.9");
   // A flat arch stands thinner than a semicircular one: halve until it falls (or its voussoirs
   // fall below the smallest block size, 1 mm, where the search stops at the last ratio tried).
+  Trial tl;
   while (true) {
-    bool ok;
     try {
-      ok = stands(lo, &out.at_minimum, &out.arch);
+      tl = trial(lo);
     } catch (const std::invalid_argument&) {
       throw std::invalid_argument("the arch stands at thickness-ratio = " + number_text(hi, 6) +
                                   " and its voussoirs are too thin to try less (1 mm)");
     }
-    if (!ok) break;
+    if (!stands(tl)) break;
     hi = lo;
+    th = std::move(tl);
     lo *= 0.5;
   }
-  while (hi - lo > tol) {
-    const double mid = 0.5 * (lo + hi);
-    (stands(mid, &out.at_minimum, &out.arch) ? hi : lo) = mid;
+  // Below the minimum no equilibrium exists at all (the programme is infeasible): the margin is
+  // known on the standing side only, where it falls smoothly to 0. The quadratic through the three
+  // thinnest standing arches (the secant through two, at first) extrapolates to the root; a trial a
+  // quarter tolerance above that estimate, then one below it, brackets the root in two steps once
+  // the estimate is good; an estimate outside the bracket splits it instead.
+  std::vector<std::pair<double, double>> standing{{hi, th.margin}};  // (ratio, margin), thinnest first
+  auto try_at = [&](double t) {
+    Trial x = trial(t);
+    if (!stands(x)) {
+      lo = t;
+      return false;
+    }
+    hi = t;
+    standing.insert(standing.begin(), {t, x.margin});
+    th = std::move(x);
+    return true;
+  };
+  auto estimate = [&]() {
+    if (standing.size() < 2) return double(NAN);
+    const auto [t1, f1] = standing[0];
+    const auto [t2, f2] = standing[1];
+    const double a = (f2 - f1) / (t2 - t1);
+    if (standing.size() >= 3) {
+      const auto [t3, f3] = standing[2];
+      const double b = ((f3 - f2) / (t3 - t2) - a) / (t3 - t1);
+      // f1 + a x + b x (x + t1 - t2) = 0 with x = t - t1 < 0: the root nearest x = 0.
+      const double B = a + b * (t1 - t2), disc = B * B - 4.0 * b * f1;
+      if (b != 0.0 && disc >= 0.0) {
+        const double q = -0.5 * (B + std::copysign(std::sqrt(disc), B));
+        const double r1 = q / b, r2 = f1 / q;
+        const double x = std::fabs(r1) < std::fabs(r2) ? r1 : r2;
+        if (std::isfinite(x)) return t1 + x;
+      }
+    }
+    return a > 0 ? t1 - f1 / a : double(NAN);
+  };
+  while (hi - lo > tol && out.evaluations < 200) {
+    double est = estimate();
+    const double inset = std::fmin(0.25 * tol, 0.25 * (hi - lo));
+    // Without an estimate, the bracket's geometric middle (thicknesses span two decades).
+    if (!(est > lo + inset && est < hi - inset)) est = hi > 2.0 * lo ? std::sqrt(lo * hi) : 0.5 * (lo + hi);
+    const double above = std::fmin(hi - inset, est + 0.25 * tol);
+    if (!try_at(above) || hi - lo <= tol || standing.size() < 2) continue;
+    // The trial below the estimate only where the one above it lies within a tolerance of the
+    // root, as the local slope puts it (else a better estimate comes first).
+    const double slope = (standing[1].second - standing[0].second) / (standing[1].first - standing[0].first);
+    if (slope > 0 && standing[0].second / slope < tol) try_at(std::fmax(lo + inset, est - 0.25 * tol));
   }
   out.ratio = hi;
+  out.at_minimum = th.analysis;
+  out.arch = th.arch;
   return out;
 }
 

@@ -52,7 +52,8 @@ struct LimitAnalysis {
 LimitAnalysis limit_analysis(const Assembly& a, int direction, bool exact = true);
 
 // The thinnest arch (thickness / radius) of the preset's geometry that stands under its own
-// weight (lambda >= 0 both ways), by bisection to `tol`; throws std::invalid_argument if even
+// weight (lambda >= 0 both ways), bracketed to `tol` by regula falsi on the margin (the smaller
+// lambda of the two directions, which rises through 0 there); throws std::invalid_argument if even
 // t/R = 1.9 does not stand.
 struct MinThickness {
   double ratio = 0;

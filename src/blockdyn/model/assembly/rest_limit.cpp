@@ -75,6 +75,46 @@ bool polish(glp_prob* lp, const std::vector<int>& ia, const std::vector<int>& ja
   pi.assign(y.data(), y.data() + m);
   return true;
 }
+// Whether the polished basic solution is optimal, checked in double precision: the primal values
+// within their bounds and the reduced costs of the non-basic variables of the sign that says no
+// move improves the objective (a maximum), each to a tolerance of 1e-9 of its scale. Certified,
+// the floating-point simplex's basis is the optimum and the exact (rational) simplex is not needed.
+bool certified(glp_prob* lp, const std::vector<int>& ia, const std::vector<int>& ja, const std::vector<double>& ar,
+               const std::vector<double>& x, const std::vector<double>& pi) {
+  const int m = glp_get_num_rows(lp), n = glp_get_num_cols(lp);
+  double xs = 1.0, ps = 1.0;
+  for (double v : x) xs = std::fmax(xs, std::fabs(v));
+  for (double v : pi) ps = std::fmax(ps, std::fabs(v));
+  const double tol_x = 1e-9 * xs, tol_d = 1e-9 * ps;
+  std::vector<double> row(std::size_t(m), 0.0), reduced(std::size_t(n), 0.0);
+  for (int j = 1; j <= n; ++j) reduced[j - 1] = glp_get_obj_coef(lp, j);
+  for (std::size_t e = 1; e < ar.size(); ++e) {
+    row[ia[e] - 1] += ar[e] * x[ja[e] - 1];
+    reduced[ja[e] - 1] -= ar[e] * pi[ia[e] - 1];
+  }
+  auto inside = [](int type, double v, double lo, double up, double tol) {
+    const bool lo_ok = type == GLP_FR || type == GLP_UP || v >= lo - tol;
+    const bool up_ok = type == GLP_FR || type == GLP_LO || v <= up + tol;
+    return lo_ok && up_ok;
+  };
+  for (int j = 1; j <= n; ++j) {
+    if (!inside(glp_get_col_type(lp, j), x[j - 1], glp_get_col_lb(lp, j), glp_get_col_ub(lp, j), tol_x)) return false;
+    const int stat = glp_get_col_stat(lp, j);
+    const double d = reduced[j - 1];
+    if ((stat == GLP_NL && d > tol_d) || (stat == GLP_NU && d < -tol_d) || (stat == GLP_NF && std::fabs(d) > tol_d))
+      return false;
+  }
+  for (int i = 1; i <= m; ++i) {
+    if (!inside(glp_get_row_type(lp, i), row[i - 1], glp_get_row_lb(lp, i), glp_get_row_ub(lp, i), tol_x)) return false;
+    // A row's auxiliary r_i = sum a_ij x_j has the reduced cost pi_i (its column in -r_i is -1).
+    const int stat = glp_get_row_stat(lp, i);
+    const double d = pi[i - 1];
+    if ((stat == GLP_NL && d > tol_d) || (stat == GLP_NU && d < -tol_d) || (stat == GLP_NF && std::fabs(d) > tol_d))
+      return false;
+  }
+  return true;
+}
+
 }  // namespace
 
 // Columns: N per contact (>= 0), T per interface (free), lambda (free). Rows: the three
@@ -167,14 +207,21 @@ LoadMultiplier max_load_multiplier(const StaticProblem& p, int direction, bool e
     rc = glp_simplex(lp.get(), &parm);
     status = glp_get_status(lp.get());
   }
-  // The floating-point simplex ends within its tolerances (1e-7); the exact (rational) simplex
-  // from its basis makes the limit exact to the rounding of the result: rest must end at the
-  // crossing itself. It also settles what the floating-point one leaves open.
+  // The floating-point simplex ends within its tolerances (1e-7); its basis solved again in
+  // double precision (polish) gives the limit to the rounding of the result, which rest needs (it
+  // must end at the crossing itself). Where that basis is not certified optimal, or the
+  // floating-point simplex left the problem open, the exact (rational) simplex from its basis
+  // settles it.
   const bool settled = rc == 0 && (status == GLP_OPT || status == GLP_NOFEAS);
-  if ((exact || !settled) && glp_exact(lp.get(), &parm) != 0) return out;
-  if (glp_get_status(lp.get()) != GLP_OPT) return out;
   std::vector<double> x, pi;
-  if (!polish(lp.get(), ia, ja, ar, x, pi)) {
+  bool polished = settled && status == GLP_OPT && polish(lp.get(), ia, ja, ar, x, pi);
+  if (!settled || (exact && !(polished && certified(lp.get(), ia, ja, ar, x, pi)))) {
+    if (glp_exact(lp.get(), &parm) != 0) return out;
+    if (glp_get_status(lp.get()) != GLP_OPT) return out;
+    polished = polish(lp.get(), ia, ja, ar, x, pi);
+  }
+  if (glp_get_status(lp.get()) != GLP_OPT) return out;
+  if (!polished) {
     x.clear();
     pi.clear();
     for (int j = 1; j <= glp_get_num_cols(lp.get()); ++j) x.push_back(glp_get_col_prim(lp.get(), j));
