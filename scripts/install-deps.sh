@@ -7,7 +7,7 @@ PKGS=(build-essential cmake ninja-build pkg-config
       libgtest-dev libgmock-dev libbenchmark-dev
       libopenmpi-dev openmpi-bin
       python3-numpy python3-scipy python3-matplotlib python3-pil python3-pytest python3-dev pybind11-dev ffmpeg
-      dpkg-dev clang)
+      dpkg-dev clang libclang-rt-14-dev)
 missing=()
 for p in "${PKGS[@]}"; do dpkg -s "$p" >/dev/null 2>&1 || missing+=("$p"); done
 if [ ${#missing[@]} -gt 0 ]; then

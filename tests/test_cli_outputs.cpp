@@ -8,6 +8,7 @@
 #include <sys/wait.h>
 
 #include <chrono>
+#include <filesystem>
 #include <fstream>
 #include <thread>
 
@@ -140,4 +141,35 @@ TEST(CliOutputs, ASymbolicLinkIsWrittenThrough) {
             0);
   ASSERT_EQ(::lstat((d.path + "/summary.json").c_str(), &st), 0);
   EXPECT_TRUE(S_ISLNK(st.st_mode));
+}
+
+TEST(CliOutputs, AResumedStudyIsTheSameRecords) {
+  // The runner's fingerprint covers the records' contents (a hash of their samples), not only their
+  // names: after a record is edited, a finished fragility table or rocking spectrum is not reused.
+  TmpDir d("outputs_resume");
+  std::filesystem::create_directories(d.path + "/suite");
+  std::filesystem::copy_file(kRecord, d.path + "/suite/a.AT2");
+  std::filesystem::copy_file(kRecord, d.path + "/suite/b.AT2");
+  const std::vector<std::string> frag = housner(
+      {"fragility"}, {"--records", "suite/*.AT2", "--levels", "0.1,0.2", "--bootstrap", "0", "--out", "f.csv", "--quiet"});
+  const std::vector<std::string> rock = {"rocking-spectrum", "--record", "suite/a.AT2", "--alpha", "0.2",
+                                         "--p-values", "1,2", "--out", "r.csv", "--quiet"};
+  for (const auto& args : {frag, rock}) ASSERT_EQ(run_cli(args, d.path).code, 0) << args[0];
+  auto with_resume = [](std::vector<std::string> a) {
+    a.push_back("--resume");
+    return a;
+  };
+  EXPECT_EQ(run_cli(with_resume(frag), d.path).code, 0) << "the same records resume";
+  // The same name, one sample changed.
+  std::string text = slurp(d.path + "/suite/a.AT2");
+  const auto at = text.find("NPTS");
+  const auto first = text.find("0.0000000E+00", text.find('\n', at));
+  ASSERT_NE(first, std::string::npos);
+  text.replace(first, 13, "1.0000000E-03");
+  std::ofstream(d.path + "/suite/a.AT2", std::ios::binary | std::ios::trunc) << text;
+  for (const auto& args : {frag, rock}) {
+    const auto r = run_cli(with_resume(args), d.path);
+    EXPECT_EQ(r.code, 2) << args[0] << ": " << r.err;
+    EXPECT_NE(r.err.find("does not record a finished sweep of this definition"), std::string::npos) << r.err;
+  }
 }

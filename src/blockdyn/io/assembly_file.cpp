@@ -133,8 +133,10 @@ double friction_of_angle(double deg, const std::string& field) {
   return std::tan(deg * M_PI / 180.0);
 }
 
-Assembly read_assembly_file(const std::string& path) {
-  const toml::table root = parse(read_file(path, "assembly file"), path);
+Assembly read_assembly_file(const std::string& path) { return parse_assembly(read_file(path, "assembly file"), path); }
+
+Assembly parse_assembly(const std::string& text, const std::string& source) {
+  const toml::table root = parse(text, source);
   if (auto k = first_unknown_key(root, {"assembly", "contact", "block", "interface"}); !k.empty())
     fail(k, "unknown table (allowed: assembly, contact, [[block]], [[interface]])");
   Assembly a;

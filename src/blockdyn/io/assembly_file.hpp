@@ -24,5 +24,7 @@ inline constexpr double kUnsetRestitution = -1.0;
 void apply_default_restitution(Assembly& a, bool rigid);
 
 Assembly read_assembly_file(const std::string& path);
+// The same from the file's text (`source` names it in errors).
+Assembly parse_assembly(const std::string& text, const std::string& source);
 
 }  // namespace blockdyn

@@ -17,8 +17,9 @@ ProgressMode parse_progress_mode(const std::string& s) {
 }
 
 Progress::Progress(std::string label, std::size_t total, std::size_t already_done, ProgressMode mode,
-                   std::FILE* out, double plain_interval_seconds)
+                   std::FILE* out, double plain_interval_seconds, std::string unit)
     : label_(std::move(label)),
+      unit_(std::move(unit)),
       total_(total),
       start_done_(already_done),
       done_(already_done),
@@ -29,7 +30,7 @@ Progress::Progress(std::string label, std::size_t total, std::size_t already_don
       last_(t0_) {
   if (mode_ == ProgressMode::Auto) mode_ = ::isatty(::fileno(out_)) ? ProgressMode::Bar : ProgressMode::Plain;
   if (mode_ == ProgressMode::Plain) {
-    std::fprintf(out_, "%s: %zu points, %zu already done\n", label_.c_str(), total_, start_done_);
+    std::fprintf(out_, "%s: %zu %s, %zu already done\n", label_.c_str(), total_, unit_.c_str(), start_done_);
     std::fflush(out_);
   }
 }
@@ -62,8 +63,8 @@ std::string Progress::line(double elapsed, int bar_width) const {
     s += "] ";
   }
   char buf[160];
-  std::snprintf(buf, sizeof buf, "%zu/%zu (%.1f%%), %.3g points/s, elapsed %s, ETA %s", done_, total_,
-                100.0 * frac, rate, format_duration(elapsed).c_str(),
+  std::snprintf(buf, sizeof buf, "%zu/%zu (%.1f%%), %.3g %s/s, elapsed %s, ETA %s", done_, total_,
+                100.0 * frac, rate, unit_.c_str(), format_duration(elapsed).c_str(),
                 done_ == total_ ? "0s" : format_duration(eta).c_str());
   return s + buf;
 }

@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <cstdio>
 #include <string>
+#include <utility>
 
 namespace blockdyn {
 
@@ -16,8 +17,9 @@ ProgressMode parse_progress_mode(const std::string& s);
 class Progress {
  public:
   // `already_done` items (e.g. resumed) count toward the total but not toward the rate.
+  // `unit`: what is counted, in the report's words ("points", "records").
   Progress(std::string label, std::size_t total, std::size_t already_done, ProgressMode mode,
-           std::FILE* out = stderr, double plain_interval_seconds = 10.0);
+           std::FILE* out = stderr, double plain_interval_seconds = 10.0, std::string unit = "points");
   ~Progress();  // finish() if not yet called
 
   void advance(std::size_t n = 1);  // not thread-safe: call under the caller's lock
@@ -32,7 +34,7 @@ class Progress {
 
  private:
   void report(bool final);
-  std::string label_;
+  std::string label_, unit_;
   std::size_t total_, start_done_, done_;
   ProgressMode mode_;
   std::FILE* out_;
