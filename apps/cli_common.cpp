@@ -15,7 +15,9 @@
 #include <iostream>
 #include <sstream>
 
+#include "blockdyn/base/number_text.hpp"
 #include "blockdyn/base/range_check.hpp"
+#include "blockdyn/simulation/run_options.hpp"
 #include "blockdyn/io/atomic_file.hpp"
 #include "blockdyn/io/json_io.hpp"
 
@@ -57,14 +59,14 @@ void add_spec_options(CLI::App& app, const std::vector<StudyOption>& specs) {
 }
 
 void add_block_options(CLI::App& app, BlockParams& p) {
-  app.add_option("--r", p.r, "aspect ratio width/height (> 0)")->capture_default_str();
-  app.add_option("--mu", p.mu, "friction coefficient (>= 0)")->capture_default_str();
-  app.add_option("--k", p.k, "non-dimensional foundation stiffness k a b/(m g) (> 0)")->capture_default_str();
+  app.add_option("--r", p.r, "aspect ratio width/height (> 0)")->default_str(number_text(p.r));
+  app.add_option("--mu", p.mu, "friction coefficient (>= 0)")->default_str(number_text(p.mu));
+  app.add_option("--k", p.k, "non-dimensional foundation stiffness k a b/(m g) (> 0)")->default_str(number_text(p.k));
 }
 
 void add_tolerance_options(CLI::App& app, IntegratorOptions& o) {
-  app.add_option("--rtol", o.rtol, "relative tolerance of the integrator, in (0, 1)")->capture_default_str();
-  app.add_option("--atol", o.atol, "absolute tolerance (scaled by 1/k for y), in (0, 1)")->capture_default_str();
+  app.add_option("--rtol", o.rtol, rtol_help())->default_str(number_text(o.rtol));
+  app.add_option("--atol", o.atol, atol_help())->default_str(number_text(o.atol));
   add_method_option(app, o);
 }
 

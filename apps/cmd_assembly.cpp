@@ -11,6 +11,8 @@
 #include "simulate_output.hpp"
 
 namespace blockdyn::cli {
+// Each command's own names (add, Flags, ...) in its own namespace: the files build as one unity.
+namespace cmd_assembly {
 namespace {
 
 struct Flags {
@@ -45,4 +47,5 @@ void add(CLI::App& app) {
 RegisterCommand reg(12, add);
 
 }  // namespace
+}  // namespace cmd_assembly
 }  // namespace blockdyn::cli

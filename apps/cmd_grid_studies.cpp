@@ -16,6 +16,8 @@
 #include "grid_run.hpp"
 
 namespace blockdyn::cli {
+// Each command's own names (add, Flags, ...) in its own namespace: the files build as one unity.
+namespace cmd_grid_studies {
 namespace {
 
 struct GridStudyFlags {
@@ -110,4 +112,5 @@ const bool registered = [] {
 }();
 
 }  // namespace
+}  // namespace cmd_grid_studies
 }  // namespace blockdyn::cli

@@ -14,6 +14,8 @@
 #include "cli_registry.hpp"
 
 namespace blockdyn::cli {
+// Each command's own names (add, Flags, ...) in its own namespace: the files build as one unity.
+namespace cmd_limit_analysis {
 namespace {
 
 struct Flags {
@@ -61,4 +63,5 @@ void add(CLI::App& app) {
 RegisterCommand reg(16, add);
 
 }  // namespace
+}  // namespace cmd_limit_analysis
 }  // namespace blockdyn::cli

@@ -12,6 +12,8 @@
 #include "study_table_output.hpp"
 
 namespace blockdyn::cli {
+// Each command's own names (add, Flags, ...) in its own namespace: the files build as one unity.
+namespace cmd_map {
 namespace {
 
 struct MapFlags {
@@ -57,4 +59,5 @@ void add(CLI::App& app) {
 RegisterCommand reg(25, add, MpiUse::Distributes);
 
 }  // namespace
+}  // namespace cmd_map
 }  // namespace blockdyn::cli

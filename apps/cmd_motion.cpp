@@ -12,6 +12,8 @@
 #include "cli_registry.hpp"
 
 namespace blockdyn::cli {
+// Each command's own names (add, Flags, ...) in its own namespace: the files build as one unity.
+namespace cmd_motion {
 namespace {
 
 struct InfoFlags {
@@ -89,4 +91,5 @@ void add(CLI::App& app) {
 RegisterCommand reg(14, add);
 
 }  // namespace
+}  // namespace cmd_motion
 }  // namespace blockdyn::cli

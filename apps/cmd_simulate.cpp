@@ -16,6 +16,8 @@
 #include "simulate_output.hpp"
 
 namespace blockdyn::cli {
+// Each command's own names (add, Flags, ...) in its own namespace: the files build as one unity.
+namespace cmd_simulate {
 namespace {
 
 struct SimulateFlags {
@@ -118,4 +120,5 @@ void add(CLI::App& app) {
 RegisterCommand reg(10, add);
 
 }  // namespace
+}  // namespace cmd_simulate
 }  // namespace blockdyn::cli

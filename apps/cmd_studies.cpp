@@ -182,7 +182,7 @@ void add_study(CLI::App& app, const StudyCommand& c) {
   s->callback([&c, s, f] { run_command(c, *s, *f); });
 }
 
-const bool registered = [] {
+const bool studies_registered = [] {
   for (const StudyCommand& c : study_commands())
     command_registry().push_back({c.order, [&c](CLI::App& app) { add_study(app, c); }});
   return true;

@@ -18,6 +18,8 @@
 #include "grid_run.hpp"
 
 namespace blockdyn::cli {
+// Each command's own names (add, Flags, ...) in its own namespace: the files build as one unity.
+namespace cmd_sweep {
 namespace {
 
 // The runner's flags and the listings: not part of the sweep's definition.
@@ -157,4 +159,5 @@ void add(CLI::App& app) {
 RegisterCommand reg(20, add, MpiUse::Distributes);
 
 }  // namespace
+}  // namespace cmd_sweep
 }  // namespace blockdyn::cli

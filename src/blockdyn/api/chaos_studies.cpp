@@ -24,9 +24,9 @@
 #include "blockdyn/simulation/simulate.hpp"
 
 namespace blockdyn {
-namespace {
 
 using json = nlohmann::ordered_json;
+namespace {
 
 std::vector<StudyOption> chaos_map_options() {
   const ChaosMapOptions d;

@@ -12,9 +12,9 @@
 #include "blockdyn/io/json_io.hpp"
 
 namespace blockdyn {
-namespace {
 
 using json = nlohmann::ordered_json;
+namespace {
 
 constexpr double kRMin = 0.005, kKMin = 2.0, kKMax = 1e10;
 

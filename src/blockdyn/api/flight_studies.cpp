@@ -13,9 +13,9 @@
 #include "blockdyn/io/json_io.hpp"
 
 namespace blockdyn {
-namespace {
 
 using json = nlohmann::ordered_json;
+namespace {
 
 constexpr double kRMax = 100, kMuMax = 10, kKMaxAllowed = kWinklerKMax;
 

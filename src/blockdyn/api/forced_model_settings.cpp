@@ -14,31 +14,30 @@
 #include "blockdyn/model/rigid/rigid_params.hpp"
 
 namespace blockdyn {
-namespace {
 
-using Invalid = std::invalid_argument;
+namespace {
 
 void refuse(const Settings& s, const std::vector<std::string>& names, const std::string& why) {
   for (const std::string& n : names)
-    if (s.has(n)) throw Invalid("--" + n + " " + why);
+    if (s.has(n)) throw std::invalid_argument("--" + n + " " + why);
 }
 
 void check_values(const Settings& s) {
   if (auto mu_k = s.number("mu-k"); mu_k && !(std::isfinite(*mu_k) && *mu_k >= 0.0))
-    throw Invalid("mu-k = " + number_text(*mu_k) + " is out of range: must be finite and >= 0");
+    throw std::invalid_argument("mu-k = " + number_text(*mu_k) + " is out of range: must be finite and >= 0");
   if (auto e = s.number("restitution"); e && !(std::isfinite(*e) && *e >= 0.0 && *e <= 1.0))
-    throw Invalid("restitution = " + number_text(*e) + " is out of range: must be in [0, 1]");
+    throw std::invalid_argument("restitution = " + number_text(*e) + " is out of range: must be in [0, 1]");
 }
 
 ForcedModel block_model(const Settings& s, const std::string& model, bool housner) {
-  if (!s.has("width") || !s.has("height")) throw Invalid("--width and --height are needed for --model " + model);
+  if (!s.has("width") || !s.has("height")) throw std::invalid_argument("--width and --height are needed for --model " + model);
   RigidBlockParams rp;
   rp.shape = {*s.number("width"), *s.number("height"), s.number("mass", 1.0), s.number("g", 9.81)};
   const double mu_s = s.number("mu-s", 0.7);
   rp.interface = {mu_s, s.number("mu-k", mu_s)};
   const std::string impact = s.text("impact", "housner");
   if (impact != "housner" && impact != "newton")
-    throw Invalid("--impact = '" + impact + "' is not one of: housner, newton");
+    throw std::invalid_argument("--impact = '" + impact + "' is not one of: housner, newton");
   rp.impact = impact == "newton" ? ImpactLaw::Newton : ImpactLaw::Housner;
   if (auto e = s.number("restitution")) rp.restitution = *e;
   return forced_block_model(rp, housner);
@@ -46,10 +45,10 @@ ForcedModel block_model(const Settings& s, const std::string& model, bool housne
 
 ForcedModel assembly_model(const Settings& s) {
   const std::string preset = s.text("preset");
-  if (preset.empty()) throw Invalid("--model assembly needs --preset block|trilith|column|arch");
+  if (preset.empty()) throw std::invalid_argument("--model assembly needs --preset block|trilith|column|arch");
   const std::string contact = s.text("contact", "deformable");
   if (contact != "deformable" && contact != "rigid")
-    throw Invalid("--contact = '" + contact + "' is not one of: deformable, rigid");
+    throw std::invalid_argument("--contact = '" + contact + "' is not one of: deformable, rigid");
   PresetOptions po = preset_geometry_from(s, preset);
   po.rigid_contacts = contact == "rigid";
   const double phi_s = s.number("phi-s", 90), phi_l = s.number("phi-l", 90);
@@ -137,7 +136,7 @@ ForcedModel forced_model_from(const Settings& s) {
     if (f.name == model) family = &f;
     names += (names.empty() ? "" : ", ") + f.name;
   }
-  if (!family) throw Invalid("--model = '" + model + "' is not one of: " + names);
+  if (!family) throw std::invalid_argument("--model = '" + model + "' is not one of: " + names);
   for (const auto& [options, why] : family->refused) refuse(s, options, why);
   check_values(s);
   return family->build(s, model);

@@ -19,10 +19,9 @@
 #include "blockdyn/io/json_io.hpp"
 
 namespace blockdyn {
-namespace {
 
 using json = nlohmann::ordered_json;
-using Invalid = std::invalid_argument;
+namespace {
 
 std::vector<StudyOption> fragility_options() {
   std::vector<StudyOption> o = forced_model_options();
@@ -49,8 +48,8 @@ std::vector<std::string> expand_glob(const std::string& pattern) {
   if (rc == 0)
     for (std::size_t i = 0; i < g.gl_pathc; ++i) files.emplace_back(g.gl_pathv[i]);
   ::globfree(&g);
-  if (files.empty()) throw Invalid("records = '" + pattern + "' matches no file");
-  if (files.size() > 100000) throw Invalid("records: at most 100000 files");
+  if (files.empty()) throw std::invalid_argument("records = '" + pattern + "' matches no file");
+  if (files.size() > 100000) throw std::invalid_argument("records: at most 100000 files");
   return files;
 }
 
@@ -161,17 +160,17 @@ GridStudy fragility_grid(const Settings& given, const std::string& output) {
     period = parse_number_list("im", im.substr(3)).at(0);
     require_in_range("im (sa:T, T)", period, 0, 1e4, false);
   } else if (im != "pga" && im != "pgv" && im != "pga-over-uplift") {
-    throw Invalid("im = '" + im + "' is not one of: pga, pgv, sa:T, pga-over-uplift");
+    throw std::invalid_argument("im = '" + im + "' is not one of: pga, pgv, sa:T, pga-over-uplift");
   }
   const double damping = so.number("damping");
   require_in_range("damping", damping, 0, 1, true, false);
-  if (!so.given("levels")) throw Invalid("levels: give the intensity levels A:B:N or A,B,C");
+  if (!so.given("levels")) throw std::invalid_argument("levels: give the intensity levels A:B:N or A,B,C");
   const std::vector<double> levels = parse_axis("levels", so.text("levels"), AxisSpacing::Linear).values;
   for (double l : levels) require_in_range("levels", l, 0, 1e6, false);
-  if (!so.given("records")) throw Invalid("records: give a glob of record files");
+  if (!so.given("records")) throw std::invalid_argument("records: give a glob of record files");
   const long bootstrap = so.integer("bootstrap"), seed = so.integer("seed");
-  if (bootstrap < 0 || bootstrap > 100000) throw Invalid("bootstrap: must be in [0, 100000]");
-  if (seed < 0) throw Invalid("seed: must be >= 0");
+  if (bootstrap < 0 || bootstrap > 100000) throw std::invalid_argument("bootstrap: must be in [0, 100000]");
+  if (seed < 0) throw std::invalid_argument("seed: must be >= 0");
   const double t_after = so.number("t-after");
   require_in_range("t-after", t_after, 0, 1e4);
   const std::optional<double> t_fixed = so.given("t-end") ? std::optional<double>(so.number("t-end")) : std::nullopt;
@@ -184,7 +183,7 @@ GridStudy fragility_grid(const Settings& given, const std::string& output) {
     suite->records.push_back(std::make_shared<const Accelerogram>(load_accelerogram(f, "records")));
     suite->im.push_back(im_of(*suite->records.back(), im, period, damping, g, fm->alpha));
     if (!(suite->im.back() > 0))
-      throw Invalid("records: '" + f + "' has " + im + " = 0: it cannot be scaled to a level");
+      throw std::invalid_argument("records: '" + f + "' has " + im + " = 0: it cannot be scaled to a level");
   }
   json digests = json::array();
   for (const auto& r : suite->records) digests.push_back(r->digest());

@@ -29,9 +29,9 @@
 #include "blockdyn/io/json_io.hpp"
 
 namespace blockdyn {
-namespace {
 
 using json = nlohmann::ordered_json;
+namespace {
 
 // --excitation --phase --omega-min/max/points --t-end --periods --threads (survival, response-curve).
 std::vector<StudyOption> excitation_grid_options() {

@@ -14,6 +14,8 @@
 
 namespace blockdyn {
 
+using json = nlohmann::ordered_json;
+
 std::vector<StudyOption> forced_model_options(const std::vector<std::string>& extra_models) {
   std::string help = "housner, rigid (a block on rigid ground) or assembly (with --preset)";
   for (const auto& m : extra_models) help += ", or " + m;
@@ -155,7 +157,6 @@ nlohmann::ordered_json forced_summary_head(const ForcedModel& fm) {
 }
 
 void describe_run(nlohmann::ordered_json& j, const HarmonicSetup& h, const HarmonicRun& r) {
-  using json = nlohmann::ordered_json;
   const json head = forced_summary_head(h.fm);
   for (auto it = head.begin(); it != head.end(); ++it) j[it.key()] = it.value();
   j["units"] = "a_H = beta alpha g cos(Omega t + phase), omega = Omega / p; t in s, theta in rad, theta' in rad/s";

@@ -16,9 +16,9 @@
 #include "blockdyn/base/range_check.hpp"
 
 namespace blockdyn {
-namespace {
 
 using json = nlohmann::ordered_json;
+namespace {
 
 // ---------------------------------------------------------------- cycles
 

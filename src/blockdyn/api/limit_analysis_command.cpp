@@ -12,10 +12,9 @@
 #include "blockdyn/model/assembly/interface_faces.hpp"
 
 namespace blockdyn {
-namespace {
 
 using json = nlohmann::ordered_json;
-using Invalid = std::invalid_argument;
+namespace {
 
 json xy(const Vec2& v) { return json::array({v.x, v.y}); }
 
@@ -104,7 +103,7 @@ json limit_analysis_run(const Settings& given) {
   given.require_known(limit_analysis_options(), {"file"}, "limit-analysis");
   const auto start = std::chrono::steady_clock::now();
   const long direction = given.integer("direction", 1);
-  if (direction != 1 && direction != -1) throw Invalid("direction = " + std::to_string(direction) + " must be 1 or -1");
+  if (direction != 1 && direction != -1) throw std::invalid_argument("direction = " + std::to_string(direction) + " must be 1 or -1");
   Settings s;
   for (const std::string& n : given.names())
     if (n != "direction" && n != "min-thickness" && n != "tolerance")
@@ -125,10 +124,10 @@ json limit_analysis_run(const Settings& given) {
                   "(primal and dual feasible to 1e-9), else GLPK's exact (rational) simplex from it"}};
   j.update(analysis_json(a, r));
   if (given.flag("min-thickness")) {
-    if (a.preset != "arch") throw Invalid("--min-thickness needs --preset arch");
+    if (a.preset != "arch") throw std::invalid_argument("--min-thickness needs --preset arch");
     const double tol = given.number("tolerance", 1e-7);
     if (!(tol >= 1e-9 && tol <= 1e-2))
-      throw Invalid("tolerance = " + Settings::exact(tol) + " must be in [1e-9, 1e-2]");
+      throw std::invalid_argument("tolerance = " + Settings::exact(tol) + " must be in [1e-9, 1e-2]");
     const PresetOptions geometry = preset_geometry_from(s, "arch");
     const MinThickness m = min_thickness_ratio(geometry, tol);
     j["min_thickness_ratio"] = m.ratio;
@@ -141,7 +140,7 @@ json limit_analysis_run(const Settings& given) {
                           {"assembly", assembly_geometry_json(m.arch)},
                           {"analysis", analysis_json(m.arch, m.at_minimum)}};
   } else if (given.has("tolerance")) {
-    throw Invalid("--tolerance belongs to --min-thickness");
+    throw std::invalid_argument("--tolerance belongs to --min-thickness");
   }
   j["timing_s"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return j;

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "blockdyn/api/map_study.hpp"
 
+#include "blockdyn/simulation/run_options.hpp"
+
 #include <cmath>
 #include <optional>
 #include <stdexcept>
@@ -15,9 +17,8 @@
 #include "blockdyn/simulation/simulate.hpp"
 
 namespace blockdyn {
-namespace {
 
-using Invalid = std::invalid_argument;
+namespace {
 
 struct BoundaryRow {
   double inv_r = 0, r = 0;
@@ -60,9 +61,9 @@ SweepSpec map_spec(const Settings& s) {
   require_in_range("t-end", t_end, 0.0, kMaxTime, false);
   const long boundary_points = s.integer("boundary-points", 10), critical_n = s.integer("critical-n", 10);
   if (boundary_points < 0 || boundary_points > 1000)
-    throw Invalid("boundary-points = " + std::to_string(boundary_points) + " is out of range: must be in [0, 1000]");
+    throw std::invalid_argument("boundary-points = " + std::to_string(boundary_points) + " is out of range: must be in [0, 1000]");
   require_in_range("fine-per-decade", s.number("fine-per-decade", 48), 0.0, 1000);
-  if (critical_n < 2) throw Invalid("critical-n = " + std::to_string(critical_n) + " is out of range: must be >= 2");
+  if (critical_n < 2) throw std::invalid_argument("critical-n = " + std::to_string(critical_n) + " is out of range: must be >= 2");
   const IcChoice ic = parse_ic_choice(s.text("ic", "ic1"));
   SweepSpec spec;
   spec.k = parse_axis("k", s.text("k", "1e1:1e8:40"), AxisSpacing::Log);
@@ -76,7 +77,7 @@ SweepSpec map_spec(const Settings& s) {
   spec.metrics = {"response_type"};
   if (s.flag("sensitivity")) spec.metrics.push_back("sensitive_dependence");
   spec.output = s.text("output", "map.csv");
-  if (spec.output.empty()) throw Invalid("output: the CSV path is empty");
+  if (spec.output.empty()) throw std::invalid_argument("output: the CSV path is empty");
   validate(spec);
   return spec;
 }
@@ -92,8 +93,8 @@ const std::vector<StudyOption>& map_options() {
         {"mu", "friction coefficient (>= 0)", "0.2"},
         {"ic", "initial conditions: ic1, ic1:F (w0 = F alpha) or ic2", "ic1"},
         {"t-end", "observation time of each run", "30"},
-        {"rtol", "relative tolerance of the integrator, in (0, 1)", Settings::exact(d.rtol)},
-        {"atol", "absolute tolerance (scaled by 1/k for y), in (0, 1)", Settings::exact(d.atol)},
+        {"rtol", rtol_help(), Settings::exact(d.rtol)},
+        {"atol", atol_help(), Settings::exact(d.atol)},
         {"method", "Runge-Kutta pair: dopri5, dop853 or auto (dop853 when rtol < 1e-6; default)", "auto"},
         {"max-steps", "step cap per run (reported as numerical_failure)", "20000000"},
         {"boundary-points", "1/r values for the boundary curves (0: none)", "10"},

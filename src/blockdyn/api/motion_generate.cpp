@@ -26,10 +26,9 @@
 #include "blockdyn/io/json_io.hpp"
 
 namespace blockdyn {
-namespace {
 
 using json = nlohmann::ordered_json;
-using Invalid = std::invalid_argument;
+namespace {
 
 struct Plan {
   std::string model, out;
@@ -58,14 +57,14 @@ void check_work(const Plan& p) {
   if (p.background) {
     const double terms = rezaeian_record_cost(p.rz);
     if (terms > kMaxRecordTerms)
-      throw Invalid("zeta-f = " + number_text(p.rz.zeta_f) + ", f-mid = " + number_text(p.rz.f_mid) +
+      throw std::invalid_argument("zeta-f = " + number_text(p.rz.zeta_f) + ", f-mid = " + number_text(p.rz.f_mid) +
                     " Hz, f-slope = " + number_text(p.rz.f_slope) + " Hz/s: the filter's memory makes a record cost " +
                     number_text(terms, 3) + " kernel terms (at most 2e10): raise --zeta-f or the filter frequency, or "
                     "shorten --t-end");
   }
   const double bytes = double(p.count) * record_bytes(p);
   if (bytes > kMaxSuiteBytes)
-    throw Invalid("count = " + std::to_string(p.count) + " records of " + std::to_string(sample_count(p)) +
+    throw std::invalid_argument("count = " + std::to_string(p.count) + " records of " + std::to_string(sample_count(p)) +
                   " samples need " + number_text(std::round(bytes / 1e6)) +
                   " MB of .AT2 files: at most 16 GiB per suite (lower --count or --t-end, or raise --dt)");
   struct statvfs fs {};
@@ -76,7 +75,7 @@ void check_work(const Plan& p) {
   if (::statvfs(where.c_str(), &fs) == 0) {
     const double free_bytes = double(fs.f_bavail) * double(fs.f_frsize);
     if (bytes > free_bytes)
-      throw Invalid("out = '" + p.out + "': the suite needs " + number_text(std::round(bytes / 1e6)) + " MB and " +
+      throw std::invalid_argument("out = '" + p.out + "': the suite needs " + number_text(std::round(bytes / 1e6)) + " MB and " +
                     number_text(std::round(free_bytes / 1e6)) + " MB are free there");
   }
 }
@@ -87,18 +86,18 @@ Plan plan_of(const Settings& given) {
   Plan p;
   p.model = s.text("model", "rezaeian");
   if (p.model != "rezaeian" && p.model != "pulse")
-    throw Invalid("model = '" + p.model + "' is not one of: rezaeian, pulse");
+    throw std::invalid_argument("model = '" + p.model + "' is not one of: rezaeian, pulse");
   p.pulse = p.model == "pulse";
   p.background = !p.pulse || s.has("arias");
   if (!p.pulse)
     for (const char* n : {"pulse-pgv", "pulse-period", "gamma", "nu", "pulse-t0"})
-      if (s.has(n)) throw Invalid(std::string("--") + n + " belongs to --model pulse");
+      if (s.has(n)) throw std::invalid_argument(std::string("--") + n + " belongs to --model pulse");
   p.rz.dt = s.number("dt", 0.01);
   p.rz.g = s.number("g", 9.81);
   if (p.background) {
     for (const char* n : kRezaeianOptions)
       if (!s.has(n) && std::string(n) != "f-slope" && std::string(n) != "zeta-f")
-        throw Invalid(std::string("--") + n + ": the rezaeian model needs --arias --d5-95 --t-mid --f-mid");
+        throw std::invalid_argument(std::string("--") + n + ": the rezaeian model needs --arias --d5-95 --t-mid --f-mid");
     p.rz.arias = *s.number("arias");
     p.rz.d5_95 = *s.number("d5-95");
     p.rz.t_mid = *s.number("t-mid");
@@ -108,7 +107,7 @@ Plan plan_of(const Settings& given) {
     p.rz.f_highpass = s.number("f-highpass", 0.2);
   } else {
     for (const char* n : kRezaeianOptions)
-      if (s.has(n)) throw Invalid(std::string("--") + n + " needs the background's --arias (rezaeian targets)");
+      if (s.has(n)) throw std::invalid_argument(std::string("--") + n + " needs the background's --arias (rezaeian targets)");
   }
   if (p.pulse) {
     p.pp.pgv = s.number("pulse-pgv", 0.0);
@@ -119,7 +118,7 @@ Plan plan_of(const Settings& given) {
   }
   const double t_min = p.pulse ? p.pp.t0 + 0.5 * p.pp.gamma * p.pp.period : 0.0;
   p.rz.t_end = s.number("t-end", p.background ? 0.0 : t_min + 5.0);
-  if (!s.has("t-end") && p.background) throw Invalid("--t-end: give the records' duration [s]");
+  if (!s.has("t-end") && p.background) throw std::invalid_argument("--t-end: give the records' duration [s]");
   if (p.pulse) validate(p.pp, p.rz.dt, p.rz.t_end);
   if (p.background) {
     validate(p.rz);
@@ -130,16 +129,16 @@ Plan plan_of(const Settings& given) {
     require_in_range("g", p.rz.g, 0, 1e3, false);
   }
   p.count = s.integer("count", 1);
-  if (p.count < 1 || p.count > 100000) throw Invalid("count = " + std::to_string(p.count) + ": must be in [1, 100000]");
+  if (p.count < 1 || p.count > 100000) throw std::invalid_argument("count = " + std::to_string(p.count) + ": must be in [1, 100000]");
   const long seed = s.integer("seed", 1);
-  if (seed < 0) throw Invalid("seed = " + std::to_string(seed) + ": must be >= 0");
+  if (seed < 0) throw std::invalid_argument("seed = " + std::to_string(seed) + ": must be >= 0");
   p.seed = std::uint64_t(seed);
   const long threads = s.integer("threads", 0);
   if (threads < 0 || threads > 1024)
-    throw Invalid("threads = " + std::to_string(threads) + " is out of range: must be in [0, 1024]");
+    throw std::invalid_argument("threads = " + std::to_string(threads) + " is out of range: must be in [0, 1024]");
   p.threads = int(threads);
   p.out = s.text("out");
-  if (p.out.empty()) throw Invalid("--out: give the directory for the records");
+  if (p.out.empty()) throw std::invalid_argument("--out: give the directory for the records");
   check_work(p);
   return p;
 }
@@ -173,15 +172,15 @@ std::vector<std::string> suite_files(const std::string& dir) {
 void make_directory(const std::string& dir, bool overwrite) {
   struct stat st {};
   if (::stat(dir.c_str(), &st) == 0) {
-    if (!S_ISDIR(st.st_mode)) throw Invalid("out = '" + dir + "' exists and is not a directory");
+    if (!S_ISDIR(st.st_mode)) throw std::invalid_argument("out = '" + dir + "' exists and is not a directory");
     const bool has_suite = ::stat((dir + "/motions.json").c_str(), &st) == 0 || !suite_files(dir).empty();
     if (has_suite && !overwrite)
-      throw Invalid("out = '" + dir +
+      throw std::invalid_argument("out = '" + dir +
                     "' already holds a suite (motions.json or records): give --overwrite or another directory");
     return;
   }
   if (::mkdir(dir.c_str(), 0777) != 0)
-    throw Invalid("out = '" + dir + "': cannot create the directory (" + std::strerror(errno) + ")");
+    throw std::invalid_argument("out = '" + dir + "': cannot create the directory (" + std::strerror(errno) + ")");
 }
 
 // Checks a record before it is written: finite samples within what the readers take (|a| <= 100 g).
@@ -189,11 +188,11 @@ void check_samples(const Plan& p, const std::vector<double>& a, std::size_t k) {
   double peak = 0.0;
   for (double v : a) {
     if (!std::isfinite(v))
-      throw Invalid("record " + std::to_string(k + 1) + ": the targets give samples that are not finite numbers");
+      throw std::invalid_argument("record " + std::to_string(k + 1) + ": the targets give samples that are not finite numbers");
     peak = std::fmax(peak, std::fabs(v));
   }
   if (peak > 100.0)
-    throw Invalid((p.background ? "record " + std::to_string(k + 1) : std::string("the pulse")) + " peaks at " +
+    throw std::invalid_argument((p.background ? "record " + std::to_string(k + 1) : std::string("the pulse")) + " peaks at " +
                   number_text(peak, 4) +
                   " g, beyond the 100 g a record may hold: " +
                   (p.pulse ? "lower --pulse-pgv or lengthen --pulse-period" : "lower --arias"));
@@ -230,7 +229,6 @@ const std::vector<StudyOption>& motion_generate_options() {
       {"out", "directory for the records (NAME_0001.AT2, ...) and motions.json"}};
   return options;
 }
-
 
 json motion_generate(const Settings& s, const std::function<void(std::size_t, std::size_t)>& progress) {
   const Plan p = plan_of(s);

@@ -14,15 +14,14 @@
 #include "blockdyn/io/json_io.hpp"
 
 namespace blockdyn {
-namespace {
 
 using json = nlohmann::ordered_json;
-using Invalid = std::invalid_argument;
+namespace {
 
 // --periods, else a logarithmic grid from --period-min to --period-max.
 std::vector<double> periods_of(const Settings& s) {
   const bool grid = s.has("period-min") || s.has("period-max") || s.has("period-points");
-  if (s.has("periods") && grid) throw Invalid("--periods and --period-min/max/points: give one of them");
+  if (s.has("periods") && grid) throw std::invalid_argument("--periods and --period-min/max/points: give one of them");
   std::vector<double> p;
   if (s.has("periods")) {
     for (const std::string& v : s.values("periods"))
@@ -33,15 +32,14 @@ std::vector<double> periods_of(const Settings& s) {
     require_in_range("period-min", lo, 0.0, 1e4, false);
     require_in_range("period-max", hi, lo, 1e4);
     if (n < 1 || n > 100000)
-      throw Invalid("period-points = " + std::to_string(n) + " is out of range: must be in [1, 100000]");
+      throw std::invalid_argument("period-points = " + std::to_string(n) + " is out of range: must be in [1, 100000]");
     for (long i = 0; i < n; ++i) p.push_back(n == 1 ? lo : lo * std::pow(hi / lo, double(i) / double(n - 1)));
   }
-  if (p.empty() || p.size() > 100000) throw Invalid("periods: give 1 to 100000 periods");
+  if (p.empty() || p.size() > 100000) throw std::invalid_argument("periods: give 1 to 100000 periods");
   for (double x : p) require_in_range("periods", x, 0.0, 1e4, false);
   return p;
 }
 
-json number_or_null(double v) { return std::isfinite(v) ? json(v) : json(nullptr); }
 
 }  // namespace
 
@@ -92,7 +90,7 @@ json motion_info(const Settings& s) {
 
 std::shared_ptr<const Accelerogram> record_from(const Settings& s) {
   if (auto r = s.record("record")) return r;
-  if (!s.has("record")) throw Invalid("record: give a record file (PEER .AT2, or CSV 't, a' in s, g)");
+  if (!s.has("record")) throw std::invalid_argument("record: give a record file (PEER .AT2, or CSV 't, a' in s, g)");
   return std::make_shared<const Accelerogram>(load_accelerogram(s.text("record"), "record"));
 }
 
@@ -109,7 +107,7 @@ json measures_json(const IntensityMeasures& m) {
                                                      {"final_velocity", m.final_velocity},
                                                      {"final_displacement", m.final_displacement}};
   json j;
-  for (const auto& [key, value] : measures) j[key] = number_or_null(value);
+  for (const auto& [key, value] : measures) j[key] = finite_or_null(value);
   return j;
 }
 

@@ -19,9 +19,9 @@
 #include "blockdyn/model/winkler/energy.hpp"
 
 namespace blockdyn {
-namespace {
 
 using json = nlohmann::ordered_json;
+namespace {
 
 std::vector<StudyOption> with_orbit(std::vector<StudyOption> own) {
   std::vector<StudyOption> o = winkler_orbit_options();

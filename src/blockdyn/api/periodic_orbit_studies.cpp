@@ -15,9 +15,9 @@
 #include "blockdyn/base/range_check.hpp"
 
 namespace blockdyn {
-namespace {
 
 using json = nlohmann::ordered_json;
+namespace {
 
 std::vector<StudyOption> periodic_orbit_options() {
   const OrbitRegionOptions r;

@@ -15,10 +15,9 @@
 #include "blockdyn/model/rigid/rigid_params.hpp"
 
 namespace blockdyn {
-namespace {
 
 using json = nlohmann::ordered_json;
-using Invalid = std::invalid_argument;
+namespace {
 
 std::vector<StudyOption> rocking_spectrum_options() {
   return {{"model", "housner (default) or rigid (3 DOF, Coulomb friction)", "housner"},
@@ -45,7 +44,7 @@ std::vector<double> p_values(const StudyOptions& o) {
   const bool list = o.given("p-values");
   const bool range = o.given("p-min") || o.given("p-max") || o.given("p-points");
   if (list == range)
-    throw Invalid(list ? "give --p-values or --p-min/--p-max/--p-points, not both"
+    throw std::invalid_argument(list ? "give --p-values or --p-min/--p-max/--p-points, not both"
                        : "give --p-values P1,P2,... or --p-min --p-max --p-points");
   std::vector<double> p;
   if (list) {
@@ -103,11 +102,11 @@ json rows_json(const Table& t, const Axes& ax) {
 GridStudy rocking_grid(const Settings& given, const std::string& output) {
   const StudyOptions so(given, rocking_spectrum_options());
   const std::string model = so.text("model");
-  if (model != "housner" && model != "rigid") throw Invalid("model = '" + model + "' is not one of: housner, rigid");
-  if (!so.given("alpha")) throw Invalid("alpha: give the slenderness angle [rad]");
+  if (model != "housner" && model != "rigid") throw std::invalid_argument("model = '" + model + "' is not one of: housner, rigid");
+  if (!so.given("alpha")) throw std::invalid_argument("alpha: give the slenderness angle [rad]");
   const double alpha = so.number("alpha");
   require_in_range("alpha", alpha, 0, M_PI / 4, false);
-  if (so.given("scale") && so.given("scales")) throw Invalid("--scale and --scales: give only one");
+  if (so.given("scale") && so.given("scales")) throw std::invalid_argument("--scale and --scales: give only one");
   Axes ax;
   ax.p = p_values(so);
   ax.scales = so.given("scales") ? so.numbers("scales") : std::vector<double>{so.number("scale")};
@@ -123,15 +122,15 @@ GridStudy rocking_grid(const Settings& given, const std::string& output) {
   const bool housner = model == "housner";
   if (housner)
     for (const char* n : {"mu-s", "mu-k", "impact"})
-      if (so.given(n)) throw Invalid(std::string("--") + n + " applies to --model rigid only");
+      if (so.given(n)) throw std::invalid_argument(std::string("--") + n + " applies to --model rigid only");
   base.interface.mu_s = so.number("mu-s");
   base.interface.mu_k = so.given("mu-k") ? so.number("mu-k") : base.interface.mu_s;
   const auto law = impact_law_from_string(so.text("impact"));
-  if (!law) throw Invalid("impact = '" + so.text("impact") + "' is not one of: housner, newton");
+  if (!law) throw std::invalid_argument("impact = '" + so.text("impact") + "' is not one of: housner, newton");
   base.impact = *law;
   if (so.given("restitution")) base.restitution = so.number("restitution");
   const auto rec = record_from(given);
-  if (so.given("t-end") && so.given("t-after")) throw Invalid("--t-end and --t-after: give only one");
+  if (so.given("t-end") && so.given("t-after")) throw std::invalid_argument("--t-end and --t-after: give only one");
   const double t_end = so.given("t-end") ? so.number("t-end") : rec->t_last() + t_after;
   require_in_range("t-end", t_end, 0, 1e5, false);
   // Every block of the grid is checked before any point runs (a restitution out of range, ...).

@@ -9,9 +9,8 @@
 #include "blockdyn/model/rigid/rigid_params.hpp"
 
 namespace blockdyn {
-namespace {
 
-using Invalid = std::invalid_argument;
+namespace {
 
 // Physical-block options: name, field (plain or optional), winkler only.
 struct PhysOption {
@@ -36,15 +35,15 @@ void check_family_options(const Settings& s, const std::string& model) {
   const bool rigid = is_rigid_family(model);
   if (rigid) {
     for (const char* n : {"r", "k", "mu", "ic", "units"})
-      if (s.has(n)) throw Invalid(std::string("--") + n + " belongs to the winkler model, not to --model " + model);
+      if (s.has(n)) throw std::invalid_argument(std::string("--") + n + " belongs to the winkler model, not to --model " + model);
   } else {
     for (const char* n : {"restitution", "mu-s", "mu-k", "impact"})
-      if (s.has(n)) throw Invalid(std::string("--") + n + " belongs to --model housner|rigid, not to winkler");
+      if (s.has(n)) throw std::invalid_argument(std::string("--") + n + " belongs to --model housner|rigid, not to winkler");
   }
   if (model == "housner")
     for (const char* n : {"mu-s", "mu-k", "impact", "x0", "y0", "vx0", "vy0"})
       if (s.has(n))
-        throw Invalid(std::string("--") + n + " belongs to --model rigid (housner has one degree of freedom)");
+        throw std::invalid_argument(std::string("--") + n + " belongs to --model rigid (housner has one degree of freedom)");
 }
 
 // The physical-block options on top of the scenario's [physical] block (if any).
@@ -54,12 +53,12 @@ void apply_physical(const Settings& s, Scenario& sc) {
   for (const PhysOption& po : kPhysOptions) {
     if (!s.has(po.name)) continue;
     if (rigid && po.winkler_only)
-      throw Invalid(std::string("--") + po.name + " belongs to the winkler model (--model winkler)");
+      throw std::invalid_argument(std::string("--") + po.name + " belongs to the winkler model (--model winkler)");
     any = true;
   }
   if (!any) return;
   if (!rigid && (s.has("r") || s.has("k")))
-    throw Invalid("--r/--k and a physical block (--height, --width, ...) both given: use one");
+    throw std::invalid_argument("--r/--k and a physical block (--height, --width, ...) both given: use one");
   PhysicalBlock pb = sc.physical.value_or(PhysicalBlock{});
   if (!rigid) pb.mu = s.has("mu") ? sc.params.mu : (sc.physical ? pb.mu : sc.params.mu);
   for (const PhysOption& po : kPhysOptions) {
@@ -79,7 +78,7 @@ void apply_physical(const Settings& s, Scenario& sc) {
 void apply_initial(const Settings& s, Scenario& sc) {
   if (s.has("ic")) {
     const std::string v = s.text("ic");
-    if (v != "ic1" && v != "ic2" && v != "custom") throw Invalid("--ic = '" + v + "' is not one of: ic1, ic2, custom");
+    if (v != "ic1" && v != "ic2" && v != "custom") throw std::invalid_argument("--ic = '" + v + "' is not one of: ic1, ic2, custom");
     sc.initial.set = v;
   }
   for (auto [name, field] : {std::pair{"w0", &InitialSpec::w0},
@@ -110,7 +109,7 @@ Scenario scenario_from(const Settings& s) {
   if (s.has("model")) {
     const std::string m = s.text("model");
     if (m != "winkler" && !is_rigid_family(m))
-      throw Invalid("--model = '" + m + "' is not one of: winkler, housner, rigid");
+      throw std::invalid_argument("--model = '" + m + "' is not one of: winkler, housner, rigid");
     sc.model = m;
   }
   check_family_options(s, sc.model);
@@ -131,7 +130,7 @@ Scenario scenario_from(const Settings& s) {
   if (s.has("impact")) {
     const std::string v = s.text("impact");
     const auto law = impact_law_from_string(v);
-    if (!law) throw Invalid("--impact = '" + v + "' is not one of: housner, newton");
+    if (!law) throw std::invalid_argument("--impact = '" + v + "' is not one of: housner, newton");
     sc.impact = *law;
   }
   apply_ground_settings(s, sc.ground);
@@ -142,9 +141,9 @@ Scenario scenario_from(const Settings& s) {
   if (!is_rigid_family(sc.model)) {
     validate(sc.params);
     if (sc.units != "nondim" && sc.units != "physical")
-      throw Invalid("units = '" + sc.units + "' is not one of: nondim, physical");
+      throw std::invalid_argument("units = '" + sc.units + "' is not one of: nondim, physical");
     if (sc.units == "physical" && !sc.physical)
-      throw Invalid("units = physical needs a physical block (--height --width ... or [physical] in the scenario)");
+      throw std::invalid_argument("units = physical needs a physical block (--height --width ... or [physical] in the scenario)");
   }
   return sc;
 }

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "blockdyn/api/settings.hpp"
 
+#include "blockdyn/base/number_text.hpp"
+
 #include <cerrno>
 #include <cstdio>
 #include <cstdlib>
@@ -20,11 +22,7 @@ std::string Settings::canonical(std::string_view name) {
   return s;
 }
 
-std::string Settings::exact(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.17g", v);
-  return buf;
-}
+std::string Settings::exact(double v) { return number_text(v); }
 
 void Settings::add(std::string_view name, std::string value) {
   entries_[canonical(name)].values.push_back(std::move(value));

@@ -48,7 +48,7 @@ class Settings {
   void require_known(const std::vector<StudyOption>& specs, const std::vector<std::string>& extra,
                      const std::string& what) const;
 
-  // A number as a value that reads back to the same double (17 significant digits).
+  // A number as a value that reads back to the same double (the shortest such decimal).
   static std::string exact(double v);
   // "t_end" -> "t-end": Python's keyword names to the command line's.
   static std::string canonical(std::string_view name);

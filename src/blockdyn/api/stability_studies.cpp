@@ -14,9 +14,9 @@
 #include "blockdyn/io/json_io.hpp"
 
 namespace blockdyn {
-namespace {
 
 using json = nlohmann::ordered_json;
+namespace {
 
 constexpr double kRMax = 100, kMuMax = 10, kKMaxAllowed = kWinklerKMax;
 
@@ -24,7 +24,6 @@ json header(const std::string& command, const std::string& ic, const StudyRunOpt
   return {{"run_info", run_info()}, {"command", command}, {"ic", ic}, {"run_options", run_options_json(run)}};
 }
 
-json json_or_null(double v) { return std::isfinite(v) ? json(v) : json(nullptr); }
 
 void add_common_options(std::vector<StudyOption>& o, bool with_search) {
   if (with_search) {
@@ -154,13 +153,13 @@ StudyReport overturn_study(const Settings& given, const StudyRequest&) {
   meta["points"] = points;
   meta["window_points"] = window_points;
   meta["second_swing_window"] = window;
-  meta["k_uns"] = json_or_null(k_uns_or_nan(p.r));
+  meta["k_uns"] = finite_or_null(k_uns_or_nan(p.r));
   r.sidecar = meta;
   r.summary = meta;
   r.summary["runs"] = runs.size();
   r.summary["overturned"] = over;
   r.summary["numerical_failures"] = failed;
-  r.summary["lowest_grid_k_without_overturning"] = json_or_null(k_first_stable);
+  r.summary["lowest_grid_k_without_overturning"] = finite_or_null(k_first_stable);
   append_text(r.text, "%zu runs (%s, r = %g, mu = %g, t_end = %g): %d overturned, %d failed; lowest k without: %s\n",
               runs.size(), ic.name().c_str(), p.r, p.mu, run.t_end, over, failed,
               std::isnan(k_first_stable) ? "none" : cell_text(k_first_stable).c_str());
@@ -258,7 +257,7 @@ StudyReport curve_study(const Settings& given, const StudyRequest&) {
     cells.push_back(cell_text(k_uns));
     t.rows.push_back(cells);
     json p = {{"r", rs[i]}};
-    p["k_uns"] = json_or_null(k_uns);
+    p["k_uns"] = finite_or_null(k_uns);
     for (const auto& n : names) p[n + "_stability"] = boundary_json(row.result(n), true);
     if (want_k3) p["k3_equals_k2"] = row.k3.coincides_with_k2;
     points_json.push_back(p);

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "blockdyn/api/study_command.hpp"
 
+#include "blockdyn/simulation/run_options.hpp"
+
 #include <cmath>
 #include <cstdarg>
 #include <cstdio>
@@ -122,8 +124,8 @@ int StudyOptions::threads() const {
 std::vector<StudyOption> study_run_options(const std::string& default_t_end) {
   const StudyRunOptions d;
   return {{"t-end", "observation time of each run (> 0)", default_t_end},
-          {"rtol", "relative tolerance of the integrator, in (0, 1)", Settings::exact(d.integrator.rtol)},
-          {"atol", "absolute tolerance (scaled by 1/k for y), in (0, 1)", Settings::exact(d.integrator.atol)},
+          {"rtol", rtol_help(), Settings::exact(d.integrator.rtol)},
+          {"atol", atol_help(), Settings::exact(d.integrator.atol)},
           {"method",
            "Runge-Kutta pair: dopri5 (Dormand-Prince 5(4)), dop853 (8(5,3), 7th-order dense output) or auto "
            "(dop853 when rtol < 1e-6)",

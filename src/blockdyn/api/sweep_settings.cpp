@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "blockdyn/api/sweep_settings.hpp"
 
+#include "blockdyn/simulation/run_options.hpp"
+
 #include <sstream>
 #include <stdexcept>
 
@@ -13,9 +15,8 @@
 #include "blockdyn/model/rigid/rigid_params.hpp"
 
 namespace blockdyn {
-namespace {
 
-using Invalid = std::invalid_argument;
+namespace {
 
 const char* const kWinklerOnly[] = {"k", "r", "inv-r", "mu", "ic", "metric", "stop-at-first-flight", "stop-at-ihor"};
 const char* const kRigidOnly[] = {"axis", "width", "height", "mass", "g", "mu-s", "mu-k", "restitution", "impact"};
@@ -49,7 +50,7 @@ void apply_state_and_run(const Settings& s, Initial& initial, Options& options) 
 // --w0 and --w0-over-alpha (one of them): the tilt, absolute or per point.
 template <class Set>
 void apply_tilt(const Settings& s, Set&& set) {
-  if (s.has("w0") && s.has("w0-over-alpha")) throw Invalid("--w0 and --w0-over-alpha: give only one");
+  if (s.has("w0") && s.has("w0-over-alpha")) throw std::invalid_argument("--w0 and --w0-over-alpha: give only one");
   if (s.has("w0")) set(*s.number("w0"), false);
   if (s.has("w0-over-alpha")) set(*s.number("w0-over-alpha"), true);
 }
@@ -58,16 +59,16 @@ void set_output(const Settings& s, std::string& output, std::string& plot, std::
   output = s.text("output", output);
   plot = s.text("plot", plot);
   plot_column = s.text("plot-column", plot_column);
-  if (output.empty()) throw Invalid("output: the CSV path is empty");
+  if (output.empty()) throw std::invalid_argument("output: the CSV path is empty");
 }
 
 SweepPlotAxis plot_axis(const SweepAxis& a) { return {a.name, a.values, a.is_range && a.spacing == AxisSpacing::Log}; }
 
 SweepDefinition winkler_sweep(const Settings& s) {
   for (const char* n : kRigidOnly)
-    if (s.has(n)) throw Invalid(std::string("--") + n + " belongs to --model housner|rigid sweeps");
+    if (s.has(n)) throw std::invalid_argument(std::string("--") + n + " belongs to --model housner|rigid sweeps");
   SweepSpec sp = s.has("definition") ? load_sweep(s.text("definition")) : SweepSpec{};
-  if (s.has("r") && s.has("inv-r")) throw Invalid("--r and --inv-r: give only one aspect-ratio axis");
+  if (s.has("r") && s.has("inv-r")) throw std::invalid_argument("--r and --inv-r: give only one aspect-ratio axis");
   if (s.has("k")) sp.k = parse_axis("k", s.text("k"), AxisSpacing::Log);
   if (s.has("r")) sp.r = parse_axis("r", s.text("r"), AxisSpacing::Linear);
   if (s.has("inv-r")) sp.r = parse_axis("inv_r", s.text("inv-r"), AxisSpacing::Linear);
@@ -111,7 +112,7 @@ void apply_block(const Settings& s, RigidSweepSpec& sp) {
   if (s.has("restitution")) sp.block.restitution = *s.number("restitution");
   if (s.has("impact")) {
     const auto law = impact_law_from_string(s.text("impact"));
-    if (!law) throw Invalid("--impact = '" + s.text("impact") + "' is not one of: housner, newton");
+    if (!law) throw std::invalid_argument("--impact = '" + s.text("impact") + "' is not one of: housner, newton");
     sp.block.impact = *law;
   }
 }
@@ -120,17 +121,17 @@ void add_axes(const Settings& s, RigidSweepSpec& sp) {
   for (const std::string& a : s.values("axis")) {
     const auto eq = a.find('=');
     if (eq == std::string::npos || eq == 0)
-      throw Invalid("--axis '" + a + "': expected NAME=SPEC, e.g. ground_h_amplitude=0.1:1:20");
+      throw std::invalid_argument("--axis '" + a + "': expected NAME=SPEC, e.g. ground_h_amplitude=0.1:1:20");
     const std::string name = a.substr(0, eq);
     for (const auto& x : sp.axes)
-      if (x.name == name) throw Invalid("--axis " + name + ": given twice (or also in the definition file)");
+      if (x.name == name) throw std::invalid_argument("--axis " + name + ": given twice (or also in the definition file)");
     sp.axes.push_back(parse_axis(name, a.substr(eq + 1), AxisSpacing::Linear));
   }
 }
 
 SweepDefinition rigid_sweep(const Settings& s, const std::string& model) {
   for (const char* n : kWinklerOnly)
-    if (s.has(n)) throw Invalid(std::string("--") + n + " belongs to the winkler sweep, not to --model " + model);
+    if (s.has(n)) throw std::invalid_argument(std::string("--") + n + " belongs to the winkler sweep, not to --model " + model);
   RigidSweepSpec sp;
   if (s.has("definition"))
     sp = load_rigid_sweep(s.text("definition"));
@@ -157,7 +158,7 @@ SweepDefinition rigid_sweep(const Settings& s, const std::string& model) {
     has_height |= a.name == "height";
   }
   if (!has_width || !has_height)
-    throw Invalid(std::string("the ") + model + " sweep needs the block's " + (has_width ? "height" : "width") +
+    throw std::invalid_argument(std::string("the ") + model + " sweep needs the block's " + (has_width ? "height" : "width") +
                   ": --width and --height [m] (or [physical] in the definition, or an axis)");
   validate(sp);
   SweepDefinition d;
@@ -206,8 +207,8 @@ const std::vector<StudyOption>& sweep_options() {
         {"vy0", "initial y' (overrides the set)"},
         {"vw0", "initial w' (overrides the set)"},
         {"t-end", "final time of every run (default 30; housner/rigid 10)"},
-        {"rtol", "relative tolerance of the integrator, in (0, 1)"},
-        {"atol", "absolute tolerance (scaled by 1/k for y), in (0, 1)"},
+        {"rtol", rtol_help()},
+        {"atol", atol_help()},
         {"method", "Runge-Kutta pair: dopri5, dop853 or auto (dop853 when rtol < 1e-6; default)"},
         {"max-steps", "step limit per run (> 0)"},
         {"stop-at-first-flight", "stop each run at its first take-off", "", true},
@@ -232,7 +233,7 @@ std::string sweep_model(const Settings& s) {
     if (const auto v = root["model"].value<std::string>()) model = *v;
   }
   if (model != "winkler" && !is_rigid_family(model))
-    throw Invalid("model = '" + model + "' is not one of: winkler, housner, rigid");
+    throw std::invalid_argument("model = '" + model + "' is not one of: winkler, housner, rigid");
   return model;
 }
 

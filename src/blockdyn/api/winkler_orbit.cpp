@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "blockdyn/api/winkler_orbit.hpp"
 
+#include "blockdyn/simulation/run_options.hpp"
+
 #include <optional>
 #include <stdexcept>
 
@@ -20,8 +22,8 @@ std::vector<StudyOption> winkler_orbit_options(const std::string& method_option)
       {"r", "aspect ratio width/height (> 0)", Settings::exact(p.r)},
       {"mu", "friction coefficient (>= 0)", Settings::exact(p.mu)},
       {"k", "non-dimensional foundation stiffness k a b/(m g) (> 0)", Settings::exact(p.k)},
-      {"rtol", "relative tolerance of the integrator, in (0, 1)", Settings::exact(integ.rtol)},
-      {"atol", "absolute tolerance (scaled by 1/k for y), in (0, 1)", Settings::exact(integ.atol)},
+      {"rtol", rtol_help(), Settings::exact(integ.rtol)},
+      {"atol", atol_help(), Settings::exact(integ.atol)},
       {method_option,
        "Runge-Kutta pair: dopri5 (Dormand-Prince 5(4)), dop853 (8(5,3), 7th-order dense output) or auto "
        "(dop853 when rtol < 1e-6)",

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "blockdyn/excitation/response_spectrum.hpp"
 
+#include "blockdyn/base/angles.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -12,7 +14,6 @@
 namespace blockdyn {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 
 // The oscillator in pseudo-acceleration units: U = w^2 u and W = U' / w stay of the size of the
 // ground acceleration for every period, so that neither overflows nor underflows as T -> 0

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "blockdyn/excitation/stochastic_motion.hpp"
 
+#include "blockdyn/base/angles.hpp"
+
 #include <boost/math/special_functions/gamma.hpp>
 
 #include <cmath>
@@ -13,10 +15,8 @@
 #include "blockdyn/base/range_check.hpp"
 
 namespace blockdyn {
-namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-using Invalid = std::invalid_argument;
+namespace {
 
 // (t95 - t5) / t45 of the gamma distribution of shape k: decreasing in k.
 double spread_ratio(double k) {
@@ -148,10 +148,10 @@ Modulation fit_modulation(double arias, double d5_95, double t_mid, double g) {
   // The shape k = 2 c2 - 1 must exceed 1 (q(0) = 0): the spread ratio of k = 1 bounds D5-95 / t_mid.
   const double r = d5_95 / t_mid, r_max = spread_ratio(1.0 + 1e-9);
   if (!(r < r_max))
-    throw Invalid("d5-95 = " + number_text(d5_95) + " s is too long for t-mid = " + number_text(t_mid) +
+    throw std::invalid_argument("d5-95 = " + number_text(d5_95) + " s is too long for t-mid = " + number_text(t_mid) +
                   " s: a gamma-type modulation needs d5-95 / t-mid < " + number_text(r_max, 4));
   double lo = std::log(1.0 + 1e-9), hi = std::log(1e6);
-  if (!(spread_ratio(std::exp(hi)) < r)) throw Invalid("d5-95: too short for t-mid (d5-95 / t-mid below 4e-3)");
+  if (!(spread_ratio(std::exp(hi)) < r)) throw std::invalid_argument("d5-95: too short for t-mid (d5-95 / t-mid below 4e-3)");
   for (int it = 0; it < 200 && hi - lo > 1e-15; ++it) {
     const double mid = 0.5 * (lo + hi);
     (spread_ratio(std::exp(mid)) > r ? lo : hi) = mid;
@@ -168,7 +168,7 @@ Modulation fit_modulation(double arias, double d5_95, double t_mid, double g) {
 void validate(const RezaeianParams& p) {
   require_in_range("dt", p.dt, 1e-4, 1.0);
   require_in_range("t-end", p.t_end, 10 * p.dt, 1e4);
-  if (p.t_end / p.dt > 2e6) throw Invalid("t-end / dt: at most 2e6 samples per record");
+  if (p.t_end / p.dt > 2e6) throw std::invalid_argument("t-end / dt: at most 2e6 samples per record");
   require_in_range("f-mid", p.f_mid, 0, 0.25 / p.dt, false);
   require_in_range("f-slope", p.f_slope, -1e3, 1e3);
   require_in_range("zeta-f", p.zeta_f, 0, 1, false, false);
@@ -176,14 +176,14 @@ void validate(const RezaeianParams& p) {
   require_in_range("g", p.g, 0, 1e3, false);
   for (const double t : {0.0, p.t_end})
     if (!(p.f_mid + p.f_slope * (t - p.t_mid) > 0.0))
-      throw Invalid("f-slope = " + number_text(p.f_slope) +
+      throw std::invalid_argument("f-slope = " + number_text(p.f_slope) +
                     " Hz/s makes the filter frequency f-mid + f-slope (t - " +
                     "t-mid) reach 0 within [0, t-end]: give a smaller |f-slope|");
   if (!(p.t_mid < p.t_end))
-    throw Invalid("t-mid = " + number_text(p.t_mid) + " s lies outside the record [0, t-end = " + number_text(p.t_end) +
+    throw std::invalid_argument("t-mid = " + number_text(p.t_mid) + " s lies outside the record [0, t-end = " + number_text(p.t_end) +
                   " s]");
   if (!(p.d5_95 >= 20.0 * p.dt))
-    throw Invalid("d5-95 = " + number_text(p.d5_95) + " s spans fewer than 20 samples of dt = " + number_text(p.dt) +
+    throw std::invalid_argument("d5-95 = " + number_text(p.d5_95) + " s spans fewer than 20 samples of dt = " + number_text(p.dt) +
                   " s: give a longer --d5-95 or a smaller --dt");
   const Modulation q = fit_modulation(p.arias, p.d5_95, p.t_mid, p.g);
   // The record cut at t_end keeps the fraction F of the modulation's energy: its expected D5-95
@@ -191,7 +191,7 @@ void validate(const RezaeianParams& p) {
   const double kept = q.husid_fraction(p.t_end);
   const double d_cut = q.husid_time(0.95 * kept) - q.husid_time(0.05 * kept);
   if (!(kept >= 0.98) || !(std::fabs(d_cut - p.d5_95) <= 0.05 * p.d5_95))
-    throw Invalid("t-end = " + number_text(p.t_end) + " s cuts the modulation of d5-95 = " + number_text(p.d5_95) +
+    throw std::invalid_argument("t-end = " + number_text(p.t_end) + " s cuts the modulation of d5-95 = " + number_text(p.d5_95) +
                   " s, t-mid = " + number_text(p.t_mid) + " s: the record would hold " + number_text(100.0 * kept, 4) +
                   " % of the Arias target and a D5-95 of " + number_text(d_cut, 4) +
                   " s (at least 98 %, and within 5 %, needed); its 99.5 % point lies at " + number_text(q.husid_time(0.995), 4) +
@@ -261,14 +261,14 @@ void validate(const PulseParams& p, double dt, double t_end) {
   require_in_range("nu", p.nu, -2 * kPi, 2 * kPi);
   require_in_range("pulse-t0", p.t0, 0, 1e4);
   if (!(p.period >= 10.0 * dt))
-    throw Invalid("pulse-period = " + number_text(p.period) + " s is sampled by fewer than 10 samples of dt = " +
+    throw std::invalid_argument("pulse-period = " + number_text(p.period) + " s is sampled by fewer than 10 samples of dt = " +
                   number_text(dt) + " s: give a longer --pulse-period or a smaller --dt");
   const double half = 0.5 * p.gamma * p.period;
   if (!(p.t0 - half >= -1e-12 * half))
-    throw Invalid("pulse-t0 = " + number_text(p.t0) + " s starts the pulse at " + number_text(p.t0 - half) +
+    throw std::invalid_argument("pulse-t0 = " + number_text(p.t0) + " s starts the pulse at " + number_text(p.t0 - half) +
                   " s, before the record: give pulse-t0 >= gamma pulse-period / 2 = " + number_text(half) + " s");
   if (!(p.t0 + half <= t_end * (1.0 + 1e-12)))
-    throw Invalid("t-end = " + number_text(t_end) + " s: shorter than the pulse (it ends at " +
+    throw std::invalid_argument("t-end = " + number_text(t_end) + " s: shorter than the pulse (it ends at " +
                   number_text(p.t0 + half) + " s)");
 }
 

@@ -4,6 +4,8 @@
 // with full round-trip precision by nlohmann's serializer.
 #include <nlohmann/json.hpp>
 
+#include <cmath>
+
 #include "blockdyn/excitation/ground_motion.hpp"
 #include "blockdyn/simulation/rigid_simulation.hpp"
 #include "blockdyn/simulation/simulate.hpp"
@@ -19,6 +21,10 @@ nlohmann::ordered_json state_json(const BlockStateVec& z, const UnitScales& s); 
 nlohmann::ordered_json to_json(const Energy& e);
 nlohmann::ordered_json to_json(const EventRecord& e);
 nlohmann::ordered_json run_info();  // program version, for every output
+// A number, or null where it is not finite (JSON has no NaN or infinity).
+inline nlohmann::ordered_json finite_or_null(double v) {
+  return std::isfinite(v) ? nlohmann::ordered_json(v) : nlohmann::ordered_json(nullptr);
+}
 // Version of the JSON layouts documented in docs/output-formats.md: raised when a key is removed
 // or changes meaning (new keys may be added within a version).
 inline constexpr int kJsonSchemaVersion = 1;

@@ -9,6 +9,15 @@ namespace blockdyn {
 
 // Bounded: a run of 1e7 time units is already days of computation at the default tolerances.
 inline constexpr double kMaxTime = 1e7;
+// The tolerances a run accepts: below 1e-14 no pair can meet the tolerance in double precision;
+// above 1e-2 the events and energies lose their meaning.
+inline constexpr double kMinRtol = 1e-14, kMaxRtol = 1e-2, kMinAtol = 1e-16, kMaxAtol = 1e-2;
+
+// The tolerances' help, from the same bounds as the check.
+inline const char* rtol_help() { return "relative tolerance of the integrator, in [1e-14, 1e-2]"; }
+inline const char* atol_help() { return "absolute tolerance (scaled by 1/k for y), in [1e-16, 1e-2]"; }
+static_assert(kMinRtol == 1e-14 && kMaxRtol == 1e-2 && kMinAtol == 1e-16 && kMaxAtol == 1e-2,
+              "the help strings above state these bounds");
 
 struct RunOptions {
   double t_start = 0.0;

@@ -385,7 +385,10 @@ class LyapunovEstimator {
 
   void stop(LyapunovResult& res, int copy, RunStatus rs) const {
     res.status = copy == 1 ? LyapunovStatus::PerturbedStopped : LyapunovStatus::ReferenceStopped;
-    res.note = std::string(copy == 1 ? "perturbed" : "reference") + " trajectory stopped: " + to_string(rs);
+    // Appended piece by piece: GCC 12 warns of a false array bound in the concatenated temporary.
+    res.note = copy == 1 ? "perturbed" : "reference";
+    res.note += " trajectory stopped: ";
+    res.note += to_string(rs);
   }
 
   const M& model_;

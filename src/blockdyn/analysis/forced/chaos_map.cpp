@@ -1,11 +1,15 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "blockdyn/analysis/forced/chaos_map.hpp"
 
+#include "blockdyn/io/json_io.hpp"
+
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
 
 namespace blockdyn {
+
+using json = nlohmann::ordered_json;
 
 void validate(const ChaosMapOptions& o) {
   validate(o.grid);
@@ -83,17 +87,15 @@ const std::vector<std::string>& chaos_motions() {
 }
 
 nlohmann::ordered_json chaos_points_json(const std::vector<ChaosPoint>& pts) {
-  using json = nlohmann::ordered_json;
-  auto num = [](double v) { return std::isfinite(v) ? json(v) : json(nullptr); };
   json arr = json::array();
   for (const ChaosPoint& p : pts) {
     json x;
     x["beta"] = p.beta;
     x["omega"] = p.omega;
     x["motion"] = p.motion;
-    x["exponent"] = num(p.exponent);
-    x["exponent_nondim"] = num(p.exponent_nondim);
-    x["exponent_second_half"] = num(p.exponent_second_half);
+    x["exponent"] = finite_or_null(p.exponent);
+    x["exponent_nondim"] = finite_or_null(p.exponent_nondim);
+    x["exponent_second_half"] = finite_or_null(p.exponent_second_half);
     x["status"] = p.status;
     x["impacts"] = p.impacts;
     x["collapse_mode"] = p.collapse_mode ? json(*p.collapse_mode) : json(nullptr);

@@ -8,10 +8,8 @@
 #include "blockdyn/io/json_io.hpp"
 
 namespace blockdyn {
-namespace {
+
 using json = nlohmann::ordered_json;
-json num(double v) { return std::isfinite(v) ? json(v) : json(nullptr); }
-}  // namespace
 
 json forced_lyapunov_summary(const ForcedModel& fm, const GroundMotion& g, const json& excitation,
                              const ForcedLyapunovOptions& o, const ForcedLyapunovOutcome& r) {
@@ -26,13 +24,13 @@ json forced_lyapunov_summary(const ForcedModel& fm, const GroundMotion& g, const
   j["integrator"] = to_json(o.integrator);
   j["options"] = {{"method", "tangent"},    {"t_end", o.t_end},     {"t_transient", o.t_transient},
                   {"interval", o.interval}, {"twin_d0", o.twin_d0}, {"metric", r.metric}};
-  j["exponent"] = num(tl.exponent);
-  j["exponent_nondim"] = num(tl.exponent / fm.p);
-  j["exponent_second_half"] = num(r.exponent_second_half);
+  j["exponent"] = finite_or_null(tl.exponent);
+  j["exponent_nondim"] = finite_or_null(tl.exponent / fm.p);
+  j["exponent_second_half"] = finite_or_null(r.exponent_second_half);
   j["status"] = to_string(tl.status);
   j["superstable"] = tl.status == TangentStatus::Superstable;
   j["note"] = tl.note;
-  j["t_tangent"] = num(tl.t_tangent);
+  j["t_tangent"] = finite_or_null(tl.t_tangent);
   j["t_final"] = tl.t_final;
   j["renormalisations"] = tl.renormalisations;
   j["impacts"] = r.impacts;

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "blockdyn/analysis/forced/housner_periodic_orbits.hpp"
 
+#include "blockdyn/base/angles.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -31,14 +33,6 @@ void validate(const OrbitType& t) {
 }
 
 namespace {
-
-constexpr double kTwoPi = 2 * M_PI;
-
-double wrap(double x) {
-  double r = std::fmod(x, kTwoPi);
-  if (r < 0) r += kTwoPi;
-  return r;
-}
 
 HousnerBlock make_block(const RockingForcing& f) {
   GroundMotion g;
@@ -96,7 +90,7 @@ ImpactMapPass impact_map_pass(const RockingForcing& f, const OrbitType& type, do
   }
   const HousnerBlock model = make_block(f);
   const double Om = f.Omega(), ap = f.alpha() * f.p();
-  const double t0 = wrap(psi) / Om;
+  const double t0 = wrap_angle(psi) / Om;
   HousnerBlock::State z{0.0, u * ap, 0.0, 0.0};
   HousnerMode md{Mechanism::Rock, 1, false};
   const int wanted = type.symmetric ? type.m : 2 * type.m;
@@ -112,7 +106,7 @@ ImpactMapPass impact_map_pass(const RockingForcing& f, const OrbitType& type, do
                                                 : std::string("integration stopped: ") + to_string(st);
     return out;
   }
-  for (auto& i : out.impacts) i.phase = wrap(psi + Om * i.t);
+  for (auto& i : out.impacts) i.phase = wrap_angle(psi + Om * i.t);
   const OrbitImpact& last = out.impacts.back();
   const double dpsi = Om * last.t;
   if (type.symmetric) {
@@ -228,7 +222,7 @@ PeriodicOrbit find_periodic_orbit(const RockingForcing& f, const OrbitType& type
     return orb;
   }
   orb.converged = true;
-  orb.phase = wrap(psi);
+  orb.phase = wrap_angle(psi);
   orb.velocity = u;
   orb.max_abs_rotation = pass.max_abs_rotation;
   orb.impacts = pass.impacts;
@@ -238,7 +232,7 @@ PeriodicOrbit find_periodic_orbit(const RockingForcing& f, const OrbitType& type
     for (std::size_t k = 0; k < half; ++k) {
       OrbitImpact i = orb.impacts[k];
       i.t += 0.5 * orb.period;
-      i.phase = wrap(i.phase + M_PI * type.n);
+      i.phase = wrap_angle(i.phase + M_PI * type.n);
       i.rate_before = -i.rate_before;
       i.rate_after = -i.rate_after;
       orb.impacts.push_back(i);
@@ -300,7 +294,7 @@ std::vector<std::array<double, 2>> orbit_guesses(const RockingForcing& f, const 
     HybridIntegrator<HousnerBlock> hi(model, IntegratorOptions{1e-10, 1e-12});
     double t = t0;
     hi.run(t, t0 + (settle_periods + 2.0 * type.n + 2) * T, md, z, last);
-    if (last.t >= 0) g.push_back({wrap(Om * last.t), last.rate / ap});
+    if (last.t >= 0) g.push_back({wrap_angle(Om * last.t), last.rate / ap});
   }
   return g;
 }
@@ -314,7 +308,7 @@ std::vector<PeriodicOrbit> find_periodic_orbits(const RockingForcing& f, const O
     for (const auto& i : b.impacts) {
       if (!(i.rate_after > 0)) continue;
       const double u = i.rate_after / (f.alpha() * f.p());
-      double d = std::fabs(wrap(i.phase) - a.phase);
+      double d = std::fabs(wrap_angle(i.phase) - a.phase);
       d = std::fmin(d, kTwoPi - d);
       if (d < 1e-6 && std::fabs(u - a.velocity) < 1e-6 * std::fmax(1.0, a.velocity)) return true;
     }

@@ -1,22 +1,15 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "blockdyn/analysis/forced/impact_map.hpp"
 
+#include "blockdyn/base/angles.hpp"
+
 #include <cmath>
 
 namespace blockdyn {
 
-namespace {
-double wrap(double x) {
-  constexpr double kTwoPi = 2 * M_PI;
-  double r = std::fmod(x, kTwoPi);
-  if (r < 0) r += kTwoPi;
-  return r >= kTwoPi ? 0.0 : r;  // -tiny + 2 pi rounds to 2 pi
-}
-}  // namespace
+double forcing_phase(double t, double Omega, double phase) { return wrap_angle(Omega * t + phase); }
 
-double forcing_phase(double t, double Omega, double phase) { return wrap(Omega * t + phase); }
-
-double section_time(double Omega, double phase, double phi0) { return wrap(phi0 - phase) / Omega; }
+double section_time(double Omega, double phase, double phi0) { return wrap_angle(phi0 - phase) / Omega; }
 
 std::vector<ImpactMapPoint> impact_map(const std::vector<Impact>& impacts, double Omega, double phase, double t_from) {
   std::vector<ImpactMapPoint> out;

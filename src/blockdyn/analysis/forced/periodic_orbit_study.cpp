@@ -8,12 +8,11 @@
 #include "blockdyn/io/json_io.hpp"
 
 namespace blockdyn {
-namespace {
 
 using json = nlohmann::ordered_json;
+namespace {
 
 json cx(const std::complex<double>& z) { return json::array({z.real(), z.imag()}); }
-json num(double v) { return std::isfinite(v) ? json(v) : json(nullptr); }
 
 json orbit_json(const PeriodicOrbit& o, const RockingForcing& f) {
   json j;
@@ -177,9 +176,9 @@ OrbitRegion orbit_region(const RockingForcing& f, const OrbitType& type, const O
                    {"omega", p.omega},
                    {"orbits", p.orbits},
                    {"stable", p.stable},
-                   {"phase", num(p.phase)},
-                   {"velocity", num(p.velocity)},
-                   {"max_multiplier", num(p.max_multiplier)},
+                   {"phase", finite_or_null(p.phase)},
+                   {"velocity", finite_or_null(p.velocity)},
+                   {"max_multiplier", finite_or_null(p.max_multiplier)},
                    {"linear_orbits", p.linear_orbits < 0 ? json(nullptr) : json(p.linear_orbits)},
                    {"linear_stable", p.linear_stable < 0 ? json(nullptr) : json(p.linear_stable)}});
     r.with_orbits += p.orbits > 0;

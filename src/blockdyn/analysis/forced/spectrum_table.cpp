@@ -6,6 +6,8 @@
 
 namespace blockdyn {
 
+using json = nlohmann::ordered_json;
+
 const std::vector<std::string>& spectrum_columns() {
   static const std::vector<std::string> c{
       "duration", "min_overturning_amplitude", "linearised_rect", "safe_islands", "at_scan_floor", "islands", "runs",
@@ -70,7 +72,6 @@ SpectrumRow spectrum_row_from(const Table& t, const TableRow& r) {
 }
 
 SpectrumPoints spectrum_points(const Table& t, PulseShape pulse, double alpha, double p) {
-  using json = nlohmann::ordered_json;
   SpectrumPoints out;
   for (const TableRow& tr : t.rows) {
     const SpectrumRow r = spectrum_row_from(t, tr);

@@ -3,6 +3,8 @@
 
 namespace blockdyn {
 
+using json = nlohmann::ordered_json;
+
 const std::vector<std::string>& survival_columns() {
   static const std::vector<std::string> c{"beta",      "omega",        "motion",           "collapse_mode",
                                           "t_failure", "t_star_class", "max_abs_rotation", "max_sliding",
@@ -48,7 +50,6 @@ nlohmann::ordered_json SurvivalPoints::counts_json() const {
 }
 
 SurvivalPoints survival_points(const Table& t, bool with_level) {
-  using json = nlohmann::ordered_json;
   SurvivalPoints out;
   const std::size_t level_col = with_level ? t.column("level") : 0;
   for (const TableRow& r : t.rows) {
@@ -70,7 +71,6 @@ SurvivalPoints survival_points(const Table& t, bool with_level) {
 }
 
 nlohmann::ordered_json response_curve_points(const Table& t, bool with_friction) {
-  using json = nlohmann::ordered_json;
   json arr = json::array();
   const std::size_t c_theta = t.column("theta_max_over_alpha"), c_slide = t.column("max_sliding_over_b");
   for (const TableRow& r : t.rows) {

@@ -15,6 +15,8 @@
 
 namespace blockdyn {
 
+using json = nlohmann::ordered_json;
+
 namespace {
 
 struct AxisDef {
@@ -179,7 +181,6 @@ void validate(const RigidSweepSpec& s) {
 }
 
 nlohmann::ordered_json definition_json(const RigidSweepSpec& s) {
-  using json = nlohmann::ordered_json;
   json j;
   j["format"] = "blockdyn-sweep-rigid-1";
   j["model"] = s.model;

@@ -13,6 +13,8 @@
 
 namespace blockdyn {
 
+using json = nlohmann::ordered_json;
+
 std::size_t point_count(const SweepSpec& s) {
   return s.k.values.size() * s.r.values.size() * s.mu.values.size() * s.initial.sets.size();
 }
@@ -96,7 +98,6 @@ void validate(const SweepSpec& s) {
 }
 
 nlohmann::ordered_json definition_json(const SweepSpec& s) {
-  using json = nlohmann::ordered_json;
   json j;
   j["format"] = "blockdyn-sweep-1";
   j["order"] = "index = k_i + n_k * (r_i + n_r * (mu_i + n_mu * ic_i))";

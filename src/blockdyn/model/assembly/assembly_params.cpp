@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "blockdyn/model/assembly/assembly_params.hpp"
 
+#include "blockdyn/base/number_text.hpp"
+
 #include <array>
 #include <cmath>
 #include <stdexcept>
@@ -18,12 +20,6 @@ namespace {
 constexpr double kMinBlockSize = 1e-3;
 constexpr const char* kMinBlockSizeWhy =
     " (smaller blocks are grains: their contact time scale makes a run of seconds take billions of steps)";
-
-std::string num(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.6g", v);
-  return buf;
-}
 
 // Penetration d(t) and its rate of a unit-frequency oscillator d'' + 2 z d' + d = 0 after
 // touching down with d(0) = 0, d'(0) = 1.
@@ -74,13 +70,13 @@ double restitution_of_damping(double c, double m, double k) {
 }
 
 double damping_for_restitution(double e, double m, double k) {
-  if (!(e > 0.0 && e <= 1.0)) throw std::invalid_argument("restitution = " + num(e) + " must be in (0, 1]");
+  if (!(e > 0.0 && e <= 1.0)) throw std::invalid_argument("restitution = " + number_text(e, 6) + " must be in (0, 1]");
   if (e == 1.0) return 0.0;
   double lo = 0.0, hi = 1.0;
   while (restitution_of_ratio(hi) > e) {
     lo = hi;
     hi *= 2.0;
-    if (hi > 1e6) throw std::invalid_argument("restitution = " + num(e) + " is too small (>= 1e-4)");
+    if (hi > 1e6) throw std::invalid_argument("restitution = " + number_text(e, 6) + " is too small (>= 1e-4)");
   }
   for (int k2 = 0; k2 < 200 && hi - lo > 1e-14 * hi; ++k2) {
     const double mid = 0.5 * (lo + hi);
@@ -116,16 +112,16 @@ void build_arch(Assembly& a, const PresetOptions& o) {
     throw std::invalid_argument("voussoirs = " + std::to_string(o.voussoirs) + " must be in [1, " +
                                 std::to_string(kMaxStaticBlocks) + "]");
   if (!(o.radius >= kMinBlockSize && o.radius <= 1e3))
-    throw std::invalid_argument("radius = " + num(o.radius) + " must be in [1e-3, 1000] m");
+    throw std::invalid_argument("radius = " + number_text(o.radius, 6) + " must be in [1e-3, 1000] m");
   if (!(o.thickness_ratio > 0 && o.thickness_ratio < 2))
-    throw std::invalid_argument("thickness-ratio = " + num(o.thickness_ratio) + " must be in (0, 2)");
+    throw std::invalid_argument("thickness-ratio = " + number_text(o.thickness_ratio, 6) + " must be in (0, 2)");
   if (!(o.embrace > 0 && o.embrace <= 180))
-    throw std::invalid_argument("embrace = " + num(o.embrace) + " must be in (0, 180] degrees");
+    throw std::invalid_argument("embrace = " + number_text(o.embrace, 6) + " must be in (0, 180] degrees");
   const int n = o.voussoirs;
   // A voussoir spanning 180 degrees or more is no convex block (one over a semicircle has its four
   // corners on one line).
   if (!(o.embrace / n < 180.0))
-    throw std::invalid_argument("voussoirs = " + std::to_string(n) + " over embrace = " + num(o.embrace) +
+    throw std::invalid_argument("voussoirs = " + std::to_string(n) + " over embrace = " + number_text(o.embrace, 6) +
                                 " degrees: each voussoir must span less than 180 degrees (give at least " +
                                 std::to_string(int(std::floor(o.embrace / 180.0)) + 1) + ")");
   const double R = o.radius, ri = R * (1 - 0.5 * o.thickness_ratio), re = R * (1 + 0.5 * o.thickness_ratio);
@@ -138,12 +134,12 @@ void build_arch(Assembly& a, const PresetOptions& o) {
     b.name = "voussoir " + std::to_string(k);
     const double size = std::fmax(b.width, b.height), least = std::fmin(b.width, b.height);
     if (size > 1e3)
-      throw std::invalid_argument("radius = " + num(o.radius) + " m, thickness-ratio = " + num(o.thickness_ratio) +
-                                  " and voussoirs = " + std::to_string(n) + " make voussoirs " + num(size) +
+      throw std::invalid_argument("radius = " + number_text(o.radius, 6) + " m, thickness-ratio = " + number_text(o.thickness_ratio, 6) +
+                                  " and voussoirs = " + std::to_string(n) + " make voussoirs " + number_text(size, 6) +
                                   " m across: at most 1000 m (a smaller radius or more voussoirs)");
     if (least < kMinBlockSize)
-      throw std::invalid_argument("radius = " + num(o.radius) + " m, thickness-ratio = " + num(o.thickness_ratio) +
-                                  " and voussoirs = " + std::to_string(n) + " make voussoirs " + num(least) +
+      throw std::invalid_argument("radius = " + number_text(o.radius, 6) + " m, thickness-ratio = " + number_text(o.thickness_ratio, 6) +
+                                  " and voussoirs = " + std::to_string(n) + " make voussoirs " + number_text(least, 6) +
                                   " m thin: at least 1e-3 m" + kMinBlockSizeWhy);
     a.blocks.push_back(b);
   }
@@ -175,15 +171,15 @@ AssemblyBlock polygon_block(const std::string& what, const std::vector<Vec2>& ve
 
 Assembly make_preset(const std::string& name, const PresetOptions& o) {
   if (!(o.slenderness >= 0.1 && o.slenderness <= 100))
-    throw std::invalid_argument("slenderness = " + num(o.slenderness) + " must be in [0.1, 100]");
+    throw std::invalid_argument("slenderness = " + number_text(o.slenderness, 6) + " must be in [0.1, 100]");
   if (!(o.block_width >= kMinBlockSize && o.block_width <= 100))
-    throw std::invalid_argument("block-width = " + num(o.block_width) + " must be in [1e-3, 100] m" +
+    throw std::invalid_argument("block-width = " + number_text(o.block_width, 6) + " must be in [1e-3, 100] m" +
                                 (o.block_width < kMinBlockSize ? kMinBlockSizeWhy : ""));
   if (!(o.thickness > 0 && o.thickness <= 100))
-    throw std::invalid_argument("thickness = " + num(o.thickness) + " must be in (0, 100] m");
+    throw std::invalid_argument("thickness = " + number_text(o.thickness, 6) + " must be in (0, 100] m");
   if (!(o.density > 0 && o.density <= 1e5))
-    throw std::invalid_argument("density = " + num(o.density) + " must be in (0, 1e5] kg/m^3");
-  if (!(std::fabs(o.tilt) < 1.5)) throw std::invalid_argument("tilt = " + num(o.tilt) + " must be in (-1.5, 1.5) rad");
+    throw std::invalid_argument("density = " + number_text(o.density, 6) + " must be in (0, 1e5] kg/m^3");
+  if (!(std::fabs(o.tilt) < 1.5)) throw std::invalid_argument("tilt = " + number_text(o.tilt, 6) + " must be in (-1.5, 1.5) rad");
   const double b = o.block_width, h = o.slenderness * b, g = 9.81;
   const double s = o.tilt >= 0 ? 1.0 : -1.0;  // theta > 0 turns about the left base corner
   Assembly a;
@@ -224,9 +220,9 @@ Assembly make_preset(const std::string& name, const PresetOptions& o) {
     const double L = o.lintel_length > 0 ? o.lintel_length : h;
     const double xc = 0.5 * L - o.overhang - 0.5 * b;  // column centres at -xc, +xc
     if (!(xc > 0.5 * b))
-      throw std::invalid_argument("trilith: the lintel (length " + num(L) + " m, overhang " + num(o.overhang) +
+      throw std::invalid_argument("trilith: the lintel (length " + number_text(L, 6) + " m, overhang " + number_text(o.overhang, 6) +
                                   " m) must span a clear opening between the columns");
-    if (!(L <= 1e3)) throw std::invalid_argument("lintel-length = " + num(L) + " must be at most 1000 m");
+    if (!(L <= 1e3)) throw std::invalid_argument("lintel-length = " + number_text(L, 6) + " must be at most 1000 m");
     AssemblyBlock c0 = make_block("left column", b, h, o), c1 = make_block("right column", b, h, o);
     AssemblyBlock li = make_block("lintel", L, b, o);
     const double sink_g = settle * (o.tilt == 0 ? 0.5 : 1.0) * (c0.mass + 0.5 * li.mass) * g / o.ground_law.k_normal;
@@ -281,23 +277,23 @@ void check_overlaps(const Assembly& a, double min_size) {
       const double d = penetration_depth(outline[i], outline[j]);
       if (d > deep)
         throw std::invalid_argument("block " + std::to_string(i) + " (" + a.blocks[i].name + ") and block " +
-                                    std::to_string(j) + " (" + a.blocks[j].name + ") overlap by " + num(d) +
-                                    " m at the start (at most " + num(deep) + " m, 2% of the smallest block size)");
+                                    std::to_string(j) + " (" + a.blocks[j].name + ") overlap by " + number_text(d, 6) +
+                                    " m at the start (at most " + number_text(deep, 6) + " m, 2% of the smallest block size)");
     }
 }
 
 void check_law(const ContactLaw& l, const std::string& where, bool rigid) {
   if (!(l.k_normal >= 1.0 && l.k_normal <= 1e13))
-    throw std::invalid_argument(where + ".k_normal = " + num(l.k_normal) + " must be in [1, 1e13] N/m");
+    throw std::invalid_argument(where + ".k_normal = " + number_text(l.k_normal, 6) + " must be in [1, 1e13] N/m");
   if (!(l.k_tangential < 0 || (l.k_tangential >= 1.0 && l.k_tangential <= 1e13)))
-    throw std::invalid_argument(where + ".k_tangential = " + num(l.k_tangential) + " must be in [1, 1e13] N/m");
+    throw std::invalid_argument(where + ".k_tangential = " + number_text(l.k_tangential, 6) + " must be in [1, 1e13] N/m");
   if (!(l.restitution >= (rigid ? 0.0 : 1e-3) && l.restitution <= 1.0))
-    throw std::invalid_argument(where + ".restitution = " + num(l.restitution) + " must be in [" +
+    throw std::invalid_argument(where + ".restitution = " + number_text(l.restitution, 6) + " must be in [" +
                                 (rigid ? "0" : "0.001") + ", 1]");
   if (!(l.damping < 0 || (std::isfinite(l.damping) && l.damping <= 1e12)))
-    throw std::invalid_argument(where + ".damping = " + num(l.damping) + " must be in [0, 1e12] N s/m");
+    throw std::invalid_argument(where + ".damping = " + number_text(l.damping, 6) + " must be in [0, 1e12] N s/m");
   if (!(l.mu_s >= 0 && l.mu_k >= 0 && l.mu_k <= l.mu_s && std::isfinite(l.mu_s)))
-    throw std::invalid_argument(where + ": friction mu_s = " + num(l.mu_s) + ", mu_k = " + num(l.mu_k) +
+    throw std::invalid_argument(where + ": friction mu_s = " + number_text(l.mu_s, 6) + ", mu_k = " + number_text(l.mu_k, 6) +
                                 " must satisfy 0 <= mu_k <= mu_s (finite)");
 }
 
@@ -318,28 +314,28 @@ void validate(const Assembly& a, int max_blocks) {
     throw std::invalid_argument("contact = '" + a.contact + "' must be deformable or rigid");
   if (a.rock_only_on_ground && a.contact != "rigid")
     throw std::invalid_argument("columns-rock-only (seed 001's 5-DOF restriction) needs the rigid contact law");
-  if (!(a.g > 0 && a.g <= 1e3)) throw std::invalid_argument("g = " + num(a.g) + " must be in (0, 1000] m/s^2");
+  if (!(a.g > 0 && a.g <= 1e3)) throw std::invalid_argument("g = " + number_text(a.g, 6) + " must be in (0, 1000] m/s^2");
   if (!(a.collapse_rotation > 0 && a.collapse_rotation <= 10))
-    throw std::invalid_argument("collapse_rotation = " + num(a.collapse_rotation) + " must be in (0, 10]");
+    throw std::invalid_argument("collapse_rotation = " + number_text(a.collapse_rotation, 6) + " must be in (0, 10]");
   if (!(a.min_bearing >= 0 && std::isfinite(a.min_bearing)))
-    throw std::invalid_argument("min_bearing = " + num(a.min_bearing) + " must be >= 0 m");
+    throw std::invalid_argument("min_bearing = " + number_text(a.min_bearing, 6) + " must be >= 0 m");
   double min_size = INFINITY;
   for (int i = 0; i < nb; ++i) {
     const AssemblyBlock& k = a.blocks[i];
     const std::string w = "block " + std::to_string(i);
     if (!(k.width >= kMinBlockSize && k.width <= 1e3))
-      throw std::invalid_argument(w + ".width = " + num(k.width) + " must be in [1e-3, 1000] m" +
+      throw std::invalid_argument(w + ".width = " + number_text(k.width, 6) + " must be in [1e-3, 1000] m" +
                                   (k.width < kMinBlockSize ? kMinBlockSizeWhy : ""));
     if (!(k.height >= kMinBlockSize && k.height <= 1e3))
-      throw std::invalid_argument(w + ".height = " + num(k.height) + " must be in [1e-3, 1000] m" +
+      throw std::invalid_argument(w + ".height = " + number_text(k.height, 6) + " must be in [1e-3, 1000] m" +
                                   (k.height < kMinBlockSize ? kMinBlockSizeWhy : ""));
     if (!(k.mass > 0 && k.mass <= 1e12))
-      throw std::invalid_argument(w + ".mass = " + num(k.mass) + " must be in (0, 1e12] kg");
+      throw std::invalid_argument(w + ".mass = " + number_text(k.mass, 6) + " must be in (0, 1e12] kg");
     for (double v : {k.x, k.y, k.theta, k.vx, k.vy, k.omega})
       if (!(std::isfinite(v) && std::fabs(v) <= 1e6))
         throw std::invalid_argument(w + ": initial pose and rates must be finite");
     if (!(std::fabs(k.theta) < 1.5))
-      throw std::invalid_argument(w + ".theta = " + num(k.theta) + " must be in (-1.5, 1.5) rad");
+      throw std::invalid_argument(w + ".theta = " + number_text(k.theta, 6) + " must be in (-1.5, 1.5) rad");
     if (!k.vertices.empty()) {
       if (const std::string why = polygon_problem(k.vertices); !why.empty())
         throw std::invalid_argument(w + " (" + k.name + ").vertices: the polygon " + why);
@@ -391,8 +387,8 @@ void validate(const Assembly& a, int max_blocks) {
     if (f.lower >= 0 && lf.n.y < -kCarries) carried[std::size_t(f.lower)] = true;
     if (!(lf.n.y > kCarries))
       sideways[std::size_t(f.upper)] = "interface " + std::to_string(j) + "'s support faces " +
-                                       (lf.n.y < -kCarries ? "downwards" : "sideways") + " (normal " + num(lf.n.x) +
-                                       ", " + num(lf.n.y) + ")";
+                                       (lf.n.y < -kCarries ? "downwards" : "sideways") + " (normal " + number_text(lf.n.x, 6) +
+                                       ", " + number_text(lf.n.y, 6) + ")";
   }
   for (int i = 0; i < nb; ++i)
     if (!carried[std::size_t(i)])
@@ -415,12 +411,12 @@ void validate(const Assembly& a, int max_blocks) {
       const FaceContact c = contact_point(lp, lf, up, uf, end, owner);
       min_gap = std::fmin(min_gap, c.gap);
       if (-c.gap > deep)
-        throw std::invalid_argument(w + ": the blocks overlap by " + num(-c.gap) + " m at the start (at most " +
-                                    num(deep) + " m, 2% of the smallest block size)");
+        throw std::invalid_argument(w + ": the blocks overlap by " + number_text(-c.gap, 6) + " m at the start (at most " +
+                                    number_text(deep, 6) + " m, 2% of the smallest block size)");
     }
     if (min_gap > touch)
-      throw std::invalid_argument(w + ": block " + std::to_string(f.upper) + " floats " + num(min_gap) +
-                                  " m above its support at the start (it must touch, within " + num(touch) + " m)");
+      throw std::invalid_argument(w + ": block " + std::to_string(f.upper) + " floats " + number_text(min_gap, 6) +
+                                  " m above its support at the start (it must touch, within " + number_text(touch, 6) + " m)");
   }
 }
 

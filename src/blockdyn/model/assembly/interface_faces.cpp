@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "blockdyn/model/assembly/interface_faces.hpp"
 
+#include "blockdyn/base/number_text.hpp"
+
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
@@ -47,12 +49,6 @@ LocalFace as_face(const Edge& e, bool lower, const Vec2& centre) {
 
 std::string name_of(const Assembly& a, int b) {
   return b < 0 ? std::string("the ground") : "block " + std::to_string(b) + " (" + a.blocks[b].name + ")";
-}
-
-std::string num(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.6g", v);
-  return buf;
 }
 
 bool is_rectangle(const AssemblyBlock& b) { return b.vertices.empty(); }
@@ -194,10 +190,10 @@ InterfaceFaces interface_faces(const Assembly& a, int j) {
   if (best_u < 0 || !(best_angle <= kFacingAngle && best_dist <= tol && best_overlap > 0)) {
     const std::string why = best_u < 0
                                 ? "no edge of " + name_of(a, f.upper) + " faces an edge of " + name_of(a, f.lower) +
-                                      " (antiparallel within " + num(kFacingAngle) + " rad, collinear within " +
-                                      num(tol) + " m, overlapping)"
-                                : "the named edges do not face each other (angle " + num(best_angle) +
-                                      " rad, distance " + num(best_dist) + " m, overlap " + num(best_overlap) + " m)";
+                                      " (antiparallel within " + number_text(kFacingAngle, 6) + " rad, collinear within " +
+                                      number_text(tol, 6) + " m, overlapping)"
+                                : "the named edges do not face each other (angle " + number_text(best_angle, 6) +
+                                      " rad, distance " + number_text(best_dist, 6) + " m, overlap " + number_text(best_overlap, 6) + " m)";
     throw std::invalid_argument(w + ": " + why);
   }
   InterfaceFaces out;

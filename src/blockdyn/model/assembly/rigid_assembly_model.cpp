@@ -3,13 +3,13 @@
 
 #include "blockdyn/base/number_text.hpp"
 
-#include <Eigen/Dense>
 
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
 #include "blockdyn/model/assembly/rest_limit.hpp"
+#include "blockdyn/numerics/dense_solve.hpp"
 
 namespace blockdyn {
 
@@ -131,8 +131,6 @@ namespace {
 // each unknown has a generalized force column, each constraint a row; A = rows M^-1 columns.
 template <int NC, int MaxU>
 struct ContactSystem {
-  using Mat = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, MaxU, MaxU>;
-  using VecU = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, MaxU, 1>;
   std::array<std::array<double, NC>, MaxU> col{}, row{};
   std::array<double, MaxU> rhs{};
   int n = 0;
@@ -145,39 +143,15 @@ struct ContactSystem {
   // Solve for the unknowns; the least-norm solution where the constraints are redundant.
   bool solve(const std::array<double, NC>& inv_mass, std::array<double, MaxU>& x) const {
     if (n == 0) return true;
-    Mat A(n, n);
-    VecU b(n);
-    for (int k = 0; k < n; ++k) {
-      b(k) = rhs[k];
+    static_assert(MaxU <= kMaxDenseUnknowns, "the contact system exceeds the dense solver's size");
+    std::array<double, MaxU * MaxU> A;
+    for (int k = 0; k < n; ++k)
       for (int j = 0; j < n; ++j) {
         double s = 0.0;
         for (int c = 0; c < NC; ++c) s += row[k][c] * inv_mass[c] * col[j][c];
-        A(k, j) = s;
+        A[std::size_t(k * n + j)] = s;
       }
-    }
-    // LU where the constraints are independent (the usual case: cheap); the least-norm solution of
-    // a rank-revealing decomposition where they are not (a face's two closed ends with redundant
-    // neighbours, as at rest).
-    Eigen::PartialPivLU<Mat> lu(A);
-    double lo = INFINITY, hi = 0.0;
-    for (int k = 0; k < n; ++k) {
-      const double d = std::fabs(lu.matrixLU()(k, k));
-      lo = std::fmin(lo, d);
-      hi = std::fmax(hi, d);
-    }
-    VecU sol;
-    if (lo > 1e-10 * hi) {
-      sol = lu.solve(b);
-    } else {
-      Eigen::CompleteOrthogonalDecomposition<Mat> cod(A);
-      cod.setThreshold(1e-11);
-      sol = cod.solve(b);
-    }
-    for (int k = 0; k < n; ++k) {
-      x[k] = sol(k);
-      if (!std::isfinite(x[k])) return false;
-    }
-    return true;
+    return solve_dense_least_norm(n, A.data(), rhs.data(), x.data());
   }
 };
 
