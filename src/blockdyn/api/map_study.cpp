@@ -20,16 +20,16 @@ namespace blockdyn {
 
 namespace {
 
-struct BoundaryRow {
+struct MapBoundaryRow {
   double inv_r = 0, r = 0;
   CurvePoint stability, high, critical;
   std::optional<K3Point> k3;  // ic2 only: overturning before the third passage (docs/stability.md)
 };
 
 // Stability boundary (k1 for ic1, k2 for ic2), k_high and k_critical_n at one aspect ratio.
-BoundaryRow boundary_row(double inv_r, double mu, const IcChoice& ic, long n, const StudyRunOptions& run, double k_lo,
+MapBoundaryRow boundary_row(double inv_r, double mu, const IcChoice& ic, long n, const StudyRunOptions& run, double k_lo,
                          double k_hi, double fine_per_decade) {
-  BoundaryRow b;
+  MapBoundaryRow b;
   b.inv_r = inv_r;
   b.r = 1.0 / inv_r;
   StabilitySearchOptions ss;
@@ -129,7 +129,7 @@ MapBoundaries map_boundaries(const Settings& s, int threads) {
   run.t_end = spec.options.t_end;
   run.integrator = spec.options.integrator;
   const long nb = s.integer("boundary-points", 10);
-  const std::vector<BoundaryRow> rows = parallel_map<BoundaryRow>(std::size_t(nb), threads, [&](std::size_t i) {
+  const std::vector<MapBoundaryRow> rows = parallel_map<MapBoundaryRow>(std::size_t(nb), threads, [&](std::size_t i) {
     const double ir = nb == 1 ? ir_lo : ir_lo + (ir_hi - ir_lo) * double(i) / double(nb - 1);
     return boundary_row(ir, mu, ic, critical_n, run, k_lo, k_hi, fine_per_decade);
   });
