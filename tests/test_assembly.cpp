@@ -29,7 +29,7 @@ PresetOptions seed_preset(double k = 1e7) {
   return o;
 }
 
-AssemblyRunOptions run_to(double t_end, double rtol = 1e-8, double atol = 1e-10) {
+AssemblyRunOptions assembly_run_to(double t_end, double rtol = 1e-8, double atol = 1e-10) {
   AssemblyRunOptions o;
   o.t_end = t_end;
   o.integrator.rtol = rtol;
@@ -86,7 +86,7 @@ TEST(AssemblyContactLaw, FlatDropReboundsWithTheCalibratedRestitution) {
     a.blocks[0].y = 0.5 * a.blocks[0].height;
     a.blocks[0].vy = -0.05;
     a.interfaces[0].law.restitution = e;
-    const AssemblyResult r = simulate_assembly(a, {}, run_to(0.02, 1e-11, 1e-14));
+    const AssemblyResult r = simulate_assembly(a, {}, assembly_run_to(0.02, 1e-11, 1e-14));
     EXPECT_EQ(r.event_counts[kAsmOpen], 2) << e;  // both points release together (symmetry)
     EXPECT_NEAR(r.blocks[0].final_state[4] / 0.05, e, 1e-6) << e;
     EXPECT_NEAR(r.blocks[0].final_state[2], 0.0, 1e-12);
@@ -100,8 +100,8 @@ TEST(AssemblyStatics, SettlementEqualsTheSpringClosedFormAndNothingDrifts) {
   for (const char* preset : {"block", "trilith", "column"}) {
     const Assembly a = make_preset(preset, seed_preset());
     const double T = std::string(preset) == "trilith" ? 100 : 10;
-    const AssemblyResult half = simulate_assembly(a, {}, run_to(0.5 * T));
-    const AssemblyResult r = simulate_assembly(a, {}, run_to(T));
+    const AssemblyResult half = simulate_assembly(a, {}, assembly_run_to(0.5 * T));
+    const AssemblyResult r = simulate_assembly(a, {}, assembly_run_to(T));
     EXPECT_EQ(r.motion, "rest") << preset;
     EXPECT_EQ(r.events_total, 0) << preset;
     for (std::size_t b = 0; b < a.blocks.size(); ++b) {
@@ -128,7 +128,7 @@ TEST(AssemblyFriction, ABlockOnARampBelowItsFrictionAngleStaysAndAboveItSlides) 
   // The slope rises slowly to 0.2 (a quarter period of 5 s), below tan 15 deg = 0.268: a sudden
   // step would overshoot the elastic springs and slip.
   const Assembly ramp = make_preset("block", o);
-  AssemblyResult r = simulate_assembly(ramp, harmonic(0.2, 0.05), run_to(5));
+  AssemblyResult r = simulate_assembly(ramp, harmonic(0.2, 0.05), assembly_run_to(5));
   EXPECT_EQ(r.event_counts[kAsmSlip], 0);
   // The base only shifts by the tangential springs' deflection under the peak load:
   // 0.2 m g shared by two points of stiffness k_N / 3.
@@ -138,8 +138,8 @@ TEST(AssemblyFriction, ABlockOnARampBelowItsFrictionAngleStaysAndAboveItSlides) 
   GroundMotion g;
   g.horizontal.constant = 0.4;
   const double mu = o.ground_law.mu_k;
-  r = simulate_assembly(make_preset("block", o), g, run_to(0.5));
-  const AssemblyResult r2 = simulate_assembly(make_preset("block", o), g, run_to(1.0));
+  r = simulate_assembly(make_preset("block", o), g, assembly_run_to(0.5));
+  const AssemblyResult r2 = simulate_assembly(make_preset("block", o), g, assembly_run_to(1.0));
   EXPECT_EQ(r2.event_counts[kAsmSlip], 2);
   EXPECT_EQ(r2.event_counts[kAsmStick], 0);
   const double dv = r2.blocks[0].final_state[3] - r.blocks[0].final_state[3];
@@ -160,7 +160,7 @@ TEST(AssemblyRocking, SingleBlockApproachesHousnerAsTheContactStiffens) {
     const double b = a.blocks[0].width, h = a.blocks[0].height, R = 0.5 * std::hypot(b, h);
     const double alpha = std::atan2(b, h), p = std::sqrt(3 * 9.81 / (4 * R));
     const double ref = housner_quarter_swing(alpha, p, theta0);
-    const AssemblyResult r = simulate_assembly(a, {}, run_to(0.3, 1e-10, 1e-13));
+    const AssemblyResult r = simulate_assembly(a, {}, assembly_run_to(0.3, 1e-10, 1e-13));
     const double err = std::fabs(first_event(r, "w_zero", 0) - ref) / ref;
     EXPECT_LT(err, 0.6 * prev) << k;  // converges
     prev = err;
@@ -183,7 +183,7 @@ TEST(AssemblyRocking, ImpactLossTendsToHousnersWithAPlasticContact) {
     const double alpha = std::atan2(b, h), p = std::sqrt(3 * 9.81 / (4 * R));
     const double eh = 1 - 1.5 * std::pow(std::sin(alpha), 2);
     const double ref = housner_amplitude(alpha, p, eh * housner_rate_at_zero(alpha, p, theta0));
-    AssemblyRunOptions opt = run_to(0.6, 1e-10, 1e-13);
+    AssemblyRunOptions opt = assembly_run_to(0.6, 1e-10, 1e-13);
     opt.output_interval = 2e-5;
     std::stringstream csv;
     CsvTable table(csv);
@@ -211,7 +211,7 @@ TEST(AssemblyRocking, TrilithRocksLikeTheFourBarFrame) {
     const double alpha = std::atan2(b, h);
     const double p_frame = std::sqrt(3 * 9.81 / (4 * R) * (1 + 2 * gamma) / (1 + 3 * gamma));
     const double ref = housner_quarter_swing(alpha, p_frame, theta0);
-    const AssemblyResult r = simulate_assembly(a, {}, run_to(0.35, 1e-10, 1e-13));
+    const AssemblyResult r = simulate_assembly(a, {}, assembly_run_to(0.35, 1e-10, 1e-13));
     const double t0 = first_event(r, "w_zero", 0), t1 = first_event(r, "w_zero", 1);
     const double err = std::fabs(t0 - ref) / ref;
     // The columns rotate in phase, up to the lintel's elastic supports.
@@ -240,7 +240,7 @@ TEST(AssemblyRocking, QuasiStaticUplift) {
     const double tan_alpha = a.blocks[0].width / a.blocks[0].height;
     const double f = 0.05;  // Hz: the quarter period (5 s) is long against the contact periods
     const GroundMotion g = harmonic(2 * tan_alpha, f);
-    const AssemblyResult r = simulate_assembly(a, g, run_to(4.9));
+    const AssemblyResult r = simulate_assembly(a, g, assembly_run_to(4.9));
     const double t_open = first_event(r, "open", -1, 1);  // interfaces 0, 1: on the ground
     ASSERT_TRUE(std::isfinite(t_open)) << preset;
     const double a_open = 2 * tan_alpha * std::sin(2 * M_PI * f * t_open);
@@ -263,7 +263,7 @@ TEST(AssemblyEnergy, ClosedBalanceAndConservationWithoutLosses) {
   const double scale = a.blocks[2].mass * 9.81 * a.blocks[0].height;  // the lintel's weight times h
   double prev = INFINITY;
   for (double rtol : {1e-7, 1e-9, 1e-11}) {
-    const AssemblyResult r = simulate_assembly(a, harmonic(0.2, 2.0), run_to(3, rtol, 1e-3 * rtol));
+    const AssemblyResult r = simulate_assembly(a, harmonic(0.2, 2.0), assembly_run_to(3, rtol, 1e-3 * rtol));
     EXPECT_LT(r.max_abs_energy_error, prev);
     prev = r.max_abs_energy_error;
     EXPECT_LT(r.work_friction, 0.0);
@@ -275,7 +275,7 @@ TEST(AssemblyEnergy, ClosedBalanceAndConservationWithoutLosses) {
   o.ground_law.restitution = o.block_law.restitution = 1;
   o.block_law.mu_s = o.block_law.mu_k = 0;
   a = make_preset("block", o);
-  const AssemblyResult r = simulate_assembly(a, {}, run_to(2, 1e-11, 1e-14));
+  const AssemblyResult r = simulate_assembly(a, {}, assembly_run_to(2, 1e-11, 1e-14));
   EXPECT_GT(r.event_counts[kAsmClose], 0);
   EXPECT_LT(std::fabs(r.energy_final.total - r.energy_initial.total) / (a.blocks[0].mass * 9.81 * 0.48), 1e-8);
   EXPECT_LT(std::fabs(r.work_normal) + std::fabs(r.work_friction), 1e-8);
@@ -345,8 +345,8 @@ TEST(AssemblySymmetry, AMirroredGroundMotionMirrorsTheResponse) {
   PresetOptions o = seed_preset();
   o.ground_law.mu_s = o.ground_law.mu_k = o.block_law.mu_s = o.block_law.mu_k = std::tan(20 * M_PI / 180);
   const Assembly a = make_preset("trilith", o);
-  const AssemblyResult r = simulate_assembly(a, harmonic(0.35, 2.5), run_to(1.5, 1e-11, 1e-14));
-  const AssemblyResult m = simulate_assembly(a, harmonic(-0.35, 2.5), run_to(1.5, 1e-11, 1e-14));
+  const AssemblyResult r = simulate_assembly(a, harmonic(0.35, 2.5), assembly_run_to(1.5, 1e-11, 1e-14));
+  const AssemblyResult m = simulate_assembly(a, harmonic(-0.35, 2.5), assembly_run_to(1.5, 1e-11, 1e-14));
   ASSERT_GT(r.event_counts[kAsmOpen], 0);
   ASSERT_EQ(r.status, SimStatus::TEnd);
   const int swap[3] = {1, 0, 2};  // the mirror exchanges the columns
@@ -365,7 +365,7 @@ TEST(AssemblyFailure, APulseBeyondTheFrameLimitCollapsesInModeOne) {
   g.horizontal.pulse = PulseShape::HalfSine;
   g.horizontal.amplitude = 1.0;
   g.horizontal.duration = 0.5;
-  const AssemblyResult r = simulate_assembly(a, g, run_to(5));
+  const AssemblyResult r = simulate_assembly(a, g, assembly_run_to(5));
   EXPECT_EQ(r.status, SimStatus::Collapsed);
   EXPECT_EQ(r.motion, "collapse");
   ASSERT_TRUE(r.collapse_mode);
@@ -631,19 +631,19 @@ TEST(AssemblyFriction, StaticAndKineticFrictionTendToTheRigidLaw) {
   GroundMotion slow;  // rises to a over a quarter period of 5 s
   slow.horizontal.amplitude = a;
   slow.horizontal.frequency = 0.05;
-  AssemblyResult r = simulate_assembly(rest, slow, run_to(5));
+  AssemblyResult r = simulate_assembly(rest, slow, assembly_run_to(5));
   EXPECT_EQ(r.event_counts[kAsmSlip], 0);
   const double deflection = a * rest.blocks[0].mass * g / (2 * 1e7 / 3);
   EXPECT_NEAR(r.blocks[0].max_abs_sliding / deflection, 1.0, 2e-2);
   // Sliding down: the velocity gain over 0.5 s equals the rigid law's (a - mu_k) g.
   const Assembly down = friction_block(false, -0.2);
-  const AssemblyResult r1 = simulate_assembly(down, slope(a), run_to(0.5));
-  const AssemblyResult r2 = simulate_assembly(down, slope(a), run_to(1.0));
+  const AssemblyResult r1 = simulate_assembly(down, slope(a), assembly_run_to(0.5));
+  const AssemblyResult r2 = simulate_assembly(down, slope(a), assembly_run_to(1.0));
   EXPECT_EQ(r2.event_counts[kAsmStick], 0);
   EXPECT_NEAR((r2.blocks[0].final_state[3] - r1.blocks[0].final_state[3]) / (-(a - mu_k) * g * 0.5), 1.0, 1e-9);
   // Sliding up: it stops when the rigid law does (within the springs' loading time).
   const double v0 = 0.3, t_stop = v0 / ((a + mu_k) * g);
-  r = simulate_assembly(friction_block(false, v0), slope(a), run_to(0.2));
+  r = simulate_assembly(friction_block(false, v0), slope(a), assembly_run_to(0.2));
   EXPECT_NEAR(first_event(r, "stick") / t_stop, 1.0, 1e-4);
   // Under a slowly rising slope the points slip one at a time: the lighter (rear) end carries
   // m g (1 - a h / b) / 2 and the same tangential load a m g / 2, so it reaches mu_s first, at
@@ -653,7 +653,7 @@ TEST(AssemblyFriction, StaticAndKineticFrictionTendToTheRigidLaw) {
   GroundMotion ramp;
   ramp.horizontal.amplitude = A;
   ramp.horizontal.frequency = f;
-  r = simulate_assembly(rest, ramp, run_to(2.5));
+  r = simulate_assembly(rest, ramp, assembly_run_to(2.5));
   const double a_slip = A * std::sin(2 * M_PI * f * first_event(r, "slip"));
   EXPECT_NEAR(a_slip / (mu_s / (1 + mu_s * hb)), 1.0, 2e-3);
   EXPECT_GT(r.blocks[0].max_abs_sliding, 0.01);
@@ -673,7 +673,7 @@ TEST(AssemblyFriction, EqualStaticAndKineticFrictionDoesNotChatter) {
     SCOPED_TRACE(::testing::Message() << c.amplitude_g << " g, " << c.hz << " Hz, phi " << c.phi_deg);
     PresetOptions o = seed_preset();
     o.ground_law.mu_s = o.ground_law.mu_k = o.block_law.mu_s = o.block_law.mu_k = std::tan(c.phi_deg * M_PI / 180);
-    const AssemblyResult r = simulate_assembly(make_preset("trilith", o), harmonic(c.amplitude_g, c.hz), run_to(1.0));
+    const AssemblyResult r = simulate_assembly(make_preset("trilith", o), harmonic(c.amplitude_g, c.hz), assembly_run_to(1.0));
     EXPECT_EQ(r.status, SimStatus::TEnd) << r.note;
     EXPECT_EQ(r.t_final, 1.0);
     EXPECT_GT(r.event_counts[kAsmStick], 0);

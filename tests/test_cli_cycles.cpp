@@ -12,7 +12,7 @@
 
 namespace {
 const std::vector<std::string> kHousner{"--model", "housner", "--width", "0.3", "--height", "1.5"};
-std::vector<std::string> with(std::vector<std::string> head, const std::vector<std::string>& tail) {
+std::vector<std::string> cycles_with(std::vector<std::string> head, const std::vector<std::string>& tail) {
   head.insert(head.end(), tail.begin(), tail.end());
   return head;
 }
@@ -21,7 +21,7 @@ std::vector<std::string> with(std::vector<std::string> head, const std::vector<s
 TEST(CliCycles, JsonSegmentsStrobeCsvTraceAndPlot) {
   TmpDir d("cycles");
   const auto r = run_cli(
-      with(with({"cycles"}, kHousner), {"--beta", "2", "--omega", "5", "--periods", "100", "--json", "--quiet", "--out",
+      cycles_with(cycles_with({"cycles"}, kHousner), {"--beta", "2", "--omega", "5", "--periods", "100", "--json", "--quiet", "--out",
                                         "s.csv", "--trace", "t.csv", "--trace-per-period", "8", "--plot", "c.png"}),
       d.path);
   ASSERT_EQ(r.code, 0) << r.err;
@@ -73,7 +73,7 @@ TEST(CliCycles, TrilithShowsAOneThreeTypeCycle) {
 TEST(CliImpactMap, PhasesPoincareAndPlot) {
   TmpDir d("impact_map");
   const auto r =
-      run_cli(with(with({"impact-map"}, kHousner),
+      run_cli(cycles_with(cycles_with({"impact-map"}, kHousner),
                    {"--beta",      "2",     "--omega",         "5",    "--phase", "0.5",     "--periods", "60",
                     "--transient", "20",    "--section-phase", "1",    "--json",  "--quiet", "--out",     "i.csv",
                     "--poincare",  "p.csv", "--plot",          "m.png"}),
@@ -109,7 +109,7 @@ TEST(CliSurvival, CyclePerPointIsTheSameForOneAndTwoThreads) {
   std::vector<json> maps;
   for (const char* threads : {"1", "2"}) {
     const auto r =
-        run_cli(with(with({"survival"}, kHousner),
+        run_cli(cycles_with(cycles_with({"survival"}, kHousner),
                      {"--beta-min", "1.5", "--beta-max", "4", "--beta-points", "3", "--omega-min", "4", "--omega-max",
                       "12", "--omega-points", "3", "--periods", "60", "--threads", threads, "--json", "--quiet"}),
                 d.path);
@@ -132,24 +132,24 @@ TEST(CliCycles, BadInputIsAUsageError) {
   TmpDir d("cycles_bad");
   const std::vector<std::string> ok{"--beta", "2", "--omega", "5"};
   const std::vector<std::pair<std::vector<std::string>, std::string>> cases{
-      {with({"cycles"}, kHousner), "--beta"},
-      {with(with({"cycles"}, kHousner), {"--beta", "2"}), "--omega"},
-      {with(with({"cycles"}, kHousner), {"--beta", "-1", "--omega", "5"}), "beta"},
-      {with(with({"cycles"}, kHousner), {"--beta", "2", "--omega", "0"}), "omega"},
-      {with(with(with({"cycles"}, kHousner), ok), {"--block", "1"}), "block"},
-      {with(with(with({"cycles"}, kHousner), ok), {"--window", "1"}), "window"},
-      {with(with(with({"cycles"}, kHousner), ok), {"--max-period", "13"}), "max-period"},
-      {with(with(with({"cycles"}, kHousner), ok), {"--tolerance", "0"}), "tolerance"},
-      {with(with(with({"cycles"}, kHousner), ok), {"--t-end", "5", "--periods", "3"}), "not both"},
-      {with(with(with({"cycles"}, kHousner), ok), {"--periods", "nan"}), "periods"},
-      {with(with(with({"cycles"}, kHousner), ok), {"--excitation", "half-sine"}), "excitation"},
-      {with(with(with({"cycles"}, kHousner), ok), {"--trace-per-period", "0"}), "trace-per-period"},
-      {with(with(with({"cycles"}, kHousner), ok), {"--out", "/nonexistent/x.csv"}), "out"},
-      {with({"cycles", "--model", "assembly"}, ok), "--preset"},
-      {with(with(with({"impact-map"}, kHousner), ok), {"--transient", "-1"}), "transient"},
-      {with(with(with({"impact-map"}, kHousner), ok), {"--periods", "10", "--transient", "10"}), "transient"},
-      {with(with(with({"impact-map"}, kHousner), ok), {"--section-phase", "inf"}), "section-phase"},
-      {with(with({"impact-map"}, kHousner), {"--beta", "2"}), "--omega"},
+      {cycles_with({"cycles"}, kHousner), "--beta"},
+      {cycles_with(cycles_with({"cycles"}, kHousner), {"--beta", "2"}), "--omega"},
+      {cycles_with(cycles_with({"cycles"}, kHousner), {"--beta", "-1", "--omega", "5"}), "beta"},
+      {cycles_with(cycles_with({"cycles"}, kHousner), {"--beta", "2", "--omega", "0"}), "omega"},
+      {cycles_with(cycles_with(cycles_with({"cycles"}, kHousner), ok), {"--block", "1"}), "block"},
+      {cycles_with(cycles_with(cycles_with({"cycles"}, kHousner), ok), {"--window", "1"}), "window"},
+      {cycles_with(cycles_with(cycles_with({"cycles"}, kHousner), ok), {"--max-period", "13"}), "max-period"},
+      {cycles_with(cycles_with(cycles_with({"cycles"}, kHousner), ok), {"--tolerance", "0"}), "tolerance"},
+      {cycles_with(cycles_with(cycles_with({"cycles"}, kHousner), ok), {"--t-end", "5", "--periods", "3"}), "not both"},
+      {cycles_with(cycles_with(cycles_with({"cycles"}, kHousner), ok), {"--periods", "nan"}), "periods"},
+      {cycles_with(cycles_with(cycles_with({"cycles"}, kHousner), ok), {"--excitation", "half-sine"}), "excitation"},
+      {cycles_with(cycles_with(cycles_with({"cycles"}, kHousner), ok), {"--trace-per-period", "0"}), "trace-per-period"},
+      {cycles_with(cycles_with(cycles_with({"cycles"}, kHousner), ok), {"--out", "/nonexistent/x.csv"}), "out"},
+      {cycles_with({"cycles", "--model", "assembly"}, ok), "--preset"},
+      {cycles_with(cycles_with(cycles_with({"impact-map"}, kHousner), ok), {"--transient", "-1"}), "transient"},
+      {cycles_with(cycles_with(cycles_with({"impact-map"}, kHousner), ok), {"--periods", "10", "--transient", "10"}), "transient"},
+      {cycles_with(cycles_with(cycles_with({"impact-map"}, kHousner), ok), {"--section-phase", "inf"}), "section-phase"},
+      {cycles_with(cycles_with({"impact-map"}, kHousner), {"--beta", "2"}), "--omega"},
   };
   expect_usage_errors(cases, d.path);
 }

@@ -21,7 +21,7 @@ const std::string kMpirun =
     "OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1 "
     "mpirun --oversubscribe --allow-run-as-root -np ";
 
-std::vector<std::string> with(std::vector<std::string> a, const std::vector<std::string>& more) {
+std::vector<std::string> runner_with(std::vector<std::string> a, const std::vector<std::string>& more) {
   a.insert(a.end(), more.begin(), more.end());
   return a;
 }
@@ -30,13 +30,13 @@ const std::vector<std::string> kBlock{"--model", "housner", "--width", "0.3", "-
 
 // A Housner survival map refined twice near class changes: 3 stages.
 std::vector<std::string> refined_survival(const std::string& out, const std::string& periods = "20") {
-  return with(with({"survival"}, kBlock),
+  return runner_with(runner_with({"survival"}, kBlock),
               {"--beta-min", "0.5", "--beta-max", "6", "--beta-points", "5", "--omega-min", "1", "--omega-max", "20",
                "--omega-points", "5", "--periods", periods, "--refine", "2", "--out", out});
 }
 
 std::vector<std::string> one_sine_spectrum(const std::string& csv) {
-  return with(with({"spectrum"}, kBlock),
+  return runner_with(runner_with({"spectrum"}, kBlock),
               {"--pulse", "one-sine", "--duration-min", "0.15", "--duration-max", "3", "--duration-points", "12",
                "--scan-points", "60", "--rel-tol", "1e-8", "--csv", csv});
 }
@@ -84,15 +84,15 @@ bool have_mpi(const std::string& dir) {
 TEST(ForcedRunner, SameBytesForOneAndTwoThreads) {
   TmpDir d("forced-threads");
   for (const char* t : {"1", "2"}) {
-    const CliResult r = run_cli(with(refined_survival(std::string("s") + t + ".csv"),
+    const CliResult r = run_cli(runner_with(refined_survival(std::string("s") + t + ".csv"),
                                      {"--threads", t, "--json-out", std::string("s") + t + "_summary.json", "--quiet"}),
                                 d.path);
     ASSERT_EQ(r.code, 0) << r.err;
     const CliResult q =
-        run_cli(with(one_sine_spectrum(std::string("p") + t + ".csv"), {"--threads", t, "--quiet"}), d.path);
+        run_cli(runner_with(one_sine_spectrum(std::string("p") + t + ".csv"), {"--threads", t, "--quiet"}), d.path);
     ASSERT_EQ(q.code, 0) << q.err;
     const CliResult c =
-        run_cli(with(with({"response-curve"}, kBlock),
+        run_cli(runner_with(runner_with({"response-curve"}, kBlock),
                      {"--betas", "1.5,3", "--omega-min", "2", "--omega-max", "12", "--omega-points", "6", "--t-end",
                       "8", "--threads", t, "--quiet", "--out", std::string("c") + t + ".csv"}),
                 d.path);
@@ -115,15 +115,15 @@ TEST(ForcedRunner, SameBytesForOneAndTwoThreads) {
 TEST(ForcedRunner, MpiRanksMatchOneProcess) {
   TmpDir d("forced-mpi");
   if (!have_mpi(d.path)) GTEST_SKIP() << "mpirun or an MPI build not available";
-  ASSERT_EQ(run_cli(with(refined_survival("one.csv"), {"--quiet", "--threads", "1"}), d.path).code, 0);
+  ASSERT_EQ(run_cli(runner_with(refined_survival("one.csv"), {"--quiet", "--threads", "1"}), d.path).code, 0);
   const CliResult two =
-      run_cli(with(refined_survival("two.csv"), {"--progress", "none", "--threads", "1"}), d.path, kMpirun + "2");
+      run_cli(runner_with(refined_survival("two.csv"), {"--progress", "none", "--threads", "1"}), d.path, kMpirun + "2");
   ASSERT_EQ(two.code, 0) << two.err;
   EXPECT_NE(two.out.find("2 rank(s)"), std::string::npos) << two.out;
   EXPECT_EQ(slurp(d.path + "/two.csv"), slurp(d.path + "/one.csv"));
-  ASSERT_EQ(run_cli(with(one_sine_spectrum("p1.csv"), {"--quiet", "--threads", "2"}), d.path).code, 0);
+  ASSERT_EQ(run_cli(runner_with(one_sine_spectrum("p1.csv"), {"--quiet", "--threads", "2"}), d.path).code, 0);
   const CliResult three =
-      run_cli(with(one_sine_spectrum("p3.csv"), {"--quiet", "--threads", "1"}), d.path, kMpirun + "3");
+      run_cli(runner_with(one_sine_spectrum("p3.csv"), {"--quiet", "--threads", "1"}), d.path, kMpirun + "3");
   ASSERT_EQ(three.code, 0) << three.err;
   EXPECT_EQ(slurp(d.path + "/p3.csv"), slurp(d.path + "/p1.csv"));
   EXPECT_NE(slurp(d.path + "/p3.json").find("\"mpi_ranks\": 3"), std::string::npos);
@@ -132,16 +132,16 @@ TEST(ForcedRunner, MpiRanksMatchOneProcess) {
 TEST(ForcedRunner, KilledRefinedSurvivalResumesToIdenticalBytes) {
   TmpDir d("forced-kill");
   // Long runs (1500 forcing periods) so that the run is interrupted inside a refinement level.
-  ASSERT_EQ(run_cli(with(refined_survival("ref.csv", "1500"), {"--quiet", "--threads", "2"}), d.path).code, 0);
+  ASSERT_EQ(run_cli(runner_with(refined_survival("ref.csv", "1500"), {"--quiet", "--threads", "2"}), d.path).code, 0);
   const std::size_t total = count_lines(slurp(d.path + "/ref.csv")) - 1;
   const std::size_t kept =
-      start_and_kill(with(refined_survival("s.csv", "1500"), {"--threads", "1"}), d.path, "s.csv", 30);
+      start_and_kill(runner_with(refined_survival("s.csv", "1500"), {"--threads", "1"}), d.path, "s.csv", 30);
   if (HasFailure()) return;
   EXPECT_LT(kept, total);
-  const CliResult refused = run_cli(with(refined_survival("s.csv", "1500"), {"--quiet"}), d.path);
+  const CliResult refused = run_cli(runner_with(refined_survival("s.csv", "1500"), {"--quiet"}), d.path);
   EXPECT_EQ(refused.code, 2);
   EXPECT_NE(refused.err.find("--resume"), std::string::npos) << refused.err;
-  const CliResult res = run_cli(with(refined_survival("s.csv", "1500"), {"--resume", "--progress", "none"}), d.path);
+  const CliResult res = run_cli(runner_with(refined_survival("s.csv", "1500"), {"--resume", "--progress", "none"}), d.path);
   ASSERT_EQ(res.code, 0) << res.err;
   EXPECT_NE(res.out.find("(" + std::to_string(total - kept) + " computed, " + std::to_string(kept) + " resumed"),
             std::string::npos)
@@ -152,10 +152,10 @@ TEST(ForcedRunner, KilledRefinedSurvivalResumesToIdenticalBytes) {
 
 TEST(ForcedRunner, KilledSpectrumResumesToIdenticalBytes) {
   TmpDir d("forced-kill-spectrum");
-  ASSERT_EQ(run_cli(with(one_sine_spectrum("ref.csv"), {"--quiet", "--threads", "2"}), d.path).code, 0);
-  const std::size_t kept = start_and_kill(with(one_sine_spectrum("s.csv"), {"--threads", "1"}), d.path, "s.csv", 3);
+  ASSERT_EQ(run_cli(runner_with(one_sine_spectrum("ref.csv"), {"--quiet", "--threads", "2"}), d.path).code, 0);
+  const std::size_t kept = start_and_kill(runner_with(one_sine_spectrum("s.csv"), {"--threads", "1"}), d.path, "s.csv", 3);
   if (HasFailure()) return;
-  const CliResult res = run_cli(with(one_sine_spectrum("s.csv"), {"--resume", "--json"}), d.path);
+  const CliResult res = run_cli(runner_with(one_sine_spectrum("s.csv"), {"--resume", "--json"}), d.path);
   ASSERT_EQ(res.code, 0) << res.err;
   EXPECT_EQ(slurp(d.path + "/s.csv"), slurp(d.path + "/ref.csv"));
   EXPECT_EQ(json::parse(res.out)["rows"].size(), 12u);
@@ -172,7 +172,7 @@ TEST(ForcedRunner, FrictionAngleCurveOfTheRigidTrilith) {
       "response-curve", "--model", "assembly", "--preset", "trilith", "--contact", "rigid", "--excitation",
       "half-cosine",    "--betas", "0.6",      "--omega",  "2",       "--t-end",   "1.5",   "--json",
       "--quiet"};
-  const CliResult r = run_cli(with(base, {"--phi-l-values", "5,8,9,20,90"}), d.path);
+  const CliResult r = run_cli(runner_with(base, {"--phi-l-values", "5,8,9,20,90"}), d.path);
   ASSERT_EQ(r.code, 0) << r.err;
   const json j = json::parse(r.out);
   ASSERT_EQ(j["points"].size(), 5u);
@@ -197,33 +197,33 @@ TEST(ForcedRunner, FrictionAngleCurveOfTheRigidTrilith) {
 
 TEST(ForcedRunner, BadInputIsAUsageError) {
   TmpDir d("forced-bad");
-  const auto survival = with({"survival"}, kBlock);
-  const auto curve = with(with({"response-curve"}, kBlock), {"--betas", "2"});
+  const auto survival = runner_with({"survival"}, kBlock);
+  const auto curve = runner_with(runner_with({"response-curve"}, kBlock), {"--betas", "2"});
   const std::vector<std::string> trilith{"response-curve", "--model", "assembly", "--preset",
                                          "trilith",        "--betas", "2"};
   const std::vector<std::pair<std::vector<std::string>, std::string>> cases{
-      {with(survival, {"--resume"}), "resume: needs --out"},
-      {with(survival, {"--out", "x.csv", "--resume", "--overwrite"}), "--resume and --overwrite"},
-      {with(survival, {"--refine", "9"}), "refine"},
-      {with(survival, {"--beta-points", "400", "--omega-points", "400", "--refine", "4"}), "refine"},
-      {with(survival, {"--out", "x.csv", "--json-out", "x.json"}), "json-out"},
-      {with(survival, {"--out", "x.csv", "--progress-interval", "0"}), "progress-interval"},
-      {with(with({"spectrum"}, kBlock), {"--durations", "1", "--resume"}), "resume: needs --csv"},
-      {with(curve, {"--phi-l-values", "5,10"}), "assembly"},
-      {with(trilith, {"--phi-l-values", "0,45"}), "phi-l-values"},
-      {with(trilith, {"--phi-l-values", "5:95:4"}), "phi-l-values"},
-      {with(trilith, {"--phi-l-values", "5,10", "--omega-points", "3"}), "omega"},
-      {with(trilith, {"--phi-l-values", "5,10", "--phi-l", "20", "--omega", "3"}), "--phi-l"},
-      {with(curve, {"--omega", "3", "--omega-min", "2"}), "--omega"},
-      {with(curve, {"--omega", "-1"}), "omega"},
+      {runner_with(survival, {"--resume"}), "resume: needs --out"},
+      {runner_with(survival, {"--out", "x.csv", "--resume", "--overwrite"}), "--resume and --overwrite"},
+      {runner_with(survival, {"--refine", "9"}), "refine"},
+      {runner_with(survival, {"--beta-points", "400", "--omega-points", "400", "--refine", "4"}), "refine"},
+      {runner_with(survival, {"--out", "x.csv", "--json-out", "x.json"}), "json-out"},
+      {runner_with(survival, {"--out", "x.csv", "--progress-interval", "0"}), "progress-interval"},
+      {runner_with(runner_with({"spectrum"}, kBlock), {"--durations", "1", "--resume"}), "resume: needs --csv"},
+      {runner_with(curve, {"--phi-l-values", "5,10"}), "assembly"},
+      {runner_with(trilith, {"--phi-l-values", "0,45"}), "phi-l-values"},
+      {runner_with(trilith, {"--phi-l-values", "5:95:4"}), "phi-l-values"},
+      {runner_with(trilith, {"--phi-l-values", "5,10", "--omega-points", "3"}), "omega"},
+      {runner_with(trilith, {"--phi-l-values", "5,10", "--phi-l", "20", "--omega", "3"}), "--phi-l"},
+      {runner_with(curve, {"--omega", "3", "--omega-min", "2"}), "--omega"},
+      {runner_with(curve, {"--omega", "-1"}), "omega"},
   };
   expect_usage_errors(cases, d.path, true);
   // An existing table is never replaced silently.
   ASSERT_EQ(
-      run_cli(with(survival, {"--beta-points", "2", "--omega-points", "2", "--out", "t.csv", "--quiet"}), d.path).code,
+      run_cli(runner_with(survival, {"--beta-points", "2", "--omega-points", "2", "--out", "t.csv", "--quiet"}), d.path).code,
       0);
   const CliResult again =
-      run_cli(with(survival, {"--beta-points", "2", "--omega-points", "2", "--out", "t.csv"}), d.path);
+      run_cli(runner_with(survival, {"--beta-points", "2", "--omega-points", "2", "--out", "t.csv"}), d.path);
   EXPECT_EQ(again.code, 2);
   EXPECT_NE(again.err.find("--overwrite"), std::string::npos) << again.err;
 }
@@ -249,7 +249,7 @@ void make_suite(const std::string& dir) {
 TEST(ForcedRunner, FragilityRunsAreSimulateRunsAndResumeToIdenticalBytes) {
   TmpDir d("forced-fragility");
   make_suite(d.path);
-  const CliResult ref = run_cli(with(fragility_args("ref.csv"), {"--json", "--quiet", "--threads", "2"}), d.path);
+  const CliResult ref = run_cli(runner_with(fragility_args("ref.csv"), {"--json", "--quiet", "--threads", "2"}), d.path);
   ASSERT_EQ(ref.code, 0) << ref.err;
   const json j = json::parse(ref.out);
   EXPECT_EQ(j["schema"], "blockdyn.fragility.summary/1");
@@ -286,9 +286,9 @@ TEST(ForcedRunner, FragilityRunsAreSimulateRunsAndResumeToIdenticalBytes) {
     EXPECT_EQ(j["runs"][row]["overturned"].get<bool>(), sj["status"] == "overturned") << line;
   }
   // Killed and resumed: the same bytes as the uninterrupted run.
-  const std::size_t kept = start_and_kill(with(fragility_args("s.csv"), {"--threads", "1"}), d.path, "s.csv", 5);
+  const std::size_t kept = start_and_kill(runner_with(fragility_args("s.csv"), {"--threads", "1"}), d.path, "s.csv", 5);
   if (HasFailure()) return;
-  const CliResult res = run_cli(with(fragility_args("s.csv"), {"--resume", "--json"}), d.path);
+  const CliResult res = run_cli(runner_with(fragility_args("s.csv"), {"--resume", "--json"}), d.path);
   ASSERT_EQ(res.code, 0) << res.err;
   EXPECT_EQ(slurp(d.path + "/s.csv"), slurp(d.path + "/ref.csv"));
   EXPECT_EQ(json::parse(res.out)["fit"], j["fit"]);

@@ -12,7 +12,7 @@
 
 namespace {
 
-void write(const std::string& path, const std::string& text) { std::ofstream(path) << text; }
+void masonry_write(const std::string& path, const std::string& text) { std::ofstream(path) << text; }
 
 // A 0.2 x 0.8 m block given by its vertices, with a wedge on top (a triangle standing on the
 // block's top edge), as an assembly file.
@@ -84,7 +84,7 @@ TEST(CliMasonry, LimitAnalysisKeysAndClosedForms) {
 
 TEST(CliMasonry, PolygonFilesInTheStaticsAndTheDynamics) {
   TmpDir d("polygon_file");
-  write(d.path + "/stack.toml", kStack);
+  masonry_write(d.path + "/stack.toml", kStack);
   // The pier and its wedge tip over the pier's corner together: lambda = b / h of the whole, whose
   // centre of mass is at (0, 0.4 m1 + 0.8333 m2) / (m1 + m2).
   const json j = cli_json({"limit-analysis", "stack.toml", "--json"}, d.path);
@@ -143,14 +143,14 @@ TEST(CliMasonry, BadInputIsAUsageErrorNamingTheBlock) {
     s.replace(s.find(from), from.size(), to);
     return s;
   };
-  write(d.path + "/clockwise.toml", with("[[-0.1, 0.0], [0.1, 0.0], [0.1, 0.8], [-0.1, 0.8]]",
+  masonry_write(d.path + "/clockwise.toml", with("[[-0.1, 0.0], [0.1, 0.0], [0.1, 0.8], [-0.1, 0.8]]",
                                          "[[-0.1, 0.0], [-0.1, 0.8], [0.1, 0.8], [0.1, 0.0]]"));
-  write(d.path + "/concave.toml",
+  masonry_write(d.path + "/concave.toml",
         with("[[-0.1, 0.8], [0.1, 0.8], [0.0, 0.9]]", "[[-0.1, 0.8], [0.1, 0.8], [0.0, 0.82], [0.0, 0.9]]"));
-  write(d.path + "/through.toml",
+  masonry_write(d.path + "/through.toml",
         with("[[-0.1, 0.8], [0.1, 0.8], [0.0, 0.9]]", "[[-0.1, 0.7], [0.1, 0.7], [0.0, 0.9]]"));
-  write(d.path + "/apart.toml", with("[[-0.1, 0.8], [0.1, 0.8], [0.0, 0.9]]", "[[0.2, 0.0], [0.4, 0.0], [0.3, 0.1]]"));
-  write(d.path + "/both.toml", with("vertices = [[-0.1, 0.0], [0.1, 0.0], [0.1, 0.8], [-0.1, 0.8]]",
+  masonry_write(d.path + "/apart.toml", with("[[-0.1, 0.8], [0.1, 0.8], [0.0, 0.9]]", "[[0.2, 0.0], [0.4, 0.0], [0.3, 0.1]]"));
+  masonry_write(d.path + "/both.toml", with("vertices = [[-0.1, 0.0], [0.1, 0.0], [0.1, 0.8], [-0.1, 0.8]]",
                                     "vertices = [[-0.1, 0.0], [0.1, 0.0], [0.1, 0.8], [-0.1, 0.8]]\nwidth = 0.2"));
   const std::vector<std::pair<std::vector<std::string>, std::string>> cases = {
       {{"limit-analysis", "clockwise.toml"}, "block[0].vertices"},

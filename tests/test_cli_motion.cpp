@@ -14,7 +14,7 @@
 
 namespace {
 
-void write(const std::string& path, const std::string& text) { std::ofstream(path) << text; }
+void motion_write(const std::string& path, const std::string& text) { std::ofstream(path) << text; }
 
 }  // namespace
 
@@ -23,7 +23,7 @@ TEST(CliMotion, InfoOfAStepRecord) {
   // a = 0.2 g for 2 s, as PEER AT2 (DT = 0.01 s, 201 samples).
   std::string at2 = "PEER\nstep record\nACCELERATION TIME SERIES IN UNITS OF G\nNPTS=  201, DT=   .01000 SEC\n";
   for (int i = 0; i < 201; ++i) at2 += "0.2 ";
-  write(d.path + "/step.AT2", at2 + "\n");
+  motion_write(d.path + "/step.AT2", at2 + "\n");
   const auto r = run_cli({"motion", "info", "step.AT2", "--periods", "0.2,0.5", "--json"}, d.path);
   ASSERT_EQ(r.code, 0) << r.err;
   const json j = json::parse(r.out);
@@ -42,7 +42,7 @@ TEST(CliMotion, InfoOfAStepRecord) {
   // The same record as CSV gives the same measures; the text names them.
   std::string csv = "t, a\n";
   for (int i = 0; i < 201; ++i) csv += std::to_string(0.01 * i) + ", 0.2\n";
-  write(d.path + "/step.csv", csv);
+  motion_write(d.path + "/step.csv", csv);
   const auto c = run_cli({"motion", "info", "step.csv", "--json"}, d.path);
   ASSERT_EQ(c.code, 0) << c.err;
   EXPECT_NEAR(json::parse(c.out)["arias"].get<double>(), j["arias"].get<double>(), 1e-12);
@@ -54,10 +54,10 @@ TEST(CliMotion, InfoOfAStepRecord) {
 
 TEST(CliMotion, BadRecordsAndOptionsAreUsageErrors) {
   TmpDir d("motion_bad");
-  write(d.path + "/back.csv", "0, 0.1\n0.02, 0.2\n0.01, 0.1\n");
-  write(d.path + "/nan.csv", "0, 0.1\n0.01, nan\n");
-  write(d.path + "/zero.AT2", "a\nb\nc\nNPTS=  3, DT=   0 SEC\n0.1 0.2 0.3\n");
-  write(d.path + "/ok.csv", "0, 0.1\n0.01, 0.2\n0.02, 0\n");
+  motion_write(d.path + "/back.csv", "0, 0.1\n0.02, 0.2\n0.01, 0.1\n");
+  motion_write(d.path + "/nan.csv", "0, 0.1\n0.01, nan\n");
+  motion_write(d.path + "/zero.AT2", "a\nb\nc\nNPTS=  3, DT=   0 SEC\n0.1 0.2 0.3\n");
+  motion_write(d.path + "/ok.csv", "0, 0.1\n0.01, 0.2\n0.02, 0\n");
   const std::vector<std::pair<std::vector<std::string>, std::string>> cases{
       {{"motion", "info", "back.csv"}, "increasing"},
       {{"motion", "info", "nan.csv"}, "nan.csv"},
@@ -116,7 +116,7 @@ TEST(CliRockingSpectrum, RectangularPulseOverturnsAtTheClosedForm) {
   const double alpha = 0.05, p = 2.0, tp = 0.5, ap = alpha / (1 - std::exp(-p * tp));
   char text[256];
   std::snprintf(text, sizeof text, "0, %.17g\n%.17g, %.17g\n%.17g, 0\n%.17g, 0\n", ap, tp, ap, tp + 1e-6, tp + 1);
-  write(d.path + "/rect.csv", text);
+  motion_write(d.path + "/rect.csv", text);
   const auto r = run_cli({"rocking-spectrum", "--record", "rect.csv", "--alpha", "0.05", "--p-values", "2", "--scales",
                           "0.98,1.02", "--t-after", "30", "--json", "--quiet"},
                          d.path);

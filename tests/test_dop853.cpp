@@ -17,14 +17,14 @@ namespace {
 
 using namespace stepper_test;
 
-double global_error(int n, double T) { return stepper_test::global_error<Dop853<kN>>(n, T); }
+double dop853_global_error(int n, double T) { return stepper_test::global_error<Dop853<kN>>(n, T); }
 
 }  // namespace
 
 TEST(Dop853, EighthOrderGlobalConvergence) {
   const double T = 4.0;
   std::vector<double> e;
-  for (int n : {8, 16, 32}) e.push_back(global_error(n, T));
+  for (int n : {8, 16, 32}) e.push_back(dop853_global_error(n, T));
   stepper_test::expect_orders(e, 7.5, 8.8, "global error, steps doubled");
   EXPECT_LT(e.back(), 1e-11);
 }

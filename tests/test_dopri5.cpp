@@ -18,14 +18,14 @@ namespace {
 
 using namespace stepper_test;
 
-double global_error(int n, double T) { return stepper_test::global_error<Dopri5<kN>>(n, T); }
+double dopri5_global_error(int n, double T) { return stepper_test::global_error<Dopri5<kN>>(n, T); }
 
 }  // namespace
 
 TEST(Dopri5, FifthOrderGlobalConvergence) {
   const double T = 3.0;
   std::vector<double> e;
-  for (int n : {16, 32, 64, 128}) e.push_back(global_error(n, T));
+  for (int n : {16, 32, 64, 128}) e.push_back(dopri5_global_error(n, T));
   stepper_test::expect_orders(e, 4.7, 5.5, "global error, steps doubled");
   EXPECT_LT(e.back(), 1e-9);
 }
@@ -152,12 +152,12 @@ struct WallStop : WallOscillator {
 }  // namespace
 
 // The event tests run on both Runge-Kutta pairs.
-constexpr Method kMethods[] = {Method::Dopri5, Method::Dop853};
+constexpr Method kPairs[] = {Method::Dopri5, Method::Dop853};
 
 TEST(HybridIntegrator, BouncingBallEventTimesAreExact) {
   const double H = 1.3;
   const double t1 = std::sqrt(2 * H);
-  for (Method method : kMethods) {
+  for (Method method : kPairs) {
     SCOPED_TRACE(to_string(method));
     const auto times = bounce_times(Ball{}, {H, 0.0}, 40.0, 1e-10, 100, nullptr, method);
     ASSERT_EQ(times.size(), std::size_t(std::floor((40.0 / t1 + 1) / 2)));
@@ -175,7 +175,7 @@ TEST(HybridIntegrator, WallOscillatorEventTimesToRoundoff) {
   const double t1 = std::acos(a);
   WallStop m;
   m.wall = a;
-  for (Method method : kMethods) {
+  for (Method method : kPairs) {
     SCOPED_TRACE(to_string(method));
     std::vector<Vec<2>> states;
     const auto times = bounce_times(m, {1.0, 0.0}, 30.0, 1e-13, 100, &states, method);
@@ -224,7 +224,7 @@ TEST(HybridIntegrator, EventFunctionZeroAtRestartDoesNotRefire) {
   // Each transition turns the event function round (c - x, then x - c), so it restarts at zero
   // and grows: it must not fire again at the restart instant. x = sin t crosses c = 0.3 at
   // asin(c), pi - asin(c), 2 pi + asin(c), ...: exactly these, no extra zero-time events.
-  for (Method method : kMethods) {
+  for (Method method : kPairs) {
     SCOPED_TRACE(to_string(method));
     const GrazingRun run = run_grazing(0.3, 20.0, method);
     EXPECT_EQ(run.status, RunStatus::ReachedEnd);
@@ -240,7 +240,7 @@ TEST(HybridIntegrator, EventFunctionZeroAtRestartDoesNotRefire) {
 }
 
 TEST(HybridIntegrator, BriefExcursionBetweenSamplesIsNotSkipped) {
-  for (Method method : kMethods)
+  for (Method method : kPairs)
     for (double depth : {1e-4, 1e-6, 1e-8}) {
       SCOPED_TRACE(to_string(method));
       const double c = 1.0 - depth;

@@ -162,7 +162,7 @@ RunOut run(const M& m, Vec<2> z, double t_end, Method method, double rtol, doubl
   return {rec.t, integ.stats().accepted};
 }
 
-constexpr Method kMethods[] = {Method::Dopri5, Method::Dop853};
+constexpr Method kScanPairs[] = {Method::Dopri5, Method::Dop853};
 
 }  // namespace
 
@@ -170,7 +170,7 @@ TEST(EventScan, DipOfDepth1e9InsideALongStepIsFound) {
   // g = c - x with c = 1/2 - 1e-9: below zero for |t - 1| < sqrt(2e-9) = 4.5e-5, inside steps of
   // length 0.25 .. 2.
   const double depth = 1e-9, c = 0.5 - depth, half = std::sqrt(2 * depth);
-  for (Method method : kMethods)
+  for (Method method : kScanPairs)
     for (double h_max : {0.25, 2.0}) {
       SCOPED_TRACE(std::string(to_string(method)) + " h_max " + std::to_string(h_max));
       const auto check = [&](const RunOut& r) {
@@ -189,7 +189,7 @@ TEST(EventScan, DipOfDepth1e9InsideALongStepIsFound) {
 
 TEST(EventScan, TangentialTouchIsNoEventAndATouch1e12DeepIsTwo) {
   // x = sin t against c = 1 + 1e-12 (never reached), c = 1 - 1e-12 (reached for 2.8e-6).
-  for (Method method : kMethods) {
+  for (Method method : kScanPairs) {
     SCOPED_TRACE(to_string(method));
     EXPECT_TRUE(run(Sine<true>{1.0 + 1e-12}, {0.0, 1.0}, 3.0, method, 1e-12).times.empty());
     EXPECT_TRUE(run(Sine<false>{1.0 + 1e-12}, {0.0, 1.0}, 3.0, method, 1e-12).times.empty());
@@ -209,7 +209,7 @@ TEST(EventScan, DipsLongAfterTheLastRestartAreFound) {
   // steps without an event, where the scan bounds the remainder by the one measured earlier and
   // samples inside a step only every few steps.
   const double c = 1 - 1e-8, half = std::acos(c);
-  for (Method method : kMethods) {
+  for (Method method : kScanPairs) {
     SCOPED_TRACE(to_string(method));
     for (const RunOut& r :
          {run(Sine<true>{c}, {0.0, 1.0}, 60.0, method, 1e-11), run(Sine<false>{c}, {0.0, 1.0}, 60.0, method, 1e-11)}) {

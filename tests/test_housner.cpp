@@ -24,7 +24,7 @@ BlockShape slender(double b_over_h, double h = 1.0) {
   return s;
 }
 
-RigidRunOptions run_to(double t_end) {
+RigidRunOptions housner_run_to(double t_end) {
   RigidRunOptions o;
   o.t_end = t_end;
   return o;
@@ -57,7 +57,7 @@ TEST(Housner, FreeRockingImpactsMatchQuadrature) {
       RigidInitial in;
       in.w0 = frac * alpha;
       const auto ref = housner_free_impacts(alpha, p, in.w0, e, 10);
-      const RigidResult r = simulate_housner(s, std::nullopt, {}, in, run_to(ref[9].t + 0.5 / p));
+      const RigidResult r = simulate_housner(s, std::nullopt, {}, in, housner_run_to(ref[9].t + 0.5 / p));
       const auto got = impacts(r);
       ASSERT_GE(got.size(), 10u) << "b/h " << bh;
       double max_dt = 0, max_dw = 0;
@@ -83,7 +83,7 @@ TEST(Housner, FirstImpactTendsToLinearisedClosedForm) {
     const double alpha = s.alpha(), p = s.p();
     RigidInitial in;
     in.w0 = 0.5 * alpha;
-    const RigidResult r = simulate_housner(s, std::nullopt, {}, in, run_to(20.0 / p));
+    const RigidResult r = simulate_housner(s, std::nullopt, {}, in, housner_run_to(20.0 / p));
     const double t1 = impacts(r).at(0).t;
     const double lin = std::acosh(1.0 / (1.0 - 0.5)) / p;
     const double rel = std::fabs(t1 - lin) / lin;
@@ -101,7 +101,7 @@ TEST(Housner, ElasticRockingIsPeriodic) {
   RigidInitial in;
   in.w0 = 0.7 * s.alpha();
   // Tight tolerances: the amplitude check below asks for 1e-12 rad over four swings.
-  RigidRunOptions o = run_to(8.0);
+  RigidRunOptions o = housner_run_to(8.0);
   o.integrator.rtol = 1e-13;
   o.integrator.atol = 1e-15;
   const RigidResult r = simulate_housner(s, 1.0, {}, in, o);
@@ -121,7 +121,7 @@ TEST(Housner, ImpactAccumulationEndsAtRest) {
     RigidInitial in;
     in.w0 = 0.5 * s.alpha();
     const double e = s.housner_restitution();
-    const RigidResult r = simulate_housner(s, std::nullopt, {}, in, run_to(60.0));
+    const RigidResult r = simulate_housner(s, std::nullopt, {}, in, housner_run_to(60.0));
     EXPECT_EQ(r.status, SimStatus::TEnd);
     EXPECT_EQ(r.final_mode, Mechanism::Rest);
     const double t_rest_ref = housner_rest_time(s.alpha(), s.p(), in.w0, e);
@@ -149,7 +149,7 @@ TEST(Housner, RectangularPulseOverturningThreshold) {
       double lo = std::tan(alpha), hi = 2.0 * ref;
       RigidInitial in;
       auto overturns = [&](double A) {
-        return simulate_housner(s, std::nullopt, rect_pulse(A, tp), in, run_to(tp + 20.0 / p)).status ==
+        return simulate_housner(s, std::nullopt, rect_pulse(A, tp), in, housner_run_to(tp + 20.0 / p)).status ==
                SimStatus::Overturned;
       };
       ASSERT_TRUE(overturns(hi));
@@ -177,8 +177,8 @@ TEST(Housner, MirroredGroundMotionMirrorsTheMotion) {
   GroundMotion gm = g;
   gm.horizontal.amplitude = -0.4;
   RigidInitial in;
-  const RigidResult a = simulate_housner(s, std::nullopt, g, in, run_to(8.0));
-  const RigidResult b = simulate_housner(s, std::nullopt, gm, in, run_to(8.0));
+  const RigidResult a = simulate_housner(s, std::nullopt, g, in, housner_run_to(8.0));
+  const RigidResult b = simulate_housner(s, std::nullopt, gm, in, housner_run_to(8.0));
   ASSERT_EQ(a.events.size(), b.events.size());
   ASSERT_GT(a.impacts, 3);
   for (std::size_t k = 0; k < a.events.size(); ++k) {
@@ -201,7 +201,7 @@ TEST(Housner, EnergyBalanceUnderForcing) {
   g.vertical.amplitude = 0.1;
   g.vertical.frequency = 2.3;
   RigidInitial in;
-  const RigidResult r = simulate_housner(s, std::nullopt, g, in, run_to(20.0));
+  const RigidResult r = simulate_housner(s, std::nullopt, g, in, housner_run_to(20.0));
   ASSERT_EQ(r.status, SimStatus::TEnd);
   ASSERT_GT(r.impacts, 5);
   const double scale = s.mass * s.g * s.half_diagonal();
@@ -224,7 +224,7 @@ TEST(Housner, PassingAlphaIsNotOverturning) {
   bool found = false;
   for (double A = 2.0; A < 4.0 && !found; A += 0.05) {
     g.horizontal.amplitude = A;
-    const RigidResult r = simulate_housner(s, std::nullopt, g, in, run_to(20.0));
+    const RigidResult r = simulate_housner(s, std::nullopt, g, in, housner_run_to(20.0));
     if (r.event_counts[int(RigidEventKind::BeyondAlpha)] > 0 && r.status == SimStatus::TEnd) {
       found = true;
       EXPECT_GT(r.event_counts[int(RigidEventKind::WithinAlpha)], 0);
@@ -242,7 +242,7 @@ TEST(Housner, UpliftAtTheStaticThreshold) {
   g.horizontal.amplitude = 0.5;
   g.horizontal.frequency = 0.5;
   RigidInitial in;
-  const RigidResult r = simulate_housner(s, std::nullopt, g, in, run_to(0.9));
+  const RigidResult r = simulate_housner(s, std::nullopt, g, in, housner_run_to(0.9));
   ASSERT_TRUE(r.first_uplift_time);
   // 0.5 sin(2 pi 0.5 t) = tan(alpha) = 0.25  ->  t = asin(0.5) / pi
   EXPECT_NEAR(*r.first_uplift_time, std::asin(0.5) / M_PI, 1e-13);
@@ -290,7 +290,7 @@ TEST(Housner, UpliftFromZeroAccelerationRocksAtEveryTolerance) {
   ASSERT_GT(th_max, 1e-5);
   for (double rtol : {1e-6, 1e-8, 1e-10, 1e-12}) {
     SCOPED_TRACE(rtol);
-    RigidRunOptions o = run_to(t_impact + 1e-3);
+    RigidRunOptions o = housner_run_to(t_impact + 1e-3);
     o.integrator.rtol = rtol;
     const RigidResult r = simulate_housner(s, std::nullopt, g, RigidInitial{}, o);
     EXPECT_EQ(r.status, SimStatus::TEnd);

@@ -113,7 +113,7 @@ LyapunovResult block(const BlockParams& p, const BlockStateVec& z0, double t_end
   return block_lyapunov(p, z0, o);
 }
 
-int cli(const std::string& args) {
+int lyapunov_cli(const std::string& args) {
   const int rc = std::system((std::string(BLOCKDYN_CLI) + " " + args + " >/dev/null 2>&1").c_str());
   return WIFEXITED(rc) ? WEXITSTATUS(rc) : -1;
 }
@@ -195,8 +195,8 @@ TEST(LyapunovBlock, InvalidOptionsAreRejected) {
   const BlockParams p{0.5, 0.0, 100};
   EXPECT_THROW(block(p, ic1(p), -1), std::invalid_argument);
   EXPECT_THROW(block(p, ic1(p), 10, LyapunovMethod::Time, 1.0), std::invalid_argument);
-  EXPECT_EQ(cli("lyapunov --d0 1 --t-end 1"), 2);
-  EXPECT_NE(cli("lyapunov --method bogus --t-end 1"), 0);  // CLI11 usage error
-  EXPECT_EQ(cli("lyapunov --interval 0 --t-end 1"), 2);
-  EXPECT_EQ(cli("lyapunov --mu 0 --r 0.5 --k 100 --t-end 5"), 0);
+  EXPECT_EQ(lyapunov_cli("lyapunov --d0 1 --t-end 1"), 2);
+  EXPECT_NE(lyapunov_cli("lyapunov --method bogus --t-end 1"), 0);  // CLI11 usage error
+  EXPECT_EQ(lyapunov_cli("lyapunov --interval 0 --t-end 1"), 2);
+  EXPECT_EQ(lyapunov_cli("lyapunov --mu 0 --r 0.5 --k 100 --t-end 5"), 0);
 }

@@ -58,7 +58,7 @@ GroundMotion constant_push(double a_g) {
   return g;
 }
 
-AssemblyRunOptions run_to(double t_end) {
+AssemblyRunOptions masonry_run_to(double t_end) {
   AssemblyRunOptions o;
   o.t_end = t_end;
   return o;
@@ -200,7 +200,7 @@ TEST(MasonryGeometry, ARectangleAsVerticesIsTheRectangle) {
     GroundMotion g;
     g.horizontal.amplitude = c.amplitude;
     g.horizontal.frequency = 2.0;
-    const AssemblyResult r1 = simulate_assembly(rect, g, run_to(1.5)), r2 = simulate_assembly(poly, g, run_to(1.5));
+    const AssemblyResult r1 = simulate_assembly(rect, g, masonry_run_to(1.5)), r2 = simulate_assembly(poly, g, masonry_run_to(1.5));
     SCOPED_TRACE(std::string(c.preset) + (c.rigid ? " rigid" : " deformable"));
     ASSERT_EQ(r1.events.size(), r2.events.size());
     ASSERT_GT(r1.events.size(), 2u);
@@ -319,8 +319,8 @@ TEST(LimitAnalysis, ArchMinimumThicknessTendsToMilankovitchs) {
   EXPECT_NEAR(limit_analysis(a, -1).lambda, r.lambda, 1e-9);
 }
 
-AssemblyRunOptions run_to(double t_end, AssemblyScheme scheme) {
-  AssemblyRunOptions o = run_to(t_end);
+AssemblyRunOptions masonry_run_to(double t_end, AssemblyScheme scheme) {
+  AssemblyRunOptions o = masonry_run_to(t_end);
   o.scheme = scheme;
   return o;
 }
@@ -346,7 +346,7 @@ TEST(MasonryDynamics, ConstantPushBelowLambdaRestsAboveMoves) {
       if (scheme == AssemblyScheme::EventDriven && a.blocks.size() > 9) continue;
       SCOPED_TRACE(std::string(c.preset) + " of " + std::to_string(a.blocks.size()) + " blocks, lambda " +
                    std::to_string(lambda) + ", " + to_string(scheme));
-      const AssemblyResult below = simulate_assembly(a, constant_push(0.98 * lambda), run_to(1.0, scheme));
+      const AssemblyResult below = simulate_assembly(a, constant_push(0.98 * lambda), masonry_run_to(1.0, scheme));
       EXPECT_EQ(below.status, SimStatus::TEnd);
       EXPECT_EQ(below.motion, "rest");
       if (scheme == AssemblyScheme::EventDriven) {
@@ -355,7 +355,7 @@ TEST(MasonryDynamics, ConstantPushBelowLambdaRestsAboveMoves) {
         // Moreau-Jean's compliance on redundant joints lets them creep by rounding-level amounts.
         EXPECT_LT(max_rotation(below), 1e-9);
       }
-      const AssemblyResult above = simulate_assembly(a, constant_push(1.02 * lambda), run_to(3.0, scheme));
+      const AssemblyResult above = simulate_assembly(a, constant_push(1.02 * lambda), masonry_run_to(3.0, scheme));
       EXPECT_NE(above.motion, "rest");
       EXPECT_GT(max_rotation(above), 1e-3);
     }
@@ -370,10 +370,10 @@ TEST(MasonryDynamics, ArchesThinnerThanTheMinimumFallThickerOnesStand) {
     for (bool rigid : {true, false}) {
       SCOPED_TRACE(std::to_string(n) + " voussoirs, " + (rigid ? "rigid" : "deformable"));
       const AssemblyResult thin =
-          simulate_assembly(make_preset("arch", arch_options(n, 0.85 * t_min, rigid)), GroundMotion{}, run_to(4.0));
+          simulate_assembly(make_preset("arch", arch_options(n, 0.85 * t_min, rigid)), GroundMotion{}, masonry_run_to(4.0));
       EXPECT_EQ(thin.motion, "collapse");
       const AssemblyResult thick =
-          simulate_assembly(make_preset("arch", arch_options(n, 1.15 * t_min, rigid)), GroundMotion{}, run_to(4.0));
+          simulate_assembly(make_preset("arch", arch_options(n, 1.15 * t_min, rigid)), GroundMotion{}, masonry_run_to(4.0));
       EXPECT_EQ(thick.status, SimStatus::TEnd);
       EXPECT_NE(thick.motion, "collapse");
       EXPECT_LT(max_rotation(thick), 1e-3);
@@ -390,7 +390,7 @@ TEST(MasonryDynamics, ARigidTwentyVoussoirArchRidesOutTenSecondsOfShaking) {
   GroundMotion g;
   g.horizontal.amplitude = 0.16;
   g.horizontal.frequency = 5.0;
-  AssemblyRunOptions o = run_to(10.0);
+  AssemblyRunOptions o = masonry_run_to(10.0);
   o.record_events = false;
   const AssemblyResult r = simulate_assembly(a, g, o);
   EXPECT_EQ(to_string(effective_scheme(a, o)), std::string("time-stepping"));
@@ -415,7 +415,7 @@ TEST(MasonryDynamics, ARigidArchBroughtDownByPulsesStaysInsideTheModel) {
     g.horizontal.pulse = PulseShape::HalfSine;
     g.horizontal.amplitude = amplitude;
     g.horizontal.duration = t_p;
-    AssemblyRunOptions o = run_to(t_p + 2.0);
+    AssemblyRunOptions o = masonry_run_to(t_p + 2.0);
     o.record_events = false;
     const AssemblyResult r = simulate_assembly(a, g, o);
     EXPECT_EQ(r.status, SimStatus::Collapsed) << "t_p " << t_p << " A " << amplitude << ": " << r.note;
@@ -437,7 +437,7 @@ TEST(MasonryDynamics, ADeformableJointAtZeroForceIsHeldOpenNotChattering) {
     g.horizontal.pulse = PulseShape::HalfSine;
     g.horizontal.amplitude = amplitude;
     g.horizontal.duration = 0.5;
-    const AssemblyResult r = simulate_assembly(a, g, run_to(2.5));
+    const AssemblyResult r = simulate_assembly(a, g, masonry_run_to(2.5));
     EXPECT_EQ(r.status, SimStatus::TEnd) << "A " << amplitude << ": " << r.note;
     EXPECT_GT(max_rotation(r), 1e-4);  // the pulse rocks it
     EXPECT_LT(max_rotation(r), 1e-2);
@@ -457,7 +457,7 @@ TEST(MasonryDynamics, StiffContactsTendToTheRigidArchAndTheRigidOneConvergesInTh
     p.thickness = 0.06;  // the command line's default depth (voussoirs of 3.8 kg)
     if (!rigid)
       for (ContactLaw* l : {&p.ground_law, &p.block_law}) l->k_normal = k;
-    AssemblyRunOptions o = run_to(2.0);
+    AssemblyRunOptions o = masonry_run_to(2.0);
     if (rigid) o.step = h;
     const AssemblyResult r = simulate_assembly(make_preset("arch", p), g, o);
     EXPECT_EQ(r.motion, "collapse") << (rigid ? "rigid" : "deformable") << " k " << k << " h " << h;

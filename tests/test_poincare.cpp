@@ -38,7 +38,7 @@ Section section(const BlockParams& p, const BlockStateVec& z0, double t_end,
   return s;
 }
 
-int cli(const std::string& args) {
+int poincare_cli(const std::string& args) {
   const int rc = std::system((std::string(BLOCKDYN_CLI) + " " + args + " >/dev/null 2>&1").c_str());
   return WIFEXITED(rc) ? WEXITSTATUS(rc) : -1;
 }
@@ -156,17 +156,17 @@ TEST(PoincareEnergySurface, TrajectoryStaysInsideBothProjections) {
 }
 
 TEST(PoincareCli, BadInputExitsWithStatus2) {
-  EXPECT_EQ(cli("poincare --t-end 10 --t-min 20"), 2);
-  EXPECT_EQ(cli("poincare --t-end 0"), 2);
-  EXPECT_EQ(cli("energy-surface --ic surface --w0 0.01 --t-end 1"), 2);  // needs --y0
-  EXPECT_EQ(cli("energy-surface --ic surface --w0 0.01 --y0 0.5 --energy -1 --t-end 1"), 2);
-  EXPECT_EQ(cli("energy-surface --phase-dt 0 --t-end 1"), 2);
-  EXPECT_EQ(cli("poincare --mu 0 --r 0.5 --k 1e4 --t-end 5"), 0);
+  EXPECT_EQ(poincare_cli("poincare --t-end 10 --t-min 20"), 2);
+  EXPECT_EQ(poincare_cli("poincare --t-end 0"), 2);
+  EXPECT_EQ(poincare_cli("energy-surface --ic surface --w0 0.01 --t-end 1"), 2);  // needs --y0
+  EXPECT_EQ(poincare_cli("energy-surface --ic surface --w0 0.01 --y0 0.5 --energy -1 --t-end 1"), 2);
+  EXPECT_EQ(poincare_cli("energy-surface --phase-dt 0 --t-end 1"), 2);
+  EXPECT_EQ(poincare_cli("poincare --mu 0 --r 0.5 --k 1e4 --t-end 5"), 0);
 }
 
 TEST(PoincareCli, EnergySurfaceBuildsTheThesisInitialCondition) {
   const std::string out = "/tmp/blockdyn-test-energy-" + std::to_string(::getpid()) + ".json";
-  ASSERT_EQ(cli("energy-surface --r 0.2 --k 1e4 --mu 0.2 --ic surface --w0-alpha 0.125 --y0 0.50132 "
+  ASSERT_EQ(poincare_cli("energy-surface --r 0.2 --k 1e4 --mu 0.2 --ic surface --w0-alpha 0.125 --y0 0.50132 "
                 "--t-end 2 --json-out " + out),
             0);
   std::ifstream in(out);
@@ -175,5 +175,5 @@ TEST(PoincareCli, EnergySurfaceBuildsTheThesisInitialCondition) {
   EXPECT_NEAR(j["initial"]["state"]["vy"].get<double>(), 0.0943112665, 5e-9);  // Fig. 5.11
   EXPECT_LE(j["max_heave_excess"].get<double>(), 1e-9);
   EXPECT_LE(j["max_rock_excess"].get<double>(), 1e-9);
-  EXPECT_EQ(cli("energy-surface --ic surface --w0 0.01 --w0-alpha 0.1 --y0 0.5 --t-end 1"), 2);
+  EXPECT_EQ(poincare_cli("energy-surface --ic surface --w0 0.01 --w0-alpha 0.1 --y0 0.5 --t-end 1"), 2);
 }

@@ -47,7 +47,7 @@ class RateProbe : public SimulationSink {
   std::vector<double> times_, vw_;
 };
 
-int cli(const std::string& args) {
+int response_cli(const std::string& args) {
   const int rc = std::system((std::string(BLOCKDYN_CLI) + " " + args + " >/dev/null 2>&1").c_str());
   return WIFEXITED(rc) ? WEXITSTATUS(rc) : -1;
 }
@@ -261,13 +261,13 @@ TEST(ResponseClassify, CriteriaAreReportedAndValidated) {
 }
 
 TEST(ResponseCli, BadInputExitsWithStatus2) {
-  EXPECT_EQ(cli("response --t-end -5"), 2);
-  EXPECT_EQ(cli("response --settle-dissipation 2 --t-end 1"), 2);
-  EXPECT_EQ(cli("response --settled-energy 0 --t-end 1"), 2);
-  EXPECT_EQ(cli("response --energy-axis cubic --t-end 1"), 2);
-  EXPECT_EQ(cli("response --r -1 --t-end 1"), 2);
-  EXPECT_EQ(cli("response --ic ic1 --w0 5 --t-end 1"), 2);
-  EXPECT_EQ(cli("response --mu 0 --r 0.5 --k 100 --t-end 5"), 0);
+  EXPECT_EQ(response_cli("response --t-end -5"), 2);
+  EXPECT_EQ(response_cli("response --settle-dissipation 2 --t-end 1"), 2);
+  EXPECT_EQ(response_cli("response --settled-energy 0 --t-end 1"), 2);
+  EXPECT_EQ(response_cli("response --energy-axis cubic --t-end 1"), 2);
+  EXPECT_EQ(response_cli("response --r -1 --t-end 1"), 2);
+  EXPECT_EQ(response_cli("response --ic ic1 --w0 5 --t-end 1"), 2);
+  EXPECT_EQ(response_cli("response --mu 0 --r 0.5 --k 100 --t-end 5"), 0);
 }
 
 // --energy-axis log: the energy panel of the plot on a symmetric-log axis (issue 12: early rises
@@ -279,7 +279,7 @@ TEST(ResponseCli, LogEnergyAxisReachesThePlot) {
   std::filesystem::create_directories(dir);
   const auto svg_text = [&](const std::string& axis) {
     const std::string png = (dir / (axis + ".png")).string();
-    EXPECT_EQ(cli("response --mu 0 --r 0.5 --k 100 --t-end 20 --energy-axis " + axis + " --plot " + png), 0);
+    EXPECT_EQ(response_cli("response --mu 0 --r 0.5 --k 100 --t-end 20 --energy-axis " + axis + " --plot " + png), 0);
     std::ifstream in((dir / (axis + ".svg")).string());
     return std::string(std::istreambuf_iterator<char>(in), {});
   };

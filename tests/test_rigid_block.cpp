@@ -28,7 +28,7 @@ RigidBlockParams block(double b, double h, double mu_s, double mu_k, ImpactLaw l
   return p;
 }
 
-RigidRunOptions run_to(double t) {
+RigidRunOptions rigid_run_to(double t) {
   RigidRunOptions o;
   o.t_end = t;
   return o;
@@ -72,7 +72,7 @@ TEST(RigidBlock, OnsetMechanismTable) {
       {0.5, 0.5, 3.0, Mechanism::SlideRock},   {5.0, 5.0, 10.0, Mechanism::Rock},  // A* denominator < 0
   };
   for (const Case& c : cases) {
-    const RigidResult r = simulate_rigid(block(0.3, 1.2, c.fs, c.fk), constant_h(c.A), {}, run_to(1e-3));
+    const RigidResult r = simulate_rigid(block(0.3, 1.2, c.fs, c.fk), constant_h(c.A), {}, rigid_run_to(1e-3));
     EXPECT_EQ(to_string(r.initial_mode), std::string(to_string(c.expected)))
         << "f_s " << c.fs << " f_k " << c.fk << " A " << c.A;
     if (c.expected == Mechanism::Rock || c.expected == Mechanism::SlideRock) {
@@ -87,7 +87,7 @@ TEST(RigidBlock, SlidingUnderConstantAcceleration) {
   for (auto [fs, fk, A] : {std::tuple{0.2, 0.2, 0.3}, std::tuple{0.2, 0.1, 0.25}, std::tuple{0.15, 0.1, -0.4}}) {
     const RigidBlockParams p = block(0.3, 1.2, fs, fk);
     const double T = 1.5;
-    const RigidResult r = simulate_rigid(p, constant_h(A), {}, run_to(T));
+    const RigidResult r = simulate_rigid(p, constant_h(A), {}, rigid_run_to(T));
     const double sign = A > 0 ? 1.0 : -1.0;
     const double x_ref = -(std::fabs(A) - fk) * p.shape.g * T * T / 2.0 * sign;
     EXPECT_NEAR(r.final_state[0], x_ref, 1e-9 * std::fabs(x_ref)) << fs << " " << fk << " " << A;
@@ -105,7 +105,7 @@ TEST(RigidBlock, SlideStopsWhenTheVelocityVanishes) {
   g.horizontal.pulse = PulseShape::Rect;
   g.horizontal.amplitude = 0.24;
   g.horizontal.duration = 0.5;
-  const RigidResult r = simulate_rigid(p, g, {}, run_to(2.0));
+  const RigidResult r = simulate_rigid(p, g, {}, rigid_run_to(2.0));
   const double v = (0.24 - 0.15) * p.shape.g * 0.5;
   const double t_stop = 0.5 + v / (0.15 * p.shape.g);
   double t_rest = -1;
@@ -126,8 +126,8 @@ TEST(RigidBlock, LargeFrictionReproducesHousner) {
   g.horizontal.duration = 3.0;
   RigidInitial in;
   in.w0 = 0.05;
-  const RigidResult a = simulate_rigid(p, g, in, run_to(12.0));
-  const RigidResult b = simulate_housner(p.shape, std::nullopt, g, in, run_to(12.0));
+  const RigidResult a = simulate_rigid(p, g, in, rigid_run_to(12.0));
+  const RigidResult b = simulate_housner(p.shape, std::nullopt, g, in, rigid_run_to(12.0));
   const auto ia = impacts(a), ib = impacts(b);
   ASSERT_GT(ib.size(), 10u);
   for (std::size_t k = 0; k < 10; ++k) {
@@ -144,7 +144,7 @@ TEST(RigidBlock, PlasticNewtonImpactGivesHousnerCoefficient) {
     const RigidBlockParams p = block(bh, 1.0, 5.0, 5.0, ImpactLaw::Newton, 0.0);
     RigidInitial in;
     in.w0 = 0.5 * p.shape.alpha();
-    const RigidResult r = simulate_rigid(p, {}, in, run_to(1.0));
+    const RigidResult r = simulate_rigid(p, {}, in, rigid_run_to(1.0));
     const auto im = impacts(r);
     ASSERT_FALSE(im.empty());
     // Exact up to the rounding of the impulse solve (a 2x2 system).
@@ -162,7 +162,7 @@ TEST(RigidBlock, FlatDropBouncesWithNewtonRestitution) {
   in.y0 = 0.5 + drop;
   in.vx0 = 0.0;
   in.vy0 = 0.0;
-  const RigidResult r = simulate_rigid(p, {}, in, run_to(2.0));
+  const RigidResult r = simulate_rigid(p, {}, in, rigid_run_to(2.0));
   const auto im = impacts(r);
   ASSERT_GE(im.size(), 3u);
   const double g = p.shape.g;
@@ -183,7 +183,7 @@ TEST(RigidBlock, FreeFlightLandsWhereTheClosedFormSays) {
   in.vx0 = 0.3;
   in.vy0 = 1.0;
   in.vw0 = 2.0;
-  const RigidResult r = simulate_rigid(p, {}, in, run_to(2.0));
+  const RigidResult r = simulate_rigid(p, {}, in, rigid_run_to(2.0));
   const auto im = impacts(r);
   ASSERT_FALSE(im.empty());
   const double g = p.shape.g, bh = 0.2, hh = 0.5;
@@ -217,7 +217,7 @@ TEST(RigidBlock, EnergyBalanceUnderARecord) {
   g.vertical.frequency = 3.1;
   for (auto law : {ImpactLaw::Housner, ImpactLaw::Newton}) {
     const RigidBlockParams p = block(0.35, 1.2, 0.3, 0.25, law, law == ImpactLaw::Newton ? std::optional(0.4) : std::nullopt);
-    const RigidResult r = simulate_rigid(p, g, {}, run_to(30.0));
+    const RigidResult r = simulate_rigid(p, g, {}, rigid_run_to(30.0));
     EXPECT_GT(r.mode_changes, 5);
     EXPECT_GT(r.impacts, 3);
     const double scale = p.shape.mass * p.shape.g * p.shape.height;
@@ -235,8 +235,8 @@ TEST(RigidBlock, LongRecordRunsToTheEnd) {
       load_accelerogram(std::string(BLOCKDYN_SOURCE_DIR) + "/tests/fixtures/synthetic_60s.AT2", "record"));
   for (double scale : {0.8, 1.0}) {
     g.horizontal.scale = scale;
-    const RigidResult h = simulate_housner(block(0.3, 1.2, 1, 1).shape, std::nullopt, g, {}, run_to(60.0));
-    const RigidResult r = simulate_rigid(block(0.3, 1.2, 0.5, 0.4), g, {}, run_to(60.0));
+    const RigidResult h = simulate_housner(block(0.3, 1.2, 1, 1).shape, std::nullopt, g, {}, rigid_run_to(60.0));
+    const RigidResult r = simulate_rigid(block(0.3, 1.2, 0.5, 0.4), g, {}, rigid_run_to(60.0));
     for (const RigidResult* x : {&h, &r}) {
       EXPECT_NE(x->status, SimStatus::NumericalFailure) << x->model << " " << x->note;
       EXPECT_LT(x->events.size(), 100000u);
@@ -255,8 +255,8 @@ TEST(RigidBlock, MirroredGroundMotionMirrorsTheMotion) {
   gm = g;
   gm.horizontal.amplitude = -0.7;
   const RigidBlockParams p = block(0.3, 1.0, 0.35, 0.3);
-  const RigidResult a = simulate_rigid(p, g, {}, run_to(6.0));
-  const RigidResult b = simulate_rigid(p, gm, {}, run_to(6.0));
+  const RigidResult a = simulate_rigid(p, g, {}, rigid_run_to(6.0));
+  const RigidResult b = simulate_rigid(p, gm, {}, rigid_run_to(6.0));
   ASSERT_EQ(a.events.size(), b.events.size());
   ASSERT_GT(a.mode_changes, 3);
   for (std::size_t k = 0; k < a.events.size(); ++k) {
@@ -281,7 +281,7 @@ TEST(RigidBlock, PainleveInconsistencyIsReported) {
   in.y0 = 0.5 * std::cos(0.05) + 0.1 * std::sin(0.05);  // corner A on the ground
   bool reported = false;
   try {
-    const RigidResult r = simulate_rigid(p, {}, in, run_to(1.0));
+    const RigidResult r = simulate_rigid(p, {}, in, rigid_run_to(1.0));
     reported = r.status == SimStatus::Invalid && r.event_counts[int(RigidEventKind::Painleve)] > 0;
   } catch (const std::invalid_argument& e) {
     reported = std::string(e.what()).find("Painleve") != std::string::npos;

@@ -21,7 +21,7 @@ std::vector<std::string> long_sweep(const std::string& out, const std::string& t
           "--t-end", "20",  "--max-steps", "2000000", "-o",    out,    "--threads", threads};
 }
 
-std::vector<std::string> with(std::vector<std::string> a, const std::vector<std::string>& more) {
+std::vector<std::string> sweep_with(std::vector<std::string> a, const std::vector<std::string>& more) {
   a.insert(a.end(), more.begin(), more.end());
   return a;
 }
@@ -86,7 +86,7 @@ const std::string kMpirun2 =
 TEST(SweepCli, RowsAppearBeforeTheEnd) {
   const sweep_test::TmpDir tmp("sweep-incr");
   const std::string& dir = tmp.path;
-  const pid_t pid = spawn_cli(with(long_sweep("s.csv", "1"), {"--progress", "plain"}), dir);
+  const pid_t pid = spawn_cli(sweep_with(long_sweep("s.csv", "1"), {"--progress", "plain"}), dir);
   const Watch w = watch_journal(pid, dir + "/s.csv.journal", dir + "/s.csv", 2);
   int st = w.status;
   if (!w.reaped) {
@@ -106,7 +106,7 @@ TEST(SweepCli, RowsAppearBeforeTheEnd) {
 TEST(SweepCli, KilledSweepResumesToIdenticalBytes) {
   const sweep_test::TmpDir tmp("sweep-kill");
   const std::string& dir = tmp.path;
-  const CliResult ref = run_cli(with(long_sweep("ref.csv", "2"), {"--quiet"}), dir);
+  const CliResult ref = run_cli(sweep_with(long_sweep("ref.csv", "2"), {"--quiet"}), dir);
   ASSERT_EQ(ref.code, 0) << ref.err;
   start_and_kill(long_sweep("s.csv", "1"), dir, "s.csv");
   if (HasFatalFailure()) return;
@@ -115,7 +115,7 @@ TEST(SweepCli, KilledSweepResumesToIdenticalBytes) {
   const CliResult refused = run_cli(long_sweep("s.csv", "2"), dir);
   EXPECT_EQ(refused.code, 2);
   EXPECT_NE(refused.err.find("--resume"), std::string::npos) << refused.err;
-  const CliResult res = run_cli(with(long_sweep("s.csv", "2"), {"--resume", "--progress", "none"}), dir);
+  const CliResult res = run_cli(sweep_with(long_sweep("s.csv", "2"), {"--resume", "--progress", "none"}), dir);
   ASSERT_EQ(res.code, 0) << res.err;
   EXPECT_NE(res.out.find("(" + std::to_string(72 - kept) + " computed, " + std::to_string(kept) + " resumed"),
             std::string::npos)
@@ -129,9 +129,9 @@ TEST(SweepCli, MpiTwoRanksMatchOneProcessAndResume) {
   const std::string mpirun = kMpirun2;
   const sweep_test::TmpDir tmp("sweep-mpi");
   const std::string& dir = tmp.path;
-  const CliResult one = run_cli(with(long_sweep("one.csv", "1"), {"--quiet"}), dir);
+  const CliResult one = run_cli(sweep_with(long_sweep("one.csv", "1"), {"--quiet"}), dir);
   ASSERT_EQ(one.code, 0) << one.err;
-  const CliResult two = run_cli(with(long_sweep("two.csv", "1"), {"--progress", "none"}), dir, mpirun);
+  const CliResult two = run_cli(sweep_with(long_sweep("two.csv", "1"), {"--progress", "none"}), dir, mpirun);
   if (two.err.find("built without MPI") != std::string::npos) GTEST_SKIP() << "CLI built without MPI";
   ASSERT_EQ(two.code, 0) << two.err;
   EXPECT_EQ(slurp(dir + "/two.csv"), slurp(dir + "/one.csv"));
@@ -140,7 +140,7 @@ TEST(SweepCli, MpiTwoRanksMatchOneProcessAndResume) {
   // Interrupted single-process sweep resumed under MPI.
   start_and_kill(long_sweep("r.csv", "1"), dir, "r.csv");
   if (HasFatalFailure()) return;
-  const CliResult res = run_cli(with(long_sweep("r.csv", "1"), {"--resume", "--quiet"}), dir, mpirun);
+  const CliResult res = run_cli(sweep_with(long_sweep("r.csv", "1"), {"--resume", "--quiet"}), dir, mpirun);
   ASSERT_EQ(res.code, 0) << res.err;
   EXPECT_EQ(slurp(dir + "/r.csv"), slurp(dir + "/one.csv"));
 }
@@ -235,9 +235,9 @@ TEST(SweepCli, MpiEveryCommandDistributesOrRefuses) {
   const std::vector<std::string> map = {"map",   "--k",       "1e2:1e6:5", "--inv-r",
                                         "2:6:3", "--t-end",   "3",         "--boundary-points",
                                         "0",     "--threads", "1",         "--quiet"};
-  const CliResult one = run_cli(with(map, {"-o", "one.csv"}), dir);
+  const CliResult one = run_cli(sweep_with(map, {"-o", "one.csv"}), dir);
   ASSERT_EQ(one.code, 0) << one.err;
-  const CliResult two = run_cli(with(map, {"-o", "two.csv"}), dir, mpirun);
+  const CliResult two = run_cli(sweep_with(map, {"-o", "two.csv"}), dir, mpirun);
   if (two.err.find("built without MPI") != std::string::npos) GTEST_SKIP() << "CLI built without MPI";
   ASSERT_EQ(two.code, 0) << two.err;
   EXPECT_EQ(slurp(dir + "/two.csv"), slurp(dir + "/one.csv"));
