@@ -3,6 +3,8 @@
 normal forces as arrows (drawn upwards: the faces of rectangles at rest), the time and the ground acceleration.
 Usage: animate_assembly.py TRAJECTORY.csv OUT.gif|OUT.mp4 [--frames N] [--title T]"""
 
+import textwrap
+
 import matplotlib
 
 matplotlib.use("Agg")
@@ -62,7 +64,7 @@ def main():
     arrows = ax.quiver(np.zeros(npts), np.zeros(npts), np.zeros(npts), np.zeros(npts), angles="xy",
                        scale_units="xy", scale=1.0, color="tab:red", width=0.006)
     label = ax.text(0.02, 0.95, "", transform=ax.transAxes, family="monospace", va="top")
-    ax.set_title(a.title, fontsize=8)
+    ax.set_title(textwrap.fill(a.title, 80), fontsize=8)  # two lines rather than clipped
     ax2.plot(t, c["a_h"], lw=0.8, color="k")
     ax2.set_ylabel("a_h [g]")
     ax2.set_xlabel("t [s]")

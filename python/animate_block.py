@@ -14,6 +14,7 @@ in time (default 120).
 """
 import csv
 import math
+import textwrap
 
 import matplotlib
 
@@ -77,7 +78,7 @@ def main():
     block = Polygon(corners(d["x"][0], d["y"][0], d["w"][0], b, h), closed=True, fc="#c9b79c", ec="k", lw=1.2)
     ax.add_patch(block)
     label = ax.text(0.02, 0.96, "", transform=ax.transAxes, va="top", fontsize=10, family="monospace")
-    fig.suptitle(a.title, fontsize=9)
+    fig.suptitle(textwrap.fill(a.title, 90), fontsize=8)  # two lines rather than clipped
     arrows = []
     springs = None
     if rigid:
@@ -103,7 +104,7 @@ def main():
         series, name = d["w"], "rotation w [rad]"
     lower.plot(t, series, lw=0.7, color="0.3")
     lower.set_ylabel(name, fontsize=8)
-    lower.set_xlabel("t")
+    lower.set_xlabel("t [s]" if rigid else "t")
     cursor = lower.axvline(t[0], color="C3", lw=1.0)
 
     def frame(k):

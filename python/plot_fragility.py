@@ -4,7 +4,7 @@
 each intensity level (multiple stripes) and the lognormal curve fitted by maximum likelihood with
 its bootstrap 90 % band.
 
-usage: plot_fragility.py RUNS.csv OUT.png --im IM --curve "im:p:p05:p95,..." """
+usage: plot_fragility.py RUNS.csv OUT.png --im IM --curve "im:p:p05:p95,..." [--title T]"""
 import argparse
 import math
 
@@ -19,6 +19,7 @@ def main():
     ap.add_argument("out")
     ap.add_argument("--im", default="pga")
     ap.add_argument("--curve", default="-")
+    ap.add_argument("--title", default="")
     a = ap.parse_args()
     rows = read_rows(a.csv)
     levels = {}
@@ -41,7 +42,11 @@ def main():
     ax.set_ylabel("P(overturn | IM)")
     ax.set_ylim(-0.02, 1.02)
     ax.grid(True, alpha=0.3)
-    ax.legend(fontsize=8, loc="upper left")
+    # Lower right: a fragility curve rises from the lower left to the upper right, so this corner
+    # holds no stripe (upper left hid a point).
+    ax.legend(fontsize=8, loc="lower right")
+    if a.title:
+        ax.set_title(a.title, fontsize=9)
     save(fig, a.out)
 
 

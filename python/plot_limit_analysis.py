@@ -56,6 +56,7 @@ def panel(ax, assembly, analysis, title):
         ax.plot([c[0] for c in centres], [c[1] for c in centres], "-", color="C0", lw=1.5, label="line of thrust")
     elif centres:
         ax.plot([c[0] for c in centres], [c[1] for c in centres], "o", color="C0", ms=4, label="centres of pressure")
+    ax.margins(x=0.04, y=0.12)  # the crown hinge clear of the title
     ax.set_aspect("equal")
     ax.axhline(0, color="k", lw=0.8)
     ax.set_title(title, fontsize=10)
@@ -63,7 +64,8 @@ def panel(ax, assembly, analysis, title):
     ax.set_ylabel("y [m]")
     ax.plot([], [], "--", color="C3", lw=0.8, label="mechanism")
     ax.plot([], [], "o", ms=6, mfc="white", mec="C3", mew=1.5, ls="none", label="hinges")
-    ax.legend(loc="upper right", fontsize=8)
+    # Below the axes: inside, it would cover the arch's mechanism.
+    ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.2), ncol=3, fontsize=8, frameon=False)
 
 
 def main():
@@ -73,12 +75,13 @@ def main():
     fig, axes = plt.subplots(1, 2 if mt else 1, figsize=(11 if mt else 6.5, 4.6), constrained_layout=True,
                              squeeze=False)
     lam = doc["lambda"]
-    title = (f"{doc['assembly']['preset']}: lambda = {lam:.5g} (direction {doc['direction']:+d}), {doc['status']}"
-             if lam is not None else f"{doc['assembly']['preset']}: cannot stand under its own weight")
+    what = f"{doc['assembly']['preset']} of {len(doc['assembly']['blocks'])} blocks"
+    title = (f"{what} under a horizontal load a_H = lambda g:\nlambda = {lam:.5g} (direction {doc['direction']:+d}), "
+             f"{doc['status']}" if lam is not None else f"{what}: cannot stand under its own weight")
     panel(axes[0][0], doc["assembly"], doc, title)
     if mt:
         panel(axes[0][1], mt["assembly"], mt["analysis"],
-              f"thinnest arch standing: t/R = {mt['ratio']:.5f} ({mt['voussoirs']} voussoirs)")
+              f"the thinnest arch that stands under its own weight:\nt/R = {mt['ratio']:.5f} ({mt['voussoirs']} voussoirs)")
     save(fig, out)
 
 

@@ -37,13 +37,14 @@ def main():
     if a.alpha:
         for s in (1, -1):
             ax[0].axhline(s * a.alpha, color="C3", lw=0.7, ls="--")
-        ax[0].text(t[0], a.alpha, "  +alpha", color="C3", va="bottom", fontsize=8)
-        ax[0].text(t[0], -a.alpha, "  -alpha", color="C3", va="top", fontsize=8)
     ax[0].plot(t[imp], w[imp], "k|", ms=6, label="impacts")
     ax[0].set_ylabel("rotation w [rad]")
     handles = [plt.Rectangle((0, 0), 1, 1, color=c) for c in MECH_COLOURS.values()]
-    legend_outside(ax[0], handles=handles + [ax[0].lines[-1]], labels=list(MECH_COLOURS) + ["impact"],
-                   title="mechanism", fontsize=7)
+    # +-alpha named in the legend: a text label would sit on the mechanism bands.
+    extra = [plt.Line2D([], [], color="C3", lw=0.7, ls="--")] if a.alpha else []
+    legend_outside(ax[0], handles=handles + [ax[0].lines[-1]] + extra,
+                   labels=list(MECH_COLOURS) + ["impact"] + (["+-alpha"] if a.alpha else []), title="mechanism",
+                   fontsize=7)
 
     ax[1].plot(t, vw, lw=0.8, color="C1")
     ax[1].plot(t[imp], vw[imp], "k.", ms=3)
@@ -68,15 +69,18 @@ def main():
     ax[4].set_xlabel("t [s]")
     bal = num("energy_balance")
     ax4b = ax[4].twinx()
-    ax4b.plot(t, bal, lw=0.6, color="k", alpha=0.6)
-    ax4b.set_ylabel("balance error [J]", fontsize=8)
+    # The power of ten goes into the axis label rather than an offset text over the panel above.
+    top = float(np.nanmax(np.abs(bal))) if len(bal) else 0.0
+    e10 = int(np.floor(np.log10(top))) if top > 0 and np.isfinite(top) else 0
+    ax4b.plot(t, bal / 10.0**e10, lw=0.6, color="k", alpha=0.6)
+    ax4b.set_ylabel(f"balance error [1e{e10} J]" if e10 else "balance error [J]", fontsize=8)
     # The balance error's own axis sits on the right: this legend goes below the panel.
     ax[4].legend(fontsize=7, ncol=5, loc="upper left", bbox_to_anchor=(0.0, -0.28), frameon=False)
 
     status = f"status {a.status}" if a.status else ""
     maxw = np.max(np.abs(w))
     rel = f" = {maxw / a.alpha:.3g} alpha" if a.alpha else ""
-    fig.suptitle(f"Rotation, rate, ground motion, contact forces and energies - {a.title}\n"
+    fig.suptitle(f"{a.title}\n"
                  f"{status}, max |w| {maxw:.4g} rad{rel}, {len(imp)} impacts", fontsize=10)
     save(fig, a.out)
 

@@ -41,11 +41,13 @@ def main():
     if a.alpha:
         for s in (1, -1):
             ax[0, 0].axhline(s * a.alpha, color="C3", lw=0.7, ls="--")
-        ax[0, 0].text(t[0], a.alpha, " +alpha", color="C3", va="bottom", fontsize=8)
     takeoffs = [i for i, e in enumerate(d["event"]) if e == "takeoff"]
     ax[0, 0].plot(t[takeoffs], d["w"][takeoffs], "k^", ms=3, label="take-off")
     handles = [plt.Rectangle((0, 0), 1, 1, color=c) for c in MODE_COLOURS.values()]
-    ax[0, 0].legend(handles + ax[0, 0].lines[-1:], list(MODE_COLOURS) + ["take-off"], fontsize=7, ncol=4,
+    # +-alpha named in the legend: a text label would sit on the mode bands.
+    extra = [plt.Line2D([], [], color="C3", lw=0.7, ls="--")] if a.alpha else []
+    ax[0, 0].legend(handles + ax[0, 0].lines[-1:] + extra,
+                    list(MODE_COLOURS) + ["take-off"] + (["+-alpha"] if a.alpha else []), fontsize=7, ncol=5,
                     loc="lower left", bbox_to_anchor=(0, 1.0), frameon=False)
     ax[0, 0].set_ylabel("rotation w [rad]")
     ax[1, 0].plot(t, d["y"] - 0.5, lw=0.8, color="C1")
@@ -60,7 +62,7 @@ def main():
     ax[1, 1].plot(t, d["Ry"], lw=0.8, label="Ry")
     ax[1, 1].plot(t, d["Rx"], lw=0.8, label="Rx")
     ax[1, 1].set_ylabel("foundation reaction [m g]")
-    ax[1, 1].legend(fontsize=7, loc="upper right")
+    ax[1, 1].legend(fontsize=7, ncol=2, loc="lower left", bbox_to_anchor=(0, 1.0), frameon=False)
     for name, col in (("E_kin_x", "C0"), ("E_kin_y", "C1"), ("E_rot", "C2"), ("E_grav", "C3"),
                       ("E_springs", "C4"), ("E_total", "k")):
         ax[2, 1].plot(t, d[name], lw=0.8, color=col, label=name)
@@ -68,8 +70,12 @@ def main():
     ax[2, 1].set_ylabel("energy [m g a]")
     ax[2, 1].legend(fontsize=7, ncol=6, loc="lower left", bbox_to_anchor=(0, 1.0), frameon=False)
     bal = ax[2, 1].twinx()
-    bal.plot(t, d["energy_balance"] - d["energy_balance"][0], lw=0.6, color="0.4", ls=":")
-    bal.set_ylabel("balance error", fontsize=8)
+    err = d["energy_balance"] - d["energy_balance"][0]
+    # The power of ten goes into the axis label: as an offset text it would sit on the legend.
+    top = float(np.nanmax(np.abs(err))) if len(err) else 0.0
+    e10 = int(np.floor(np.log10(top))) if top > 0 and np.isfinite(top) else 0
+    bal.plot(t, err / 10.0**e10, lw=0.6, color="0.4", ls=":")
+    bal.set_ylabel(f"balance error [1e{e10} m g a]" if e10 else "balance error [m g a]", fontsize=8)
     fig.suptitle(a.title or a.csv, fontsize=10)
     save(fig, a.out)
 

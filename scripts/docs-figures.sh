@@ -75,4 +75,11 @@ run $B sweep --k 1e3:1e8:200 --r 0.2 --ic ic1 --w0-over-alpha 0.25 --stop-at-fir
 # docs/rigid-ground.md
 run $B simulate --model rigid --width 0.6 --height 1.8 --mass 150 --mu-s 0.35 --mu-k 0.3 \
   --ground-h-record tests/fixtures/synthetic_60s.AT2 --ground-h-scale 2 --t-end 40 --plot "$F/rigid_record_history.png"
+# README.md, docs/index.md, docs/getting-started.md: the demo's statue (scripts/demo.sh)
+run $B motion generate --model rezaeian --arias 3.888 --d5-95 12 --t-mid 10 --f-mid 2.5 --f-slope -0.05 --t-end 40 \
+  --seed 2026 --out out/demo_record --overwrite --quiet
+run $B simulate examples/statue_earthquake.toml --trajectory "$D/statue.csv" --plot "$F/statue_earthquake.png" \
+  --animate "$F/statue_earthquake.gif" --animate-frames 80
+run $B simulate examples/statue_earthquake.toml --ground-h-scale 0.8 --trajectory "$D/statue_0.8.csv" \
+  --plot "$F/statue_earthquake_0.8.png"
 echo "figures in $F, tables in $D"

@@ -13,6 +13,7 @@
 #include "blockdyn/analysis/sweep/grid_table.hpp"
 #include "blockdyn/analysis/sweep/sweep_axis.hpp"
 #include "blockdyn/api/harmonic_run.hpp"
+#include "blockdyn/base/number_text.hpp"
 #include "blockdyn/base/range_check.hpp"
 #include "blockdyn/excitation/intensity_measures.hpp"
 #include "blockdyn/excitation/response_spectrum.hpp"
@@ -97,6 +98,19 @@ json curve_json(const FragilityFit& f, const FragilityBand& b, double lo, double
   return c;
 }
 
+// What the figure's title names: "housner block 0.4 m x 1.7 m", "trilith (3 blocks)".
+std::string studied_object(const json& model) {
+  const std::string family = model.value("model", std::string("model"));
+  if (model.contains("width") && model.contains("height"))
+    return family + " block " + number_text(model.at("width").get<double>(), 4) + " m x " +
+           number_text(model.at("height").get<double>(), 4) + " m" +
+           (model.contains("mu_s") ? ", mu_s " + number_text(model.at("mu_s").get<double>(), 3) : "");
+  if (model.contains("preset"))
+    return model.at("preset").get<std::string>() +
+           (model.contains("blocks") ? " (" + std::to_string(model.at("blocks").size()) + " blocks)" : "");
+  return family;
+}
+
 // The report of the finished runs: the stripes, the fit and its band, the curve, the figure.
 StudyReport fragility_report(const Table& t, const Suite& suite, const std::vector<double>& levels,
                              const json& definition, const std::string& im, long bootstrap, long seed) {
@@ -143,7 +157,15 @@ StudyReport fragility_report(const Table& t, const Suite& suite, const std::vect
              (c.contains("p05") ? format_double(c["p05"].get<double>()) + ":" + format_double(c["p95"].get<double>())
                                 : std::string("nan:nan")) +
              ",";
-  rep.plot_args = {"@csv:table", "@plot", "--im", im, "--curve", curve.empty() ? "-" : curve};
+  rep.plot_args = {"@csv:table",
+                   "@plot",
+                   "--im",
+                   im,
+                   "--curve",
+                   curve.empty() ? "-" : curve,
+                   "--title",
+                   studied_object(definition.at("model")) + " under " + std::to_string(suite.files.size()) +
+                       " records, each scaled to " + std::to_string(levels.size()) + " levels of " + im};
   if (fit.ok)
     append_text(rep.text, "fragility: %zu runs, median %s = %.4g, beta = %.3g", all.size(), im.c_str(), fit.median,
                 fit.beta);

@@ -22,6 +22,11 @@
 namespace blockdyn {
 namespace {
 
+// " under record X (pga 0.36 g)" or " in free motion", for figure titles.
+std::string motion_phrase(const GroundMotion& g, const char* hz = "Hz", const char* sec = "s") {
+  return g.is_zero() ? " in free motion" : " under " + describe(g, hz, sec);
+}
+
 RunTiming fastest(const RunTiming& a, const RunTiming& b) { return b.cpu_s < a.cpu_s ? b : a; }
 
 // The figure scripts' numbers, as the command line always wrote them (std::to_string).
@@ -133,9 +138,13 @@ SimulateReport run_winkler(const Scenario& given, const SimulateOutputs& out) {
   rep.summary = result_json(sc.params, sc.ground, sc.options, r, sc.physical ? &*sc.physical : nullptr);
   rep.text = winkler_text(r, sc.physical ? scales_of(*sc.physical).time : 0.0);
   rep.timing = r.timing;
-  char title[256];
-  std::snprintf(title, sizeof title, "winkler block r = %.4g, mu = %.4g, k = %.4g: %s at t = %.6g", sc.params.r,
-                sc.params.mu, sc.params.k, to_string(r.status), r.t_final);
+  char head[160];
+  std::snprintf(head, sizeof head, "winkler block r = %.4g, mu = %.4g, k = %.4g", sc.params.r, sc.params.mu,
+                sc.params.k);
+  char tail[96];
+  std::snprintf(tail, sizeof tail, ": %s at t = %.6g", to_string(r.status), r.t_final);
+  const std::string title =
+      head + motion_phrase(sc.ground, sc.physical ? "Hz" : "/t_ref", sc.physical ? "s" : "t_ref") + tail;
   rep.figure.plot_script = "plot_trajectory.py";
   rep.figure.plot_args = {"--alpha", arg(sc.params.alpha()), "--title", title};
   rep.figure.animate_args = {"--model", "winkler", "--width", arg(sc.params.r), "--height", "1", "--title", title};
@@ -181,7 +190,7 @@ SimulateReport run_rigid_family(const Scenario& sc, const SimulateOutputs& out, 
   rep.summary = rigid_result_json(p, sc.ground, o, r);
   rep.text = rigid_text(r, p.shape.alpha());
   rep.timing = r.timing;
-  const std::string title = block_title(sc.model, p);
+  const std::string title = block_title(sc.model, p) + motion_phrase(sc.ground);
   rep.figure.plot_script = "plot_rigid.py";
   rep.figure.plot_args = {"--alpha",  arg(p.shape.alpha()), "--model", sc.model,
                           "--status", to_string(r.status),  "--title", title};
@@ -266,10 +275,11 @@ class PreparedAssembly final : public PreparedRun {
     rep.timing = clock.elapsed();  // with the trajectory's rows, if any
     rep.summary = assembly_result_json(a, s_.ground, o, r);
     rep.text = assembly_text(r);
-    char title[256];
-    std::snprintf(title, sizeof title, "%s (%zu blocks): %s, %s%s at t = %.6g s", a.preset.c_str(), a.blocks.size(),
-                  to_string(r.status), r.motion.c_str(),
+    char verdict[256];
+    std::snprintf(verdict, sizeof verdict, ": %s, %s%s at t = %.6g s", to_string(r.status), r.motion.c_str(),
                   r.collapse_mode ? (" mode " + std::to_string(*r.collapse_mode)).c_str() : "", r.t_final);
+    const std::string title =
+        a.preset + " (" + std::to_string(a.blocks.size()) + " blocks)" + motion_phrase(s_.ground) + verdict;
     std::string sizes;
     for (const AssemblyBlock& b : a.blocks) {
       char buf[64];

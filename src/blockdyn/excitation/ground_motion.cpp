@@ -5,6 +5,7 @@
 #include <string>
 
 #include "blockdyn/base/checks.hpp"
+#include "blockdyn/base/number_text.hpp"
 
 namespace blockdyn {
 
@@ -18,8 +19,7 @@ double GroundComponent::next_break(double t) const {
     const double s = (t - t_start) * record_time_unit;
     double next = record->next_sample_after(s);
     // The sample time converted back must lie strictly after t (rounding).
-    while (std::isfinite(next) && !(t_start + next / record_time_unit > t))
-      next = record->next_sample_after(next);
+    while (std::isfinite(next) && !(t_start + next / record_time_unit > t)) next = record->next_sample_after(next);
     if (std::isfinite(next)) b = std::fmin(b, t_start + next / record_time_unit);
   }
   return b;
@@ -58,8 +58,8 @@ void validate(const GroundMotion& g) {
     const std::string acc = "finite, |value| <= " + std::to_string(int(amax)) + " g";
     require(std::isfinite(k.constant) && std::fabs(k.constant) <= amax, n + ".constant", acc, k.constant);
     require(std::isfinite(k.amplitude) && std::fabs(k.amplitude) <= amax, n + ".amplitude", acc, k.amplitude);
-    require(std::isfinite(k.frequency) && k.frequency >= 0.0 && k.frequency <= kMaxGroundFrequency,
-            n + ".frequency", "in [0, 1e4] (Hz, or cycles per time unit)", k.frequency);
+    require(std::isfinite(k.frequency) && k.frequency >= 0.0 && k.frequency <= kMaxGroundFrequency, n + ".frequency",
+            "in [0, 1e4] (Hz, or cycles per time unit)", k.frequency);
     require(std::isfinite(k.phase) && std::fabs(k.phase) <= 1e6, n + ".phase", "finite (rad)", k.phase);
     require(std::isfinite(k.t_start) && k.t_start >= 0.0, n + ".t_start", "finite and >= 0", k.t_start);
     require(std::isfinite(k.duration) && k.duration >= 0.0, n + ".duration", "finite and >= 0", k.duration);
@@ -83,6 +83,40 @@ GroundMotion in_time_unit(const GroundMotion& g, double tu) {
     c->record_time_unit *= tu;
   }
   return out;
+}
+
+namespace {
+
+std::string describe_component(const GroundComponent& c, const char* hz, const char* sec) {
+  std::string parts;
+  auto add = [&](const std::string& p) { parts += (parts.empty() ? "" : " + ") + p; };
+  if (c.constant != 0.0) add(number_text(c.constant, 3) + " g constant");
+  if (c.amplitude != 0.0) {
+    if (c.has_pulse())
+      add(number_text(c.amplitude, 3) + " g " + to_string(c.pulse) + " pulse of " + number_text(c.duration, 3) + " " +
+          sec);
+    else
+      add(number_text(c.amplitude, 3) + " g harmonic at " + number_text(c.frequency, 3) + " " + hz);
+  }
+  if (c.record) {
+    const std::string& src = c.record->source();
+    const std::size_t slash = src.find_last_of('/');
+    std::string r = "record " + (slash == std::string::npos ? src : src.substr(slash + 1));
+    if (c.scale != 1.0) r += " x " + number_text(c.scale, 3);
+    add(r + " (pga " + number_text(std::fabs(c.scale) * c.record->peak(), 3) + " g)");
+  }
+  return parts;
+}
+
+}  // namespace
+
+std::string describe(const GroundMotion& g, const char* frequency_unit, const char* time_unit) {
+  const std::string h = describe_component(g.horizontal, frequency_unit, time_unit);
+  const std::string v = describe_component(g.vertical, frequency_unit, time_unit);
+  if (h.empty() && v.empty()) return "free motion";
+  if (v.empty()) return h;
+  if (h.empty()) return "vertical " + v;
+  return h + ", vertical " + v;
 }
 
 }  // namespace blockdyn

@@ -17,6 +17,7 @@
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "blockdyn/excitation/accelerogram.hpp"
@@ -30,7 +31,7 @@ struct GroundComponent {
   double frequency = 0.0;  // harmonic frequency (cycles per time unit: Hz for physical models)
   double phase = 0.0;      // harmonic phase (rad)
   double t_start = 0.0;
-  double duration = 0.0;   // window length (0: forever); for a pulse its duration t_p (> 0)
+  double duration = 0.0;  // window length (0: forever); for a pulse its duration t_p (> 0)
   PulseShape pulse = PulseShape::None;
   std::shared_ptr<const Accelerogram> record;
   double scale = 1.0;             // factor on the record
@@ -79,14 +80,15 @@ struct GroundComponent {
 struct GroundMotion {
   GroundComponent horizontal, vertical;
   bool is_zero() const { return horizontal.is_zero() && vertical.is_zero(); }
-  double next_break(double t) const {
-    return std::fmin(horizontal.next_break(t), vertical.next_break(t));
-  }
+  double next_break(double t) const { return std::fmin(horizontal.next_break(t), vertical.next_break(t)); }
   bool piecewise_linear() const { return horizontal.piecewise_linear() && vertical.piecewise_linear(); }
   double ah(double t) const { return horizontal.at(t); }
   double av(double t) const { return vertical.at(t); }
 };
 
+// A short description for figure titles: "record X.AT2 x 1.8 (pga 0.361 g)", "0.35 g one-sine
+// pulse of 1 s", "0.3 g harmonic at 2 Hz", "free motion" (frequency unit as given, "Hz" or "/t").
+std::string describe(const GroundMotion& g, const char* frequency_unit = "Hz", const char* time_unit = "s");
 
 // Checks every field (names them as ground.horizontal.<field> or ground.vertical.<field>).
 void validate(const GroundMotion& g);
