@@ -25,7 +25,8 @@ def main(argv):
         ax[0].plot(ph["y"][:1], ph["vy"][:1], "ro", ms=5, label="initial condition")
     ax[0].set_xlabel("y")
     ax[0].set_ylabel("y'")
-    ax[0].legend(loc="upper right", fontsize=8)
+    # Below the panels: inside they covered the trajectory and the surface.
+    ax[0].legend(loc="upper center", bbox_to_anchor=(0.5, -0.14), ncol=3, fontsize=8, frameon=False)
     ax[1].fill_between(rk["w"], -rk["vw_free"], rk["vw_free"], color="tab:blue", alpha=0.15,
                        label="mu=0 / 6-D bound: I w'^2/2 + U(w) <= E")
     ax[1].plot(rk["w"], rk["vw_contact"], "g", lw=0.8, label="contact: (I+B^2) w'^2/2 + U(w) <= E")
@@ -35,7 +36,7 @@ def main(argv):
         ax[1].plot(ph["w"][:1], ph["vw"][:1], "ro", ms=5)
     ax[1].set_xlabel("w [rad]")
     ax[1].set_ylabel("w' [rad]")
-    ax[1].legend(loc="upper right", fontsize=8)
+    ax[1].legend(loc="upper center", bbox_to_anchor=(0.5, -0.14), ncol=2, fontsize=8, frameon=False)
     fig.suptitle(title)
     save(fig, out, dpi=80, svg_dpi=80)
 

@@ -37,8 +37,9 @@ def main(csv_path, out_png):
         ax.set_xlim(0.0, alpha * 1.02)
     ax2.plot([], [], "o", color="C0", label="stable")
     ax2.plot([], [], "o", color="C0", mfc="white", label="unstable")
-    ax2.legend(fontsize=8)
-    fig.tight_layout()
+    fig.tight_layout(rect=(0, 0.08, 1, 1))
+    # In a band below the panels: inside, the energy curves ran under it.
+    fig.legend(*ax2.get_legend_handles_labels(), loc="lower center", ncol=4, fontsize=8, frameon=False)
     save(fig, stem(out_png) + ".png")
 
 

@@ -4,6 +4,7 @@
 
 usage: plot_lyapunov.py HISTORY.csv OUT.png [TITLE]   (an SVG is written beside the PNG)
 """
+import textwrap
 import sys
 
 from plotkit import col, plt, read_rows, save, split_args
@@ -18,7 +19,7 @@ def main(argv):
     ax.axhline(0.0, color="k", lw=0.5)
     ax.set_xlabel("time")
     ax.set_ylabel("running estimate of the largest exponent")
-    ax.set_title(title)
+    ax.set_title(textwrap.fill(title, 90))  # wrapped: a long title was clipped
     ax.grid(alpha=0.3)
     save(fig, out, dpi=80, svg_dpi=80)
 

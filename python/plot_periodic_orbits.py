@@ -82,6 +82,10 @@ def plot_orbits(rows, ax_pair, title):
 def plot_branches(rows, par, lin, title):
     fig, (ax1, ax2) = plt.subplots(2, 1, figsize=(8, 7.5), sharex=True)
     key = "ks" if par == "ks" else "omega"
+    labelled = []
+    xs_all = [float(r[key]) for r in rows] or [0.0]
+    us_all = [float(r["velocity"]) for r in rows] or [0.0]
+    xspan, uspan = (max(xs_all) - min(xs_all)) or 1.0, (max(us_all) - min(us_all)) or 1.0
     for b in sorted({int(r["branch"]) for r in rows}):
         rr = [r for r in rows if int(r["branch"]) == b]
         x = np.array([float(r[key]) for r in rr])
@@ -101,7 +105,12 @@ def plot_branches(rows, par, lin, title):
             if ev:
                 mk = "o" if "fold" in ev else "s" if "symmetry" in ev else "^" if "flip" in ev else "D"
                 ax1.plot(xi, ui, mk, color="k", ms=6, mfc="none")
-                ax1.annotate(ev, (xi, ui), fontsize=7, xytext=(4, 4), textcoords="offset points")
+                # One label per event and place: the same event found twice nearby printed twice.
+                near = [(xa, ua) for e2, xa, ua in labelled
+                        if e2 == ev and abs(xa - xi) <= 0.03 * xspan and abs(ua - ui) <= 0.03 * uspan]
+                if not near:
+                    ax1.annotate(ev, (xi, ui), fontsize=7, xytext=(4, 4), textcoords="offset points")
+                    labelled.append((ev, xi, ui))
     if lin:
         alpha, e, n, sym, ks0, om0 = lin
         if sym:
@@ -166,7 +175,8 @@ def plot_region(rows, lin, title):
     ax.set_xlabel("omega = Omega / p")
     ax.set_ylabel("K_s [g]")
     ax.set_title(title, fontsize=9)
-    ax.legend(fontsize=7, loc="upper left")
+    # Beside the axes: inside, it covered the regions it explains.
+    ax.legend(fontsize=7, loc="upper left", bbox_to_anchor=(1.01, 1.0), borderaxespad=0.0)
     return fig
 
 

@@ -11,6 +11,7 @@
 #include "blockdyn/analysis/sweep/grid_table.hpp"
 #include "blockdyn/api/motion_info.hpp"
 #include "blockdyn/base/range_check.hpp"
+#include "blockdyn/base/number_text.hpp"
 #include "blockdyn/io/json_io.hpp"
 #include "blockdyn/model/rigid/rigid_params.hpp"
 
@@ -183,7 +184,11 @@ GridStudy rocking_grid(const Settings& given, const std::string& output) {
     std::size_t n_over = 0;
     for (const json& x : j["rows"]) n_over += x["overturned"].get<bool>();
     rep.plot_script = "plot_rocking_spectrum.py";
-    rep.plot_args = {"@csv:table", "@plot", "--alpha", format_double(alpha)};
+    std::string record = definition.at("record").get<std::string>();
+    record = record.substr(record.find_last_of('/') + 1);  // npos + 1 = 0: the whole name
+    rep.plot_args = {"@csv:table", "@plot", "--alpha", format_double(alpha), "--title",
+                     definition.at("model").get<std::string>() + " blocks of alpha = " + number_text(alpha, 4) +
+                         " rad under " + record};
     append_text(rep.text, "rocking spectrum: %zu points, %zu overturned", j["rows"].size(), n_over);
     return rep;
   };
