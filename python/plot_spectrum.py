@@ -62,7 +62,8 @@ def picture(rows, d, amin, a):
     ax.set_xlabel("pulse duration t_p [s]")
     ax.set_ylabel("amplitude [g]")
     ax.set_title(a.title, fontsize=9)
-    ax.legend(handles=h, fontsize=8, loc="upper right")
+    # Beside the map: inside, it covered the overturning region it explains.
+    ax.legend(handles=h, fontsize=8, loc="upper left", bbox_to_anchor=(1.01, 1.0), borderaxespad=0.0)
     fig.tight_layout()
     save(fig, a.out, dpi=120)
 
