@@ -94,13 +94,22 @@ class Simulation:
 
     def __init__(self, data, summary):
         self.data = data
-        self.summary = summary
+        self._summary = summary  # a dict, or the JSON text: parsed when first read (most runs never are)
         empty = np.zeros(0)
         self.t = data.get("t", empty)
         self.state = (np.column_stack([data[c] for c in STATE_COLUMNS]) if data else np.zeros((0, len(STATE_COLUMNS))))
         self.mode = data.get("mode", empty)
         self.event = data.get("event", empty)
-        self.events = summary.get("events", [])
+
+    @property
+    def summary(self):
+        if isinstance(self._summary, str):
+            self._summary = json.loads(self._summary)
+        return self._summary
+
+    @property
+    def events(self):
+        return self.summary.get("events", [])
 
     def __getitem__(self, column):
         return self.data[column]
@@ -209,9 +218,12 @@ def _prepared(scenario, options, command="simulate"):
 
 
 def _simulation(result):
-    """A Simulation, or an Assembly for the assembly family."""
+    """A Simulation (its summary parsed when first read), or an Assembly for the assembly family."""
     cols, summary = result
-    return _simulation_of(_columns(cols), json.loads(summary))
+    data = _columns(cols)
+    if "theta_0" in data or not data:  # an assembly, or no table to tell by: read the summary now
+        return _simulation_of(data, json.loads(summary))
+    return Simulation(data, summary)
 
 
 def _simulation_of(data, summary):

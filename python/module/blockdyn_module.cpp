@@ -99,7 +99,7 @@ void execute(const Prepared& p, bool trajectory, Outcome& o) {
 py::tuple to_python(const Prepared& p, Outcome& o) {
   nlohmann::ordered_json doc;
   doc["schema"] = schema_name(p.command, "summary");
-  for (auto it = o.report.summary.begin(); it != o.report.summary.end(); ++it) doc[it.key()] = it.value();
+  for (auto it = o.report.summary.begin(); it != o.report.summary.end(); ++it) doc[it.key()] = std::move(it.value());
   doc["events"] = std::move(o.events);
   py::dict cols;
   for (const ColumnTable::Column& c : o.table.data()) {
