@@ -84,6 +84,7 @@ struct Outcome {
   ColumnTable table;
   nlohmann::ordered_json events = nlohmann::ordered_json::array();
   SimulateReport report;
+  std::string summary_text;  // the summary as `blockdyn simulate --json` prints it
 };
 
 void execute(const Prepared& p, bool trajectory, Outcome& o) {
@@ -94,13 +95,18 @@ void execute(const Prepared& p, bool trajectory, Outcome& o) {
   o.report = p.run->run(out);
 }
 
-// (columns {name: array or list of str}, summary JSON text): the summary exactly as
-// `blockdyn simulate --json` prints it.
-py::tuple to_python(const Prepared& p, Outcome& o) {
+// The summary's text, exactly as `blockdyn simulate --json` prints it; without the GIL (on the
+// worker thread, so that simulate_many's threads also share this part).
+void finish_summary(const Prepared& p, Outcome& o) {
   nlohmann::ordered_json doc;
   doc["schema"] = schema_name(p.command, "summary");
   for (auto it = o.report.summary.begin(); it != o.report.summary.end(); ++it) doc[it.key()] = std::move(it.value());
   doc["events"] = std::move(o.events);
+  o.summary_text = dump_json(doc);
+}
+
+// (columns {name: array or list of str}, summary JSON text).
+py::tuple to_python(Outcome& o) {
   py::dict cols;
   for (const ColumnTable::Column& c : o.table.data()) {
     if (c.is_text)
@@ -108,7 +114,7 @@ py::tuple to_python(const Prepared& p, Outcome& o) {
     else
       cols[py::str(c.name)] = py::array_t<double>(py::ssize_t(c.numbers.size()), c.numbers.data());
   }
-  return py::make_tuple(cols, dump_json(doc));
+  return py::make_tuple(cols, std::move(o.summary_text));
 }
 
 // A cell as a CSV reader gives it: a quoted cell without its quotes ("" read as ").
@@ -186,8 +192,9 @@ void add_runs(py::module_& m) {
         {
           py::gil_scoped_release release;
           execute(p, trajectory, o);
+          finish_summary(p, o);
         }
-        return to_python(p, o);
+        return to_python(o);
       },
       py::arg("prepared"), py::arg("trajectory") = true,
       "Runs one block; returns ({column: array}, summary JSON text).");
@@ -206,6 +213,7 @@ void add_runs(py::module_& m) {
               for (std::size_t i = w; i < runs.size(); i += n) {
                 try {
                   execute(runs[i], trajectory, outs[i]);
+                  finish_summary(runs[i], outs[i]);
                 } catch (...) {
                   errors[i] = std::current_exception();
                 }
@@ -216,7 +224,7 @@ void add_runs(py::module_& m) {
         py::list result;
         for (std::size_t i = 0; i < runs.size(); ++i) {
           if (errors[i]) std::rethrow_exception(errors[i]);
-          result.append(to_python(runs[i], outs[i]));
+          result.append(to_python(outs[i]));
         }
         return result;
       },
