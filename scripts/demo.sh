@@ -9,12 +9,12 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 # The compilers and libraries first; the plotting packages install while the program compiles.
 bash scripts/install-deps.sh build
-bash scripts/install-deps.sh plot > out.install-plot.log 2>&1 &
+mkdir -p out
+bash scripts/install-deps.sh plot > out/install-plot.log 2>&1 &
 plot_deps=$!
 bash scripts/build.sh blockdyn_cli   # the program only (the tests are scripts/test.sh's)
-if ! wait "$plot_deps"; then cat out.install-plot.log >&2; exit 1; fi
-rm -f out.install-plot.log
-mkdir -p out
+if ! wait "$plot_deps"; then cat out/install-plot.log >&2; exit 1; fi
+rm -f out/install-plot.log
 ./build/blockdyn motion generate --model rezaeian --arias 3.888 --d5-95 12 --t-mid 10 --f-mid 2.5 \
   --f-slope -0.05 --t-end 40 --seed 2026 --out out/demo_record --overwrite --quiet
 ./build/blockdyn simulate examples/statue_earthquake.toml --json-out out/demo.json --animate out/demo.gif
