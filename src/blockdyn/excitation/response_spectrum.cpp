@@ -168,8 +168,10 @@ class SegmentMaximum {
   SegmentMaximum(const Oscillator& o, const SegmentForm& f, double t0, Peak& peak)
       : o_(o), f_(f), t0_(t0), peak_(peak), amp_(std::sqrt(f.amplitude_sq()) * (1.0 + 1e-12)) {}
 
-  void over(double a, double b, double ua, double ub, int depth = 0) {
-    const double env = a == 0.0 ? amp_ : amp_ * std::exp(-o_.zeta * o_.w * a);
+  // `env` bounds the free vibration's envelope on [a, b]: the parent's value serves (the envelope
+  // only decays), a slightly looser bound than amp e^(-zeta w a) without a transcendental per node.
+  void over(double a, double b, double ua, double ub, int depth = 0, double env = -1.0) {
+    if (env < 0.0) env = a == 0.0 ? amp_ : amp_ * std::exp(-o_.zeta * o_.w * a);
     const double lin = std::fmax(std::fabs(f_.p0 + f_.p1 * a), std::fabs(f_.p0 + f_.p1 * b));
     const double len = (b - a) * o_.w;
     const double bound = std::fmin(std::fmax(std::fabs(ua), std::fabs(ub)) + 0.125 * len * len * env, lin + env);
@@ -183,11 +185,11 @@ class SegmentMaximum {
     peak_.consider(um, t0_ + mid);
     // The half with the larger end first: a higher peak prunes more of the other.
     if (std::fabs(ua) >= std::fabs(ub)) {
-      over(a, mid, ua, um, depth + 1);
-      over(mid, b, um, ub, depth + 1);
+      over(a, mid, ua, um, depth + 1, env);
+      over(mid, b, um, ub, depth + 1, env);
     } else {
-      over(mid, b, um, ub, depth + 1);
-      over(a, mid, ua, um, depth + 1);
+      over(mid, b, um, ub, depth + 1, env);
+      over(a, mid, ua, um, depth + 1, env);
     }
   }
 
