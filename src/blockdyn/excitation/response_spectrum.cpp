@@ -14,7 +14,6 @@
 namespace blockdyn {
 namespace {
 
-
 // The oscillator in pseudo-acceleration units: U = w^2 u and W = U' / w stay of the size of the
 // ground acceleration for every period, so that neither overflows nor underflows as T -> 0
 // (w^2 would, for T = 1e-160).
@@ -204,7 +203,7 @@ class SegmentMaximum {
   // The zero of U'' = e^(-zeta w tau) Re[lambda^2 C e^(i wd tau)] in (a, b), if any (b - a < td / 2).
   double curvature_zero(double a, double b) const {
     const double lr = -o_.zeta * o_.w, li = o_.wd;
-    const double l2r = lr * lr - li * li, l2i = 2.0 * lr * li;  // lambda^2
+    const double l2r = lr * lr - li * li, l2i = 2.0 * lr * li;                // lambda^2
     const double kr = l2r * f_.c + l2i * f_.d, ki = l2i * f_.c - l2r * f_.d;  // lambda^2 (c - i d)
     if (kr == 0.0 && ki == 0.0) return -1.0;
     // Re[K e^(i th)] = |K| cos(th + arg K): zero at th = pi/2 - arg K + k pi.
