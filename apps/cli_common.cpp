@@ -17,9 +17,9 @@
 
 #include "blockdyn/base/number_text.hpp"
 #include "blockdyn/base/range_check.hpp"
-#include "blockdyn/simulation/run_options.hpp"
 #include "blockdyn/io/atomic_file.hpp"
 #include "blockdyn/io/json_io.hpp"
+#include "blockdyn/simulation/run_options.hpp"
 
 namespace blockdyn::cli {
 

@@ -3,10 +3,10 @@
 
 #include <CLI/CLI.hpp>
 
-#include <algorithm>
-#include <cctype>
 #include <glob.h>
 #include <unistd.h>
+#include <algorithm>
+#include <cctype>
 
 #include <filesystem>
 #include <iostream>
@@ -76,9 +76,8 @@ std::vector<std::string> files_of_output(const std::string& flag, const std::str
 }
 
 bool is_output_flag(const std::string& flag) {
-  static const char* const kOutputs[] = {"--out",        "--output",  "--json-out", "--csv",      "--trajectory",
-                                         "--trace",      "--twin-csv", "--plot",     "--plot-map", "--animate",
-                                         "--poincare",   "--json"};
+  static const char* const kOutputs[] = {"--out",      "--output", "--json-out", "--csv",     "--trajectory", "--trace",
+                                         "--twin-csv", "--plot",   "--plot-map", "--animate", "--poincare",   "--json"};
   return std::find(std::begin(kOutputs), std::end(kOutputs), flag) != std::end(kOutputs);
 }
 
@@ -148,7 +147,8 @@ void check_outputs(CLI::App& sub, bool runner) {
       const auto slash = o.path.find_last_of('/');
       const std::string base = slash == std::string::npos ? o.path : o.path.substr(slash + 1);
       if (o.flag != "--out" && same_file(slash == std::string::npos ? "." : o.path.substr(0, slash), dir) &&
-          (base == "motions.json" || (ends_with(base, ".AT2") && (base.rfind("rezaeian_", 0) == 0 || base.rfind("pulse_", 0) == 0))))
+          (base == "motions.json" ||
+           (ends_with(base, ".AT2") && (base.rfind("rezaeian_", 0) == 0 || base.rfind("pulse_", 0) == 0))))
         throw UsageError(o.flag.substr(2) + " = '" + o.path + "' is a file of the suite written into out = '" + dir +
                          "': give another name");
     }
@@ -206,8 +206,7 @@ CliOutcome run_cli(const std::vector<std::string>& args) {
   if (!current_command().empty()) {
     bool known = false;
     for (const CLI::App* sub : app.get_subcommands({})) known = known || sub->check_name(current_command());
-    if (!known)
-      return {2, "'" + current_command() + "' is not a blockdyn command (blockdyn --help lists them)"};
+    if (!known) return {2, "'" + current_command() + "' is not a blockdyn command (blockdyn --help lists them)"};
   }
   // CLI11 parses the arguments in reverse order from a vector.
   std::vector<std::string> rev(args.rbegin(), args.rend());

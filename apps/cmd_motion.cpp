@@ -64,7 +64,8 @@ void add_generate(CLI::App& motion) {
     std::unique_ptr<Progress> bar;
     const nlohmann::ordered_json j = motion_generate(given, [&](std::size_t done, std::size_t total) {
       if (f->quiet || f->json) return;
-      if (!bar) bar = std::make_unique<Progress>("motion generate", total, 0, ProgressMode::Auto, stderr, 10.0, "records");
+      if (!bar)
+        bar = std::make_unique<Progress>("motion generate", total, 0, ProgressMode::Auto, stderr, 10.0, "records");
       bar->advance();
       if (done == total) bar->finish();
     });

@@ -22,9 +22,10 @@ nlohmann::ordered_json option_json(const CLI::Option& o) {
   j["names"] = names;
   j["help"] = o.get_description();
   j["default"] = o.get_default_str();
-  j["kind"] = o.get_positional() ? "positional" : o.get_expected_min() == 0 ? "flag"
-              : o.get_expected_max() > 1                                   ? "list"
-                                                                            : "value";
+  j["kind"] = o.get_positional()          ? "positional"
+              : o.get_expected_min() == 0 ? "flag"
+              : o.get_expected_max() > 1  ? "list"
+                                          : "value";
   j["required"] = o.get_required();
   j["group"] = o.get_group();
   return j;

@@ -113,9 +113,9 @@ inline double housner_rect_pulse_threshold(double alpha, double p, double tp) {
   double lo = std::tan(alpha), hi = 2.0 * std::tan(alpha);
   while (!housner_rect_pulse_overturns(alpha, p, hi, tp)) hi *= 2.0;
   std::uintmax_t it = 200;
-  auto r = boost::math::tools::bisect(
-      [&](double A) { return housner_rect_pulse_overturns(alpha, p, A, tp) ? 1.0 : -1.0; }, lo, hi,
-      boost::math::tools::eps_tolerance<double>(45), it);
+  auto r =
+      boost::math::tools::bisect([&](double A) { return housner_rect_pulse_overturns(alpha, p, A, tp) ? 1.0 : -1.0; },
+                                 lo, hi, boost::math::tools::eps_tolerance<double>(45), it);
   return 0.5 * (r.first + r.second);
 }
 

@@ -673,7 +673,8 @@ TEST(AssemblyFriction, EqualStaticAndKineticFrictionDoesNotChatter) {
     SCOPED_TRACE(::testing::Message() << c.amplitude_g << " g, " << c.hz << " Hz, phi " << c.phi_deg);
     PresetOptions o = seed_preset();
     o.ground_law.mu_s = o.ground_law.mu_k = o.block_law.mu_s = o.block_law.mu_k = std::tan(c.phi_deg * M_PI / 180);
-    const AssemblyResult r = simulate_assembly(make_preset("trilith", o), harmonic(c.amplitude_g, c.hz), assembly_run_to(1.0));
+    const AssemblyResult r =
+        simulate_assembly(make_preset("trilith", o), harmonic(c.amplitude_g, c.hz), assembly_run_to(1.0));
     EXPECT_EQ(r.status, SimStatus::TEnd) << r.note;
     EXPECT_EQ(r.t_final, 1.0);
     EXPECT_GT(r.event_counts[kAsmStick], 0);

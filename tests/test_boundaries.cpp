@@ -76,8 +76,7 @@ TEST(BoundarySearch, SupremumOfAllBelowSkipsLaterRecovery) {
       EXPECT_TRUE(s.value) << s.x;
     }
   EXPECT_EQ(sup_all_below([](double) { return true; }, log_grid(1, 10, 3)).status, BoundaryStatus::AboveRange);
-  EXPECT_EQ(sup_all_below([](double x) { return x < 0.5; }, log_grid(1, 10, 3)).status,
-            BoundaryStatus::BelowRange);
+  EXPECT_EQ(sup_all_below([](double x) { return x < 0.5; }, log_grid(1, 10, 3)).status, BoundaryStatus::BelowRange);
 }
 
 TEST(BoundarySearch, GridCaveatNarrowWindowIsMissed) {
@@ -145,14 +144,17 @@ TEST(BoundarySearch, InfimumOfAllAbove) {
   auto res = inf_all_above(pred, log_grid_per_decade(0.1, 1e4, 20), opt);
   ASSERT_TRUE(res.found());
   EXPECT_LT(rel(res.value, 20.0), 1e-8);
-  EXPECT_EQ(inf_all_above([](double x) { return x < 1e3; }, log_grid(1, 1e4, 5)).status,
-            BoundaryStatus::AboveRange);
+  EXPECT_EQ(inf_all_above([](double x) { return x < 1e3; }, log_grid(1, 1e4, 5)).status, BoundaryStatus::AboveRange);
   EXPECT_EQ(inf_all_above([](double) { return true; }, log_grid(1, 1e4, 5)).status, BoundaryStatus::BelowRange);
 }
 
 TEST(BoundarySearch, PredicateExceptionBecomesError) {
-  auto res = sup_all_below([](double x) -> bool { if (x > 5) throw std::runtime_error("boom"); return true; },
-                           log_grid(1, 100, 5));
+  auto res = sup_all_below(
+      [](double x) -> bool {
+        if (x > 5) throw std::runtime_error("boom");
+        return true;
+      },
+      log_grid(1, 100, 5));
   EXPECT_EQ(res.status, BoundaryStatus::Error);
   EXPECT_EQ(res.message, "boom");
 }
@@ -472,8 +474,9 @@ TEST(BoundaryCli, BadInputExitsWithStatus2NamingTheField) {
 
 TEST(BoundaryCli, StabilityCurveJsonIsIndependentOfThreads) {
   const std::string dir = testing::TempDir();
-  const std::string base = "stability-curve --ic ic2 --mu 0.2 --r-min 0.15 --r-max 0.3 --points 3 --per-decade 3 "
-                           "--rel-tol 0.05 --k-hi 1e5";
+  const std::string base =
+      "stability-curve --ic ic2 --mu 0.2 --r-min 0.15 --r-max 0.3 --points 3 --per-decade 3 "
+      "--rel-tol 0.05 --k-hi 1e5";
   ASSERT_EQ(cli_status(base + " --threads 1 --csv " + dir + "bounds_t1.csv"), 0);
   ASSERT_EQ(cli_status(base + " --threads 2 --csv " + dir + "bounds_t2.csv"), 0);
   auto slurp = [](const std::string& p) {

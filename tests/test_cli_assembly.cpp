@@ -251,8 +251,9 @@ TEST(CliAssembly, EveryBlockIsCarriedAndEveryJointCountedOnce) {
   // A pier standing on the ground through its side or its top carries nothing (it used to fall
   // 19.6 m in 2 s and be reported at rest); a joint given twice, once each way, is one joint.
   TmpDir d("asm_carried");
-  const std::string pier = "[contact]\nk_normal = 1e7\nphi = 30\n[[block]]\nname = \"pier\"\nwidth = 0.3\n"
-                           "height = 1.0\ndensity = 2000\nthickness = 0.2\ny = 0.5\n";
+  const std::string pier =
+      "[contact]\nk_normal = 1e7\nphi = 30\n[[block]]\nname = \"pier\"\nwidth = 0.3\n"
+      "height = 1.0\ndensity = 2000\nthickness = 0.2\ny = 0.5\n";
   std::ofstream(d.path + "/side.toml") << pier << "[[interface]]\nlower = \"ground\"\nupper = 0\nupper_edge = 1\n";
   std::ofstream(d.path + "/top.toml") << pier << "[[interface]]\nlower = \"ground\"\nupper = 0\nupper_edge = 2\n";
   std::ofstream(d.path + "/twice.toml")
@@ -303,7 +304,8 @@ TEST(CliAssembly, OneRestitutionDefaultPerLaw) {
                                        "[[interface]]\nlower = \"ground\"\nupper = 0\n";
   for (const auto& [contact, e] : std::vector<std::pair<std::string, double>>{{"rigid", 0.0}, {"deformable", 0.5}}) {
     const json file = cli_json({"assembly", "b.toml", "--contact", contact, "--t-end", "0.01", "--json"}, d.path);
-    const json preset = cli_json({"assembly", "--preset", "block", "--contact", contact, "--t-end", "0.01", "--json"}, d.path);
+    const json preset =
+        cli_json({"assembly", "--preset", "block", "--contact", contact, "--t-end", "0.01", "--json"}, d.path);
     EXPECT_EQ(file["assembly"]["interfaces"][0]["contact"]["restitution"].get<double>(), e) << contact;
     EXPECT_EQ(preset["assembly"]["interfaces"][0]["contact"]["restitution"].get<double>(), e) << contact;
   }

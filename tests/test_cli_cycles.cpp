@@ -20,10 +20,10 @@ std::vector<std::string> cycles_with(std::vector<std::string> head, const std::v
 
 TEST(CliCycles, JsonSegmentsStrobeCsvTraceAndPlot) {
   TmpDir d("cycles");
-  const auto r = run_cli(
-      cycles_with(cycles_with({"cycles"}, kHousner), {"--beta", "2", "--omega", "5", "--periods", "100", "--json", "--quiet", "--out",
-                                        "s.csv", "--trace", "t.csv", "--trace-per-period", "8", "--plot", "c.png"}),
-      d.path);
+  const auto r = run_cli(cycles_with(cycles_with({"cycles"}, kHousner),
+                                     {"--beta", "2", "--omega", "5", "--periods", "100", "--json", "--quiet", "--out",
+                                      "s.csv", "--trace", "t.csv", "--trace-per-period", "8", "--plot", "c.png"}),
+                         d.path);
   ASSERT_EQ(r.code, 0) << r.err;
   const json j = json::parse(r.out);
   EXPECT_EQ(j["schema"], "blockdyn.cycles.summary/1");
@@ -72,12 +72,12 @@ TEST(CliCycles, TrilithShowsAOneThreeTypeCycle) {
 
 TEST(CliImpactMap, PhasesPoincareAndPlot) {
   TmpDir d("impact_map");
-  const auto r =
-      run_cli(cycles_with(cycles_with({"impact-map"}, kHousner),
-                   {"--beta",      "2",     "--omega",         "5",    "--phase", "0.5",     "--periods", "60",
-                    "--transient", "20",    "--section-phase", "1",    "--json",  "--quiet", "--out",     "i.csv",
-                    "--poincare",  "p.csv", "--plot",          "m.png"}),
-              d.path);
+  const auto r = run_cli(
+      cycles_with(cycles_with({"impact-map"}, kHousner),
+                  {"--beta",      "2",     "--omega",         "5",    "--phase", "0.5",     "--periods", "60",
+                   "--transient", "20",    "--section-phase", "1",    "--json",  "--quiet", "--out",     "i.csv",
+                   "--poincare",  "p.csv", "--plot",          "m.png"}),
+      d.path);
   ASSERT_EQ(r.code, 0) << r.err;
   const json j = json::parse(r.out);
   EXPECT_EQ(j["schema"], "blockdyn.impact-map.summary/1");
@@ -108,11 +108,11 @@ TEST(CliSurvival, CyclePerPointIsTheSameForOneAndTwoThreads) {
   TmpDir d("survival_cycles");
   std::vector<json> maps;
   for (const char* threads : {"1", "2"}) {
-    const auto r =
-        run_cli(cycles_with(cycles_with({"survival"}, kHousner),
-                     {"--beta-min", "1.5", "--beta-max", "4", "--beta-points", "3", "--omega-min", "4", "--omega-max",
-                      "12", "--omega-points", "3", "--periods", "60", "--threads", threads, "--json", "--quiet"}),
-                d.path);
+    const auto r = run_cli(
+        cycles_with(cycles_with({"survival"}, kHousner),
+                    {"--beta-min", "1.5", "--beta-max", "4", "--beta-points", "3", "--omega-min", "4", "--omega-max",
+                     "12", "--omega-points", "3", "--periods", "60", "--threads", threads, "--json", "--quiet"}),
+        d.path);
     ASSERT_EQ(r.code, 0) << r.err;
     maps.push_back(json::parse(r.out)["points"]);
   }
@@ -143,12 +143,15 @@ TEST(CliCycles, BadInputIsAUsageError) {
       {cycles_with(cycles_with(cycles_with({"cycles"}, kHousner), ok), {"--t-end", "5", "--periods", "3"}), "not both"},
       {cycles_with(cycles_with(cycles_with({"cycles"}, kHousner), ok), {"--periods", "nan"}), "periods"},
       {cycles_with(cycles_with(cycles_with({"cycles"}, kHousner), ok), {"--excitation", "half-sine"}), "excitation"},
-      {cycles_with(cycles_with(cycles_with({"cycles"}, kHousner), ok), {"--trace-per-period", "0"}), "trace-per-period"},
+      {cycles_with(cycles_with(cycles_with({"cycles"}, kHousner), ok), {"--trace-per-period", "0"}),
+       "trace-per-period"},
       {cycles_with(cycles_with(cycles_with({"cycles"}, kHousner), ok), {"--out", "/nonexistent/x.csv"}), "out"},
       {cycles_with({"cycles", "--model", "assembly"}, ok), "--preset"},
       {cycles_with(cycles_with(cycles_with({"impact-map"}, kHousner), ok), {"--transient", "-1"}), "transient"},
-      {cycles_with(cycles_with(cycles_with({"impact-map"}, kHousner), ok), {"--periods", "10", "--transient", "10"}), "transient"},
-      {cycles_with(cycles_with(cycles_with({"impact-map"}, kHousner), ok), {"--section-phase", "inf"}), "section-phase"},
+      {cycles_with(cycles_with(cycles_with({"impact-map"}, kHousner), ok), {"--periods", "10", "--transient", "10"}),
+       "transient"},
+      {cycles_with(cycles_with(cycles_with({"impact-map"}, kHousner), ok), {"--section-phase", "inf"}),
+       "section-phase"},
       {cycles_with(cycles_with({"impact-map"}, kHousner), {"--beta", "2"}), "--omega"},
   };
   expect_usage_errors(cases, d.path);

@@ -31,14 +31,14 @@ const std::vector<std::string> kBlock{"--model", "housner", "--width", "0.3", "-
 // A Housner survival map refined twice near class changes: 3 stages.
 std::vector<std::string> refined_survival(const std::string& out, const std::string& periods = "20") {
   return runner_with(runner_with({"survival"}, kBlock),
-              {"--beta-min", "0.5", "--beta-max", "6", "--beta-points", "5", "--omega-min", "1", "--omega-max", "20",
-               "--omega-points", "5", "--periods", periods, "--refine", "2", "--out", out});
+                     {"--beta-min", "0.5", "--beta-max", "6", "--beta-points", "5", "--omega-min", "1", "--omega-max",
+                      "20", "--omega-points", "5", "--periods", periods, "--refine", "2", "--out", out});
 }
 
 std::vector<std::string> one_sine_spectrum(const std::string& csv) {
   return runner_with(runner_with({"spectrum"}, kBlock),
-              {"--pulse", "one-sine", "--duration-min", "0.15", "--duration-max", "3", "--duration-points", "12",
-               "--scan-points", "60", "--rel-tol", "1e-8", "--csv", csv});
+                     {"--pulse", "one-sine", "--duration-min", "0.15", "--duration-max", "3", "--duration-points", "12",
+                      "--scan-points", "60", "--rel-tol", "1e-8", "--csv", csv});
 }
 
 std::size_t journal_rows(const std::string& path) {
@@ -84,17 +84,18 @@ bool have_mpi(const std::string& dir) {
 TEST(ForcedRunner, SameBytesForOneAndTwoThreads) {
   TmpDir d("forced-threads");
   for (const char* t : {"1", "2"}) {
-    const CliResult r = run_cli(runner_with(refined_survival(std::string("s") + t + ".csv"),
-                                     {"--threads", t, "--json-out", std::string("s") + t + "_summary.json", "--quiet"}),
-                                d.path);
+    const CliResult r =
+        run_cli(runner_with(refined_survival(std::string("s") + t + ".csv"),
+                            {"--threads", t, "--json-out", std::string("s") + t + "_summary.json", "--quiet"}),
+                d.path);
     ASSERT_EQ(r.code, 0) << r.err;
     const CliResult q =
         run_cli(runner_with(one_sine_spectrum(std::string("p") + t + ".csv"), {"--threads", t, "--quiet"}), d.path);
     ASSERT_EQ(q.code, 0) << q.err;
     const CliResult c =
         run_cli(runner_with(runner_with({"response-curve"}, kBlock),
-                     {"--betas", "1.5,3", "--omega-min", "2", "--omega-max", "12", "--omega-points", "6", "--t-end",
-                      "8", "--threads", t, "--quiet", "--out", std::string("c") + t + ".csv"}),
+                            {"--betas", "1.5,3", "--omega-min", "2", "--omega-max", "12", "--omega-points", "6",
+                             "--t-end", "8", "--threads", t, "--quiet", "--out", std::string("c") + t + ".csv"}),
                 d.path);
     ASSERT_EQ(c.code, 0) << c.err;
   }
@@ -116,8 +117,8 @@ TEST(ForcedRunner, MpiRanksMatchOneProcess) {
   TmpDir d("forced-mpi");
   if (!have_mpi(d.path)) GTEST_SKIP() << "mpirun or an MPI build not available";
   ASSERT_EQ(run_cli(runner_with(refined_survival("one.csv"), {"--quiet", "--threads", "1"}), d.path).code, 0);
-  const CliResult two =
-      run_cli(runner_with(refined_survival("two.csv"), {"--progress", "none", "--threads", "1"}), d.path, kMpirun + "2");
+  const CliResult two = run_cli(runner_with(refined_survival("two.csv"), {"--progress", "none", "--threads", "1"}),
+                                d.path, kMpirun + "2");
   ASSERT_EQ(two.code, 0) << two.err;
   EXPECT_NE(two.out.find("2 rank(s)"), std::string::npos) << two.out;
   EXPECT_EQ(slurp(d.path + "/two.csv"), slurp(d.path + "/one.csv"));
@@ -141,7 +142,8 @@ TEST(ForcedRunner, KilledRefinedSurvivalResumesToIdenticalBytes) {
   const CliResult refused = run_cli(runner_with(refined_survival("s.csv", "1500"), {"--quiet"}), d.path);
   EXPECT_EQ(refused.code, 2);
   EXPECT_NE(refused.err.find("--resume"), std::string::npos) << refused.err;
-  const CliResult res = run_cli(runner_with(refined_survival("s.csv", "1500"), {"--resume", "--progress", "none"}), d.path);
+  const CliResult res =
+      run_cli(runner_with(refined_survival("s.csv", "1500"), {"--resume", "--progress", "none"}), d.path);
   ASSERT_EQ(res.code, 0) << res.err;
   EXPECT_NE(res.out.find("(" + std::to_string(total - kept) + " computed, " + std::to_string(kept) + " resumed"),
             std::string::npos)
@@ -153,7 +155,8 @@ TEST(ForcedRunner, KilledRefinedSurvivalResumesToIdenticalBytes) {
 TEST(ForcedRunner, KilledSpectrumResumesToIdenticalBytes) {
   TmpDir d("forced-kill-spectrum");
   ASSERT_EQ(run_cli(runner_with(one_sine_spectrum("ref.csv"), {"--quiet", "--threads", "2"}), d.path).code, 0);
-  const std::size_t kept = start_and_kill(runner_with(one_sine_spectrum("s.csv"), {"--threads", "1"}), d.path, "s.csv", 3);
+  const std::size_t kept =
+      start_and_kill(runner_with(one_sine_spectrum("s.csv"), {"--threads", "1"}), d.path, "s.csv", 3);
   if (HasFailure()) return;
   const CliResult res = run_cli(runner_with(one_sine_spectrum("s.csv"), {"--resume", "--json"}), d.path);
   ASSERT_EQ(res.code, 0) << res.err;
@@ -220,7 +223,8 @@ TEST(ForcedRunner, BadInputIsAUsageError) {
   expect_usage_errors(cases, d.path, true);
   // An existing table is never replaced silently.
   ASSERT_EQ(
-      run_cli(runner_with(survival, {"--beta-points", "2", "--omega-points", "2", "--out", "t.csv", "--quiet"}), d.path).code,
+      run_cli(runner_with(survival, {"--beta-points", "2", "--omega-points", "2", "--out", "t.csv", "--quiet"}), d.path)
+          .code,
       0);
   const CliResult again =
       run_cli(runner_with(survival, {"--beta-points", "2", "--omega-points", "2", "--out", "t.csv"}), d.path);
@@ -249,7 +253,8 @@ void make_suite(const std::string& dir) {
 TEST(ForcedRunner, FragilityRunsAreSimulateRunsAndResumeToIdenticalBytes) {
   TmpDir d("forced-fragility");
   make_suite(d.path);
-  const CliResult ref = run_cli(runner_with(fragility_args("ref.csv"), {"--json", "--quiet", "--threads", "2"}), d.path);
+  const CliResult ref =
+      run_cli(runner_with(fragility_args("ref.csv"), {"--json", "--quiet", "--threads", "2"}), d.path);
   ASSERT_EQ(ref.code, 0) << ref.err;
   const json j = json::parse(ref.out);
   EXPECT_EQ(j["schema"], "blockdyn.fragility.summary/1");

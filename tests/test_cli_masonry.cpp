@@ -144,14 +144,16 @@ TEST(CliMasonry, BadInputIsAUsageErrorNamingTheBlock) {
     return s;
   };
   masonry_write(d.path + "/clockwise.toml", with("[[-0.1, 0.0], [0.1, 0.0], [0.1, 0.8], [-0.1, 0.8]]",
-                                         "[[-0.1, 0.0], [-0.1, 0.8], [0.1, 0.8], [0.1, 0.0]]"));
+                                                 "[[-0.1, 0.0], [-0.1, 0.8], [0.1, 0.8], [0.1, 0.0]]"));
   masonry_write(d.path + "/concave.toml",
-        with("[[-0.1, 0.8], [0.1, 0.8], [0.0, 0.9]]", "[[-0.1, 0.8], [0.1, 0.8], [0.0, 0.82], [0.0, 0.9]]"));
+                with("[[-0.1, 0.8], [0.1, 0.8], [0.0, 0.9]]", "[[-0.1, 0.8], [0.1, 0.8], [0.0, 0.82], [0.0, 0.9]]"));
   masonry_write(d.path + "/through.toml",
-        with("[[-0.1, 0.8], [0.1, 0.8], [0.0, 0.9]]", "[[-0.1, 0.7], [0.1, 0.7], [0.0, 0.9]]"));
-  masonry_write(d.path + "/apart.toml", with("[[-0.1, 0.8], [0.1, 0.8], [0.0, 0.9]]", "[[0.2, 0.0], [0.4, 0.0], [0.3, 0.1]]"));
-  masonry_write(d.path + "/both.toml", with("vertices = [[-0.1, 0.0], [0.1, 0.0], [0.1, 0.8], [-0.1, 0.8]]",
-                                    "vertices = [[-0.1, 0.0], [0.1, 0.0], [0.1, 0.8], [-0.1, 0.8]]\nwidth = 0.2"));
+                with("[[-0.1, 0.8], [0.1, 0.8], [0.0, 0.9]]", "[[-0.1, 0.7], [0.1, 0.7], [0.0, 0.9]]"));
+  masonry_write(d.path + "/apart.toml",
+                with("[[-0.1, 0.8], [0.1, 0.8], [0.0, 0.9]]", "[[0.2, 0.0], [0.4, 0.0], [0.3, 0.1]]"));
+  masonry_write(d.path + "/both.toml",
+                with("vertices = [[-0.1, 0.0], [0.1, 0.0], [0.1, 0.8], [-0.1, 0.8]]",
+                     "vertices = [[-0.1, 0.0], [0.1, 0.0], [0.1, 0.8], [-0.1, 0.8]]\nwidth = 0.2"));
   const std::vector<std::pair<std::vector<std::string>, std::string>> cases = {
       {{"limit-analysis", "clockwise.toml"}, "block[0].vertices"},
       {{"assembly", "clockwise.toml"}, "clockwise"},

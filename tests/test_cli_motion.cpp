@@ -282,15 +282,16 @@ TEST(CliMotion, TargetsThatCannotBeMetWriteNothing) {
 
 TEST(CliMotion, OverwriteReplacesTheWholeSuite) {
   TmpDir d("motion_overwrite");
-  const std::vector<std::string> base = {"motion", "generate", "--arias", "0.3", "--d5-95", "5", "--t-mid", "4",
-                                         "--f-mid", "4", "--t-end", "12", "--out", "s", "--quiet"};
+  const std::vector<std::string> base = {"motion",  "generate", "--arias", "0.3", "--d5-95", "5", "--t-mid", "4",
+                                         "--f-mid", "4",        "--t-end", "12",  "--out",   "s", "--quiet"};
   auto with = [&](std::vector<std::string> extra) {
     std::vector<std::string> a = base;
     a.insert(a.end(), extra.begin(), extra.end());
     return a;
   };
   ASSERT_EQ(run_cli(with({"--count", "3"}), d.path).code, 0);
-  for (const char* f : {"rezaeian_0001.AT2", "rezaeian_0002.AT2", "rezaeian_0003.AT2"}) EXPECT_TRUE(exists(d.path + "/s/" + f));
+  for (const char* f : {"rezaeian_0001.AT2", "rezaeian_0002.AT2", "rezaeian_0003.AT2"})
+    EXPECT_TRUE(exists(d.path + "/s/" + f));
   const std::string first = slurp(d.path + "/s/rezaeian_0001.AT2");
   // A suite's records alone (motions.json lost) still count as a suite.
   std::remove((d.path + "/s/motions.json").c_str());

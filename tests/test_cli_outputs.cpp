@@ -45,8 +45,8 @@ TEST(CliOutputs, RunnerTablesStreamIntoFifosAndDevices) {
   TmpDir d("outputs_fifo");
   ASSERT_EQ(::mkfifo((d.path + "/table").c_str(), 0600), 0);
   const std::vector<std::vector<std::string>> commands = {
-      {"rocking-spectrum", "--record", kRecord, "--alpha", "0.2", "--p-values", "1,2", "--out", "table",
-       "--overwrite", "--json-out", "summary.json", "--plot", "fig.png"},
+      {"rocking-spectrum", "--record", kRecord, "--alpha", "0.2", "--p-values", "1,2", "--out", "table", "--overwrite",
+       "--json-out", "summary.json", "--plot", "fig.png"},
       {"spectrum", "--model", "housner", "--width", "0.3", "--height", "1.5", "--durations", "0.5", "--scan-points",
        "4", "--csv", "table", "--overwrite", "--json-out", "summary.json"}};
   for (const auto& args : commands) {
@@ -101,10 +101,11 @@ TEST(CliOutputs, NoOutputNamesAnInputOrAnotherOutputsFile) {
        "is the input --records"},
       {housner({"simulate"}, {"--w0", "0.1", "--t-end", "0.5", "--plot", "p.png", "--json-out", "p.svg"}),
        "also written by plot"},
-      {housner({"fragility"}, {"--records", "suite/*.AT2", "--levels", "0.1", "--out", "a.csv", "--json-out",
-                               "a.csv.journal"}),
+      {housner({"fragility"},
+               {"--records", "suite/*.AT2", "--levels", "0.1", "--out", "a.csv", "--json-out", "a.csv.journal"}),
        "also written by out"},
-      {housner({"fragility"}, {"--records", "suite/*.AT2", "--levels", "0.1", "--out", "a.csv", "--json-out", "a.json"}),
+      {housner({"fragility"},
+               {"--records", "suite/*.AT2", "--levels", "0.1", "--out", "a.csv", "--json-out", "a.json"}),
        "also written by out"},
       {{"motion", "generate", "--arias", "0.3", "--d5-95", "5", "--t-mid", "4", "--f-mid", "4", "--t-end", "12",
         "--out", "D", "--json-out", "D/motions.json"},
@@ -135,10 +136,10 @@ TEST(CliOutputs, ASymbolicLinkIsWrittenThrough) {
   EXPECT_FALSE(json::parse(slurp(d.path + "/store/summary.json")).empty());
   EXPECT_EQ(slurp(d.path + "/store/traj.csv").rfind("t,", 0), 0u);
   // Written again through the same link (the target exists now): still a link.
-  ASSERT_EQ(run_cli(housner({"simulate"}, {"--w0", "0.2", "--t-end", "0.5", "--json-out", "summary.json", "--quiet"}),
-                    d.path)
-                .code,
-            0);
+  ASSERT_EQ(
+      run_cli(housner({"simulate"}, {"--w0", "0.2", "--t-end", "0.5", "--json-out", "summary.json", "--quiet"}), d.path)
+          .code,
+      0);
   ASSERT_EQ(::lstat((d.path + "/summary.json").c_str(), &st), 0);
   EXPECT_TRUE(S_ISLNK(st.st_mode));
 }
@@ -150,10 +151,10 @@ TEST(CliOutputs, AResumedStudyIsTheSameRecords) {
   std::filesystem::create_directories(d.path + "/suite");
   std::filesystem::copy_file(kRecord, d.path + "/suite/a.AT2");
   std::filesystem::copy_file(kRecord, d.path + "/suite/b.AT2");
-  const std::vector<std::string> frag = housner(
-      {"fragility"}, {"--records", "suite/*.AT2", "--levels", "0.1,0.2", "--bootstrap", "0", "--out", "f.csv", "--quiet"});
+  const std::vector<std::string> frag = housner({"fragility"}, {"--records", "suite/*.AT2", "--levels", "0.1,0.2",
+                                                                "--bootstrap", "0", "--out", "f.csv", "--quiet"});
   const std::vector<std::string> rock = {"rocking-spectrum", "--record", "suite/a.AT2", "--alpha", "0.2",
-                                         "--p-values", "1,2", "--out", "r.csv", "--quiet"};
+                                         "--p-values",       "1,2",      "--out",       "r.csv",   "--quiet"};
   for (const auto& args : {frag, rock}) ASSERT_EQ(run_cli(args, d.path).code, 0) << args[0];
   auto with_resume = [](std::vector<std::string> a) {
     a.push_back("--resume");

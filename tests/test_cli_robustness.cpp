@@ -422,6 +422,7 @@ TEST(CliRobustness, MessagesNameTheValueGiven) {
       {{"nonexistent"}, "'nonexistent' is not a blockdyn command"},
   };
   for (const Case& c : cases) expect_usage_error(c, d.path);
-  const auto r = run_cli({"limit-analysis", "--preset", "arch", "--radius", "1000", "--thickness-ratio", "1.9"}, d.path);
+  const auto r =
+      run_cli({"limit-analysis", "--preset", "arch", "--radius", "1000", "--thickness-ratio", "1.9"}, d.path);
   EXPECT_EQ(r.err.find("grains"), std::string::npos) << r.err;
 }

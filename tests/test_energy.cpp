@@ -215,7 +215,9 @@ TEST(Energy, RatesAreTheTimeDerivativesOfTheComponents) {
     BlockStateVec z;
   };
   // Centre height with the lowest corner `depth` below the surface at tilt w.
-  auto sunk = [&](double w, double depth) { return 0.5 * (p.r * std::sin(std::fabs(w)) - (1.0 - std::cos(w))) - depth; };
+  auto sunk = [&](double w, double depth) {
+    return 0.5 * (p.r * std::sin(std::fabs(w)) - (1.0 - std::cos(w))) - depth;
+  };
   const Case cases[] = {
       {"contact, one corner", {Regime::Contact, 1, 0, 0.0}, {0.0, sunk(0.05, 1e-4), 0.05, 0.0, -0.01, 0.3}},
       {"contact, two corners", {Regime::Contact, -1, 0, 0.0}, {0.0, -3e-4, -2e-3, 0.0, 0.02, -0.1}},

@@ -9,6 +9,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <unistd.h>
 #include <algorithm>
 #include <boost/math/tools/minima.hpp>
 #include <cmath>
@@ -16,12 +17,11 @@
 #include <fstream>
 #include <sstream>
 #include <string>
-#include <unistd.h>
 
 #include "blockdyn/analysis/winkler/equilibria.hpp"
 #include "blockdyn/analysis/winkler/equilibrium_bifurcation.hpp"
-#include "blockdyn/model/winkler/region.hpp"
 #include "blockdyn/model/winkler/energy.hpp"
+#include "blockdyn/model/winkler/region.hpp"
 
 using namespace blockdyn;
 
@@ -34,9 +34,7 @@ BlockParams P(double r, double k) {
   return p;
 }
 
-double one_corner_depth(double r, double k, double w) {
-  return std::sqrt(2.0 * r * std::sin(w) * std::cos(w) / k);
-}
+double one_corner_depth(double r, double k, double w) { return std::sqrt(2.0 * r * std::sin(w) * std::cos(w) / k); }
 
 double one_corner_arm(double r, double k, double w) {
   const double d = one_corner_depth(r, k, w);
@@ -44,9 +42,7 @@ double one_corner_arm(double r, double k, double w) {
 }
 
 // k at which tilt w = atan(t) is a one-corner equilibrium.
-double one_corner_k(double r, double t) {
-  return 8.0 * r / 9.0 * std::pow(1.0 - t * t, 2) / (std::pow(r - t, 2) * t);
-}
+double one_corner_k(double r, double t) { return 8.0 * r / 9.0 * std::pow(1.0 - t * t, 2) / (std::pow(r - t, 2) * t); }
 
 double linearized_k_os(double r) { return (3.0 + std::sqrt(9.0 - 3.0 * r * r)) / (r * r); }
 
@@ -173,8 +169,8 @@ TEST(EquilBifurcation, KosApproachesSixOverRSquaredMinusHalf) {
 TEST(EquilBifurcation, KunsIsTheOneCornerFold) {
   for (double r : {0.05, 0.2, 0.5, 0.9, 0.99}) {
     // Independent reference: minimise the one-corner equilibrium stiffness over t = tan w.
-    const auto m = boost::math::tools::brent_find_minima([r](double t) { return one_corner_k(r, t); },
-                                                         1e-6 * r, r * (1 - 1e-9), 60);
+    const auto m = boost::math::tools::brent_find_minima([r](double t) { return one_corner_k(r, t); }, 1e-6 * r,
+                                                         r * (1 - 1e-9), 60);
     const double t = m.first, kf = m.second;
     const double w = std::atan(t);
     // The fold must lie where only one corner is submerged (far bottom corner above the surface).
@@ -223,10 +219,14 @@ TEST(EquilSearch, CountsInTheThreeStiffnessRanges) {
       int stable;
     };
     // Includes points 1e-6 of the gap from each bifurcation: two roots closer than a scan cell.
-    const Case cases[] = {{std::max(2.0, c.k_uns - 0.3 * gap), 1, 0}, {c.k_uns - 1e-6 * gap, 1, 0},
-                          {c.k_uns + 1e-6 * gap, 3, 1},               {0.5 * (c.k_uns + c.k_os), 3, 1},
-                          {c.k_os - 1e-6 * gap, 3, 1},                {c.k_os + 1e-6 * gap, 2, 1},
-                          {c.k_os + 0.3 * gap, 2, 1},                 {1e7, 2, 1}};
+    const Case cases[] = {{std::max(2.0, c.k_uns - 0.3 * gap), 1, 0},
+                          {c.k_uns - 1e-6 * gap, 1, 0},
+                          {c.k_uns + 1e-6 * gap, 3, 1},
+                          {0.5 * (c.k_uns + c.k_os), 3, 1},
+                          {c.k_os - 1e-6 * gap, 3, 1},
+                          {c.k_os + 1e-6 * gap, 2, 1},
+                          {c.k_os + 0.3 * gap, 2, 1},
+                          {1e7, 2, 1}};
     for (const Case& cs : cases) {
       const auto e = find_equilibria(P(r, cs.k));
       ASSERT_EQ(e.size(), cs.n) << "r=" << r << " k=" << cs.k;
@@ -419,9 +419,10 @@ TEST(EquilCli, CurvesCsvDeterministicAcrossThreads) {
 }
 
 TEST(EquilCli, BadInputExitsTwo) {
-  for (const char* args : {"equilibria --r 1.5 --k 10", "equilibria --r 0.5 --k 1", "equilibria --r 0.5 --k 10 --points 1",
-                           "bifurcation --r 0", "bifurcation --r 0.5 --k-min 10 --k-max 5 --csv /tmp/x.csv",
-                           "bifurcation --r 0.5 --spacing cubic", "bifurcation-curves --r-min 0.8 --r-max 0.5",
-                           "bifurcation-curves --threads -1"})
+  for (const char* args :
+       {"equilibria --r 1.5 --k 10", "equilibria --r 0.5 --k 1", "equilibria --r 0.5 --k 10 --points 1",
+        "bifurcation --r 0", "bifurcation --r 0.5 --k-min 10 --k-max 5 --csv /tmp/x.csv",
+        "bifurcation --r 0.5 --spacing cubic", "bifurcation-curves --r-min 0.8 --r-max 0.5",
+        "bifurcation-curves --threads -1"})
     EXPECT_EQ(run_cli(args).status, 2) << args;
 }

@@ -86,12 +86,21 @@ struct EventResiduals : SimulationSink {
     double g;
     switch (e.kind) {
       case EventKind::Takeoff:
-      case EventKind::Landing: g = corner_heights(p.r, z[kH], z[kW]).lowest * p.k; break;  // depth scale 1/k
-      case EventKind::WZero: g = z[kW]; break;
+      case EventKind::Landing:
+        g = corner_heights(p.r, z[kH], z[kW]).lowest * p.k;
+        break;  // depth scale 1/k
+      case EventKind::WZero:
+        g = z[kW];
+        break;
       case EventKind::SlideReversal:
-      case EventKind::SlideToContact: g = z[kVX] + corner_arms(p.r, z[kW], e.from.side).B * z[kVW]; break;
-      case EventKind::ContactToSlide: g = m.forces(e.t, e.from, z).margin; break;
-      default: return;
+      case EventKind::SlideToContact:
+        g = z[kVX] + corner_arms(p.r, z[kW], e.from.side).B * z[kVW];
+        break;
+      case EventKind::ContactToSlide:
+        g = m.forces(e.t, e.from, z).margin;
+        break;
+      default:
+        return;
     }
     worst[e.kind] = std::fmax(worst[e.kind], std::fabs(g));
     ++count[e.kind];
@@ -108,8 +117,8 @@ TEST(Events, EventFunctionsVanishAtEventStates) {
     EXPECT_LE(s.skipped, 2);
     const std::string tag = p.r == 0.3 ? "r03_" : "r05_";
     for (const auto& [k, v] : s.worst) record((tag + to_string(k)).c_str(), v);
-    for (EventKind k : {EventKind::Takeoff, EventKind::Landing, EventKind::WZero,
-                        EventKind::SlideToContact, EventKind::ContactToSlide})
+    for (EventKind k : {EventKind::Takeoff, EventKind::Landing, EventKind::WZero, EventKind::SlideToContact,
+                        EventKind::ContactToSlide})
       EXPECT_GT(s.count[k], 3) << to_string(k) << " r = " << p.r;
     // Lowest-corner height in units of the static sink 1/k; v_P and the friction margin in
     // units of the block's own velocity and weight; w in radians.
@@ -264,10 +273,11 @@ TEST(Events, FusedCompleteAndEventsEqualsTheTwoCalls) {
     const WinklerBlock block(p, g);
     for (int n = 0; n < 200; ++n) {
       const int side = U(rng) < 0.0 ? -1 : 1;
-      BlockStateVec z{0.1 * U(rng), 2e-5 * U(rng), side * 0.3 * std::fabs(U(rng)), 0.1 * U(rng), 1e-2 * U(rng),
-                      0.2 * U(rng), 0.0, 0.0, 0.0};
-      for (const BlockMode m : {BlockMode{Regime::Contact, side, 0, 0.05 * U(rng)}, BlockMode{Regime::Slide, side, 1, 0.0},
-                                BlockMode{Regime::Flight, side, 0, 0.0}}) {
+      BlockStateVec z{0.1 * U(rng), 2e-5 * U(rng), side * 0.3 * std::fabs(U(rng)),
+                      0.1 * U(rng), 1e-2 * U(rng), 0.2 * U(rng),
+                      0.0,          0.0,           0.0};
+      for (const BlockMode m : {BlockMode{Regime::Contact, side, 0, 0.05 * U(rng)},
+                                BlockMode{Regime::Slide, side, 1, 0.0}, BlockMode{Regime::Flight, side, 0, 0.0}}) {
         const double t = 2.0 * std::fabs(U(rng));
         BlockStateVec a = z, b = z;
         std::array<double, WinklerBlock::kNumEvents> ga{}, gb{};
@@ -331,8 +341,8 @@ namespace {
 // The first time a corner height (pick) changes sign along the trajectory from z in mode m,
 // by fixed-step RK4 of the model's right-hand side (dt, linear interpolation in the last step);
 // infinity if it does not before t_max.
-double first_corner_crossing(const WinklerBlock& block, const BlockMode& m, BlockStateVec z, double dt,
-                             double t_max, double (*pick)(const CornerHeights&)) {
+double first_corner_crossing(const WinklerBlock& block, const BlockMode& m, BlockStateVec z, double dt, double t_max,
+                             double (*pick)(const CornerHeights&)) {
   auto f = [&](const BlockStateVec& y, BlockStateVec& dy) {
     BlockStateVec yc = y;
     block.complete(m, yc);

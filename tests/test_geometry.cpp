@@ -6,14 +6,14 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <cstdio>
 #include <cmath>
+#include <cstdio>
 #include <random>
 #include <vector>
 
-#include "blockdyn/model/winkler/region.hpp"
 #include "blockdyn/model/winkler/energy.hpp"
 #include "blockdyn/model/winkler/foundation_force.hpp"
+#include "blockdyn/model/winkler/region.hpp"
 
 #include "test_support.hpp"
 
@@ -84,7 +84,10 @@ Ref reference(double r, double h, double w) {
     if ((ea < 0) == (eb < 0)) continue;
     for (int it = 0; it < 200 && b - a > 1e-17; ++it) {
       const double m = 0.5 * (a + b);
-      if ((envelope(p, m) < 0) == (ea < 0)) a = m; else b = m;
+      if ((envelope(p, m) < 0) == (ea < 0))
+        a = m;
+      else
+        b = m;
     }
     cuts.push_back(0.5 * (a + b));
   }
@@ -227,8 +230,7 @@ TEST(Geometry, OneCornerClosedFormAndSpringEnergy) {
     const RegionIntegrals c = region_integrals(q.r, q.h, q.w);
     EXPECT_NEAR(c.area, d * d / (2 * sc), 1e-12 * c.area);
     const BlockParams p{q.r, 0.0, 1e4};
-    EXPECT_NEAR(spring_energy(p, q.h, q.w), p.k * d * d * d / (6 * q.r * sc),
-                1e-12 * spring_energy(p, q.h, q.w));
+    EXPECT_NEAR(spring_energy(p, q.h, q.w), p.k * d * d * d / (6 * q.r * sc), 1e-12 * spring_energy(p, q.h, q.w));
   }
 }
 

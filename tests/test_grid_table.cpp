@@ -69,11 +69,12 @@ TEST(GridTable, SurvivalPointsAndSpectrumRowsReadBackExactly) {
   s.runs = 61;
   s.scan = {0, 0, 1, 0, 1};
   // Two tables: one per codec (their columns differ).
-  const GridTable ts("survival", survival_columns(), 2,
-                     [&](std::size_t i, RowBuilder& r) { add_survival_cells(i == 0 ? a : b, r); }, {}, {},
-                     tmp.path + "/s.csv");
-  const GridTable tp("spectrum", spectrum_columns(), 1, [&](std::size_t, RowBuilder& r) { add_spectrum_cells(s, 0.5, r); },
-                     {}, {}, tmp.path + "/p.csv");
+  const GridTable ts(
+      "survival", survival_columns(), 2, [&](std::size_t i, RowBuilder& r) { add_survival_cells(i == 0 ? a : b, r); },
+      {}, {}, tmp.path + "/s.csv");
+  const GridTable tp(
+      "spectrum", spectrum_columns(), 1, [&](std::size_t, RowBuilder& r) { add_spectrum_cells(s, 0.5, r); }, {}, {},
+      tmp.path + "/p.csv");
   run_sweep(ts, quiet(1));
   run_sweep(tp, quiet(1));
   const Table t1 = read_table(tmp.path + "/s.csv", ts.header());
@@ -103,7 +104,8 @@ TEST(GridTable, SurvivalPointsAndSpectrumRowsReadBackExactly) {
   EXPECT_EQ(s2.scan, s.scan);
   // A table read with another header is refused; a row of the wrong width is a programming error.
   EXPECT_THROW(read_table(tmp.path + "/p.csv", ts.header()), std::runtime_error);
-  const GridTable bad("x", {"a", "b"}, 1, [](std::size_t, RowBuilder& r) { r.add(1.0); }, {}, {}, tmp.path + "/x.csv");
+  const GridTable bad(
+      "x", {"a", "b"}, 1, [](std::size_t, RowBuilder& r) { r.add(1.0); }, {}, {}, tmp.path + "/x.csv");
   EXPECT_THROW(bad.row(0), std::logic_error);
 }
 

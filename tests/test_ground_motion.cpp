@@ -20,8 +20,8 @@ namespace {
 
 double integral(PulseShape p, double tp) {
   const double end = pulse_support(p) * tp;
-  return boost::math::quadrature::gauss_kronrod<double, 61>::integrate(
-      [&](double s) { return pulse_value(p, s, tp); }, 0.0, end, 15, 1e-13);
+  return boost::math::quadrature::gauss_kronrod<double, 61>::integrate([&](double s) { return pulse_value(p, s, tp); },
+                                                                       0.0, end, 15, 1e-13);
 }
 
 }  // namespace
@@ -55,7 +55,7 @@ TEST(Accelerogram, At2HeaderVariants) {
   const Accelerogram a = parse_at2("h1\nh2\nh3\nNPTS=  5, DT=   .01000 SEC\n" + body, "a.AT2");
   EXPECT_EQ(a.size(), 5u);
   EXPECT_DOUBLE_EQ(a.dt(), 0.01);
-  EXPECT_NEAR(a.at(0.005), 0.15, 1e-15);   // linear between samples
+  EXPECT_NEAR(a.at(0.005), 0.15, 1e-15);  // linear between samples
   EXPECT_NEAR(a.at(0.015), -0.05, 1e-15);
   EXPECT_DOUBLE_EQ(a.at(0.04), 0.5);
   EXPECT_EQ(a.at(0.0401), 0.0);  // zero after the record
@@ -76,7 +76,8 @@ TEST(Accelerogram, MalformedFilesNameTheProblem) {
             std::string::npos);
   EXPECT_NE(error_of([&] { parse_at2("h1\nh2\nh3\nno counts here\n0.1\n", "t.AT2"); }).find("NPTS"), std::string::npos);
   EXPECT_NE(error_of([&] { parse_at2("h1\nh2\n", "t.AT2"); }).find("truncated"), std::string::npos);
-  EXPECT_NE(error_of([&] { parse_at2("h1\nh2\nh3\nNPTS= 2, DT= -0.1\n0 1\n", "t.AT2"); }).find("DT"), std::string::npos);
+  EXPECT_NE(error_of([&] { parse_at2("h1\nh2\nh3\nNPTS= 2, DT= -0.1\n0 1\n", "t.AT2"); }).find("DT"),
+            std::string::npos);
   EXPECT_NE(error_of([&] { parse_at2(hdr + "0.1 0.2 nan 0.4 0.5\n", "t.AT2"); }).find("t.AT2:5: 'nan' is not a number"),
             std::string::npos);
   EXPECT_NE(error_of([&] { parse_at2(hdr + "0.1 0.2 200 0.4 0.5\n", "t.AT2"); }).find("sample 3 = 200"),

@@ -23,9 +23,8 @@ TEST(JsonEventSpool, SameTextAsTheSummaryBuiltInMemory) {
     JsonEventSpool spool;
     json in_memory = doc;
     for (int i = 0; i < n; ++i) {
-      const json e = {{"t", 0.1 * i + 1e-17},
-                      {"kind", "takeoff"},
-                      {"state", {{"x", 1.0 / 3}, {"w", i == 3 ? INFINITY : -2e-300}}}};
+      const json e = {
+          {"t", 0.1 * i + 1e-17}, {"kind", "takeoff"}, {"state", {{"x", 1.0 / 3}, {"w", i == 3 ? INFINITY : -2e-300}}}};
       spool.add(e);
       in_memory["events"].push_back(e);
     }

@@ -163,9 +163,9 @@ TEST(LyapunovBlock, RockToVerticalIsChaotic) {
 }
 
 TEST(LyapunovBlock, ZeroFrictionExponentsExceedTwoOrNearly) {
-  const BlockParams tall{0.1, 0.0, 1e6};  // rock to vertical with mu = 0
+  const BlockParams tall{0.1, 0.0, 1e6};                 // rock to vertical with mu = 0
   EXPECT_GT(block(tall, ic1(tall), 100).exponent, 2.0);  // thesis: larger than 2 for mu = 0
-  const BlockParams wide{0.5, 0.0, 1e4};  // zero-friction rock-flight
+  const BlockParams wide{0.5, 0.0, 1e4};                 // zero-friction rock-flight
   const auto t = block(wide, ic1(wide), 150);
   const auto s = block(wide, ic1(wide), 150, LyapunovMethod::Section);
   EXPECT_GT(t.exponent, 1.5);

@@ -12,8 +12,12 @@ using sweep_test::TmpDir;
 namespace {
 
 std::vector<std::string> map_args(const std::string& out, int threads) {
-  return {"map", "--k", "1e2,1e6", "--inv-r", "2,10", "--mu", "0.2", "--ic", "ic1", "--t-end", "8",
-          "--boundary-points", "2", "--threads", std::to_string(threads), "-o", out, "--quiet"};
+  return {"map",     "--k",       "1e2,1e6",
+          "--inv-r", "2,10",      "--mu",
+          "0.2",     "--ic",      "ic1",
+          "--t-end", "8",         "--boundary-points",
+          "2",       "--threads", std::to_string(threads),
+          "-o",      out,         "--quiet"};
 }
 
 std::vector<std::string> split(const std::string& line) {
@@ -21,11 +25,13 @@ std::vector<std::string> split(const std::string& line) {
   std::string cur;
   bool quoted = false;
   for (char c : line) {
-    if (c == '"') quoted = !quoted;
+    if (c == '"')
+      quoted = !quoted;
     else if (c == ',' && !quoted) {
       f.push_back(cur);
       cur.clear();
-    } else cur += c;
+    } else
+      cur += c;
   }
   f.push_back(cur);
   return f;
@@ -93,11 +99,10 @@ TEST(MapCli, ClassifiesEveryPointAndFindsBoundaries) {
 
 TEST(MapCli, BadInputIsRejected) {
   TmpDir d("mapbad");
-  for (const std::vector<std::string>& bad :
-       {std::vector<std::string>{"map", "--mu", "-1", "-o", "x.csv"},
-        std::vector<std::string>{"map", "--ic", "ic7", "-o", "x.csv"},
-        std::vector<std::string>{"map", "--k", "0:10:3", "-o", "x.csv"},
-        std::vector<std::string>{"map", "--t-end", "nan", "-o", "x.csv"}}) {
+  for (const std::vector<std::string>& bad : {std::vector<std::string>{"map", "--mu", "-1", "-o", "x.csv"},
+                                              std::vector<std::string>{"map", "--ic", "ic7", "-o", "x.csv"},
+                                              std::vector<std::string>{"map", "--k", "0:10:3", "-o", "x.csv"},
+                                              std::vector<std::string>{"map", "--t-end", "nan", "-o", "x.csv"}}) {
     const auto r = run_cli(bad, d.path);
     EXPECT_EQ(r.code, 2) << bad[1] << " " << bad[2] << ": " << r.err;
     EXPECT_NE(r.err.find("error:"), std::string::npos) << r.err;
@@ -131,8 +136,10 @@ TEST(MapCli, SensitivityMarksTheChaoticPoint) {
     ++rows;
     const bool chaotic = std::stod(f[c_k]) == 1e6;
     EXPECT_EQ(f[c_sens], chaotic ? "1" : "0") << line;
-    if (chaotic) EXPECT_GT(std::stod(f[c_sep]), 0.1) << line;
-    else EXPECT_LT(std::stod(f[c_sep]), 1e-4) << line;
+    if (chaotic)
+      EXPECT_GT(std::stod(f[c_sep]), 0.1) << line;
+    else
+      EXPECT_LT(std::stod(f[c_sep]), 1e-4) << line;
   }
   EXPECT_EQ(rows, 2);
 }

@@ -200,7 +200,8 @@ TEST(MasonryGeometry, ARectangleAsVerticesIsTheRectangle) {
     GroundMotion g;
     g.horizontal.amplitude = c.amplitude;
     g.horizontal.frequency = 2.0;
-    const AssemblyResult r1 = simulate_assembly(rect, g, masonry_run_to(1.5)), r2 = simulate_assembly(poly, g, masonry_run_to(1.5));
+    const AssemblyResult r1 = simulate_assembly(rect, g, masonry_run_to(1.5)),
+                         r2 = simulate_assembly(poly, g, masonry_run_to(1.5));
     SCOPED_TRACE(std::string(c.preset) + (c.rigid ? " rigid" : " deformable"));
     ASSERT_EQ(r1.events.size(), r2.events.size());
     ASSERT_GT(r1.events.size(), 2u);
@@ -369,11 +370,11 @@ TEST(MasonryDynamics, ArchesThinnerThanTheMinimumFallThickerOnesStand) {
     EXPECT_LT(t_min, 0.1075);
     for (bool rigid : {true, false}) {
       SCOPED_TRACE(std::to_string(n) + " voussoirs, " + (rigid ? "rigid" : "deformable"));
-      const AssemblyResult thin =
-          simulate_assembly(make_preset("arch", arch_options(n, 0.85 * t_min, rigid)), GroundMotion{}, masonry_run_to(4.0));
+      const AssemblyResult thin = simulate_assembly(make_preset("arch", arch_options(n, 0.85 * t_min, rigid)),
+                                                    GroundMotion{}, masonry_run_to(4.0));
       EXPECT_EQ(thin.motion, "collapse");
-      const AssemblyResult thick =
-          simulate_assembly(make_preset("arch", arch_options(n, 1.15 * t_min, rigid)), GroundMotion{}, masonry_run_to(4.0));
+      const AssemblyResult thick = simulate_assembly(make_preset("arch", arch_options(n, 1.15 * t_min, rigid)),
+                                                     GroundMotion{}, masonry_run_to(4.0));
       EXPECT_EQ(thick.status, SimStatus::TEnd);
       EXPECT_NE(thick.motion, "collapse");
       EXPECT_LT(max_rotation(thick), 1e-3);

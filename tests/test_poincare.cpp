@@ -167,7 +167,8 @@ TEST(PoincareCli, BadInputExitsWithStatus2) {
 TEST(PoincareCli, EnergySurfaceBuildsTheThesisInitialCondition) {
   const std::string out = "/tmp/blockdyn-test-energy-" + std::to_string(::getpid()) + ".json";
   ASSERT_EQ(poincare_cli("energy-surface --r 0.2 --k 1e4 --mu 0.2 --ic surface --w0-alpha 0.125 --y0 0.50132 "
-                "--t-end 2 --json-out " + out),
+                         "--t-end 2 --json-out " +
+                         out),
             0);
   std::ifstream in(out);
   const auto j = nlohmann::json::parse(in);

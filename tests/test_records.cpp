@@ -39,8 +39,21 @@ std::string at2_with_line3(const std::string& line3) {
 
 TEST(RecordFiles, At2TextReadsBackBitForBit) {
   const double tiny = std::numeric_limits<double>::denorm_min();
-  std::vector<double> a = {0.0,    -0.0,  tiny,  -tiny, DBL_MIN, -DBL_MIN, 1e-300, -1e-300, 1e-219, -7.786353410e-219,
-                           100.0, -100.0, std::nextafter(100.0, 0.0), 0.1, -1.0 / 3.0};
+  std::vector<double> a = {0.0,
+                           -0.0,
+                           tiny,
+                           -tiny,
+                           DBL_MIN,
+                           -DBL_MIN,
+                           1e-300,
+                           -1e-300,
+                           1e-219,
+                           -7.786353410e-219,
+                           100.0,
+                           -100.0,
+                           std::nextafter(100.0, 0.0),
+                           0.1,
+                           -1.0 / 3.0};
   std::mt19937_64 rng(5);
   std::uniform_real_distribution<double> mant(-1.0, 1.0);
   std::uniform_int_distribution<int> expo(-320, 1);
@@ -77,8 +90,9 @@ TEST(RecordFiles, NumbersAreDecimalOnly) {
   EXPECT_TRUE(parse_decimal("1.5D+02", v) && v == 150.0);
   for (const char* bad : {"", "0x10", "0x1p-7", "inf", "-inf", "nan", "1e400", ".", "e5", "1e", "1.2.3", "1,5", " 1"})
     EXPECT_FALSE(parse_decimal(bad, v)) << bad;
-  EXPECT_NE(error_of("a\nb\nACCELERATION IN UNITS OF G\nNPTS= 3, DT= 0.01\n 0x10 0 0\n", true).find("'0x10' is not a number"),
-            std::string::npos);
+  EXPECT_NE(
+      error_of("a\nb\nACCELERATION IN UNITS OF G\nNPTS= 3, DT= 0.01\n 0x10 0 0\n", true).find("'0x10' is not a number"),
+      std::string::npos);
   EXPECT_NE(error_of("a\nb\nACCELERATION IN UNITS OF G\nNPTS= 3, DT= 0x1p-7\n 0 0 0\n", true).find("line 4"),
             std::string::npos);
   EXPECT_NE(error_of("t,a\n0,0\n0.01,inf\n", false).find("r.csv:3"), std::string::npos);

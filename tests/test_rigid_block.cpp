@@ -65,11 +65,16 @@ TEST(RigidBlock, OnsetMechanismTable) {
   const double as = a_star(s, 0.5);
   ASSERT_NEAR(as, 1.4642857142857142, 1e-12);
   const Case cases[] = {
-      {0.2, 0.15, 0.19, Mechanism::Rest},      {0.2, 0.15, 0.21, Mechanism::Slide},
-      {0.2, 0.2, -0.21, Mechanism::Slide},     {0.5, 0.5, 0.24, Mechanism::Rest},
-      {0.5, 0.5, 0.26, Mechanism::Rock},       {0.5, 0.5, -0.26, Mechanism::Rock},
-      {0.5, 0.5, as * (1 - 1e-6), Mechanism::Rock}, {0.5, 0.4, as * (1 + 1e-6), Mechanism::SlideRock},
-      {0.5, 0.5, 3.0, Mechanism::SlideRock},   {5.0, 5.0, 10.0, Mechanism::Rock},  // A* denominator < 0
+      {0.2, 0.15, 0.19, Mechanism::Rest},
+      {0.2, 0.15, 0.21, Mechanism::Slide},
+      {0.2, 0.2, -0.21, Mechanism::Slide},
+      {0.5, 0.5, 0.24, Mechanism::Rest},
+      {0.5, 0.5, 0.26, Mechanism::Rock},
+      {0.5, 0.5, -0.26, Mechanism::Rock},
+      {0.5, 0.5, as * (1 - 1e-6), Mechanism::Rock},
+      {0.5, 0.4, as * (1 + 1e-6), Mechanism::SlideRock},
+      {0.5, 0.5, 3.0, Mechanism::SlideRock},
+      {5.0, 5.0, 10.0, Mechanism::Rock},  // A* denominator < 0
   };
   for (const Case& c : cases) {
     const RigidResult r = simulate_rigid(block(0.3, 1.2, c.fs, c.fk), constant_h(c.A), {}, rigid_run_to(1e-3));
@@ -216,7 +221,8 @@ TEST(RigidBlock, EnergyBalanceUnderARecord) {
   g.vertical.amplitude = 0.2;
   g.vertical.frequency = 3.1;
   for (auto law : {ImpactLaw::Housner, ImpactLaw::Newton}) {
-    const RigidBlockParams p = block(0.35, 1.2, 0.3, 0.25, law, law == ImpactLaw::Newton ? std::optional(0.4) : std::nullopt);
+    const RigidBlockParams p =
+        block(0.35, 1.2, 0.3, 0.25, law, law == ImpactLaw::Newton ? std::optional(0.4) : std::nullopt);
     const RigidResult r = simulate_rigid(p, g, {}, rigid_run_to(30.0));
     EXPECT_GT(r.mode_changes, 5);
     EXPECT_GT(r.impacts, 3);

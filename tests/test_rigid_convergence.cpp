@@ -68,9 +68,7 @@ RigidTimes rigid_reference() {
 // Stops the Winkler run at the first slide reversal.
 struct UntilReversal : SimulationSink {
   bool done = false;
-  void on_event(const WinklerBlock&, const EventRecord& e) override {
-    done |= e.kind == EventKind::SlideReversal;
-  }
+  void on_event(const WinklerBlock&, const EventRecord& e) override { done |= e.kind == EventKind::SlideReversal; }
   bool keep_going() const override { return !done; }
 };
 

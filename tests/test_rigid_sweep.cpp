@@ -16,9 +16,26 @@ using nlohmann::json;
 namespace {
 
 std::vector<std::string> rect_sweep(const std::string& out, const std::string& threads) {
-  return {"sweep", "--model", "housner", "--width", "0.25", "--height", "1.5", "--ground-h-pulse", "rect",
-          "--axis", "ground_h_duration=0.1:1.0:6", "--axis", "ground_h_amplitude=0.12:0.6:8", "--t-end", "6",
-          "-o", out, "--threads", threads, "--quiet"};
+  return {"sweep",
+          "--model",
+          "housner",
+          "--width",
+          "0.25",
+          "--height",
+          "1.5",
+          "--ground-h-pulse",
+          "rect",
+          "--axis",
+          "ground_h_duration=0.1:1.0:6",
+          "--axis",
+          "ground_h_amplitude=0.12:0.6:8",
+          "--t-end",
+          "6",
+          "-o",
+          out,
+          "--threads",
+          threads,
+          "--quiet"};
 }
 
 }  // namespace
@@ -40,10 +57,11 @@ TEST(RigidSweep, SameBytesForAnyThreadCount) {
 
 TEST(RigidSweep, DefinitionFileEqualsFlags) {
   TmpDir d("rsweepfile");
-  std::ofstream(d.path + "/def.toml") << "model = \"housner\"\n[physical]\nwidth = 0.25\nheight = 1.5\n"
-                                      << "[ground.horizontal]\npulse = \"rect\"\n[run]\nt_end = 6\n"
-                                      << "[axes]\nground_h_duration = \"0.1:1.0:6\"\nground_h_amplitude = \"0.12:0.6:8\"\n"
-                                      << "[output]\ncsv = \"f.csv\"\n";
+  std::ofstream(d.path + "/def.toml")
+      << "model = \"housner\"\n[physical]\nwidth = 0.25\nheight = 1.5\n"
+      << "[ground.horizontal]\npulse = \"rect\"\n[run]\nt_end = 6\n"
+      << "[axes]\nground_h_duration = \"0.1:1.0:6\"\nground_h_amplitude = \"0.12:0.6:8\"\n"
+      << "[output]\ncsv = \"f.csv\"\n";
   ASSERT_EQ(run_cli(rect_sweep("a.csv", "2"), d.path).code, 0);
   const auto r = run_cli({"sweep", "def.toml", "--quiet"}, d.path);
   ASSERT_EQ(r.code, 0) << r.err;
@@ -76,7 +94,8 @@ TEST(RigidSweep, BadAxesAreUsageErrors) {
   TmpDir d("rsweepbad");
   for (const std::vector<std::string>& args :
        {std::vector<std::string>{"sweep", "--model", "rigid", "--width", "0.3", "--height", "1", "--axis", "k=1,2"},
-        std::vector<std::string>{"sweep", "--model", "housner", "--width", "0.3", "--height", "1", "--axis", "mu=0.1,0.2"},
+        std::vector<std::string>{"sweep", "--model", "housner", "--width", "0.3", "--height", "1", "--axis",
+                                 "mu=0.1,0.2"},
         std::vector<std::string>{"sweep", "--model", "rigid", "--width", "0.3", "--height", "1", "--axis", "mu_k"},
         std::vector<std::string>{"sweep", "--model", "rigid", "--axis", "mu=0.1"},
         std::vector<std::string>{"sweep", "--model", "rigid", "--width", "0.3", "--height", "1", "--k", "1e3"},

@@ -62,8 +62,13 @@ TEST(Settings, OptionsOfAnotherFamilyAreRefused) {
 // table carries the family's columns.
 TEST(Settings, ScenarioRunEqualsTheDirectRun) {
   Settings s;
-  for (auto [k, v] : {std::pair{"model", "rigid"}, {"width", "0.3"}, {"height", "1.2"}, {"mu-s", "0.4"},
-                      {"ground-h-amplitude", "0.3"}, {"ground-h-frequency", "2"}, {"t-end", "4"}})
+  for (auto [k, v] : {std::pair{"model", "rigid"},
+                      {"width", "0.3"},
+                      {"height", "1.2"},
+                      {"mu-s", "0.4"},
+                      {"ground-h-amplitude", "0.3"},
+                      {"ground-h-frequency", "2"},
+                      {"t-end", "4"}})
     s.add(k, v);
   const Scenario sc = scenario_from(s);
   ColumnTable table;
@@ -97,7 +102,10 @@ TEST(Settings, ScenarioRunEqualsTheDirectRun) {
 
 TEST(Settings, TooLongATrajectoryIsRefusedBeforeRunning) {
   Settings s;
-  for (auto [k, v] : {std::pair{"model", "housner"}, {"width", "0.3"}, {"height", "1.5"}, {"t-end", "100"},
+  for (auto [k, v] : {std::pair{"model", "housner"},
+                      {"width", "0.3"},
+                      {"height", "1.5"},
+                      {"t-end", "100"},
                       {"output-interval", "1e-6"}})
     s.add(k, v);
   ColumnTable table;

@@ -58,8 +58,8 @@ inline BlockStateVec upright_at_rest(double h) {
 }
 
 // The completed state of a dense-output segment at time t.
-inline BlockStateVec completed_state(const WinklerBlock& m, const DenseSegment<kStateDim>& seg,
-                                     const BlockMode& mode, double t) {
+inline BlockStateVec completed_state(const WinklerBlock& m, const DenseSegment<kStateDim>& seg, const BlockMode& mode,
+                                     double t) {
   BlockStateVec z;
   seg.eval(t, z);
   m.complete(mode, z);

@@ -250,8 +250,8 @@ TEST(SweepCli, MpiEveryCommandDistributesOrRefuses) {
   ASSERT_NE(at, std::string::npos) << help.out;
   std::istringstream lines(help.out.substr(at));
   std::string line;
-  const std::set<std::string> distribute = {"sweep",           "map", "survival", "spectrum", "response-curve",
-                                            "rocking-spectrum", "fragility"};
+  const std::set<std::string> distribute = {
+      "sweep", "map", "survival", "spectrum", "response-curve", "rocking-spectrum", "fragility"};
   int refused = 0, ran = 0;
   while (std::getline(lines, line)) {
     std::istringstream words(line);

@@ -11,9 +11,9 @@ using sweep_test::TmpDir;
 
 TEST(SweepOutsideModel, PointIsReportedAndTheSweepGoesOn) {
   TmpDir d("outside");
-  const auto r = run_cli({"sweep", "--k", "1,1e4", "--r", "1", "--mu", "0.3", "--ic", "ic1", "--t-end", "2", "-o",
-                          "o.csv", "--quiet"},
-                         d.path);
+  const auto r = run_cli(
+      {"sweep", "--k", "1,1e4", "--r", "1", "--mu", "0.3", "--ic", "ic1", "--t-end", "2", "-o", "o.csv", "--quiet"},
+      d.path);
   ASSERT_EQ(r.code, 0) << r.err;
   const std::string csv = slurp(d.path + "/o.csv");
   std::istringstream in(csv);

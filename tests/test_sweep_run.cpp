@@ -39,8 +39,10 @@ SweepRunOptions quiet(int threads) {
 std::vector<std::string> cells_of(const std::string& line) {
   std::vector<std::string> out(1);
   for (char c : line) {
-    if (c == ',') out.emplace_back();
-    else if (c != '\n') out.back() += c;
+    if (c == ',')
+      out.emplace_back();
+    else if (c != '\n')
+      out.back() += c;
   }
   return out;
 }
@@ -110,7 +112,9 @@ struct CountingSink : SimulationSink {
 struct CountingMetric : PointMetric {
   std::vector<std::string> columns() const override { return {"segments", "segment_time", "label"}; }
   bool needs_events() const override { return true; }
-  std::unique_ptr<SimulationSink> make_sink(const PointContext&) const override { return std::make_unique<CountingSink>(); }
+  std::unique_ptr<SimulationSink> make_sink(const PointContext&) const override {
+    return std::make_unique<CountingSink>();
+  }
   void compute(const PointContext& ctx, const SimulationResult& r, const SimulationSink* sink,
                std::vector<MetricValue>& out) const override {
     const auto& s = static_cast<const CountingSink&>(*sink);
@@ -297,9 +301,9 @@ TEST(SweepRun, AlteredJournalCellsAreRefused) {
 TEST(SweepRun, JournalOfTheEarlierFormatIsNamed) {
   const sweep_test::TmpDir tmp("sweep-v1");
   const SweepEvaluator ev(small_spec(tmp.path + "/s.csv"));
-  std::ofstream(tmp.path + "/s.csv.journal") << "# blockdyn sweep journal v1 fingerprint=" << ev.fingerprint()
-                                             << " points=" << ev.size() << "\n"
-                                             << ev.header();
+  std::ofstream(tmp.path + "/s.csv.journal")
+      << "# blockdyn sweep journal v1 fingerprint=" << ev.fingerprint() << " points=" << ev.size() << "\n"
+      << ev.header();
   SweepRunOptions o = quiet(1);
   o.resume = true;
   try {

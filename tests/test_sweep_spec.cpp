@@ -13,10 +13,7 @@
 using namespace blockdyn;
 using blockdyn::test::error_of;
 
-namespace {
-
-
-}  // namespace
+namespace {}  // namespace
 
 TEST(SweepAxis, LogRangeHasExactDecadesAndEndpoints) {
   const SweepAxis a = parse_axis("k", "1e2:1e8:7", AxisSpacing::Log);
@@ -127,9 +124,8 @@ TEST(SweepSpec, TomlErrorsNameTheKey) {
 
 TEST(SweepSpec, PerPointInitialStateErrorsNameThePoint) {
   // w0 = 0.3 exceeds alpha = atan(0.25) = 0.245 at the second r value only.
-  const std::string e = error_of([] {
-    validate(parse_sweep("[axes]\nr = [0.5, 0.25]\n[initial]\nset = 'ic1'\nw0 = 0.3\n", "t.toml"));
-  });
+  const std::string e =
+      error_of([] { validate(parse_sweep("[axes]\nr = [0.5, 0.25]\n[initial]\nset = 'ic1'\nw0 = 0.3\n", "t.toml")); });
   EXPECT_NE(e.find("point 1 (k=100000, r=0.25"), std::string::npos) << e;
   EXPECT_NE(e.find("w0"), std::string::npos) << e;
   // The fraction form scales with alpha and is valid everywhere.

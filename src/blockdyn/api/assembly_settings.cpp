@@ -46,7 +46,7 @@ Values values_of(const Settings& s) {
 void check_values(const Settings& s, const Values& v) {
   if (v.file.empty() == v.preset.empty())
     throw std::invalid_argument(v.file.empty() ? "give --preset block|trilith|column|arch or an assembly FILE.toml"
-                                 : "give either --preset or an assembly file, not both");
+                                               : "give either --preset or an assembly file, not both");
   require_in_range("phi-s", v.phi_s, 0, 90);
   require_in_range("phi-l", v.phi_l, 0, 90);
   // The kinetic angles lie between 0 and the static ones (the file's, or the options').
@@ -67,10 +67,12 @@ void check_values(const Settings& s, const Values& v) {
   if (v.rigid && scheme == "time-stepping")
     for (const char* n : {"rtol", "atol", "method"})
       if (s.has(n))
-        throw std::invalid_argument(std::string("--") + n + " belongs to --scheme event-driven (time-stepping has --step)");
+        throw std::invalid_argument(std::string("--") + n +
+                                    " belongs to --scheme event-driven (time-stepping has --step)");
   if (!v.rigid && s.has("step")) throw std::invalid_argument("--step belongs to --contact rigid");
   if (s.flag("columns-rock-only") && scheme == "event-driven" && s.has("scheme"))
-    throw std::invalid_argument("--columns-rock-only (seed 001's 5-DOF restriction) is integrated by --scheme time-stepping only");
+    throw std::invalid_argument(
+        "--columns-rock-only (seed 001's 5-DOF restriction) is integrated by --scheme time-stepping only");
   require_in_range("collapse-rotation", v.collapse_rotation, 0, 10, false);
   require_in_range("min-bearing", v.min_bearing, 0, 1e3);
   require_in_range("g", v.g, 0, 1e3, false);
@@ -118,7 +120,8 @@ Assembly from_preset(const Settings& s, const Values& v) {
   set_kinetic(o.ground_law, v.phi_s_kinetic, "phi-s-kinetic");
   set_kinetic(o.block_law, v.phi_l_kinetic, "phi-l-kinetic");
   o.rigid_contacts = v.rigid;
-  if (v.preset == "arch" && s.has("tilt")) throw std::invalid_argument("--tilt belongs to --preset block|trilith|column");
+  if (v.preset == "arch" && s.has("tilt"))
+    throw std::invalid_argument("--tilt belongs to --preset block|trilith|column");
   Assembly a = make_preset(v.preset, o);
   a.g = v.g;
   return a;
@@ -257,8 +260,9 @@ AssemblySetup assembly_from(const Settings& s) {
   if (setup.assembly.contact == "rigid" && effective_scheme(setup.assembly, o) == AssemblyScheme::TimeStepping)
     for (const char* n : {"rtol", "atol", "method"})
       if (s.has(n))
-        throw std::invalid_argument(std::string("--") + n + " belongs to --scheme event-driven (time-stepping, the rigid law's " +
-                      "default above " + std::to_string(kEventDrivenMaxBlocks) + " blocks, has --step)");
+        throw std::invalid_argument(std::string("--") + n +
+                                    " belongs to --scheme event-driven (time-stepping, the rigid law's " +
+                                    "default above " + std::to_string(kEventDrivenMaxBlocks) + " blocks, has --step)");
   apply_integrator_settings(s, o.integrator);
   o.output_interval = s.number("output-interval", o.output_interval);
   validate(o);

@@ -56,11 +56,12 @@ const char* const kTimeColumn = "first flight time; t_end when the block did not
 
 std::vector<StudyOption> flight_time_options() {
   return with_run_options({{"r", "aspect ratio (> 0)", "0.5"},
-                                {"mu", "friction coefficient (>= 0)", "0.2"},
-                                {"ic", "initial conditions: ic1, ic2, ic1:F (w0 = F alpha)", "ic1"},
-                                {"k-min", "lowest k (log grid)", "1000"},
-                                {"k-max", "highest k", "1e9"},
-                                {"points", "number of k values", "120"}}, "30");
+                           {"mu", "friction coefficient (>= 0)", "0.2"},
+                           {"ic", "initial conditions: ic1, ic2, ic1:F (w0 = F alpha)", "ic1"},
+                           {"k-min", "lowest k (log grid)", "1000"},
+                           {"k-max", "highest k", "1e9"},
+                           {"points", "number of k values", "120"}},
+                          "30");
 }
 
 StudyReport flight_time(const Settings& given, const StudyRequest&) {
@@ -114,25 +115,26 @@ StudyReport flight_time(const Settings& given, const StudyRequest&) {
 // ------------------------------------------------------------------ flight-boundary
 
 std::vector<StudyOption> flight_boundary_options() {
-  return with_run_options({
-      {"ic", "initial conditions: ic1, ic2, ic1:F", "ic1"},
-      {"mu", "friction coefficient (>= 0)", "0.2"},
-      {"r-min", "lowest aspect ratio (log grid)", "0.05"},
-      {"r-max", "highest aspect ratio", "1"},
-      {"points", "number of r values", "12"},
-      {"n", "k_critical_n for these n (comma-separated)", "2,10"},
-      {"high-criterion",
-       "k_high 'first impact' criterion: w_negative (ic1), ihor2, both (ic1), none; default both for ic1, ihor2 "
-       "for ic2",
-       ""},
-      {"k-lo", "lowest k searched", Settings::exact(BoundarySearchOptions{}.k_lo)},
-      {"k-hi", "highest k searched", Settings::exact(BoundarySearchOptions{}.k_hi)},
-      {"per-decade", "coarse grid points per decade of k", Settings::exact(BoundarySearchOptions{}.per_decade)},
-      {"rel-tol", "relative tolerance of the bisection in k", Settings::exact(BoundarySearchOptions{}.bisect.rel_tol)},
-      // Smooth curves (docs/flight.md); 0 restores the coarse search.
-      {"fine-per-decade", "fine grid points per decade scanned next to each boundary (0: coarse search only)", "48"},
-      {"fine-span", "decades of k next to the boundary that the fine grid must find clean",
-       Settings::exact(BoundarySearchOptions{}.refine.span_decades)}}, "100");
+  return with_run_options(
+      {{"ic", "initial conditions: ic1, ic2, ic1:F", "ic1"},
+       {"mu", "friction coefficient (>= 0)", "0.2"},
+       {"r-min", "lowest aspect ratio (log grid)", "0.05"},
+       {"r-max", "highest aspect ratio", "1"},
+       {"points", "number of r values", "12"},
+       {"n", "k_critical_n for these n (comma-separated)", "2,10"},
+       {"high-criterion",
+        "k_high 'first impact' criterion: w_negative (ic1), ihor2, both (ic1), none; default both for ic1, ihor2 "
+        "for ic2",
+        ""},
+       {"k-lo", "lowest k searched", Settings::exact(BoundarySearchOptions{}.k_lo)},
+       {"k-hi", "highest k searched", Settings::exact(BoundarySearchOptions{}.k_hi)},
+       {"per-decade", "coarse grid points per decade of k", Settings::exact(BoundarySearchOptions{}.per_decade)},
+       {"rel-tol", "relative tolerance of the bisection in k", Settings::exact(BoundarySearchOptions{}.bisect.rel_tol)},
+       // Smooth curves (docs/flight.md); 0 restores the coarse search.
+       {"fine-per-decade", "fine grid points per decade scanned next to each boundary (0: coarse search only)", "48"},
+       {"fine-span", "decades of k next to the boundary that the fine grid must find clean",
+        Settings::exact(BoundarySearchOptions{}.refine.span_decades)}},
+      "100");
 }
 
 // The first-impact criteria of k_high (--high-criterion; default both for ic1, else ihor2).
@@ -369,13 +371,14 @@ StudyReport kmin_study(const Settings& given, const StudyRequest&) {
 
 std::vector<StudyOption> flight_map_options() {
   return with_run_options({{"ic", "initial conditions: ic1, ic2, ic1:F", "ic1"},
-                                {"mu", "friction coefficient (>= 0)", "0.2"},
-                                {"r-min", "lowest aspect ratio (log grid)", "0.05"},
-                                {"r-max", "highest aspect ratio", "1"},
-                                {"r-points", "number of r values", "24"},
-                                {"k-min", "lowest k (log grid)", "100"},
-                                {"k-max", "highest k", "1e10"},
-                                {"k-points", "number of k values", "48"}}, "30");
+                           {"mu", "friction coefficient (>= 0)", "0.2"},
+                           {"r-min", "lowest aspect ratio (log grid)", "0.05"},
+                           {"r-max", "highest aspect ratio", "1"},
+                           {"r-points", "number of r values", "24"},
+                           {"k-min", "lowest k (log grid)", "100"},
+                           {"k-max", "highest k", "1e10"},
+                           {"k-points", "number of k values", "48"}},
+                          "30");
 }
 
 StudyReport flight_map(const Settings& given, const StudyRequest&) {

@@ -30,7 +30,8 @@ void check_values(const Settings& s) {
 }
 
 ForcedModel block_model(const Settings& s, const std::string& model, bool housner) {
-  if (!s.has("width") || !s.has("height")) throw std::invalid_argument("--width and --height are needed for --model " + model);
+  if (!s.has("width") || !s.has("height"))
+    throw std::invalid_argument("--width and --height are needed for --model " + model);
   RigidBlockParams rp;
   rp.shape = {*s.number("width"), *s.number("height"), s.number("mass", 1.0), s.number("g", 9.81)};
   const double mu_s = s.number("mu-s", 0.7);

@@ -10,9 +10,9 @@
 
 #include "blockdyn/analysis/forced/cycle_detection.hpp"
 
-#include "blockdyn/base/number_text.hpp"
 #include "blockdyn/analysis/forced/impact_map.hpp"
 #include "blockdyn/api/harmonic_run.hpp"
+#include "blockdyn/base/number_text.hpp"
 #include "blockdyn/base/range_check.hpp"
 
 namespace blockdyn {

@@ -103,7 +103,8 @@ json limit_analysis_run(const Settings& given) {
   given.require_known(limit_analysis_options(), {"file"}, "limit-analysis");
   const auto start = std::chrono::steady_clock::now();
   const long direction = given.integer("direction", 1);
-  if (direction != 1 && direction != -1) throw std::invalid_argument("direction = " + std::to_string(direction) + " must be 1 or -1");
+  if (direction != 1 && direction != -1)
+    throw std::invalid_argument("direction = " + std::to_string(direction) + " must be 1 or -1");
   Settings s;
   for (const std::string& n : given.names())
     if (n != "direction" && n != "min-thickness" && n != "tolerance")

@@ -27,8 +27,8 @@ struct MapBoundaryRow {
 };
 
 // Stability boundary (k1 for ic1, k2 for ic2), k_high and k_critical_n at one aspect ratio.
-MapBoundaryRow boundary_row(double inv_r, double mu, const IcChoice& ic, long n, const StudyRunOptions& run, double k_lo,
-                         double k_hi, double fine_per_decade) {
+MapBoundaryRow boundary_row(double inv_r, double mu, const IcChoice& ic, long n, const StudyRunOptions& run,
+                            double k_lo, double k_hi, double fine_per_decade) {
   MapBoundaryRow b;
   b.inv_r = inv_r;
   b.r = 1.0 / inv_r;
@@ -61,9 +61,11 @@ SweepSpec map_spec(const Settings& s) {
   require_in_range("t-end", t_end, 0.0, kMaxTime, false);
   const long boundary_points = s.integer("boundary-points", 10), critical_n = s.integer("critical-n", 10);
   if (boundary_points < 0 || boundary_points > 1000)
-    throw std::invalid_argument("boundary-points = " + std::to_string(boundary_points) + " is out of range: must be in [0, 1000]");
+    throw std::invalid_argument("boundary-points = " + std::to_string(boundary_points) +
+                                " is out of range: must be in [0, 1000]");
   require_in_range("fine-per-decade", s.number("fine-per-decade", 48), 0.0, 1000);
-  if (critical_n < 2) throw std::invalid_argument("critical-n = " + std::to_string(critical_n) + " is out of range: must be >= 2");
+  if (critical_n < 2)
+    throw std::invalid_argument("critical-n = " + std::to_string(critical_n) + " is out of range: must be >= 2");
   const IcChoice ic = parse_ic_choice(s.text("ic", "ic1"));
   SweepSpec spec;
   spec.k = parse_axis("k", s.text("k", "1e1:1e8:40"), AxisSpacing::Log);

@@ -51,32 +51,34 @@ double record_bytes(const Plan& p) { return 200.0 + 25.2 * double(sample_count(p
 
 // Work and disk are bounded before anything runs: a record's filter terms, and the suite's size
 // against a budget and against the free space where it goes.
-constexpr double kMaxRecordTerms = 2e10;       // about a minute of one core per record
+constexpr double kMaxRecordTerms = 2e10;              // about a minute of one core per record
 constexpr double kMaxSuiteBytes = 16.0 * (1u << 30);  // 16 GiB of .AT2 files
 void check_work(const Plan& p) {
   if (p.background) {
     const double terms = rezaeian_record_cost(p.rz);
     if (terms > kMaxRecordTerms)
       throw std::invalid_argument("zeta-f = " + number_text(p.rz.zeta_f) + ", f-mid = " + number_text(p.rz.f_mid) +
-                    " Hz, f-slope = " + number_text(p.rz.f_slope) + " Hz/s: the filter's memory makes a record cost " +
-                    number_text(terms, 3) + " kernel terms (at most 2e10): raise --zeta-f or the filter frequency, or "
-                    "shorten --t-end");
+                                  " Hz, f-slope = " + number_text(p.rz.f_slope) +
+                                  " Hz/s: the filter's memory makes a record cost " + number_text(terms, 3) +
+                                  " kernel terms (at most 2e10): raise --zeta-f or the filter frequency, or "
+                                  "shorten --t-end");
   }
   const double bytes = double(p.count) * record_bytes(p);
   if (bytes > kMaxSuiteBytes)
-    throw std::invalid_argument("count = " + std::to_string(p.count) + " records of " + std::to_string(sample_count(p)) +
-                  " samples need " + number_text(std::round(bytes / 1e6)) +
-                  " MB of .AT2 files: at most 16 GiB per suite (lower --count or --t-end, or raise --dt)");
+    throw std::invalid_argument(
+        "count = " + std::to_string(p.count) + " records of " + std::to_string(sample_count(p)) + " samples need " +
+        number_text(std::round(bytes / 1e6)) +
+        " MB of .AT2 files: at most 16 GiB per suite (lower --count or --t-end, or raise --dt)");
   struct statvfs fs {};
   const auto slash = p.out.find_last_of('/');
   const std::string where = ::access(p.out.c_str(), F_OK) == 0 ? p.out
-                            : slash == std::string::npos      ? std::string(".")
-                                                              : p.out.substr(0, std::max<std::size_t>(slash, 1));
+                            : slash == std::string::npos       ? std::string(".")
+                                                               : p.out.substr(0, std::max<std::size_t>(slash, 1));
   if (::statvfs(where.c_str(), &fs) == 0) {
     const double free_bytes = double(fs.f_bavail) * double(fs.f_frsize);
     if (bytes > free_bytes)
-      throw std::invalid_argument("out = '" + p.out + "': the suite needs " + number_text(std::round(bytes / 1e6)) + " MB and " +
-                    number_text(std::round(free_bytes / 1e6)) + " MB are free there");
+      throw std::invalid_argument("out = '" + p.out + "': the suite needs " + number_text(std::round(bytes / 1e6)) +
+                                  " MB and " + number_text(std::round(free_bytes / 1e6)) + " MB are free there");
   }
 }
 
@@ -97,7 +99,8 @@ Plan plan_of(const Settings& given) {
   if (p.background) {
     for (const char* n : kRezaeianOptions)
       if (!s.has(n) && std::string(n) != "f-slope" && std::string(n) != "zeta-f")
-        throw std::invalid_argument(std::string("--") + n + ": the rezaeian model needs --arias --d5-95 --t-mid --f-mid");
+        throw std::invalid_argument(std::string("--") + n +
+                                    ": the rezaeian model needs --arias --d5-95 --t-mid --f-mid");
     p.rz.arias = *s.number("arias");
     p.rz.d5_95 = *s.number("d5-95");
     p.rz.t_mid = *s.number("t-mid");
@@ -107,7 +110,8 @@ Plan plan_of(const Settings& given) {
     p.rz.f_highpass = s.number("f-highpass", 0.2);
   } else {
     for (const char* n : kRezaeianOptions)
-      if (s.has(n)) throw std::invalid_argument(std::string("--") + n + " needs the background's --arias (rezaeian targets)");
+      if (s.has(n))
+        throw std::invalid_argument(std::string("--") + n + " needs the background's --arias (rezaeian targets)");
   }
   if (p.pulse) {
     p.pp.pgv = s.number("pulse-pgv", 0.0);
@@ -129,7 +133,8 @@ Plan plan_of(const Settings& given) {
     require_in_range("g", p.rz.g, 0, 1e3, false);
   }
   p.count = s.integer("count", 1);
-  if (p.count < 1 || p.count > 100000) throw std::invalid_argument("count = " + std::to_string(p.count) + ": must be in [1, 100000]");
+  if (p.count < 1 || p.count > 100000)
+    throw std::invalid_argument("count = " + std::to_string(p.count) + ": must be in [1, 100000]");
   const long seed = s.integer("seed", 1);
   if (seed < 0) throw std::invalid_argument("seed = " + std::to_string(seed) + ": must be >= 0");
   p.seed = std::uint64_t(seed);
@@ -175,8 +180,8 @@ void make_directory(const std::string& dir, bool overwrite) {
     if (!S_ISDIR(st.st_mode)) throw std::invalid_argument("out = '" + dir + "' exists and is not a directory");
     const bool has_suite = ::stat((dir + "/motions.json").c_str(), &st) == 0 || !suite_files(dir).empty();
     if (has_suite && !overwrite)
-      throw std::invalid_argument("out = '" + dir +
-                    "' already holds a suite (motions.json or records): give --overwrite or another directory");
+      throw std::invalid_argument(
+          "out = '" + dir + "' already holds a suite (motions.json or records): give --overwrite or another directory");
     return;
   }
   if (::mkdir(dir.c_str(), 0777) != 0)
@@ -188,14 +193,14 @@ void check_samples(const Plan& p, const std::vector<double>& a, std::size_t k) {
   double peak = 0.0;
   for (double v : a) {
     if (!std::isfinite(v))
-      throw std::invalid_argument("record " + std::to_string(k + 1) + ": the targets give samples that are not finite numbers");
+      throw std::invalid_argument("record " + std::to_string(k + 1) +
+                                  ": the targets give samples that are not finite numbers");
     peak = std::fmax(peak, std::fabs(v));
   }
   if (peak > 100.0)
-    throw std::invalid_argument((p.background ? "record " + std::to_string(k + 1) : std::string("the pulse")) + " peaks at " +
-                  number_text(peak, 4) +
-                  " g, beyond the 100 g a record may hold: " +
-                  (p.pulse ? "lower --pulse-pgv or lengthen --pulse-period" : "lower --arias"));
+    throw std::invalid_argument((p.background ? "record " + std::to_string(k + 1) : std::string("the pulse")) +
+                                " peaks at " + number_text(peak, 4) + " g, beyond the 100 g a record may hold: " +
+                                (p.pulse ? "lower --pulse-pgv or lengthen --pulse-period" : "lower --arias"));
 }
 
 double median(std::vector<double> v) {
@@ -264,8 +269,8 @@ json motion_generate(const Settings& s, const std::function<void(std::size_t, st
       if (p.pulse)
         for (std::size_t i = 0; i < n; ++i) r.a[i] += pulse_acceleration(p.pp, double(i) * p.rz.dt, p.rz.g);
       check_samples(p, r.a, k);
-      const std::string text = at2_text(
-          r.a, p.rz.dt, p.model + " record " + std::to_string(k + 1) + " of seed " + std::to_string(p.seed));
+      const std::string text =
+          at2_text(r.a, p.rz.dt, p.model + " record " + std::to_string(k + 1) + " of seed " + std::to_string(p.seed));
       std::ofstream out(p.out + "/" + names[k] + tmp_suffix, std::ios::binary | std::ios::trunc);
       out << text;
       out.flush();
@@ -291,7 +296,8 @@ json motion_generate(const Settings& s, const std::function<void(std::size_t, st
     return f.size() > tmp_suffix.size() && f.compare(f.size() - tmp_suffix.size(), tmp_suffix.size(), tmp_suffix) == 0;
   };
   for (const std::string& old : suite_files(p.out))
-    if (!ours(old) && std::find(names.begin(), names.end(), old) == names.end()) std::remove((p.out + "/" + old).c_str());
+    if (!ours(old) && std::find(names.begin(), names.end(), old) == names.end())
+      std::remove((p.out + "/" + old).c_str());
   for (const std::string& name : names)
     if (std::rename((p.out + "/" + name + tmp_suffix).c_str(), (p.out + "/" + name).c_str()) != 0)
       throw std::runtime_error("cannot rename '" + p.out + "/" + name + tmp_suffix + "': " + std::strerror(errno));

@@ -40,7 +40,6 @@ std::vector<double> periods_of(const Settings& s) {
   return p;
 }
 
-
 }  // namespace
 
 const std::vector<StudyOption>& motion_info_options() {

@@ -10,8 +10,8 @@
 #include "blockdyn/analysis/forced/forced_model.hpp"
 #include "blockdyn/analysis/sweep/grid_table.hpp"
 #include "blockdyn/api/motion_info.hpp"
-#include "blockdyn/base/range_check.hpp"
 #include "blockdyn/base/number_text.hpp"
+#include "blockdyn/base/range_check.hpp"
 #include "blockdyn/io/json_io.hpp"
 #include "blockdyn/model/rigid/rigid_params.hpp"
 
@@ -46,7 +46,7 @@ std::vector<double> p_values(const StudyOptions& o) {
   const bool range = o.given("p-min") || o.given("p-max") || o.given("p-points");
   if (list == range)
     throw std::invalid_argument(list ? "give --p-values or --p-min/--p-max/--p-points, not both"
-                       : "give --p-values P1,P2,... or --p-min --p-max --p-points");
+                                     : "give --p-values P1,P2,... or --p-min --p-max --p-points");
   std::vector<double> p;
   if (list) {
     p = o.numbers("p-values");
@@ -103,7 +103,8 @@ json rows_json(const Table& t, const Axes& ax) {
 GridStudy rocking_grid(const Settings& given, const std::string& output) {
   const StudyOptions so(given, rocking_spectrum_options());
   const std::string model = so.text("model");
-  if (model != "housner" && model != "rigid") throw std::invalid_argument("model = '" + model + "' is not one of: housner, rigid");
+  if (model != "housner" && model != "rigid")
+    throw std::invalid_argument("model = '" + model + "' is not one of: housner, rigid");
   if (!so.given("alpha")) throw std::invalid_argument("alpha: give the slenderness angle [rad]");
   const double alpha = so.number("alpha");
   require_in_range("alpha", alpha, 0, M_PI / 4, false);
@@ -186,7 +187,11 @@ GridStudy rocking_grid(const Settings& given, const std::string& output) {
     rep.plot_script = "plot_rocking_spectrum.py";
     std::string record = definition.at("record").get<std::string>();
     record = record.substr(record.find_last_of('/') + 1);  // npos + 1 = 0: the whole name
-    rep.plot_args = {"@csv:table", "@plot", "--alpha", format_double(alpha), "--title",
+    rep.plot_args = {"@csv:table",
+                     "@plot",
+                     "--alpha",
+                     format_double(alpha),
+                     "--title",
                      definition.at("model").get<std::string>() + " blocks of alpha = " + number_text(alpha, 4) +
                          " rad under " + record};
     append_text(rep.text, "rocking spectrum: %zu points, %zu overturned", j["rows"].size(), n_over);

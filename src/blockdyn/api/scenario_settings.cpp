@@ -35,15 +35,18 @@ void check_family_options(const Settings& s, const std::string& model) {
   const bool rigid = is_rigid_family(model);
   if (rigid) {
     for (const char* n : {"r", "k", "mu", "ic", "units"})
-      if (s.has(n)) throw std::invalid_argument(std::string("--") + n + " belongs to the winkler model, not to --model " + model);
+      if (s.has(n))
+        throw std::invalid_argument(std::string("--") + n + " belongs to the winkler model, not to --model " + model);
   } else {
     for (const char* n : {"restitution", "mu-s", "mu-k", "impact"})
-      if (s.has(n)) throw std::invalid_argument(std::string("--") + n + " belongs to --model housner|rigid, not to winkler");
+      if (s.has(n))
+        throw std::invalid_argument(std::string("--") + n + " belongs to --model housner|rigid, not to winkler");
   }
   if (model == "housner")
     for (const char* n : {"mu-s", "mu-k", "impact", "x0", "y0", "vx0", "vy0"})
       if (s.has(n))
-        throw std::invalid_argument(std::string("--") + n + " belongs to --model rigid (housner has one degree of freedom)");
+        throw std::invalid_argument(std::string("--") + n +
+                                    " belongs to --model rigid (housner has one degree of freedom)");
 }
 
 // The physical-block options on top of the scenario's [physical] block (if any).
@@ -78,7 +81,8 @@ void apply_physical(const Settings& s, Scenario& sc) {
 void apply_initial(const Settings& s, Scenario& sc) {
   if (s.has("ic")) {
     const std::string v = s.text("ic");
-    if (v != "ic1" && v != "ic2" && v != "custom") throw std::invalid_argument("--ic = '" + v + "' is not one of: ic1, ic2, custom");
+    if (v != "ic1" && v != "ic2" && v != "custom")
+      throw std::invalid_argument("--ic = '" + v + "' is not one of: ic1, ic2, custom");
     sc.initial.set = v;
   }
   for (auto [name, field] : {std::pair{"w0", &InitialSpec::w0},
@@ -143,7 +147,8 @@ Scenario scenario_from(const Settings& s) {
     if (sc.units != "nondim" && sc.units != "physical")
       throw std::invalid_argument("units = '" + sc.units + "' is not one of: nondim, physical");
     if (sc.units == "physical" && !sc.physical)
-      throw std::invalid_argument("units = physical needs a physical block (--height --width ... or [physical] in the scenario)");
+      throw std::invalid_argument(
+          "units = physical needs a physical block (--height --width ... or [physical] in the scenario)");
   }
   return sc;
 }

@@ -77,7 +77,8 @@ long Settings::integer(std::string_view name, long fallback) const {
 int Settings::small_integer(std::string_view name, int fallback) const {
   const long v = integer(name, fallback);
   if (v < -2147483647L || v > 2147483647L)
-    throw std::invalid_argument(std::string(name) + " = " + std::to_string(v) + " is out of range: must be at most 2147483647 in size");
+    throw std::invalid_argument(std::string(name) + " = " + std::to_string(v) +
+                                " is out of range: must be at most 2147483647 in size");
   return int(v);
 }
 

@@ -24,7 +24,6 @@ json header(const std::string& command, const std::string& ic, const StudyRunOpt
   return {{"run_info", run_info()}, {"command", command}, {"ic", ic}, {"run_options", run_options_json(run)}};
 }
 
-
 void add_common_options(std::vector<StudyOption>& o, bool with_search) {
   if (with_search) {
     const StabilitySearchOptions d;

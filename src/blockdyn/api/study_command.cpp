@@ -90,7 +90,8 @@ long StudyOptions::integer(const std::string& name) const {
 int StudyOptions::small_integer(const std::string& name) const {
   const long v = integer(name);
   if (v < -2147483647L || v > 2147483647L)
-    throw std::invalid_argument(name + " = " + std::to_string(v) + " is out of range: must be at most 2147483647 in size");
+    throw std::invalid_argument(name + " = " + std::to_string(v) +
+                                " is out of range: must be at most 2147483647 in size");
   return int(v);
 }
 

@@ -124,14 +124,16 @@ void add_axes(const Settings& s, RigidSweepSpec& sp) {
       throw std::invalid_argument("--axis '" + a + "': expected NAME=SPEC, e.g. ground_h_amplitude=0.1:1:20");
     const std::string name = a.substr(0, eq);
     for (const auto& x : sp.axes)
-      if (x.name == name) throw std::invalid_argument("--axis " + name + ": given twice (or also in the definition file)");
+      if (x.name == name)
+        throw std::invalid_argument("--axis " + name + ": given twice (or also in the definition file)");
     sp.axes.push_back(parse_axis(name, a.substr(eq + 1), AxisSpacing::Linear));
   }
 }
 
 SweepDefinition rigid_sweep(const Settings& s, const std::string& model) {
   for (const char* n : kWinklerOnly)
-    if (s.has(n)) throw std::invalid_argument(std::string("--") + n + " belongs to the winkler sweep, not to --model " + model);
+    if (s.has(n))
+      throw std::invalid_argument(std::string("--") + n + " belongs to the winkler sweep, not to --model " + model);
   RigidSweepSpec sp;
   if (s.has("definition"))
     sp = load_rigid_sweep(s.text("definition"));
@@ -158,8 +160,9 @@ SweepDefinition rigid_sweep(const Settings& s, const std::string& model) {
     has_height |= a.name == "height";
   }
   if (!has_width || !has_height)
-    throw std::invalid_argument(std::string("the ") + model + " sweep needs the block's " + (has_width ? "height" : "width") +
-                  ": --width and --height [m] (or [physical] in the definition, or an axis)");
+    throw std::invalid_argument(std::string("the ") + model + " sweep needs the block's " +
+                                (has_width ? "height" : "width") +
+                                ": --width and --height [m] (or [physical] in the definition, or an axis)");
   validate(sp);
   SweepDefinition d;
   d.model = model;

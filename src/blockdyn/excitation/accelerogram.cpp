@@ -148,11 +148,14 @@ std::pair<int, int> csv_columns(const std::string& header, const std::string& wh
     }
   }
   flush();
-  auto is_time = [](const std::string& f) { return f == "t" || f.rfind("t(", 0) == 0 || f.rfind("t[", 0) == 0 ||
-                                                   f.rfind("t_", 0) == 0 || f.rfind("time", 0) == 0; };
-  auto is_acc = [](const std::string& f) { return f == "a" || f.rfind("a(", 0) == 0 || f.rfind("a[", 0) == 0 ||
-                                                  f.rfind("a_", 0) == 0 || f.rfind("acc", 0) == 0 ||
-                                                  f.rfind("ag", 0) == 0; };
+  auto is_time = [](const std::string& f) {
+    return f == "t" || f.rfind("t(", 0) == 0 || f.rfind("t[", 0) == 0 || f.rfind("t_", 0) == 0 ||
+           f.rfind("time", 0) == 0;
+  };
+  auto is_acc = [](const std::string& f) {
+    return f == "a" || f.rfind("a(", 0) == 0 || f.rfind("a[", 0) == 0 || f.rfind("a_", 0) == 0 ||
+           f.rfind("acc", 0) == 0 || f.rfind("ag", 0) == 0;
+  };
   const std::string why = "the header '" + header + "' must name the columns t (s) and a (g), in either order";
   if (fields.size() != 2) fail(where, why);
   for (const std::string& f : fields)
@@ -192,8 +195,7 @@ Accelerogram::Accelerogram(std::vector<double> t, std::vector<double> a, std::st
   // Equally spaced (to rounding): use the O(1) lookup of uniform records.
   const double d = (t_.back() - t_.front()) / double(t_.size() - 1);
   bool eq = t_.front() == 0.0;
-  for (std::size_t i = 1; eq && i < t_.size(); ++i)
-    eq = std::fabs(t_[i] - d * double(i)) <= 1e-9 * d;
+  for (std::size_t i = 1; eq && i < t_.size(); ++i) eq = std::fabs(t_[i] - d * double(i)) <= 1e-9 * d;
   if (eq) {
     uniform_ = true;
     dt_ = d;
@@ -283,16 +285,15 @@ Accelerogram parse_at2(const std::string& text, const std::string& source) {
     std::istringstream in(lines[li]);
     for (std::string tok; in >> tok;) {
       double v;
-      if (!to_number(tok, v))
-        fail(source + ":" + std::to_string(li + 1), "'" + tok + "' is not a number");
+      if (!to_number(tok, v)) fail(source + ":" + std::to_string(li + 1), "'" + tok + "' is not a number");
       if (long(a.size()) >= npts)
         fail(source + ":" + std::to_string(li + 1), "more values than NPTS = " + std::to_string(npts));
       a.push_back(v);
     }
   }
   if (long(a.size()) < npts)
-    fail(source, "truncated AT2 file: NPTS = " + std::to_string(npts) + " but " + std::to_string(a.size()) +
-                     " values found");
+    fail(source,
+         "truncated AT2 file: NPTS = " + std::to_string(npts) + " but " + std::to_string(a.size()) + " values found");
   return Accelerogram(std::move(a), dt, source);
 }
 
@@ -346,8 +347,7 @@ Accelerogram load_accelerogram(const std::string& path, const std::string& field
     text.append(buf, std::size_t(in.gcount()));
     if (text.size() > kMaxBytes) throw std::invalid_argument(field + ": '" + path + "' is larger than 400 MB");
   }
-  if (text.find('\0') != std::string::npos)
-    throw std::invalid_argument(field + ": '" + path + "' is not a text file");
+  if (text.find('\0') != std::string::npos) throw std::invalid_argument(field + ": '" + path + "' is not a text file");
   std::string ext = path.size() >= 4 ? upper(path.substr(path.size() - 4)) : "";
   try {
     return ext == ".AT2" ? parse_at2(text, path) : parse_record_csv(text, path);

@@ -11,7 +11,6 @@
 namespace blockdyn {
 namespace {
 
-
 // The record's energy int a^2 dt over [0, tau] of a segment a = a0 + s tau (units of g^2 s).
 double energy_in(double a0, double s, double tau) { return tau * (a0 * a0 + a0 * s * tau + s * s * tau * tau / 3.0); }
 

@@ -129,9 +129,7 @@ void end_state(const std::vector<double>& a, double dt, double& v, double& d) {
 
 double Modulation::c1() const { return std::exp(log_c1); }
 
-double Modulation::at(double t) const {
-  return t > 0.0 ? std::exp(log_c1 + (c2 - 1.0) * std::log(t) - c3 * t) : 0.0;
-}
+double Modulation::at(double t) const { return t > 0.0 ? std::exp(log_c1 + (c2 - 1.0) * std::log(t) - c3 * t) : 0.0; }
 
 double Modulation::husid_time(double fraction) const {
   return boost::math::gamma_p_inv(2.0 * c2 - 1.0, fraction) / (2.0 * c3);
@@ -149,9 +147,10 @@ Modulation fit_modulation(double arias, double d5_95, double t_mid, double g) {
   const double r = d5_95 / t_mid, r_max = spread_ratio(1.0 + 1e-9);
   if (!(r < r_max))
     throw std::invalid_argument("d5-95 = " + number_text(d5_95) + " s is too long for t-mid = " + number_text(t_mid) +
-                  " s: a gamma-type modulation needs d5-95 / t-mid < " + number_text(r_max, 4));
+                                " s: a gamma-type modulation needs d5-95 / t-mid < " + number_text(r_max, 4));
   double lo = std::log(1.0 + 1e-9), hi = std::log(1e6);
-  if (!(spread_ratio(std::exp(hi)) < r)) throw std::invalid_argument("d5-95: too short for t-mid (d5-95 / t-mid below 4e-3)");
+  if (!(spread_ratio(std::exp(hi)) < r))
+    throw std::invalid_argument("d5-95: too short for t-mid (d5-95 / t-mid below 4e-3)");
   for (int it = 0; it < 200 && hi - lo > 1e-15; ++it) {
     const double mid = 0.5 * (lo + hi);
     (spread_ratio(std::exp(mid)) > r ? lo : hi) = mid;
@@ -177,25 +176,26 @@ void validate(const RezaeianParams& p) {
   for (const double t : {0.0, p.t_end})
     if (!(p.f_mid + p.f_slope * (t - p.t_mid) > 0.0))
       throw std::invalid_argument("f-slope = " + number_text(p.f_slope) +
-                    " Hz/s makes the filter frequency f-mid + f-slope (t - " +
-                    "t-mid) reach 0 within [0, t-end]: give a smaller |f-slope|");
+                                  " Hz/s makes the filter frequency f-mid + f-slope (t - " +
+                                  "t-mid) reach 0 within [0, t-end]: give a smaller |f-slope|");
   if (!(p.t_mid < p.t_end))
-    throw std::invalid_argument("t-mid = " + number_text(p.t_mid) + " s lies outside the record [0, t-end = " + number_text(p.t_end) +
-                  " s]");
+    throw std::invalid_argument("t-mid = " + number_text(p.t_mid) +
+                                " s lies outside the record [0, t-end = " + number_text(p.t_end) + " s]");
   if (!(p.d5_95 >= 20.0 * p.dt))
-    throw std::invalid_argument("d5-95 = " + number_text(p.d5_95) + " s spans fewer than 20 samples of dt = " + number_text(p.dt) +
-                  " s: give a longer --d5-95 or a smaller --dt");
+    throw std::invalid_argument("d5-95 = " + number_text(p.d5_95) + " s spans fewer than 20 samples of dt = " +
+                                number_text(p.dt) + " s: give a longer --d5-95 or a smaller --dt");
   const Modulation q = fit_modulation(p.arias, p.d5_95, p.t_mid, p.g);
   // The record cut at t_end keeps the fraction F of the modulation's energy: its expected D5-95
   // runs between the quantiles 0.05 F and 0.95 F.
   const double kept = q.husid_fraction(p.t_end);
   const double d_cut = q.husid_time(0.95 * kept) - q.husid_time(0.05 * kept);
   if (!(kept >= 0.98) || !(std::fabs(d_cut - p.d5_95) <= 0.05 * p.d5_95))
-    throw std::invalid_argument("t-end = " + number_text(p.t_end) + " s cuts the modulation of d5-95 = " + number_text(p.d5_95) +
-                  " s, t-mid = " + number_text(p.t_mid) + " s: the record would hold " + number_text(100.0 * kept, 4) +
-                  " % of the Arias target and a D5-95 of " + number_text(d_cut, 4) +
-                  " s (at least 98 %, and within 5 %, needed); its 99.5 % point lies at " + number_text(q.husid_time(0.995), 4) +
-                  " s: give a longer --t-end or move --t-mid and --d5-95 earlier");
+    throw std::invalid_argument(
+        "t-end = " + number_text(p.t_end) + " s cuts the modulation of d5-95 = " + number_text(p.d5_95) +
+        " s, t-mid = " + number_text(p.t_mid) + " s: the record would hold " + number_text(100.0 * kept, 4) +
+        " % of the Arias target and a D5-95 of " + number_text(d_cut, 4) +
+        " s (at least 98 %, and within 5 %, needed); its 99.5 % point lies at " + number_text(q.husid_time(0.995), 4) +
+        " s: give a longer --t-end or move --t-mid and --d5-95 earlier");
 }
 
 double rezaeian_record_cost(const RezaeianParams& p) {
@@ -261,15 +261,17 @@ void validate(const PulseParams& p, double dt, double t_end) {
   require_in_range("nu", p.nu, -2 * kPi, 2 * kPi);
   require_in_range("pulse-t0", p.t0, 0, 1e4);
   if (!(p.period >= 10.0 * dt))
-    throw std::invalid_argument("pulse-period = " + number_text(p.period) + " s is sampled by fewer than 10 samples of dt = " +
-                  number_text(dt) + " s: give a longer --pulse-period or a smaller --dt");
+    throw std::invalid_argument("pulse-period = " + number_text(p.period) +
+                                " s is sampled by fewer than 10 samples of dt = " + number_text(dt) +
+                                " s: give a longer --pulse-period or a smaller --dt");
   const double half = 0.5 * p.gamma * p.period;
   if (!(p.t0 - half >= -1e-12 * half))
-    throw std::invalid_argument("pulse-t0 = " + number_text(p.t0) + " s starts the pulse at " + number_text(p.t0 - half) +
-                  " s, before the record: give pulse-t0 >= gamma pulse-period / 2 = " + number_text(half) + " s");
+    throw std::invalid_argument(
+        "pulse-t0 = " + number_text(p.t0) + " s starts the pulse at " + number_text(p.t0 - half) +
+        " s, before the record: give pulse-t0 >= gamma pulse-period / 2 = " + number_text(half) + " s");
   if (!(p.t0 + half <= t_end * (1.0 + 1e-12)))
     throw std::invalid_argument("t-end = " + number_text(t_end) + " s: shorter than the pulse (it ends at " +
-                  number_text(p.t0 + half) + " s)");
+                                number_text(p.t0 + half) + " s)");
 }
 
 double pulse_acceleration(const PulseParams& p, double t, double g) {

@@ -92,7 +92,7 @@ struct StepperStats {
   long accepted = 0;
   long rejected = 0;
   long rhs_evals = 0;
-  long stiff_steps = 0;  // DOP853: accepted steps whose stiffness estimate h|lambda| exceeded 6.1
+  long stiff_steps = 0;          // DOP853: accepted steps whose stiffness estimate h|lambda| exceeded 6.1
   long rejected_at_restart = 0;  // rejections before the first accepted step after a restart
 };
 

@@ -163,7 +163,9 @@ constexpr bool has_event_rates() {
 template <class M>
 double restart_step_of(const M& m, double t, const typename M::Mode& mode, const Vec<M::kDim>& z,
                        const Vec<M::kDim>& dz, double h) {
-  if constexpr (requires { { m.restart_step(t, mode, z, dz, h) } -> std::convertible_to<double>; })
+  if constexpr (requires {
+                  { m.restart_step(t, mode, z, dz, h) } -> std::convertible_to<double>;
+                })
     return m.restart_step(t, mode, z, dz, h);
   return h;
 }
@@ -174,7 +176,9 @@ double restart_step_of(const M& m, double t, const typename M::Mode& mode, const
 template <class M>
 double kink_ahead_of(const M& m, double t, const typename M::Mode& mode, const Vec<M::kDim>& z,
                      const Vec<M::kDim>& dz) {
-  if constexpr (requires { { m.kink_ahead(t, mode, z, dz) } -> std::convertible_to<double>; })
+  if constexpr (requires {
+                  { m.kink_ahead(t, mode, z, dz) } -> std::convertible_to<double>;
+                })
     return m.kink_ahead(t, mode, z, dz);
   return std::numeric_limits<double>::infinity();
 }
@@ -305,7 +309,8 @@ class HybridIntegrator {
       // An event inside the step: keep the trajectory up to it, apply the transition, restart.
       double te = hit->t;
       State ze = z;
-      if (te > t && !step_to_event(f, t, t_next, hit->index, mode, z, k1, te, ze, seg, obs)) return RunStatus::ObserverStop;
+      if (te > t && !step_to_event(f, t, t_next, hit->index, mode, z, k1, te, ze, seg, obs))
+        return RunStatus::ObserverStop;
       zero_time_events = (te == t) ? zero_time_events + 1 : 0;
       events_at_instant = (te == t) ? events_at_instant + 1 : 0;
       if (events_at_instant > kMaxEventsAtInstant * opt_.chatter_limit) return RunStatus::Chatter;
@@ -851,12 +856,12 @@ class HybridIntegrator {
 
   static constexpr int kMaxSamples = 64;
   static constexpr int kPolishIterations = 2;
-  static constexpr int kMaxEventsAtInstant = 4;  // chatter resolutions tried at one instant
-  static constexpr int kMaxRefine = 2;          // extra samples in a doubtful stretch before a search
-  static constexpr int kSubdivision = 5;        // doubtful stretches are located to 1/32 of a step
-  static constexpr double kRateStep = 0x1p-20;  // difference quotients over this fraction of a step
-  static constexpr int kResample = 4;           // interior samples at least every this many steps
-  static constexpr double kLagSafety = 8.0;     // margin on a remainder measured on an earlier step
+  static constexpr int kMaxEventsAtInstant = 4;         // chatter resolutions tried at one instant
+  static constexpr int kMaxRefine = 2;                  // extra samples in a doubtful stretch before a search
+  static constexpr int kSubdivision = 5;                // doubtful stretches are located to 1/32 of a step
+  static constexpr double kRateStep = 0x1p-20;          // difference quotients over this fraction of a step
+  static constexpr int kResample = 4;                   // interior samples at least every this many steps
+  static constexpr double kLagSafety = 8.0;             // margin on a remainder measured on an earlier step
   static constexpr double kKinkNear = 0.1;              // a kink this close (in steps) is stepped onto
   static constexpr double kKinkOvershoot = 1.0 + 1e-6;  // ... ending this far past it
   static constexpr double kKinkApproach = 0.9;          // a farther one approached to this fraction

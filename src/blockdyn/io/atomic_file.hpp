@@ -53,6 +53,4 @@ class AtomicFile {
 // Convenience: write a whole string atomically.
 void write_file_atomically(const std::string& path, const std::string& content);
 
-
-
 }  // namespace blockdyn

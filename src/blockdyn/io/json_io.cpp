@@ -14,13 +14,11 @@ json to_json(const BlockParams& p) {
 }
 
 static json component_json(const GroundComponent& c) {
-  json j = {{"constant", c.constant}, {"amplitude", c.amplitude}, {"frequency", c.frequency},
-            {"phase", c.phase},       {"t_start", c.t_start},     {"duration", c.duration},
-            {"pulse", to_string(c.pulse)}};
+  json j = {{"constant", c.constant}, {"amplitude", c.amplitude}, {"frequency", c.frequency},   {"phase", c.phase},
+            {"t_start", c.t_start},   {"duration", c.duration},   {"pulse", to_string(c.pulse)}};
   if (c.record) {
-    j["record"] = {{"source", c.record->source()},      {"samples", c.record->size()},
-                   {"dt_s", c.record->dt()},            {"duration_s", c.record->t_last()},
-                   {"peak_g", c.record->peak()},        {"scale", c.scale},
+    j["record"] = {{"source", c.record->source()},      {"samples", c.record->size()}, {"dt_s", c.record->dt()},
+                   {"duration_s", c.record->t_last()},  {"peak_g", c.record->peak()},  {"scale", c.scale},
                    {"time_unit_s", c.record_time_unit}, {"digest", c.record->digest()}};
   } else {
     j["record"] = nullptr;
@@ -46,9 +44,12 @@ json state_json(const BlockStateVec& z) {
 }
 
 json state_json(const BlockStateVec& z, const UnitScales& s) {
-  return {{"x_m", z[kX] * s.length},           {"y_m", (z[kH] + 0.5) * s.length},
-          {"w_rad", z[kW]},                    {"vx_m_per_s", z[kVX] * s.velocity},
-          {"vy_m_per_s", z[kVY] * s.velocity}, {"vw_rad_per_s", z[kVW] * s.angular_velocity}};
+  return {{"x_m", z[kX] * s.length},
+          {"y_m", (z[kH] + 0.5) * s.length},
+          {"w_rad", z[kW]},
+          {"vx_m_per_s", z[kVX] * s.velocity},
+          {"vy_m_per_s", z[kVY] * s.velocity},
+          {"vw_rad_per_s", z[kVW] * s.angular_velocity}};
 }
 
 json to_json(const Energy& e) {
@@ -57,12 +58,9 @@ json to_json(const Energy& e) {
 }
 
 json to_json(const EventRecord& e) {
-  return {{"t", e.t},
-          {"kind", to_string(e.kind)},
-          {"from", to_string(e.from.regime)},
-          {"to", to_string(e.to.regime)},
-          {"ihor", e.ihor},
-          {"state", state_json(e.z)}};
+  return {
+      {"t", e.t},       {"kind", to_string(e.kind)}, {"from", to_string(e.from.regime)}, {"to", to_string(e.to.regime)},
+      {"ihor", e.ihor}, {"state", state_json(e.z)}};
 }
 
 json to_json(const RigidBlockParams& p, const std::string& model) {
@@ -122,14 +120,12 @@ std::string schema_name(const std::string& command, const std::string& kind) {
   return "blockdyn." + command + "." + kind + "/" + std::to_string(kJsonSchemaVersion);
 }
 
-json run_info() {
-  return {{"program", "blockdyn"}, {"version", kVersion}, {"git", kGitDescribe}};
-}
+json run_info() { return {{"program", "blockdyn"}, {"version", kVersion}, {"git", kGitDescribe}}; }
 
 static json opt_or_null(const std::optional<double>& v) { return v ? json(*v) : json(nullptr); }
 
-json result_json(const BlockParams& p, const GroundMotion& g, const SimulationOptions& o,
-                 const SimulationResult& r, const PhysicalBlock* phys) {
+json result_json(const BlockParams& p, const GroundMotion& g, const SimulationOptions& o, const SimulationResult& r,
+                 const PhysicalBlock* phys) {
   json j;
   j["run"] = run_info();
   j["model"] = "winkler";
@@ -171,8 +167,11 @@ json result_json(const BlockParams& p, const GroundMotion& g, const SimulationOp
   j["events"] = ev;
   if (phys) {
     const UnitScales s = scales_of(*phys);
-    j["physical"] = {{"height_m", phys->height}, {"width_m", phys->width}, {"mass_kg", s.mass},
-                     {"g_m_per_s2", phys->g},    {"time_scale_s", s.time},
+    j["physical"] = {{"height_m", phys->height},
+                     {"width_m", phys->width},
+                     {"mass_kg", s.mass},
+                     {"g_m_per_s2", phys->g},
+                     {"time_scale_s", s.time},
                      {"t_end_s", o.t_end * s.time},
                      {"t_final_s", r.t_final * s.time},
                      {"first_flight_time_s", r.first_flight_time ? json(*r.first_flight_time * s.time) : json(nullptr)},
@@ -195,9 +194,9 @@ json rigid_result_json(const RigidBlockParams& p, const GroundMotion& g, const R
   j["parameters"] = to_json(p, r.model);
   j["ground_motion"] = to_json(g);
   j["tolerances"] = to_json(o.integrator);
-  j["tolerances"]["atol_scaling"] = r.model == "housner"
-                                        ? "theta: atol, theta': atol p, works: atol m g R"
-                                        : "x, y: atol h, x', y': atol sqrt(g h), theta: atol, theta': atol p, works: atol m g h";
+  j["tolerances"]["atol_scaling"] =
+      r.model == "housner" ? "theta: atol, theta': atol p, works: atol m g R"
+                           : "x, y: atol h, x', y': atol sqrt(g h), theta: atol, theta': atol p, works: atol m g h";
   j["t_start"] = o.t_start;
   j["t_end"] = o.t_end;
   j["initial_state"] = pose_json(r.initial_state);
@@ -244,7 +243,8 @@ json rigid_result_json(const RigidBlockParams& p, const GroundMotion& g, const R
 }
 
 static void sanitize(json& j) {
-  if (j.is_number_float() && !std::isfinite(j.get<double>())) j = nullptr;
+  if (j.is_number_float() && !std::isfinite(j.get<double>()))
+    j = nullptr;
   else if (j.is_structured())
     for (auto& v : j) sanitize(v);
 }

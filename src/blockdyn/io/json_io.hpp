@@ -16,7 +16,7 @@ namespace blockdyn {
 nlohmann::ordered_json to_json(const BlockParams& p);
 nlohmann::ordered_json to_json(const GroundMotion& g);
 nlohmann::ordered_json to_json(const IntegratorOptions& o);
-nlohmann::ordered_json state_json(const BlockStateVec& z);          // x, y, w, vx, vy, vw
+nlohmann::ordered_json state_json(const BlockStateVec& z);                       // x, y, w, vx, vy, vw
 nlohmann::ordered_json state_json(const BlockStateVec& z, const UnitScales& s);  // physical units
 nlohmann::ordered_json to_json(const Energy& e);
 nlohmann::ordered_json to_json(const EventRecord& e);
@@ -32,7 +32,7 @@ inline constexpr int kJsonSchemaVersion = 1;
 std::string schema_name(const std::string& command, const std::string& kind);
 // Everything `simulate --json` prints (physical block and scales optional).
 nlohmann::ordered_json result_json(const BlockParams& p, const GroundMotion& g, const SimulationOptions& o,
-                           const SimulationResult& r, const PhysicalBlock* phys = nullptr);
+                                   const SimulationResult& r, const PhysicalBlock* phys = nullptr);
 
 // Everything `simulate --model housner|rigid --json` prints.
 nlohmann::ordered_json to_json(const RigidBlockParams& p, const std::string& model);

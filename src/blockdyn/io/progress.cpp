@@ -16,8 +16,8 @@ ProgressMode parse_progress_mode(const std::string& s) {
   throw std::invalid_argument("progress = '" + s + "' is not one of: auto, bar, plain, none");
 }
 
-Progress::Progress(std::string label, std::size_t total, std::size_t already_done, ProgressMode mode,
-                   std::FILE* out, double plain_interval_seconds, std::string unit)
+Progress::Progress(std::string label, std::size_t total, std::size_t already_done, ProgressMode mode, std::FILE* out,
+                   double plain_interval_seconds, std::string unit)
     : label_(std::move(label)),
       unit_(std::move(unit)),
       total_(total),
@@ -43,10 +43,14 @@ std::string Progress::format_duration(double s) {
   if (!std::isfinite(s) || s < 0) return "?";
   char buf[32];
   const long t = std::lround(s);
-  if (t < 60) std::snprintf(buf, sizeof buf, "%lds", t);
-  else if (t < 3600) std::snprintf(buf, sizeof buf, "%ldm%02lds", t / 60, t % 60);
-  else if (t < 86400) std::snprintf(buf, sizeof buf, "%ldh%02ldm", t / 3600, (t % 3600) / 60);
-  else std::snprintf(buf, sizeof buf, "%ldd%02ldh", t / 86400, (t % 86400) / 3600);
+  if (t < 60)
+    std::snprintf(buf, sizeof buf, "%lds", t);
+  else if (t < 3600)
+    std::snprintf(buf, sizeof buf, "%ldm%02lds", t / 60, t % 60);
+  else if (t < 86400)
+    std::snprintf(buf, sizeof buf, "%ldh%02ldm", t / 3600, (t % 3600) / 60);
+  else
+    std::snprintf(buf, sizeof buf, "%ldd%02ldh", t / 86400, (t % 86400) / 3600);
   return buf;
 }
 
@@ -63,9 +67,8 @@ std::string Progress::line(double elapsed, int bar_width) const {
     s += "] ";
   }
   char buf[160];
-  std::snprintf(buf, sizeof buf, "%zu/%zu (%.1f%%), %.3g %s/s, elapsed %s, ETA %s", done_, total_,
-                100.0 * frac, rate, unit_.c_str(), format_duration(elapsed).c_str(),
-                done_ == total_ ? "0s" : format_duration(eta).c_str());
+  std::snprintf(buf, sizeof buf, "%zu/%zu (%.1f%%), %.3g %s/s, elapsed %s, ETA %s", done_, total_, 100.0 * frac, rate,
+                unit_.c_str(), format_duration(elapsed).c_str(), done_ == total_ ? "0s" : format_duration(eta).c_str());
   return s + buf;
 }
 

@@ -18,8 +18,8 @@ class Progress {
  public:
   // `already_done` items (e.g. resumed) count toward the total but not toward the rate.
   // `unit`: what is counted, in the report's words ("points", "records").
-  Progress(std::string label, std::size_t total, std::size_t already_done, ProgressMode mode,
-           std::FILE* out = stderr, double plain_interval_seconds = 10.0, std::string unit = "points");
+  Progress(std::string label, std::size_t total, std::size_t already_done, ProgressMode mode, std::FILE* out = stderr,
+           double plain_interval_seconds = 10.0, std::string unit = "points");
   ~Progress();  // finish() if not yet called
 
   void advance(std::size_t n = 1);  // not thread-safe: call under the caller's lock

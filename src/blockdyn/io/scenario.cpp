@@ -32,7 +32,8 @@ const toml::table* sub(const toml::table& t, const std::string& where, const cha
 }
 
 void read_component(const toml::table& t, const std::string& where, const std::string& base, GroundComponent& c) {
-  check_keys(t, where, {"constant", "amplitude", "frequency", "phase", "t_start", "duration", "pulse", "record", "scale"});
+  check_keys(t, where,
+             {"constant", "amplitude", "frequency", "phase", "t_start", "duration", "pulse", "record", "scale"});
   if (auto v = opt_string(t, where, "pulse")) {
     const auto p = pulse_from_string(*v);
     if (!p) fail(where + ".pulse", "'" + *v + "' is not one of: " + pulse_names());
@@ -95,8 +96,8 @@ Scenario parse_scenario(const std::string& text, const std::string& source, cons
     if (rigid)
       check_keys(*p, "physical", {"height", "width", "mass", "density", "thickness", "g"});
     else
-      check_keys(*p, "physical", {"height", "width", "mass", "density", "thickness", "subgrade_modulus",
-                                  "line_stiffness", "g", "mu"});
+      check_keys(*p, "physical",
+                 {"height", "width", "mass", "density", "thickness", "subgrade_modulus", "line_stiffness", "g", "mu"});
     PhysicalBlock pb;
     pb.mu = s.params.mu;
     read(*p, "physical", "height", pb.height);
@@ -113,14 +114,17 @@ Scenario parse_scenario(const std::string& text, const std::string& source, cons
   }
   if (const auto* i = sub(root, source, "initial")) {
     check_keys(*i, "initial", {"set", "w0", "x0", "y0", "vx0", "vy0", "vw0"});
-    if (rigid && i->contains("set")) fail("initial.set", "ic1/ic2/custom belong to the winkler model; give w0, vw0, ...");
+    if (rigid && i->contains("set"))
+      fail("initial.set", "ic1/ic2/custom belong to the winkler model; give w0, vw0, ...");
     if (auto v = opt_string(*i, "initial", "set")) s.initial.set = *v;
     s.initial.w0 = opt_number(*i, "initial", "w0");
     toml_read::read_state_overrides(*i, "initial", s.initial);
   }
   if (const auto* r = sub(root, source, "run")) {
-    check_keys(*r, "run", {"t_end", "t_start", "rtol", "atol", "output_interval", "max_steps", "event_samples", "method"});
-    if (auto v = toml_read::opt_string(*r, "run", "method")) s.options.integrator.method = toml_read::method(*v, "run.method");
+    check_keys(*r, "run",
+               {"t_end", "t_start", "rtol", "atol", "output_interval", "max_steps", "event_samples", "method"});
+    if (auto v = toml_read::opt_string(*r, "run", "method"))
+      s.options.integrator.method = toml_read::method(*v, "run.method");
     read(*r, "run", "t_end", s.options.t_end);
     read(*r, "run", "t_start", s.options.t_start);
     read(*r, "run", "rtol", s.options.integrator.rtol);
@@ -128,7 +132,8 @@ Scenario parse_scenario(const std::string& text, const std::string& source, cons
     read(*r, "run", "output_interval", s.output_interval);
     if (auto v = toml_read::opt_integer(*r, "run", "max_steps", 1, 1'000'000'000'000))
       s.options.integrator.max_steps = long(*v);
-    if (auto v = toml_read::opt_integer(*r, "run", "event_samples", 1, 64)) s.options.integrator.event_samples = int(*v);
+    if (auto v = toml_read::opt_integer(*r, "run", "event_samples", 1, 64))
+      s.options.integrator.event_samples = int(*v);
   }
   if (const auto* g = sub(root, source, "ground")) {
     check_keys(*g, "ground", {"horizontal", "vertical"});
@@ -153,16 +158,22 @@ Scenario load_scenario(const std::string& path) {
 
 RigidBlockParams rigid_params(const Scenario& s) {
   RigidBlockParams p;
-  if (!s.physical) throw std::invalid_argument("the " + s.model + " model needs the block's width and height (--width --height, or [physical])");
+  if (!s.physical)
+    throw std::invalid_argument("the " + s.model +
+                                " model needs the block's width and height (--width --height, or [physical])");
   const PhysicalBlock& b = *s.physical;
-  if (b.width == 0.0) throw std::invalid_argument("width is missing: give the block's width [m] (--width, physical.width)");
-  if (b.height == 0.0) throw std::invalid_argument("height is missing: give the block's height [m] (--height, physical.height)");
+  if (b.width == 0.0)
+    throw std::invalid_argument("width is missing: give the block's width [m] (--width, physical.width)");
+  if (b.height == 0.0)
+    throw std::invalid_argument("height is missing: give the block's height [m] (--height, physical.height)");
   p.shape.width = b.width;
   p.shape.height = b.height;
   p.shape.g = b.g;
   if (b.mass && b.density) throw std::invalid_argument("physical block: mass and density both given: give one");
-  if (b.mass || (b.density && b.thickness)) p.shape.mass = mass_of(b);
-  else if (b.density || b.thickness) throw std::invalid_argument("density needs thickness (and thickness density) to give the mass");
+  if (b.mass || (b.density && b.thickness))
+    p.shape.mass = mass_of(b);
+  else if (b.density || b.thickness)
+    throw std::invalid_argument("density needs thickness (and thickness density) to give the mass");
   p.interface = s.interface;
   p.impact = s.impact;
   p.restitution = s.restitution;

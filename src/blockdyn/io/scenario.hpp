@@ -13,7 +13,7 @@
 namespace blockdyn {
 
 struct InitialSpec {
-  std::string set = "ic1";  // ic1 | ic2 | custom
+  std::string set = "ic1";   // ic1 | ic2 | custom
   std::optional<double> w0;  // ic1 tilt override, or custom w
   // custom (and overrides applied on top of ic1/ic2)
   std::optional<double> x0, y0, vx0, vy0, vw0;
@@ -24,15 +24,15 @@ struct Scenario {
   BlockParams params;
   std::optional<PhysicalBlock> physical;  // when given, params are derived from it
   // housner / rigid: the block's shape comes from [physical]; interface and impact from here.
-  Coulomb interface{0.7, 0.7};
+  Coulomb interface { 0.7, 0.7 };
   ImpactLaw impact = ImpactLaw::Housner;
   std::optional<double> restitution;
   GroundMotion ground;  // times in seconds for physical blocks and the rigid models
   InitialSpec initial;
   SimulationOptions options;
   double output_interval = 0.01;
-  std::string trajectory;  // CSV path, empty: none
-  std::string plot;        // PNG path, empty: none
+  std::string trajectory;        // CSV path, empty: none
+  std::string plot;              // PNG path, empty: none
   std::string units = "nondim";  // nondim | physical (adds physical columns / fields)
 };
 
@@ -42,8 +42,7 @@ bool is_rigid_family(const std::string& model);
 // Reads a TOML scenario; throws std::invalid_argument with the offending key on error.
 // Record paths in [ground.*] are relative to the scenario file's directory.
 Scenario load_scenario(const std::string& path);
-Scenario parse_scenario(const std::string& toml_text, const std::string& source_name,
-                        const std::string& base_dir = "");
+Scenario parse_scenario(const std::string& toml_text, const std::string& source_name, const std::string& base_dir = "");
 
 // The rigid-family parameters (shape from [physical], default mass 1 kg).
 RigidBlockParams rigid_params(const Scenario& s);

@@ -3,8 +3,8 @@
 
 #include "blockdyn/io/input_files.hpp"
 
-#include <cmath>
 #include <sys/stat.h>
+#include <cmath>
 
 #include <cerrno>
 #include <cstring>
@@ -14,9 +14,7 @@
 
 namespace blockdyn::toml_read {
 
-void fail(const std::string& field, const std::string& msg) {
-  throw std::invalid_argument(field + ": " + msg);
-}
+void fail(const std::string& field, const std::string& msg) { throw std::invalid_argument(field + ": " + msg); }
 
 std::string read_file(const std::string& path, const std::string& what) {
   // A definition is a small text file: not a directory, a device (/dev/zero) or megabytes.
@@ -37,8 +35,8 @@ std::string read_file(const std::string& path, const std::string& what) {
   return text;
 }
 
-std::optional<long long> opt_integer(const toml::table& t, const std::string& where, const char* key,
-                                     long long lo, long long hi) {
+std::optional<long long> opt_integer(const toml::table& t, const std::string& where, const char* key, long long lo,
+                                     long long hi) {
   const toml::node* n = t.get(key);
   if (!n) return std::nullopt;
   const std::string field = where + "." + key;
@@ -108,8 +106,7 @@ Method method(const std::string& name, const std::string& field) {
   fail(field, "must be one of auto, dopri5, dop853 (got '" + name + "')");
 }
 
-const toml::table* sub_table(const toml::table& t, const char* key, const std::string& field,
-                             const std::string& hint) {
+const toml::table* sub_table(const toml::table& t, const char* key, const std::string& field, const std::string& hint) {
   const toml::node* n = t.get(key);
   if (!n) return nullptr;
   if (!n->is_table()) fail(field, "must be a table" + hint);

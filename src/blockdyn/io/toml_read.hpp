@@ -30,8 +30,8 @@ std::optional<double> opt_number(const toml::table& t, const std::string& where,
 std::optional<std::string> opt_string(const toml::table& t, const std::string& where, const char* key);
 // t[key] as a whole number in [lo, hi] (a TOML integer, or a float with an integral value);
 // "where.key: must be a whole number in [lo, hi]" otherwise. Checked before any conversion.
-std::optional<long long> opt_integer(const toml::table& t, const std::string& where, const char* key,
-                                     long long lo, long long hi);
+std::optional<long long> opt_integer(const toml::table& t, const std::string& where, const char* key, long long lo,
+                                     long long hi);
 // The sub-table t[key] or nullptr when absent; "field: must be a table<hint>" when not a table.
 const toml::table* sub_table(const toml::table& t, const char* key, const std::string& field,
                              const std::string& hint = "");

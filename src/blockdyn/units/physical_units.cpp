@@ -19,22 +19,22 @@ void positive(const char* field, double v) {
 }  // namespace
 
 double mass_of(const PhysicalBlock& b) {
-  if (b.mass && b.density)
-    throw std::invalid_argument("physical block: mass and density both given: give one");
+  if (b.mass && b.density) throw std::invalid_argument("physical block: mass and density both given: give one");
   if (b.mass) {
     positive("mass", *b.mass);
     return *b.mass;
   }
-  if (!b.density || !b.thickness)
-    throw std::invalid_argument("physical block: give mass, or density and thickness");
+  if (!b.density || !b.thickness) throw std::invalid_argument("physical block: give mass, or density and thickness");
   positive("density", *b.density);
   positive("thickness", *b.thickness);
   return *b.density * b.height * b.width * *b.thickness;
 }
 
 BlockParams to_nondimensional(const PhysicalBlock& b) {
-  if (b.height == 0.0) throw std::invalid_argument("height is missing: give the block's height [m] (--height, physical.height)");
-  if (b.width == 0.0) throw std::invalid_argument("width is missing: give the block's width [m] (--width, physical.width)");
+  if (b.height == 0.0)
+    throw std::invalid_argument("height is missing: give the block's height [m] (--height, physical.height)");
+  if (b.width == 0.0)
+    throw std::invalid_argument("width is missing: give the block's width [m] (--width, physical.width)");
   positive("height", b.height);
   positive("width", b.width);
   positive("g", b.g);

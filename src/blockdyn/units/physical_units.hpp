@@ -9,14 +9,14 @@
 namespace blockdyn {
 
 struct PhysicalBlock {
-  double height = 0;      // a [m]
-  double width = 0;       // b [m]
-  std::optional<double> mass;       // m [kg]; or density * height * width * thickness
-  std::optional<double> density;    // [kg/m^3]
-  std::optional<double> thickness;  // out-of-plane depth [m]
+  double height = 0;                       // a [m]
+  double width = 0;                        // b [m]
+  std::optional<double> mass;              // m [kg]; or density * height * width * thickness
+  std::optional<double> density;           // [kg/m^3]
+  std::optional<double> thickness;         // out-of-plane depth [m]
   std::optional<double> subgrade_modulus;  // Winkler modulus [N/m^3] (needs thickness)
   std::optional<double> line_stiffness;    // foundation stiffness per unit length and depth [N/m^2]
-  double g = 9.81;        // [m/s^2]
+  double g = 9.81;                         // [m/s^2]
   double mu = 0.2;
 };
 

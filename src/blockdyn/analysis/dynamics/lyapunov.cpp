@@ -7,10 +7,14 @@ const char* to_string(LyapunovMethod m) { return m == LyapunovMethod::Time ? "ti
 
 const char* to_string(LyapunovStatus s) {
   switch (s) {
-    case LyapunovStatus::Completed: return "completed";
-    case LyapunovStatus::ReferenceStopped: return "reference_stopped";
-    case LyapunovStatus::PerturbedStopped: return "perturbed_stopped";
-    case LyapunovStatus::Failed: return "failed";
+    case LyapunovStatus::Completed:
+      return "completed";
+    case LyapunovStatus::ReferenceStopped:
+      return "reference_stopped";
+    case LyapunovStatus::PerturbedStopped:
+      return "perturbed_stopped";
+    case LyapunovStatus::Failed:
+      return "failed";
   }
   return "?";
 }

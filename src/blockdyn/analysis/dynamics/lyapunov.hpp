@@ -49,9 +49,9 @@ struct LyapunovOptions {
   LyapunovMethod method = LyapunovMethod::Time;
   double t_start = 0.0;
   double t_end = 100.0;
-  double d0 = 1e-8;        // separation right after each renormalisation (metric units)
-  double interval = 0.5;   // Time: renormalisation interval
-  double max_gap = 50.0;   // Section: the copies' corresponding crossings must lie within this time
+  double d0 = 1e-8;            // separation right after each renormalisation (metric units)
+  double interval = 0.5;       // Time: renormalisation interval
+  double max_gap = 50.0;       // Section: the copies' corresponding crossings must lie within this time
   int max_deferrals = 100000;  // Time: give up if the modes never agree
   IntegratorOptions integrator;
 };
@@ -68,10 +68,10 @@ enum class LyapunovStatus { Completed, ReferenceStopped, PerturbedStopped, Faile
 const char* to_string(LyapunovStatus s);
 
 struct LyapunovResult {
-  double exponent = 0;   // final running estimate
-  double t_final = 0;    // reference time reached
+  double exponent = 0;  // final running estimate
+  double t_final = 0;   // reference time reached
   LyapunovStatus status = LyapunovStatus::Completed;
-  std::string note;      // why the run stopped early, if it did
+  std::string note;  // why the run stopped early, if it did
   long renormalisations = 0, deferrals = 0, resyncs = 0;
   double sum_log = 0;
   std::vector<LyapunovSample> history;
@@ -224,8 +224,7 @@ class LyapunovEstimator {
                 "LyapunovEstimator: this model's state jumps at events (impacts); the two-trajectory "
                 "estimator is only valid for models whose state is continuous across events");
 
-  LyapunovEstimator(const M& model, const A& adapter, LyapunovOptions opt)
-      : model_(model), ad_(adapter), opt_(opt) {
+  LyapunovEstimator(const M& model, const A& adapter, LyapunovOptions opt) : model_(model), ad_(adapter), opt_(opt) {
     validate(opt_);
   }
 
@@ -237,7 +236,8 @@ class LyapunovEstimator {
     LyapunovResult res;
     res.history.reserve(1024);
     const double d_init = ad_.distance(mr, zr, mp, zp);
-    if (!(d_init > 0) || !std::isfinite(d_init)) throw std::invalid_argument("lyapunov: the initial perturbation is zero");
+    if (!(d_init > 0) || !std::isfinite(d_init))
+      throw std::invalid_argument("lyapunov: the initial perturbation is zero");
     if (opt_.method == LyapunovMethod::Time)
       run_time(mr, zr, mp, zp, d_init, res);
     else

@@ -152,7 +152,8 @@ MinThickness min_thickness_ratio(const PresetOptions& arch, double tol) {
   auto stands = [](const Trial& t) { return t.margin >= 0.0; };
   double hi = 1.9, lo = 0.02;
   Trial th = trial(hi);
-  if (!stands(th)) throw std::invalid_argument("the arch does not stand under its own weight even at thickness-ratio = 1.9");
+  if (!stands(th))
+    throw std::invalid_argument("the arch does not stand under its own weight even at thickness-ratio = 1.9");
   // A flat arch stands thinner than a semicircular one: halve until it falls (or its voussoirs
   // fall below the smallest block size, 1 mm, where the search stops at the last ratio tried).
   Trial tl;

@@ -12,10 +12,14 @@ namespace blockdyn {
 
 const char* to_string(BoundaryStatus s) {
   switch (s) {
-    case BoundaryStatus::Found: return "found";
-    case BoundaryStatus::BelowRange: return "below_range";
-    case BoundaryStatus::AboveRange: return "above_range";
-    case BoundaryStatus::Error: return "error";
+    case BoundaryStatus::Found:
+      return "found";
+    case BoundaryStatus::BelowRange:
+      return "below_range";
+    case BoundaryStatus::AboveRange:
+      return "above_range";
+    case BoundaryStatus::Error:
+      return "error";
   }
   return "?";
 }
@@ -23,8 +27,7 @@ const char* to_string(BoundaryStatus s) {
 std::vector<double> log_grid(double lo, double hi, int n) {
   if (!(lo > 0) || !(hi > lo) || !std::isfinite(hi) || n < 2)
     throw std::invalid_argument("log grid needs 0 < lo < hi (finite) and at least 2 points; got lo = " +
-                                number_text(lo) + ", hi = " + number_text(hi) +
-                                ", points = " + std::to_string(n));
+                                number_text(lo) + ", hi = " + number_text(hi) + ", points = " + std::to_string(n));
   std::vector<double> g(n);
   const double a = std::log(lo), b = std::log(hi);
   for (int i = 0; i < n; ++i) g[i] = std::exp(a + (b - a) * i / (n - 1));
@@ -34,8 +37,7 @@ std::vector<double> log_grid(double lo, double hi, int n) {
 }
 
 std::vector<double> log_grid_per_decade(double lo, double hi, double per_decade) {
-  if (!(per_decade > 0) || !std::isfinite(per_decade))
-    throw std::invalid_argument("points per decade must be > 0");
+  if (!(per_decade > 0) || !std::isfinite(per_decade)) throw std::invalid_argument("points per decade must be > 0");
   if (!(lo > 0) || !(hi > lo)) return log_grid(lo, hi, 2);  // reports the bad range
   const int n = std::max(2, int(std::ceil(std::log10(hi / lo) * per_decade)) + 1);
   return log_grid(lo, hi, n);
@@ -55,8 +57,7 @@ struct Evaluator {
   }
 };
 
-void bisect_into(Evaluator& ev, double lo, double hi, bool value_lo, const BisectionOptions& opt,
-                 BoundaryResult& res) {
+void bisect_into(Evaluator& ev, double lo, double hi, bool value_lo, const BisectionOptions& opt, BoundaryResult& res) {
   for (int it = 0; it < opt.max_iter && hi / lo - 1.0 > opt.rel_tol; ++it) {
     const double mid = std::sqrt(lo * hi);  // midpoint in log
     if (ev(mid) == value_lo)
@@ -97,8 +98,7 @@ BoundaryResult guarded(const std::vector<double>& grid, F&& body) {
 
 }  // namespace
 
-BoundaryResult bisect_log(const Predicate& pred, double lo, double hi, bool value_lo,
-                          const BisectionOptions& opt) {
+BoundaryResult bisect_log(const Predicate& pred, double lo, double hi, bool value_lo, const BisectionOptions& opt) {
   if (!(lo > 0) || !(hi > lo)) throw std::invalid_argument("bisect_log needs 0 < lo < hi");
   return guarded({lo, hi}, [&](BoundaryResult& res) {
     Evaluator ev{pred, res};
@@ -136,8 +136,7 @@ BoundaryResult find_transition(const Predicate& pred, const std::vector<double>&
   });
 }
 
-BoundaryResult sup_all_below(const Predicate& pred, const std::vector<double>& grid,
-                             const BisectionOptions& opt) {
+BoundaryResult sup_all_below(const Predicate& pred, const std::vector<double>& grid, const BisectionOptions& opt) {
   check_grid(grid);
   return guarded(grid, [&](BoundaryResult& res) {
     Evaluator ev{pred, res};
@@ -156,8 +155,7 @@ BoundaryResult sup_all_below(const Predicate& pred, const std::vector<double>& g
   });
 }
 
-BoundaryResult inf_all_above(const Predicate& pred, const std::vector<double>& grid,
-                             const BisectionOptions& opt) {
+BoundaryResult inf_all_above(const Predicate& pred, const std::vector<double>& grid, const BisectionOptions& opt) {
   check_grid(grid);
   return guarded(grid, [&](BoundaryResult& res) {
     Evaluator ev{pred, res};

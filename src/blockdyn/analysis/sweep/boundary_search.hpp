@@ -52,7 +52,7 @@ struct BoundarySample {
 
 struct BoundaryResult {
   BoundaryStatus status = BoundaryStatus::Error;
-  double value = 0;    // geometric mean of the final bracket (Found), else the range end
+  double value = 0;       // geometric mean of the final bracket (Found), else the range end
   double lo = 0, hi = 0;  // final bracket (Found), else the range searched
   int evaluations = 0;
   std::vector<BoundarySample> samples;  // every predicate evaluation, in call order
@@ -72,13 +72,11 @@ BoundaryResult find_transition(const Predicate& pred, const std::vector<double>&
 
 // sup { K : pred(k) for all k < K }, scanning `grid` (ascending) upward.
 // BelowRange: pred fails at grid.front(); AboveRange: pred holds on the whole grid.
-BoundaryResult sup_all_below(const Predicate& pred, const std::vector<double>& grid,
-                             const BisectionOptions& opt = {});
+BoundaryResult sup_all_below(const Predicate& pred, const std::vector<double>& grid, const BisectionOptions& opt = {});
 
 // inf { K : pred(k) for all k > K }, scanning `grid` (ascending) downward from the top.
 // AboveRange: pred fails at grid.back(); BelowRange: pred holds on the whole grid.
-BoundaryResult inf_all_above(const Predicate& pred, const std::vector<double>& grid,
-                             const BisectionOptions& opt = {});
+BoundaryResult inf_all_above(const Predicate& pred, const std::vector<double>& grid, const BisectionOptions& opt = {});
 
 struct RefineOptions {
   double per_decade = 0;    // fine grid density (0: no refinement)
@@ -96,7 +94,6 @@ BoundaryResult refine_inf_all_above(const Predicate& pred, BoundaryResult coarse
 
 // Bisection in log between a point where pred is `value_lo` (lo) and one where it is not (hi).
 // Returns the final bracket; lo < hi, both > 0.
-BoundaryResult bisect_log(const Predicate& pred, double lo, double hi, bool value_lo,
-                          const BisectionOptions& opt = {});
+BoundaryResult bisect_log(const Predicate& pred, double lo, double hi, bool value_lo, const BisectionOptions& opt = {});
 
 }  // namespace blockdyn

@@ -24,8 +24,8 @@ GridTable::GridTable(std::string kind, std::vector<std::string> columns, std::si
   columns_.push_back("index");
   columns_.insert(columns_.end(), columns.begin(), columns.end());
   header_ = csv_header(columns_);
-  fingerprint_ = fingerprint_hex(kind_ + "\n" + dump_json(definition_, -1) + "\n" + dump_json(tolerances_, -1) +
-                                 "\n" + header_);
+  fingerprint_ =
+      fingerprint_hex(kind_ + "\n" + dump_json(definition_, -1) + "\n" + dump_json(tolerances_, -1) + "\n" + header_);
 }
 
 SweepRow GridTable::row(std::size_t index) const {

@@ -36,7 +36,7 @@ class PointTable {
 };
 
 // Helpers for cell formatting (exposed for tests and metric authors).
-std::string format_double(double v);          // %.17g
+std::string format_double(double v);           // %.17g
 std::string csv_escape(const std::string& s);  // RFC 4180 quoting when needed
 
 // One CSV line built cell by cell.

@@ -43,7 +43,7 @@ class RefinementPlan final : public PointPlan {
   std::size_t nxf_, nyf_;
   int levels_;
   Classify classify_;
-  int stage_ = -1;                                      // the stage last handed out
+  int stage_ = -1;                                          // the stage last handed out
   std::vector<std::pair<std::size_t, std::size_t>> cells_;  // lower-left corners of this level's cells
 };
 

@@ -38,7 +38,9 @@ const std::vector<AxisDef>& axis_defs() {
          [](RigidSweepPoint& p, double v) { p.block.shape.width = p.block.shape.height / v; }},
         {"mass", "block mass [kg]", false, [](RigidSweepPoint& p, double v) { p.block.shape.mass = v; }},
         {"mu", "static and kinetic friction together", true,
-         [](RigidSweepPoint& p, double v) { p.block.interface = {v, v}; }},
+         [](RigidSweepPoint& p, double v) {
+           p.block.interface = {v, v};
+         }},
         {"mu_s", "static friction", true, [](RigidSweepPoint& p, double v) { p.block.interface.mu_s = v; }},
         {"mu_k", "kinetic friction", true, [](RigidSweepPoint& p, double v) { p.block.interface.mu_k = v; }},
         {"restitution", "restitution (housner law: rocking e; newton law: e_n)", false,
@@ -61,10 +63,10 @@ const std::vector<AxisDef>& axis_defs() {
                    [h](RigidSweepPoint& p, double v) { comp(p, h).phase = v; }});
       d.push_back({n + "duration", w + "pulse or motion duration [s]", false,
                    [h](RigidSweepPoint& p, double v) { comp(p, h).duration = v; }});
-      d.push_back({n + "start", w + "start time [s]", false,
-                   [h](RigidSweepPoint& p, double v) { comp(p, h).t_start = v; }});
-      d.push_back({n + "scale", w + "record scale factor", false,
-                   [h](RigidSweepPoint& p, double v) { comp(p, h).scale = v; }});
+      d.push_back(
+          {n + "start", w + "start time [s]", false, [h](RigidSweepPoint& p, double v) { comp(p, h).t_start = v; }});
+      d.push_back(
+          {n + "scale", w + "record scale factor", false, [h](RigidSweepPoint& p, double v) { comp(p, h).scale = v; }});
     }
     return d;
   }();
@@ -78,9 +80,10 @@ const AxisDef* find_def(const std::string& name) {
 }
 
 const std::vector<std::string> kResultColumns = {
-    "status", "t_final", "final_mode", "max_abs_rotation", "max_abs_rotation_over_alpha", "overturned",
-    "overturn_time", "first_uplift_time", "first_beyond_alpha_time", "impacts", "mode_changes", "energy_initial",
-    "work_impact", "work_friction", "max_abs_energy_error", "steps", "rhs_evals"};
+    "status",       "t_final",        "final_mode",        "max_abs_rotation",        "max_abs_rotation_over_alpha",
+    "overturned",   "overturn_time",  "first_uplift_time", "first_beyond_alpha_time", "impacts",
+    "mode_changes", "energy_initial", "work_impact",       "work_friction",           "max_abs_energy_error",
+    "steps",        "rhs_evals"};
 
 std::string describe(const RigidSweepSpec& s, const RigidSweepPoint& p) {
   std::ostringstream os;
@@ -150,8 +153,8 @@ void validate(const RigidSweepSpec& s) {
     if (!d) {
       std::string names;
       for (const auto& x : axis_defs()) names += (names.empty() ? "" : ", ") + x.name;
-      throw std::invalid_argument("axes." + s.axes[a].name + ": not an axis of the " + s.model + " model (axes: " +
-                                  names + ")");
+      throw std::invalid_argument("axes." + s.axes[a].name + ": not an axis of the " + s.model +
+                                  " model (axes: " + names + ")");
     }
     if (d->rigid_only && s.model == "housner")
       throw std::invalid_argument("axes." + d->name + ": belongs to the rigid model, not housner");
@@ -192,7 +195,8 @@ nlohmann::ordered_json definition_json(const RigidSweepSpec& s) {
   j["ground_motion"] = to_json(s.ground);
   json init = {{"w0", s.initial.w0}, {"vw0", s.initial.vw0}};
   if (s.w0_over_alpha) init["w0_over_alpha"] = *s.w0_over_alpha;
-  for (auto [k, v] : {std::pair{"x0", s.initial.x0}, {"y0", s.initial.y0}, {"vx0", s.initial.vx0}, {"vy0", s.initial.vy0}})
+  for (auto [k, v] :
+       {std::pair{"x0", s.initial.x0}, {"y0", s.initial.y0}, {"vx0", s.initial.vx0}, {"vy0", s.initial.vy0}})
     if (v) init[k] = *v;
   j["initial"] = init;
   j["run"] = {{"t_start", s.options.t_start}, {"t_end", s.options.t_end}, {"track_energy", s.options.track_energy}};
@@ -229,8 +233,10 @@ SweepRow RigidSweepEvaluator::row(std::size_t index) const {
     return out;
   }
   auto opt = [&](const std::optional<double>& v) {
-    if (v) b.add(*v);
-    else b.empty();
+    if (v)
+      b.add(*v);
+    else
+      b.empty();
   };
   b.add(std::string(to_string(r.status)));
   b.add(r.t_final);
@@ -246,8 +252,10 @@ SweepRow RigidSweepEvaluator::row(std::size_t index) const {
   b.add(r.energy_initial);
   b.add(r.work_impact);
   b.add(r.work_friction);
-  if (spec_.options.track_energy) b.add(r.max_abs_energy_error);
-  else b.empty();
+  if (spec_.options.track_energy)
+    b.add(r.max_abs_energy_error);
+  else
+    b.empty();
   b.add(r.stats.accepted);
   b.add(r.stats.rhs_evals);
   if (!r.note.empty()) out.error = r.note;
@@ -273,11 +281,14 @@ RigidSweepSpec parse_rigid_sweep(const std::string& text, const std::string& sou
   if (const auto* a = toml_read::sub_table(root, "axes", "axes")) {
     for (const auto& [k, v] : *a) {
       Listed l{std::string(k.str()), v.type(), std::nullopt, {}, v.source().begin.line};
-      if (const auto* str = v.as_string()) l.text = str->get();
-      else if (v.is_number()) l.values.push_back(toml_read::number(v, "axes." + l.name));
+      if (const auto* str = v.as_string())
+        l.text = str->get();
+      else if (v.is_number())
+        l.values.push_back(toml_read::number(v, "axes." + l.name));
       else if (const auto* arr = v.as_array())
         for (const auto& e : *arr) l.values.push_back(toml_read::number(e, "axes." + l.name + "[]"));
-      else toml_read::fail("axes." + l.name, "must be a number, a list or a \"min:max:points[:log|:lin]\" string");
+      else
+        toml_read::fail("axes." + l.name, "must be a number, a list or a \"min:max:points[:log|:lin]\" string");
       listed.push_back(std::move(l));
     }
   }

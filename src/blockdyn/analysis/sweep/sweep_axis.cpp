@@ -63,8 +63,10 @@ SweepAxis axis_range(const std::string& name, double min, double max, long point
   const double hi = spacing == AxisSpacing::Log ? std::log10(max) : max;
   for (long i = 0; i < points; ++i) {
     double v;
-    if (i == 0) v = min;
-    else if (i == points - 1) v = max;
+    if (i == 0)
+      v = min;
+    else if (i == points - 1)
+      v = max;
     else {
       const double u = lo + (hi - lo) * double(i) / double(points - 1);
       v = spacing == AxisSpacing::Log ? std::pow(10.0, u) : u;
@@ -91,9 +93,12 @@ SweepAxis parse_axis(const std::string& name, const std::string& text, AxisSpaci
     auto parts = split(t, ':');
     AxisSpacing sp = default_spacing;
     if (parts.size() == 4) {
-      if (parts[3] == "log") sp = AxisSpacing::Log;
-      else if (parts[3] == "lin" || parts[3] == "linear") sp = AxisSpacing::Linear;
-      else fail(name, "spacing '" + parts[3] + "' is not one of: log, lin");
+      if (parts[3] == "log")
+        sp = AxisSpacing::Log;
+      else if (parts[3] == "lin" || parts[3] == "linear")
+        sp = AxisSpacing::Linear;
+      else
+        fail(name, "spacing '" + parts[3] + "' is not one of: log, lin");
       parts.pop_back();
     }
     if (parts.size() != 3) fail(name, "'" + t + "' is not of the form min:max:points[:log|:lin]");

@@ -10,17 +10,25 @@ namespace blockdyn {
 
 namespace {
 
-const std::vector<std::string> kBaseColumns = {
-    "index",         "k",
-    "r",             "inv_r",
-    "mu",            "ic",
-    "status",        "t_final",
-    "first_flight_time", "ihor_at_first_flight",
-    "overturned",    "overturn_time",
-    "ihor_at_overturn", "ihor_final",
-    "energy_initial", "energy_lost",
-    "max_abs_energy_error", "steps",
-    "rhs_evals"};
+const std::vector<std::string> kBaseColumns = {"index",
+                                               "k",
+                                               "r",
+                                               "inv_r",
+                                               "mu",
+                                               "ic",
+                                               "status",
+                                               "t_final",
+                                               "first_flight_time",
+                                               "ihor_at_first_flight",
+                                               "overturned",
+                                               "overturn_time",
+                                               "ihor_at_overturn",
+                                               "ihor_final",
+                                               "energy_initial",
+                                               "energy_lost",
+                                               "max_abs_energy_error",
+                                               "steps",
+                                               "rhs_evals"};
 
 // Forwards the trajectory to every metric's sink; stops when any of them asks to.
 class FanOutSink : public SimulationSink {
@@ -50,10 +58,14 @@ class FanOutSink : public SimulationSink {
 
 // A metric's value as a cell.
 void add_value(RowBuilder& b, const MetricValue& v) {
-  if (std::holds_alternative<double>(v)) b.add(std::get<double>(v));
-  else if (std::holds_alternative<long long>(v)) b.add(std::get<long long>(v));
-  else if (std::holds_alternative<std::string>(v)) b.add(csv_escape(std::get<std::string>(v)));
-  else b.empty();
+  if (std::holds_alternative<double>(v))
+    b.add(std::get<double>(v));
+  else if (std::holds_alternative<long long>(v))
+    b.add(std::get<long long>(v));
+  else if (std::holds_alternative<std::string>(v))
+    b.add(csv_escape(std::get<std::string>(v)));
+  else
+    b.empty();
 }
 
 }  // namespace
@@ -105,7 +117,8 @@ void SweepEvaluator::init() {
   }
   for (std::size_t i = 0; i < columns_.size(); ++i)
     for (std::size_t j = 0; j < i; ++j)
-      if (columns_[i] == columns_[j]) throw std::invalid_argument("metrics: column '" + columns_[i] + "' appears twice");
+      if (columns_[i] == columns_[j])
+        throw std::invalid_argument("metrics: column '" + columns_[i] + "' appears twice");
   header_ = csv_header(columns_);
   fingerprint_ = fingerprint_hex(dump_json(definition_json(spec_), -1) + "\n" + header_);
 }
@@ -168,8 +181,10 @@ SweepRow SweepEvaluator::row(std::size_t index) const {
   b.add(r.ihor);
   b.add(r.initial_energy.total());
   b.add(-r.work_friction());
-  if (options_.track_energy) b.add(r.max_abs_energy_error);
-  else b.empty();
+  if (options_.track_energy)
+    b.add(r.max_abs_energy_error);
+  else
+    b.empty();
   b.add(r.stats.accepted);
   b.add(r.stats.rhs_evals);
   std::vector<MetricValue> vals;

@@ -5,8 +5,8 @@
 #include <unistd.h>
 
 #include <cerrno>
-#include <cstdint>
 #include <charconv>
+#include <cstdint>
 #include <cstdio>
 #include <cstring>
 #include <fstream>
@@ -38,8 +38,10 @@ std::size_t field_count(const std::string& line) {
   std::size_t n = 1;
   bool quoted = false;
   for (char c : line) {
-    if (c == '"') quoted = !quoted;
-    else if (c == ',' && !quoted) ++n;
+    if (c == '"')
+      quoted = !quoted;
+    else if (c == ',' && !quoted)
+      ++n;
   }
   return n;
 }
@@ -111,8 +113,8 @@ void SweepJournal::load() {
     if (text.rfind("# blockdyn sweep journal v1 ", 0) == 0)
       fail("was written by an earlier blockdyn (journal format v1, rows without checksums)");
     if (text.rfind("# blockdyn sweep journal", 0) == 0)
-      fail("was written for a different sweep definition (its first line: '" +
-           text.substr(0, text.find('\n')) + "', expected fingerprint " + fingerprint_ + ")");
+      fail("was written for a different sweep definition (its first line: '" + text.substr(0, text.find('\n')) +
+           "', expected fingerprint " + fingerprint_ + ")");
     fail("is not a blockdyn sweep journal");
   }
   std::size_t pos = expect.size();

@@ -119,10 +119,8 @@ std::vector<MetricInfo> builtin_metrics() {
   return {
       {"event_counts", "number of events of each kind (n_takeoff, n_landing, n_w_zero, ...)",
        [] { return std::make_unique<EventCountsMetric>(); }},
-      {"final_state", "state and regime at the end of the run",
-       [] { return std::make_unique<FinalStateMetric>(); }},
-      {"regime_time", "time spent in contact, slide and flight",
-       [] { return std::make_unique<RegimeTimeMetric>(); }},
+      {"final_state", "state and regime at the end of the run", [] { return std::make_unique<FinalStateMetric>(); }},
+      {"regime_time", "time spent in contact, slide and flight", [] { return std::make_unique<RegimeTimeMetric>(); }},
       {"response_type", "long-term response class (thesis sec. 4.4) and the criterion that decided it",
        [] { return std::make_unique<ResponseTypeMetric>(); }},
       {"sensitive_dependence",

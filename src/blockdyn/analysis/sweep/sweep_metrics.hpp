@@ -28,9 +28,9 @@ using MetricValue = std::variant<std::monostate, double, long long, std::string>
 
 // What a metric may know about the point it describes.
 struct PointContext {
-  const SweepPoint& point;              // index, params (k, r, mu), inv_r, ic
-  const SimulationOptions& options;     // as used for this run (t_end, tolerances, stop rules)
-  const BlockStateVec& initial_state;   // z0 handed to simulate()
+  const SweepPoint& point;             // index, params (k, r, mu), inv_r, ic
+  const SimulationOptions& options;    // as used for this run (t_end, tolerances, stop rules)
+  const BlockStateVec& initial_state;  // z0 handed to simulate()
 };
 
 class PointMetric {

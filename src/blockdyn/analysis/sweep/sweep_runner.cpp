@@ -102,20 +102,20 @@ SweepSession::SweepSession(const PointTable& ev, const SweepRunOptions& o)
   const bool have_journal = exists(paths_.journal), have_csv = exists(paths_.csv);
   if (!o.resume && !o.overwrite) {
     if (have_journal)
-      throw std::invalid_argument("output: '" + paths_.journal +
-                                  "' holds an unfinished sweep: pass --resume to continue it or --overwrite to start over");
-    if (have_csv)
-      throw std::invalid_argument("output: '" + paths_.csv + "' exists: pass --overwrite to replace it");
+      throw std::invalid_argument(
+          "output: '" + paths_.journal +
+          "' holds an unfinished sweep: pass --resume to continue it or --overwrite to start over");
+    if (have_csv) throw std::invalid_argument("output: '" + paths_.csv + "' exists: pass --overwrite to replace it");
   }
   if (o.resume && !have_journal && have_csv) {
     if (complete_sidecar_fingerprint(paths_.sidecar) != ev.fingerprint())
-      throw std::invalid_argument("output: '" + paths_.csv + "' exists but '" + paths_.sidecar +
-                                  "' does not record a finished sweep of this definition; pass --overwrite to replace it");
+      throw std::invalid_argument(
+          "output: '" + paths_.csv + "' exists but '" + paths_.sidecar +
+          "' does not record a finished sweep of this definition; pass --overwrite to replace it");
     was_complete_ = true;
     return;
   }
-  journal_ = std::make_unique<SweepJournal>(paths_.journal, ev.fingerprint(), ev.header(), ev.size(),
-                                            o.resume);
+  journal_ = std::make_unique<SweepJournal>(paths_.journal, ev.fingerprint(), ev.header(), ev.size(), o.resume);
   // A table streamed into a FIFO or a device has no sidecar beside it (/dev/null.json): the
   // command's JSON summary holds the definition.
   stream_output_ = ::stat(paths_.csv.c_str(), &st) == 0 && !S_ISREG(st.st_mode);
@@ -204,7 +204,8 @@ SweepOutcome SweepSession::finish(int threads, bool sparse) {
     // The finished table is the input of this run: read back only from a regular file.
     struct stat st {};
     if (::stat(paths_.csv.c_str(), &st) != 0 || !S_ISREG(st.st_mode))
-      throw std::invalid_argument("output: '" + paths_.csv + "' is not a regular file: a finished sweep resumes from its CSV");
+      throw std::invalid_argument("output: '" + paths_.csv +
+                                  "' is not a regular file: a finished sweep resumes from its CSV");
     out.table = read_table(paths_.csv, ev_.header());
     return out;
   }

@@ -45,8 +45,10 @@ BlockStateVec sweep_initial_state(const SweepSpec& s, const SweepPoint& p) {
   sc.params = p.params;
   sc.initial.set = p.ic;
   const SweepInitial& in = s.initial;
-  if (in.w0_over_alpha) sc.initial.w0 = *in.w0_over_alpha * p.params.alpha();
-  else sc.initial.w0 = in.w0;
+  if (in.w0_over_alpha)
+    sc.initial.w0 = *in.w0_over_alpha * p.params.alpha();
+  else
+    sc.initial.w0 = in.w0;
   sc.initial.x0 = in.x0;
   sc.initial.y0 = in.y0;
   sc.initial.vx0 = in.vx0;
@@ -57,8 +59,8 @@ BlockStateVec sweep_initial_state(const SweepSpec& s, const SweepPoint& p) {
 
 static std::string describe(const SweepPoint& p) {
   char buf[200];
-  std::snprintf(buf, sizeof buf, "point %zu (k=%.17g, r=%.17g, mu=%.17g, ic=%s)", p.index, p.params.k,
-                p.params.r, p.params.mu, p.ic.c_str());
+  std::snprintf(buf, sizeof buf, "point %zu (k=%.17g, r=%.17g, mu=%.17g, ic=%s)", p.index, p.params.k, p.params.r,
+                p.params.mu, p.ic.c_str());
   return buf;
 }
 

@@ -19,9 +19,9 @@
 namespace blockdyn {
 
 struct SweepInitial {
-  std::vector<std::string> sets = {"ic1"};  // ic1 | ic2 | custom: an axis of the grid
-  std::optional<double> w0;                 // absolute tilt (ic1 tilt; ic2/custom: w)
-  std::optional<double> w0_over_alpha;      // tilt as a fraction of alpha = atan(r), per point
+  std::vector<std::string> sets = {"ic1"};      // ic1 | ic2 | custom: an axis of the grid
+  std::optional<double> w0;                     // absolute tilt (ic1 tilt; ic2/custom: w)
+  std::optional<double> w0_over_alpha;          // tilt as a fraction of alpha = atan(r), per point
   std::optional<double> x0, y0, vx0, vy0, vw0;  // overrides applied on top of the set
 };
 

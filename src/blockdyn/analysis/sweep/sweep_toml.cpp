@@ -18,7 +18,8 @@ void check_keys(const toml::table& t, const std::string& where, const std::set<s
   const std::string key = toml_read::first_unknown_key(t, allowed);
   if (key.empty()) return;
   fail(where.empty() ? key : where + "." + key, "unknown key (allowed" +
-       (where.empty() ? std::string() : " in [" + where + "]") + ": " + toml_read::joined(allowed) + ")");
+                                                    (where.empty() ? std::string() : " in [" + where + "]") + ": " +
+                                                    toml_read::joined(allowed) + ")");
 }
 
 long integer(const toml::node& n, const std::string& key) {
@@ -55,9 +56,12 @@ SweepAxis read_axis(const toml::node& n, const std::string& name, AxisSpacing de
     AxisSpacing sp = default_spacing;
     if (const toml::node* s = t->get("spacing")) {
       const std::string v = string(*s, key + ".spacing");
-      if (v == "log") sp = AxisSpacing::Log;
-      else if (v == "linear" || v == "lin") sp = AxisSpacing::Linear;
-      else fail(key + ".spacing", "'" + v + "' is not one of: log, linear");
+      if (v == "log")
+        sp = AxisSpacing::Log;
+      else if (v == "linear" || v == "lin")
+        sp = AxisSpacing::Linear;
+      else
+        fail(key + ".spacing", "'" + v + "' is not one of: log, linear");
     }
     return axis_range(name, number(*t->get("min"), key + ".min"), number(*t->get("max"), key + ".max"),
                       integer(*t->get("points"), key + ".points"), sp);
@@ -94,8 +98,9 @@ SweepSpec parse_sweep(const std::string& text, const std::string& source) {
     toml_read::read_state_overrides(*i, "initial", s.initial);
   }
   if (const auto* r = sub(root, "run")) {
-    check_keys(*r, "run", {"t_end", "rtol", "atol", "max_steps", "event_samples", "method", "track_energy",
-                           "stop_at_first_flight", "stop_at_ihor"});
+    check_keys(*r, "run",
+               {"t_end", "rtol", "atol", "max_steps", "event_samples", "method", "track_energy", "stop_at_first_flight",
+                "stop_at_ihor"});
     SimulationOptions& o = s.options;
     if (auto v = opt_number(*r, "run", "t_end")) o.t_end = *v;
     if (auto v = opt_number(*r, "run", "rtol")) o.integrator.rtol = *v;
@@ -104,7 +109,8 @@ SweepSpec parse_sweep(const std::string& text, const std::string& source) {
     if (const auto* n = r->get("max_steps")) o.integrator.max_steps = integer(*n, "run.max_steps");
     if (const auto* n = r->get("event_samples")) o.integrator.event_samples = int(integer(*n, "run.event_samples"));
     if (const auto* n = r->get("track_energy")) o.track_energy = boolean(*n, "run.track_energy");
-    if (const auto* n = r->get("stop_at_first_flight")) o.stop_at_first_flight = boolean(*n, "run.stop_at_first_flight");
+    if (const auto* n = r->get("stop_at_first_flight"))
+      o.stop_at_first_flight = boolean(*n, "run.stop_at_first_flight");
     if (const auto* n = r->get("stop_at_ihor")) o.stop_at_ihor = integer(*n, "run.stop_at_ihor");
   }
   if (const auto* o = sub(root, "output")) {
@@ -121,8 +127,6 @@ SweepSpec parse_sweep(const std::string& text, const std::string& source) {
   return s;
 }
 
-SweepSpec load_sweep(const std::string& path) {
-  return parse_sweep(toml_read::read_file(path, "sweep file"), path);
-}
+SweepSpec load_sweep(const std::string& path) { return parse_sweep(toml_read::read_file(path, "sweep file"), path); }
 
 }  // namespace blockdyn

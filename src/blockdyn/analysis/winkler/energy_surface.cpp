@@ -8,9 +8,9 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "blockdyn/model/winkler/region.hpp"
 #include "blockdyn/model/winkler/energy.hpp"
 #include "blockdyn/model/winkler/initial_conditions.hpp"
+#include "blockdyn/model/winkler/region.hpp"
 
 namespace blockdyn {
 

@@ -9,8 +9,8 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "blockdyn/model/winkler/region.hpp"
 #include "blockdyn/model/winkler/energy.hpp"
+#include "blockdyn/model/winkler/region.hpp"
 
 namespace blockdyn {
 
@@ -101,7 +101,10 @@ double diagonal_arm_slope(const BlockParams& p) {
 }
 
 ReducedArm::ReducedArm(const BlockParams& p_)
-    : p(p_), alpha(p_.alpha()), square(p_.r == 1.0), upright_slope(upright_arm_slope(p_)),
+    : p(p_),
+      alpha(p_.alpha()),
+      square(p_.r == 1.0),
+      upright_slope(upright_arm_slope(p_)),
       diagonal_slope(square ? diagonal_arm_slope(p_) : 0.0) {
   at0 = square ? upright_slope / alpha : upright_slope;
   at_alpha = square ? -diagonal_slope / alpha : equilibrium_arm(p, alpha) / alpha;
@@ -116,17 +119,23 @@ double ReducedArm::operator()(double w) const {
 
 const char* to_string(Stability s) {
   switch (s) {
-    case Stability::Stable: return "stable";
-    case Stability::Unstable: return "unstable";
-    default: return "neutral";
+    case Stability::Stable:
+      return "stable";
+    case Stability::Unstable:
+      return "unstable";
+    default:
+      return "neutral";
   }
 }
 
 const char* to_string(EquilibriumBranch b) {
   switch (b) {
-    case EquilibriumBranch::Upright: return "upright";
-    case EquilibriumBranch::Diagonal: return "diagonal";
-    default: return "tilted";
+    case EquilibriumBranch::Upright:
+      return "upright";
+    case EquilibriumBranch::Diagonal:
+      return "diagonal";
+    default:
+      return "tilted";
   }
 }
 

@@ -45,10 +45,10 @@ struct ReducedArm {
   double operator()(double w) const;
   BlockParams p;
   double alpha;
-  bool square;           // r == 1
-  double upright_slope;  // d arm/dw at 0
-  double diagonal_slope; // d arm/dw at alpha (square block only, else 0)
-  double at0, at_alpha;  // endpoint values of g
+  bool square;            // r == 1
+  double upright_slope;   // d arm/dw at 0
+  double diagonal_slope;  // d arm/dw at alpha (square block only, else 0)
+  double at0, at_alpha;   // endpoint values of g
 };
 
 enum class Stability { Stable, Unstable, Neutral };

@@ -40,9 +40,7 @@ double k_os_linearized(double r) { return (3.0 + std::sqrt(9.0 - 3.0 * r * r)) /
 
 double k_os_small_angle(double r) { return 6.0 / (r * r) - 0.5; }
 
-double fold_tilt_one_corner(double r) {
-  return r >= 1.0 ? std::atan(1.0) : std::atan(std::tanh(std::atanh(r) / 3.0));
-}
+double fold_tilt_one_corner(double r) { return r >= 1.0 ? std::atan(1.0) : std::atan(std::tanh(std::atanh(r) / 3.0)); }
 
 double k_uns_one_corner(double r) {
   const double t = std::tan(fold_tilt_one_corner(r));

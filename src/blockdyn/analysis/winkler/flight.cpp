@@ -58,9 +58,8 @@ FirstFlight first_flight(const BlockParams& p, const IcChoice& ic, const StudyRu
   return f;
 }
 
-std::vector<FirstFlight> first_flight_scan(const BlockParams& base, const IcChoice& ic,
-                                           const std::vector<double>& ks, const StudyRunOptions& o,
-                                           int threads) {
+std::vector<FirstFlight> first_flight_scan(const BlockParams& base, const IcChoice& ic, const std::vector<double>& ks,
+                                           const StudyRunOptions& o, int threads) {
   return parallel_map<FirstFlight>(ks.size(), threads, [&](std::size_t i) {
     BlockParams p = base;
     p.k = ks[i];
@@ -69,8 +68,7 @@ std::vector<FirstFlight> first_flight_scan(const BlockParams& base, const IcChoi
 }
 
 std::vector<FirstFlight> first_flight_map(double mu, const IcChoice& ic, const std::vector<double>& rs,
-                                          const std::vector<double>& ks, const StudyRunOptions& o,
-                                          int threads) {
+                                          const std::vector<double>& ks, const StudyRunOptions& o, int threads) {
   const std::size_t nk = ks.size();
   return parallel_map<FirstFlight>(rs.size() * nk, threads, [&](std::size_t i) {
     return first_flight(BlockParams{rs[i / nk], mu, ks[i % nk]}, ic, o);
@@ -126,9 +124,7 @@ BoundaryResult k_min(double r, double mu, const IcChoice& ic, double k_lo, doubl
   return res;
 }
 
-const char* to_string(FirstImpact c) {
-  return c == FirstImpact::WNegative ? "w_negative" : "ihor2";
-}
+const char* to_string(FirstImpact c) { return c == FirstImpact::WNegative ? "w_negative" : "ihor2"; }
 
 FirstImpact parse_first_impact(const std::string& s) {
   if (s == "w_negative") return FirstImpact::WNegative;
@@ -136,8 +132,7 @@ FirstImpact parse_first_impact(const std::string& s) {
   throw std::invalid_argument("high-criterion = '" + s + "' is not one of: w_negative, ihor2");
 }
 
-FlightCheck no_flight_while_ihor_below(const BlockParams& p, const IcChoice& ic, long n,
-                                       const StudyRunOptions& o) {
+FlightCheck no_flight_while_ihor_below(const BlockParams& p, const IcChoice& ic, long n, const StudyRunOptions& o) {
   if (n < 1) throw std::invalid_argument("n = " + std::to_string(n) + " is out of range: must be >= 1");
   SimulationOptions s = first_flight_options(o);
   s.stop_at_ihor = n;
@@ -156,8 +151,7 @@ FlightCheck flies_during_first_impact(const BlockParams& p, const IcChoice& ic, 
   FlightCheck c;
   if (crit == FirstImpact::WNegative) {
     if (!ic.is_ic1())
-      throw std::invalid_argument("high-criterion = w_negative applies to ic1 only (use ihor2 for " +
-                                  ic.name() + ")");
+      throw std::invalid_argument("high-criterion = w_negative applies to ic1 only (use ihor2 for " + ic.name() + ")");
     WNegativeWindow window;
     const SimulationResult res = run_checked(p, ic, s, &window);
     // A take-off ends the run before the window closes; a closed window stops it first.

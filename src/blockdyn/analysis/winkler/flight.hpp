@@ -28,22 +28,20 @@ struct FirstFlight {
   // First take-off time; without flight t_end (the thesis's convention for "no flight", also
   // when the block overturned first: the motion is over and it never flew).
   double time = 0;
-  double t_final = 0;  // when the run ended
-  long ihor = 0;       // ihor at first flight, or at the end of the run
+  double t_final = 0;                  // when the run ended
+  long ihor = 0;                       // ihor at first flight, or at the end of the run
   SimStatus status = SimStatus::TEnd;  // EarlyStop when stopped at the flight
 };
 
 FirstFlight first_flight(const BlockParams& p, const IcChoice& ic, const StudyRunOptions& o);
 
 // first_flight at every k (mu, r from `base`), in parallel, results in the order of `ks`.
-std::vector<FirstFlight> first_flight_scan(const BlockParams& base, const IcChoice& ic,
-                                           const std::vector<double>& ks, const StudyRunOptions& o,
-                                           int threads);
+std::vector<FirstFlight> first_flight_scan(const BlockParams& base, const IcChoice& ic, const std::vector<double>& ks,
+                                           const StudyRunOptions& o, int threads);
 
 // Time-to-flight map over (k, r) (thesis Fig. 4.20); row-major: index = ir * ks.size() + ik.
 std::vector<FirstFlight> first_flight_map(double mu, const IcChoice& ic, const std::vector<double>& rs,
-                                          const std::vector<double>& ks, const StudyRunOptions& o,
-                                          int threads);
+                                          const std::vector<double>& ks, const StudyRunOptions& o, int threads);
 
 // Total initial energy of the initial-condition set (E = 0 is the least energy in flight).
 double initial_energy(const BlockParams& p, const IcChoice& ic);
@@ -65,8 +63,7 @@ struct FlightCheck {
 };
 
 // Does the block stay on the foundation while ihor < n? (stops at first flight or at ihor = n)
-FlightCheck no_flight_while_ihor_below(const BlockParams& p, const IcChoice& ic, long n,
-                                       const StudyRunOptions& o);
+FlightCheck no_flight_while_ihor_below(const BlockParams& p, const IcChoice& ic, long n, const StudyRunOptions& o);
 // Does the block fly before or during the first impact (criterion c)?
 FlightCheck flies_during_first_impact(const BlockParams& p, const IcChoice& ic, FirstImpact c,
                                       const StudyRunOptions& o);

@@ -34,9 +34,9 @@ void PoincareCollector::on_event(const WinklerBlock&, const EventRecord& e) {
 void write_poincare_csv(std::ostream& out, const std::vector<PoincarePoint>& pts) {
   out << "t,ihor,w,h,y,vy,vw,x,vx,regime,energy,work_friction,work_nonpotential\n" << std::setprecision(17);
   for (const auto& q : pts)
-    out << q.t << ',' << q.ihor << ',' << q.w << ',' << q.h << ',' << q.y << ',' << q.vy << ',' << q.vw << ',' << q.x << ','
-        << q.vx << ',' << to_string(q.regime) << ',' << q.energy << ','
-        << q.work_friction << ',' << q.work_nonpotential << '\n';
+    out << q.t << ',' << q.ihor << ',' << q.w << ',' << q.h << ',' << q.y << ',' << q.vy << ',' << q.vw << ',' << q.x
+        << ',' << q.vx << ',' << to_string(q.regime) << ',' << q.energy << ',' << q.work_friction << ','
+        << q.work_nonpotential << '\n';
 }
 
 }  // namespace blockdyn

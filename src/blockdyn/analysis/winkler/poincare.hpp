@@ -13,12 +13,12 @@ namespace blockdyn {
 
 struct PoincarePoint {
   double t = 0;
-  long ihor = 0;      // passage count after this crossing
-  double w = 0;       // residual (rounding level)
-  double h = 0;      // y - 1/2, exact
+  long ihor = 0;  // passage count after this crossing
+  double w = 0;   // residual (rounding level)
+  double h = 0;   // y - 1/2, exact
   double y = 0, vy = 0, vw = 0, x = 0, vx = 0;
   Regime regime = Regime::Slide;  // regime the block continues in
-  double energy = 0;  // total energy at the crossing
+  double energy = 0;              // total energy at the crossing
   // Work done since the start by friction and by the non-potential part of the thesis's
   // foundation torque: energy - E0 - these = integration error.
   double work_friction = 0, work_nonpotential = 0;
@@ -28,8 +28,7 @@ enum class CrossingDirection { Both, Positive, Negative };  // sign of w' at the
 
 class PoincareCollector : public SimulationSink {
  public:
-  explicit PoincareCollector(const BlockParams& p, CrossingDirection dir = CrossingDirection::Both,
-                             double t_min = 0.0);
+  explicit PoincareCollector(const BlockParams& p, CrossingDirection dir = CrossingDirection::Both, double t_min = 0.0);
   void on_event(const WinklerBlock& m, const EventRecord& e) override;
   const std::vector<PoincarePoint>& points() const { return points_; }
 

@@ -11,14 +11,22 @@ namespace blockdyn {
 
 const char* to_string(ResponseType t) {
   switch (t) {
-    case ResponseType::SteadyRocking: return "steady_rocking";
-    case ResponseType::Settled: return "settled";
-    case ResponseType::SettleDown: return "settle_down";
-    case ResponseType::ZeroFrictionRockFlight: return "zero_friction_rock_flight";
-    case ResponseType::RockToVertical: return "rock_to_vertical";
-    case ResponseType::Overturned: return "overturned";
-    case ResponseType::Unclassified: return "unclassified";
-    case ResponseType::Failed: return "failed";
+    case ResponseType::SteadyRocking:
+      return "steady_rocking";
+    case ResponseType::Settled:
+      return "settled";
+    case ResponseType::SettleDown:
+      return "settle_down";
+    case ResponseType::ZeroFrictionRockFlight:
+      return "zero_friction_rock_flight";
+    case ResponseType::RockToVertical:
+      return "rock_to_vertical";
+    case ResponseType::Overturned:
+      return "overturned";
+    case ResponseType::Unclassified:
+      return "unclassified";
+    case ResponseType::Failed:
+      return "failed";
   }
   return "?";
 }
@@ -35,7 +43,8 @@ void validate(const ResponseOptions& o) {
   if (!(c.steady_flight_fraction > 0 && c.steady_flight_fraction < 1))
     bad("steady-flight-fraction", "in (0, 1)", c.steady_flight_fraction);
   if (!(c.settled_energy > 0 && c.settled_energy < 1)) bad("settled-energy", "in (0, 1)", c.settled_energy);
-  if (!(c.settle_dissipation > 0 && c.settle_dissipation < 1)) bad("settle-dissipation", "in (0, 1)", c.settle_dissipation);
+  if (!(c.settle_dissipation > 0 && c.settle_dissipation < 1))
+    bad("settle-dissipation", "in (0, 1)", c.settle_dissipation);
   if (!(c.settle_rotation_share > 0 && c.settle_rotation_share < 1))
     bad("settle-rotation-share", "in (0, 1)", c.settle_rotation_share);
   if (!(c.vertical_trend > 0 && c.vertical_trend < 1)) bad("vertical-trend", "in (0, 1)", c.vertical_trend);
@@ -92,8 +101,7 @@ ResponseMetrics compute_metrics(const BlockParams& p, const SimulationResult& r,
   m.dissipated_fraction = avail > 0 ? (0.0 - m.work_friction) / avail : 0.0;  // 0 - w: no "-0"
   if (acc.reached_late()) {
     const double avail_late = acc.late_energy() - m.e_rest;
-    m.late_dissipated_fraction =
-        avail_late > 0 ? -(m.work_friction - acc.late_work_friction()) / avail_late : 0.0;
+    m.late_dissipated_fraction = avail_late > 0 ? -(m.work_friction - acc.late_work_friction()) / avail_late : 0.0;
     m.late_energy_max = std::fmax(acc.late_energy(), m.e_final);
     if (avail > 0) m.late_energy_fraction = (m.late_energy_max - m.e_rest) / avail;
   }
@@ -145,7 +153,8 @@ ResponseReport classify(const BlockParams& p, const ResponseMetrics& m, const Re
     rep.reason = std::move(why);
     return rep;
   };
-  if (m.status == SimStatus::Overturned) return set(ResponseType::Overturned, fmt("overturned at t = %.6g", *m.overturn_time));
+  if (m.status == SimStatus::Overturned)
+    return set(ResponseType::Overturned, fmt("overturned at t = %.6g", *m.overturn_time));
   if (m.status != SimStatus::TEnd && m.status != SimStatus::EarlyStop)
     return set(ResponseType::Failed, std::string("run ended with status ") + to_string(m.status));
   // At rest: flight impossible from the late window on (E < 0) and almost all of the energy gone.

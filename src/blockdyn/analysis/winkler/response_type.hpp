@@ -69,7 +69,7 @@ struct ResponseMetrics {
   std::optional<double> overturn_time, first_flight_time;
   double e0 = 0, e_final = 0, e_rest = 0;  // e_rest = -1/(2k): the block at rest upright
   double work_friction = 0;
-  double dissipated_fraction = 0;  // -W_friction / (E0 - E_rest)
+  double dissipated_fraction = 0;       // -W_friction / (E0 - E_rest)
   double late_dissipated_fraction = 0;  // the same over the late window, relative to E(late_start)
   // Largest total energy in the late window (at its start or end: friction only removes energy;
   // the two-corner non-potential part is far smaller), absolute and as (E - E_rest) / (E0 - E_rest);
@@ -80,9 +80,9 @@ struct ResponseMetrics {
   long ihor = 0, takeoffs = 0, late_takeoffs = 0;
   double flight_fraction = 0, late_flight_fraction = 0;  // of the run / of the late window
   long swings = 0, late_swings = 0;
-  double early_swing_length = 0, late_swing_length = 0;  // means
-  double late_swing_length_cv = 0;                       // std / mean in the late window
-  Energy early_average, late_average;                    // means of swing averages
+  double early_swing_length = 0, late_swing_length = 0;      // means
+  double late_swing_length_cv = 0;                           // std / mean in the late window
+  Energy early_average, late_average;                        // means of swing averages
   double early_rotation_share = 0, late_rotation_share = 0;  // rotation / (rotation + kinetic_y)
 };
 
@@ -99,9 +99,9 @@ ResponseReport classify(const BlockParams& p, const ResponseMetrics& m, const Re
 struct ResponseOptions {
   double t_end = 1000;
   IntegratorOptions integrator;
-  double late_fraction = 0.5;    // late window: [late_fraction * t_end, t_end]
-  double quadrature_dt = 1e-3;   // swing-average sampling
-  double phase_dt = 0.0;         // phase-portrait sampling (0: none; the sweep does not need it)
+  double late_fraction = 0.5;   // late window: [late_fraction * t_end, t_end]
+  double quadrature_dt = 1e-3;  // swing-average sampling
+  double phase_dt = 0.0;        // phase-portrait sampling (0: none; the sweep does not need it)
   ResponseCriteria criteria;
 };
 

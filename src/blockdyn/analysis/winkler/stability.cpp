@@ -34,9 +34,8 @@ OverturnRun overturn_run(const BlockParams& p, const IcChoice& ic, const StudyRu
   return out;
 }
 
-std::vector<OverturnRun> overturn_scan(const BlockParams& base, const IcChoice& ic,
-                                       const std::vector<double>& ks, const StudyRunOptions& o,
-                                       int threads) {
+std::vector<OverturnRun> overturn_scan(const BlockParams& base, const IcChoice& ic, const std::vector<double>& ks,
+                                       const StudyRunOptions& o, int threads) {
   return parallel_map<OverturnRun>(ks.size(), threads, [&](std::size_t i) {
     BlockParams p = base;
     p.k = ks[i];
@@ -105,8 +104,7 @@ K3Point k3_stability(double r, double mu, const BoundaryResult& k2, const StudyR
 }
 
 BlowupPoint blowup_ratio(double mu, BlowupWhich which, double r_lo, double r_hi, double r_per_decade,
-                         const BisectionOptions& r_bisect, const StudyRunOptions& o,
-                         const StabilitySearchOptions& s) {
+                         const BisectionOptions& r_bisect, const StudyRunOptions& o, const StabilitySearchOptions& s) {
   check_search(s);
   const IcChoice ic{IcChoice::Set::Ic2};
   const long n = which == BlowupWhich::R2 ? 2 : 3;

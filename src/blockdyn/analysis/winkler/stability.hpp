@@ -19,8 +19,8 @@
 #include <vector>
 
 #include "blockdyn/analysis/sweep/boundary_search.hpp"
-#include "blockdyn/analysis/winkler/study_options.hpp"
 #include "blockdyn/analysis/winkler/ic_choice.hpp"
+#include "blockdyn/analysis/winkler/study_options.hpp"
 #include "blockdyn/simulation/simulate.hpp"
 
 namespace blockdyn {
@@ -35,9 +35,8 @@ struct OverturnRun {
 
 // Runs to t_end (o.t_end) or to overturning.
 OverturnRun overturn_run(const BlockParams& p, const IcChoice& ic, const StudyRunOptions& o);
-std::vector<OverturnRun> overturn_scan(const BlockParams& base, const IcChoice& ic,
-                                       const std::vector<double>& ks, const StudyRunOptions& o,
-                                       int threads);
+std::vector<OverturnRun> overturn_scan(const BlockParams& base, const IcChoice& ic, const std::vector<double>& ks,
+                                       const StudyRunOptions& o, int threads);
 
 // Does the block overturn (before t_end) while ihor < n? Stops as soon as ihor reaches n.
 bool overturns_while_ihor_below(const BlockParams& p, const IcChoice& ic, long n, const StudyRunOptions& o);
@@ -69,7 +68,6 @@ struct BlowupPoint {
 // r2_s(mu) or r3_s(mu): the r grid [r_lo, r_hi] (log, r_per_decade) is scanned upward and the
 // first r where the block does not always overturn is refined by bisection (rel. tol `r_bisect`).
 BlowupPoint blowup_ratio(double mu, BlowupWhich which, double r_lo, double r_hi, double r_per_decade,
-                         const BisectionOptions& r_bisect, const StudyRunOptions& o,
-                         const StabilitySearchOptions& s);
+                         const BisectionOptions& r_bisect, const StudyRunOptions& o, const StabilitySearchOptions& s);
 
 }  // namespace blockdyn

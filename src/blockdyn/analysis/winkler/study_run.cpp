@@ -21,9 +21,9 @@ SimulationResult run_checked(const BlockParams& p, const IcChoice& ic, const Sim
                              SimulationSink* sink) {
   SimulationResult res = simulate(p, {}, ic.state(p), s, sink);
   if (res.status == SimStatus::NumericalFailure)
-    throw std::runtime_error("integration failed (" + std::string(to_string(res.run_status)) + ") for " +
-                             ic.name() + ", r = " + number_text(p.r) + ", mu = " + number_text(p.mu) +
-                             ", k = " + number_text(p.k) + " at t = " + number_text(res.t_final));
+    throw std::runtime_error("integration failed (" + std::string(to_string(res.run_status)) + ") for " + ic.name() +
+                             ", r = " + number_text(p.r) + ", mu = " + number_text(p.mu) + ", k = " + number_text(p.k) +
+                             " at t = " + number_text(res.t_final));
   return res;
 }
 

@@ -221,9 +221,9 @@ void write_swings_csv(std::ostream& out, const std::vector<SwingRecord>& swings)
   for (std::size_t i = 0; i < swings.size(); ++i) {
     const SwingRecord& s = swings[i];
     const Energy& e = s.average;
-    out << i << ',' << s.t_start << ',' << s.t_end << ',' << s.length() << ',' << s.max_abs_w << ','
-        << s.flight_time << ',' << e.kinetic_x << ',' << e.kinetic_y << ',' << e.rotation << ',' << e.gravity << ','
-        << e.springs << ',' << e.total() << '\n';
+    out << i << ',' << s.t_start << ',' << s.t_end << ',' << s.length() << ',' << s.max_abs_w << ',' << s.flight_time
+        << ',' << e.kinetic_x << ',' << e.kinetic_y << ',' << e.rotation << ',' << e.gravity << ',' << e.springs << ','
+        << e.total() << '\n';
   }
 }
 
@@ -231,8 +231,8 @@ void write_phase_csv(std::ostream& out, const std::vector<PhaseSample>& phase) {
   out << "t,x,y,w,vx,vy,vw,regime\n";
   out << std::setprecision(17);
   for (const PhaseSample& p : phase)
-    out << p.t << ',' << p.s.x << ',' << p.s.y << ',' << p.s.w << ',' << p.s.vx << ',' << p.s.vy << ',' << p.s.vw
-        << ',' << to_string(p.regime) << '\n';
+    out << p.t << ',' << p.s.x << ',' << p.s.y << ',' << p.s.w << ',' << p.s.vx << ',' << p.s.vy << ',' << p.s.vw << ','
+        << to_string(p.regime) << '\n';
 }
 
 }  // namespace blockdyn

@@ -29,10 +29,10 @@ struct PhaseSample {
 };
 
 struct SwingOptions {
-  double quadrature_dt = 1e-3;  // largest spacing of the energy samples (trapezoidal rule)
+  double quadrature_dt = 1e-3;   // largest spacing of the energy samples (trapezoidal rule)
   int min_samples_per_step = 1;  // and at least this many per integrator step
-  double phase_dt = 0.0;        // phase-portrait sampling interval (<= 0: none)
-  double late_start = 0.0;      // flight statistics are also kept for t >= late_start
+  double phase_dt = 0.0;         // phase-portrait sampling interval (<= 0: none)
+  double late_start = 0.0;       // flight statistics are also kept for t >= late_start
 };
 
 void validate(const SwingOptions& o);
@@ -85,11 +85,11 @@ class SwingAccumulator : public SimulationSink {
   std::vector<SwingRecord> swings_;
   std::vector<PhaseSample> phase_;
   Sample last_;
-  BlockMode last_mode_;  // the mode last_.rate was evaluated in
+  BlockMode last_mode_;    // the mode last_.rate was evaluated in
   int sign_ = 0;           // sign of w' since the last turning point (0: not yet known)
   bool in_swing_ = false;  // a turning point has been seen
   double swing_t0_ = 0;
-  Energy integral_;        // running integrals of the components over the current swing
+  Energy integral_;  // running integrals of the components over the current swing
   double max_abs_w_ = 0, swing_flight_ = 0;
   double next_phase_t_ = 0, phase_t0_ = 0;
   long n_phase_ = 0;

@@ -134,11 +134,13 @@ void build_arch(Assembly& a, const PresetOptions& o) {
     b.name = "voussoir " + std::to_string(k);
     const double size = std::fmax(b.width, b.height), least = std::fmin(b.width, b.height);
     if (size > 1e3)
-      throw std::invalid_argument("radius = " + number_text(o.radius, 6) + " m, thickness-ratio = " + number_text(o.thickness_ratio, 6) +
+      throw std::invalid_argument("radius = " + number_text(o.radius, 6) +
+                                  " m, thickness-ratio = " + number_text(o.thickness_ratio, 6) +
                                   " and voussoirs = " + std::to_string(n) + " make voussoirs " + number_text(size, 6) +
                                   " m across: at most 1000 m (a smaller radius or more voussoirs)");
     if (least < kMinBlockSize)
-      throw std::invalid_argument("radius = " + number_text(o.radius, 6) + " m, thickness-ratio = " + number_text(o.thickness_ratio, 6) +
+      throw std::invalid_argument("radius = " + number_text(o.radius, 6) +
+                                  " m, thickness-ratio = " + number_text(o.thickness_ratio, 6) +
                                   " and voussoirs = " + std::to_string(n) + " make voussoirs " + number_text(least, 6) +
                                   " m thin: at least 1e-3 m" + kMinBlockSizeWhy);
     a.blocks.push_back(b);
@@ -179,7 +181,8 @@ Assembly make_preset(const std::string& name, const PresetOptions& o) {
     throw std::invalid_argument("thickness = " + number_text(o.thickness, 6) + " must be in (0, 100] m");
   if (!(o.density > 0 && o.density <= 1e5))
     throw std::invalid_argument("density = " + number_text(o.density, 6) + " must be in (0, 1e5] kg/m^3");
-  if (!(std::fabs(o.tilt) < 1.5)) throw std::invalid_argument("tilt = " + number_text(o.tilt, 6) + " must be in (-1.5, 1.5) rad");
+  if (!(std::fabs(o.tilt) < 1.5))
+    throw std::invalid_argument("tilt = " + number_text(o.tilt, 6) + " must be in (-1.5, 1.5) rad");
   const double b = o.block_width, h = o.slenderness * b, g = 9.81;
   const double s = o.tilt >= 0 ? 1.0 : -1.0;  // theta > 0 turns about the left base corner
   Assembly a;
@@ -220,8 +223,8 @@ Assembly make_preset(const std::string& name, const PresetOptions& o) {
     const double L = o.lintel_length > 0 ? o.lintel_length : h;
     const double xc = 0.5 * L - o.overhang - 0.5 * b;  // column centres at -xc, +xc
     if (!(xc > 0.5 * b))
-      throw std::invalid_argument("trilith: the lintel (length " + number_text(L, 6) + " m, overhang " + number_text(o.overhang, 6) +
-                                  " m) must span a clear opening between the columns");
+      throw std::invalid_argument("trilith: the lintel (length " + number_text(L, 6) + " m, overhang " +
+                                  number_text(o.overhang, 6) + " m) must span a clear opening between the columns");
     if (!(L <= 1e3)) throw std::invalid_argument("lintel-length = " + number_text(L, 6) + " must be at most 1000 m");
     AssemblyBlock c0 = make_block("left column", b, h, o), c1 = make_block("right column", b, h, o);
     AssemblyBlock li = make_block("lintel", L, b, o);
@@ -278,7 +281,8 @@ void check_overlaps(const Assembly& a, double min_size) {
       if (d > deep)
         throw std::invalid_argument("block " + std::to_string(i) + " (" + a.blocks[i].name + ") and block " +
                                     std::to_string(j) + " (" + a.blocks[j].name + ") overlap by " + number_text(d, 6) +
-                                    " m at the start (at most " + number_text(deep, 6) + " m, 2% of the smallest block size)");
+                                    " m at the start (at most " + number_text(deep, 6) +
+                                    " m, 2% of the smallest block size)");
     }
 }
 
@@ -286,15 +290,16 @@ void check_law(const ContactLaw& l, const std::string& where, bool rigid) {
   if (!(l.k_normal >= 1.0 && l.k_normal <= 1e13))
     throw std::invalid_argument(where + ".k_normal = " + number_text(l.k_normal, 6) + " must be in [1, 1e13] N/m");
   if (!(l.k_tangential < 0 || (l.k_tangential >= 1.0 && l.k_tangential <= 1e13)))
-    throw std::invalid_argument(where + ".k_tangential = " + number_text(l.k_tangential, 6) + " must be in [1, 1e13] N/m");
+    throw std::invalid_argument(where + ".k_tangential = " + number_text(l.k_tangential, 6) +
+                                " must be in [1, 1e13] N/m");
   if (!(l.restitution >= (rigid ? 0.0 : 1e-3) && l.restitution <= 1.0))
     throw std::invalid_argument(where + ".restitution = " + number_text(l.restitution, 6) + " must be in [" +
                                 (rigid ? "0" : "0.001") + ", 1]");
   if (!(l.damping < 0 || (std::isfinite(l.damping) && l.damping <= 1e12)))
     throw std::invalid_argument(where + ".damping = " + number_text(l.damping, 6) + " must be in [0, 1e12] N s/m");
   if (!(l.mu_s >= 0 && l.mu_k >= 0 && l.mu_k <= l.mu_s && std::isfinite(l.mu_s)))
-    throw std::invalid_argument(where + ": friction mu_s = " + number_text(l.mu_s, 6) + ", mu_k = " + number_text(l.mu_k, 6) +
-                                " must satisfy 0 <= mu_k <= mu_s (finite)");
+    throw std::invalid_argument(where + ": friction mu_s = " + number_text(l.mu_s, 6) +
+                                ", mu_k = " + number_text(l.mu_k, 6) + " must satisfy 0 <= mu_k <= mu_s (finite)");
 }
 
 }  // namespace
@@ -314,7 +319,8 @@ void validate(const Assembly& a, int max_blocks) {
     throw std::invalid_argument("contact = '" + a.contact + "' must be deformable or rigid");
   if (a.rock_only_on_ground && a.contact != "rigid")
     throw std::invalid_argument("columns-rock-only (seed 001's 5-DOF restriction) needs the rigid contact law");
-  if (!(a.g > 0 && a.g <= 1e3)) throw std::invalid_argument("g = " + number_text(a.g, 6) + " must be in (0, 1000] m/s^2");
+  if (!(a.g > 0 && a.g <= 1e3))
+    throw std::invalid_argument("g = " + number_text(a.g, 6) + " must be in (0, 1000] m/s^2");
   if (!(a.collapse_rotation > 0 && a.collapse_rotation <= 10))
     throw std::invalid_argument("collapse_rotation = " + number_text(a.collapse_rotation, 6) + " must be in (0, 10]");
   if (!(a.min_bearing >= 0 && std::isfinite(a.min_bearing)))
@@ -359,9 +365,9 @@ void validate(const Assembly& a, int max_blocks) {
       if (o.lower == f.lower && o.upper == f.upper && same_edges)
         throw std::invalid_argument(w + " repeats interface " + std::to_string(k));
       if (o.lower == f.upper && o.upper == f.lower && o.upper_edge == f.lower_edge && o.lower_edge == f.upper_edge)
-        throw std::invalid_argument(w + " (lower = " + std::to_string(f.lower) + ", upper = " + std::to_string(f.upper) +
-                                    ") repeats interface " + std::to_string(k) +
-                                    " the other way round: one joint is one interface");
+        throw std::invalid_argument(w + " (lower = " + std::to_string(f.lower) +
+                                    ", upper = " + std::to_string(f.upper) + ") repeats interface " +
+                                    std::to_string(k) + " the other way round: one joint is one interface");
     }
     check_law(f.law, w, a.contact == "rigid");
     ++supports[f.upper];
@@ -387,8 +393,8 @@ void validate(const Assembly& a, int max_blocks) {
     if (f.lower >= 0 && lf.n.y < -kCarries) carried[std::size_t(f.lower)] = true;
     if (!(lf.n.y > kCarries))
       sideways[std::size_t(f.upper)] = "interface " + std::to_string(j) + "'s support faces " +
-                                       (lf.n.y < -kCarries ? "downwards" : "sideways") + " (normal " + number_text(lf.n.x, 6) +
-                                       ", " + number_text(lf.n.y, 6) + ")";
+                                       (lf.n.y < -kCarries ? "downwards" : "sideways") + " (normal " +
+                                       number_text(lf.n.x, 6) + ", " + number_text(lf.n.y, 6) + ")";
   }
   for (int i = 0; i < nb; ++i)
     if (!carried[std::size_t(i)])
@@ -411,12 +417,14 @@ void validate(const Assembly& a, int max_blocks) {
       const FaceContact c = contact_point(lp, lf, up, uf, end, owner);
       min_gap = std::fmin(min_gap, c.gap);
       if (-c.gap > deep)
-        throw std::invalid_argument(w + ": the blocks overlap by " + number_text(-c.gap, 6) + " m at the start (at most " +
-                                    number_text(deep, 6) + " m, 2% of the smallest block size)");
+        throw std::invalid_argument(w + ": the blocks overlap by " + number_text(-c.gap, 6) +
+                                    " m at the start (at most " + number_text(deep, 6) +
+                                    " m, 2% of the smallest block size)");
     }
     if (min_gap > touch)
       throw std::invalid_argument(w + ": block " + std::to_string(f.upper) + " floats " + number_text(min_gap, 6) +
-                                  " m above its support at the start (it must touch, within " + number_text(touch, 6) + " m)");
+                                  " m above its support at the start (it must touch, within " + number_text(touch, 6) +
+                                  " m)");
   }
 }
 

@@ -188,12 +188,12 @@ InterfaceFaces interface_faces(const Assembly& a, int j) {
     }
   }
   if (best_u < 0 || !(best_angle <= kFacingAngle && best_dist <= tol && best_overlap > 0)) {
-    const std::string why = best_u < 0
-                                ? "no edge of " + name_of(a, f.upper) + " faces an edge of " + name_of(a, f.lower) +
-                                      " (antiparallel within " + number_text(kFacingAngle, 6) + " rad, collinear within " +
-                                      number_text(tol, 6) + " m, overlapping)"
-                                : "the named edges do not face each other (angle " + number_text(best_angle, 6) +
-                                      " rad, distance " + number_text(best_dist, 6) + " m, overlap " + number_text(best_overlap, 6) + " m)";
+    const std::string why =
+        best_u < 0 ? "no edge of " + name_of(a, f.upper) + " faces an edge of " + name_of(a, f.lower) +
+                         " (antiparallel within " + number_text(kFacingAngle, 6) + " rad, collinear within " +
+                         number_text(tol, 6) + " m, overlapping)"
+                   : "the named edges do not face each other (angle " + number_text(best_angle, 6) + " rad, distance " +
+                         number_text(best_dist, 6) + " m, overlap " + number_text(best_overlap, 6) + " m)";
     throw std::invalid_argument(w + ": " + why);
   }
   InterfaceFaces out;

@@ -3,7 +3,6 @@
 
 #include "blockdyn/base/number_text.hpp"
 
-
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>

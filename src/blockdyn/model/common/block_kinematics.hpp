@@ -30,8 +30,6 @@ inline Vec2 point_acceleration(double ax, double ay, double alpha, double omega,
 
 // Base corners of a block of half-width bh and half-height hh: side +1 is the left corner A
 // (body (-bh, -hh)), the pivot while theta > 0; side -1 the right corner B (body (bh, -hh)).
-inline Vec2 base_corner(const BodyRotation& q, double bh, double hh, int side) {
-  return q.offset(-side * bh, -hh);
-}
+inline Vec2 base_corner(const BodyRotation& q, double bh, double hh, int side) { return q.offset(-side * bh, -hh); }
 
 }  // namespace blockdyn

@@ -12,11 +12,11 @@ struct BlockShape {
   double mass = 1.0;    // m [kg]
   double g = 9.81;      // [m/s^2]
 
-  double alpha() const { return std::atan2(width, height); }                  // slenderness angle
-  double half_diagonal() const { return 0.5 * std::hypot(width, height); }    // R
-  double p() const { return std::sqrt(0.75 * g / half_diagonal()); }          // frequency parameter
+  double alpha() const { return std::atan2(width, height); }                                 // slenderness angle
+  double half_diagonal() const { return 0.5 * std::hypot(width, height); }                   // R
+  double p() const { return std::sqrt(0.75 * g / half_diagonal()); }                         // frequency parameter
   double inertia_centre() const { return mass * (width * width + height * height) / 12.0; }  // I_G
-  double inertia_corner() const { return 4.0 * inertia_centre(); }          // I_O = 4 m R^2 / 3
+  double inertia_corner() const { return 4.0 * inertia_centre(); }                           // I_O = 4 m R^2 / 3
   // Housner's coefficient: angular momentum about the impacting corner conserved.
   double housner_restitution() const {
     const double s = std::sin(alpha());

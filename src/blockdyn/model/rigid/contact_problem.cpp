@@ -37,9 +37,7 @@ bool solve_small(int n, double A[3][3], double x[3]) {
 }
 
 // The shared tangential row's r_y: both corners have the same at theta = 0.
-double tangent_ry(const ContactProblem& p) {
-  return p.n == 2 ? 0.5 * (p.c[0].r.y + p.c[1].r.y) : p.c[0].r.y;
-}
+double tangent_ry(const ContactProblem& p) { return p.n == 2 ? 0.5 * (p.c[0].r.y + p.c[1].r.y) : p.c[0].r.y; }
 
 // Rates (normal j, tangential) of a generalised vector w.
 double normal_rate(const ContactPoint& c, const std::array<double, 3>& w) { return w[1] + c.r.x * w[2]; }

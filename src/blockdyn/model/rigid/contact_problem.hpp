@@ -23,21 +23,21 @@
 namespace blockdyn {
 
 struct ContactPoint {
-  int side = 1;          // +1 left corner A, -1 right corner B
-  Vec2 r;                // offset from the centre of mass
-  double target = 0.0;   // required normal rate (force level: 0; impulse level: -e vn-)
+  int side = 1;         // +1 left corner A, -1 right corner B
+  Vec2 r;               // offset from the centre of mass
+  double target = 0.0;  // required normal rate (force level: 0; impulse level: -e vn-)
 };
 
 struct ContactProblem {
   double m = 1, I = 1;
   std::array<ContactPoint, 2> c{};
-  int n = 0;                 // 1 or 2 candidate contacts
-  std::array<double, 3> b{}; // force level: external forces; impulse level: momentum M u-
+  int n = 0;                  // 1 or 2 candidate contacts
+  std::array<double, 3> b{};  // force level: external forces; impulse level: momentum M u-
   // Velocity-dependent offsets of the contact rates (force level: -omega^2 r terms; impulse: 0).
   std::array<double, 2> cn{};
   double ct = 0.0;
   Coulomb mu;
-  int slip_sign = 0;         // sign of the current tangential velocity (0: at rest tangentially)
+  int slip_sign = 0;  // sign of the current tangential velocity (0: at rest tangentially)
 };
 
 enum class Tangential { Stick, SlipPos, SlipNeg };
@@ -45,9 +45,9 @@ enum class Tangential { Stick, SlipPos, SlipNeg };
 struct ContactSolution {
   bool closed[2] = {false, false};
   Tangential tang = Tangential::Stick;
-  double N[2] = {0, 0};  // normal force / impulse per contact
-  double T = 0;          // tangential force / impulse (total)
-  std::array<double, 3> u{};  // resulting (ax, ay, alpha) or (vx, vy, omega)
+  double N[2] = {0, 0};           // normal force / impulse per contact
+  double T = 0;                   // tangential force / impulse (total)
+  std::array<double, 3> u{};      // resulting (ax, ay, alpha) or (vx, vy, omega)
   double effective_mass_inv = 0;  // pivot of the normal system (<= 0: Painleve)
   int closed_count() const { return int(closed[0]) + int(closed[1]); }
   int sigma() const { return tang == Tangential::SlipPos ? 1 : tang == Tangential::SlipNeg ? -1 : 0; }
@@ -60,9 +60,9 @@ bool consistent(const ContactProblem& p, const ContactSolution& s, double tol_fo
 
 struct Selection {
   std::optional<ContactSolution> chosen;
-  int consistent_count = 0;     // candidates satisfying every condition
+  int consistent_count = 0;                      // candidates satisfying every condition
   std::array<ContactSolution, 12> consistent{};  // the first consistent_count of them
-  bool painleve = false;        // no consistent candidate, or the chosen slip system is not definite
+  bool painleve = false;                         // no consistent candidate, or the chosen slip system is not definite
 };
 
 // Hints from the event that triggered a selection: contacts whose normal force just reached

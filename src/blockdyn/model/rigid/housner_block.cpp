@@ -18,8 +18,8 @@ double housner_coefficient(const BlockShape& shape, std::optional<double> restit
   const double e = shape.housner_restitution();
   if (!(e >= 0.0))
     throw std::invalid_argument(
-        "restitution: Housner's 1 - 1.5 sin^2(alpha) = " + number_text(e, 6) + " is negative for this block (b/h = " +
-        number_text(shape.width / shape.height, 6) +
+        "restitution: Housner's 1 - 1.5 sin^2(alpha) = " + number_text(e, 6) +
+        " is negative for this block (b/h = " + number_text(shape.width / shape.height, 6) +
         " > sqrt(2)): it would bounce back onto the same corner; give --restitution in [0, 1], or use --model rigid "
         "(impacts by the impact law, --impact)");
   return e;
@@ -179,7 +179,8 @@ Transition<HousnerMode> HousnerBlock::transition(double t, const Mode& m, State&
         }
       }
       break;
-    case kEvImpact: return after_impact(t, m, z);
+    case kEvImpact:
+      return after_impact(t, m, z);
     case kEvOverturn:
       tr.stop = true;
       tr.kind = int(RigidEventKind::Overturn);

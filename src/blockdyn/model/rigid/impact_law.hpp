@@ -23,8 +23,7 @@ struct ImpactContact {
 
 // Post-impact (vx, vy, omega) from the pre-impact u, or nullopt when no consistent impulse exists.
 // contacts: the corners touching the ground (1 or 2); u: pre-impact velocities.
-std::optional<std::array<double, 3>> apply_impact(const RigidBlockParams& p, const ImpactContact* contacts,
-                                                  int n, const std::array<double, 3>& u, double tol_v,
-                                                  bool plastic = false);
+std::optional<std::array<double, 3>> apply_impact(const RigidBlockParams& p, const ImpactContact* contacts, int n,
+                                                  const std::array<double, 3>& u, double tol_v, bool plastic = false);
 
 }  // namespace blockdyn

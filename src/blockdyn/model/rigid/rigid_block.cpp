@@ -71,7 +71,9 @@ RigidReactions RigidBlock::reactions(double t, const Mode& md, const State& z) c
       f.ax = -a_h;
       f.ay = -a_v;
       break;
-    case Mechanism::Rest: split(m_ * a_v, m_ * a_h); break;
+    case Mechanism::Rest:
+      split(m_ * a_v, m_ * a_h);
+      break;
     case Mechanism::Slide: {
       const double N = m_ * a_v, T = -md.slip * mu_k * N;
       split(N, T);
@@ -156,7 +158,8 @@ void RigidBlock::complete(const Mode& md, State& z) const {
       z[kVY] = -z[kOmega] * r.x;
       break;
     }
-    case Mechanism::Flight: break;
+    case Mechanism::Flight:
+      break;
   }
 }
 
@@ -175,8 +178,8 @@ void RigidBlock::events(double t, const Mode& md, const State& z, std::array<dou
       const RigidReactions f = reactions(t, md, z);
       g[kEvContact0] = f.NA / W;
       g[kEvContact1] = f.NB / W;
-      g[kEvFriction] = md.mech == Mechanism::Rest ? (mu_s * (f.NA + f.NB) - std::fabs(f.TA + f.TB)) / W
-                                                  : md.slip * z[kVX] / V;
+      g[kEvFriction] =
+          md.mech == Mechanism::Rest ? (mu_s * (f.NA + f.NB) - std::fabs(f.TA + f.TB)) / W : md.slip * z[kVX] / V;
       break;
     }
     case Mechanism::Rock:
@@ -263,7 +266,8 @@ Transition<RigidMode> RigidBlock::reselect(double t, const Mode& from, State& z,
   const Selection sel = select_contacts(cp, h, tol_f_, tol_a_);
   if (sel.painleve) return Transition<Mode>{from, true, int(RigidEventKind::Painleve)};
   Transition<Mode> tr{mode_of(*sel.chosen, sides, z, from), false, kind};
-  tr.next.alternatives = alternatives_of(select_contacts(cp, SelectionHints{}, tol_f_, tol_a_), sides, z, from, tr.next);
+  tr.next.alternatives =
+      alternatives_of(select_contacts(cp, SelectionHints{}, tol_f_, tol_a_), sides, z, from, tr.next);
   // Closing a contact removes the (sub-resolution) velocity it still had: book the change of
   // kinetic energy with the impacts so that the energy balance stays closed.
   const double ke0 = kinetic_energy(z);
@@ -392,15 +396,17 @@ Transition<RigidMode> RigidBlock::transition(double t, const Mode& current, Stat
     case kEvFriction:
       if (md.mech == Mechanism::Rest || md.mech == Mechanism::Rock) h.no_stick = true;
       return reselect(t, md, z, h, kind);
-    case kEvImpact: return impact(t, md, z, -md.side);
-    case kEvOverturn: return Transition<Mode>{md, true, int(RigidEventKind::Overturn)};
+    case kEvImpact:
+      return impact(t, md, z, -md.side);
+    case kEvOverturn:
+      return Transition<Mode>{md, true, int(RigidEventKind::Overturn)};
     case kEvAlpha: {
       Mode next = md;
       next.beyond = !md.beyond;
-      return Transition<Mode>{next, false,
-                              int(md.beyond ? RigidEventKind::WithinAlpha : RigidEventKind::BeyondAlpha)};
+      return Transition<Mode>{next, false, int(md.beyond ? RigidEventKind::WithinAlpha : RigidEventKind::BeyondAlpha)};
     }
-    case kEvPainleve: return Transition<Mode>{md, true, int(RigidEventKind::Painleve)};
+    case kEvPainleve:
+      return Transition<Mode>{md, true, int(RigidEventKind::Painleve)};
   }
   return Transition<Mode>{md, false, kind};
 }

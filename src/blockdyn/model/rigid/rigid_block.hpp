@@ -24,10 +24,10 @@ namespace blockdyn {
 
 struct RigidMode {
   Mechanism mech = Mechanism::Rest;
-  int side = 0;          // rock, slide-rock: the corner in contact (+1 A, -1 B)
-  int slip = 0;          // slide, slide-rock: sign of the contact's tangential velocity
-  double anchor = 0.0;   // rest: x of the centre; rock: x of the pivot corner
-  bool beyond = false;   // |theta| > alpha
+  int side = 0;         // rock, slide-rock: the corner in contact (+1 A, -1 B)
+  int slip = 0;         // slide, slide-rock: sign of the contact's tangential velocity
+  double anchor = 0.0;  // rest: x of the centre; rock: x of the pivot corner
+  bool beyond = false;  // |theta| > alpha
   // At the switch into this mode: the other mechanisms that were consistent too (mechanism_bit;
   // 0 almost always). Not a stick-or-slip choice on one contact set (static friction holds).
   unsigned alternatives = 0;
@@ -48,7 +48,16 @@ class RigidBlock {
 #pragma GCC diagnostic ignored "-Wshadow"
   enum : std::size_t { kX, kY, kTheta, kVX, kVY, kOmega, kWorkFriction, kWorkGround, kWorkImpact, kDimR };
 #pragma GCC diagnostic pop
-  enum Event : int { kEvContact0, kEvContact1, kEvFriction, kEvImpact, kEvOverturn, kEvAlpha, kEvPainleve, kNumEventsR };
+  enum Event : int {
+    kEvContact0,
+    kEvContact1,
+    kEvFriction,
+    kEvImpact,
+    kEvOverturn,
+    kEvAlpha,
+    kEvPainleve,
+    kNumEventsR
+  };
   static constexpr std::size_t kDim = kDimR;
   static constexpr std::size_t kNumEvents = kNumEventsR;
   static constexpr bool kStateJumps = true;
@@ -132,7 +141,7 @@ class RigidBlock {
   bool forced_;
   double m_, I_, g_, bh_, hh_, alpha_, p_, R_;
   double tol_gap_, tol_v_, tol_f_, tol_a_, v_close_;
-  double tan_alpha_;  // b / h: rest fails by rocking where |a_H| > tan(alpha) (1 + a_V)
+  double tan_alpha_;    // b / h: rest fails by rocking where |a_H| > tan(alpha) (1 + a_V)
   RestExit rest_exit_;  // the smaller resistance, rocking or sliding, fails first
 };
 

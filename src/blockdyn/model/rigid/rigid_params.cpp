@@ -24,8 +24,8 @@ void validate(const RigidBlockParams& p) {
   require(std::isfinite(c.mu_k) && c.mu_k >= 0.0, "mu-k", "finite and >= 0", c.mu_k);
   require(c.mu_k <= c.mu_s, "mu-k", "<= mu-s = " + number_text(c.mu_s), c.mu_k);
   if (p.restitution)
-    require(std::isfinite(*p.restitution) && *p.restitution >= 0.0 && *p.restitution <= 1.0, "restitution",
-            "in [0, 1]", *p.restitution);
+    require(std::isfinite(*p.restitution) && *p.restitution >= 0.0 && *p.restitution <= 1.0, "restitution", "in [0, 1]",
+            *p.restitution);
 }
 
 }  // namespace blockdyn

@@ -20,7 +20,7 @@ std::optional<ImpactLaw> impact_law_from_string(const std::string& s);
 
 struct RigidBlockParams {
   BlockShape shape;
-  Coulomb interface{0.7, 0.7};
+  Coulomb interface { 0.7, 0.7 };
   ImpactLaw impact = ImpactLaw::Housner;
   std::optional<double> restitution;  // empty: Housner's e_H (housner law) or 0 (newton law)
 

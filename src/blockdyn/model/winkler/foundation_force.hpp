@@ -9,8 +9,8 @@
 namespace blockdyn {
 
 struct FoundationForce {
-  double Ry = 0.0;              // vertical reaction, units of weight
-  double torque = 0.0;          // (x_R - x) * Ry
+  double Ry = 0.0;      // vertical reaction, units of weight
+  double torque = 0.0;  // (x_R - x) * Ry
   // (k / 6r) (s_far^3 - s_pivot_end^3): the non-potential torque for the lowest corner on side +1.
   double wall_mismatch = 0.0;
   int corners_below = 0;

@@ -18,8 +18,7 @@ double static_height(const BlockParams& p, double w, double Ry) {
   // One submerged corner: area d^2 / (2 sin cos) = r Ry / k  (closed form of the thesis).
   const double d = std::sqrt(2.0 * p.r * std::sin(a) * std::cos(a) * Ry / p.k);
   const double h1 = -at_surface.lowest - d;
-  if (a > 0.0 && corner_heights(p.r, h1, a).other_bottom >= 0.0 &&
-      corner_heights(p.r, h1, a).upper_pivot_side >= 0.0)
+  if (a > 0.0 && corner_heights(p.r, h1, a).other_bottom >= 0.0 && corner_heights(p.r, h1, a).upper_pivot_side >= 0.0)
     return h1;
   // Two corners: Ry(h) decreases monotonically in h; bracket and solve.
   auto f = [&](double h) { return p.k / p.r * region_integrals(p.r, h, a).area - Ry; };

@@ -16,9 +16,9 @@
 namespace blockdyn {
 
 struct RegionIntegrals {
-  double area = 0.0;    // integral of s(X) dX
-  double moment = 0.0;  // integral of (X - x) s(X) dX, about the block centre, signed with w
-  double s2 = 0.0;      // integral of s(X)^2 dX
+  double area = 0.0;             // integral of s(X) dX
+  double moment = 0.0;           // integral of (X - x) s(X) dX, about the block centre, signed with w
+  double s2 = 0.0;               // integral of s(X)^2 dX
   double depth_pivot_end = 0.0;  // compression at the Region's end on the lowest corner's edge
   double depth_far_end = 0.0;    // compression at the Region's end on the bottom-edge side
   int corners_below = 0;         // corners strictly below the surface

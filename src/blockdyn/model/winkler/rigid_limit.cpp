@@ -39,8 +39,7 @@ void RigidGroundBlock::complete(const Mode& m, State& z) const {
   z[kRVX] = -arm.B * z[kRVW];
 }
 
-void RigidGroundBlock::events(double, const Mode& m, const State& z,
-                              std::array<double, kNumEvents>& g) const {
+void RigidGroundBlock::events(double, const Mode& m, const State& z, std::array<double, kNumEvents>& g) const {
   const RigidLimitReactions a = reactions(m, z);
   g[0] = z[kRW];
   g[1] = p_.alpha() - z[kRW];
@@ -58,22 +57,28 @@ RigidGroundBlock::Mode RigidGroundBlock::stick_or_slip(const State& z, int slip_
   return Mode{false, slip_sign != 0 ? slip_sign : sign_of(a.Rx), 0.0};
 }
 
-RigidGroundBlock::Mode RigidGroundBlock::initial_mode(const State& z) const {
-  return stick_or_slip(z, 0);
-}
+RigidGroundBlock::Mode RigidGroundBlock::initial_mode(const State& z) const { return stick_or_slip(z, 0); }
 
 double RigidGroundBlock::rest_reaction(double w) const {
   State z{corner_arms(p_.r, w, 1).A, w, 0.0, 0.0};
   return reactions(initial_mode(z), z).Ry;
 }
 
-Transition<RigidGroundBlock::Mode> RigidGroundBlock::transition(double, const Mode& m,
-                                                                State& z, int event) const {
+Transition<RigidGroundBlock::Mode> RigidGroundBlock::transition(double, const Mode& m, State& z, int event) const {
   Transition<Mode> tr{m, false, 0};
   switch (event) {
-    case 0: tr.stop = true; tr.kind = kWZero; break;
-    case 1: tr.stop = true; tr.kind = kOverturn; break;
-    case 3: tr.stop = true; tr.kind = kLiftOff; break;
+    case 0:
+      tr.stop = true;
+      tr.kind = kWZero;
+      break;
+    case 1:
+      tr.stop = true;
+      tr.kind = kOverturn;
+      break;
+    case 3:
+      tr.stop = true;
+      tr.kind = kLiftOff;
+      break;
     case 2:
       if (m.contact) {
         tr.next = Mode{false, sign_of(reactions(m, z).Rx), 0.0};

@@ -7,9 +7,9 @@
 #include <optional>
 
 #include "blockdyn/integrate/hybrid_integrator.hpp"
-#include "blockdyn/model/winkler/winkler_params.hpp"
-#include "blockdyn/model/winkler/region.hpp"
 #include "blockdyn/model/common/coulomb.hpp"
+#include "blockdyn/model/winkler/region.hpp"
+#include "blockdyn/model/winkler/winkler_params.hpp"
 
 namespace blockdyn {
 
@@ -41,9 +41,7 @@ class RigidGroundBlock {
   void complete(const Mode& m, State& z) const;
   Transition<Mode> transition(double t, const Mode& m, State& z, int event) const;
   double next_breakpoint(double) const { return INFINITY; }
-  std::optional<Transition<Mode>> resolve_chatter(double, const Mode&, const State&) const {
-    return std::nullopt;
-  }
+  std::optional<Transition<Mode>> resolve_chatter(double, const Mode&, const State&) const { return std::nullopt; }
   double step_hint(const Mode&) const { return 1e-2; }
   State abs_tol_scale() const { return {1, 1, 1, 1}; }
 

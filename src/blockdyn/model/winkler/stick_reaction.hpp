@@ -16,12 +16,10 @@ struct StickReaction {
   double Rx;
 };
 
-inline StickReaction stick_reaction(double inertia, const CornerArms& arm, int side, double torque,
-                                    double vw, double a_h) {
-  const double ww =
-      (torque - side * arm.A * arm.B * vw * vw + arm.B * a_h) / (inertia + arm.B * arm.B);
+inline StickReaction stick_reaction(double inertia, const CornerArms& arm, int side, double torque, double vw,
+                                    double a_h) {
+  const double ww = (torque - side * arm.A * arm.B * vw * vw + arm.B * a_h) / (inertia + arm.B * arm.B);
   return {ww, -arm.B * ww - side * arm.A * vw * vw + a_h};
 }
-
 
 }  // namespace blockdyn

@@ -14,16 +14,26 @@ namespace blockdyn {
 
 const char* to_string(EventKind k) {
   switch (k) {
-    case EventKind::ContactToSlide: return "contact_to_slide";
-    case EventKind::SlideToContact: return "slide_to_contact";
-    case EventKind::SlideReversal: return "slide_reversal";
-    case EventKind::Takeoff: return "takeoff";
-    case EventKind::Landing: return "landing";
-    case EventKind::WZero: return "w_zero";
-    case EventKind::Overturn: return "overturn";
-    case EventKind::Invalid: return "invalid";
-    case EventKind::GroundBreak: return "ground_break";
-    case EventKind::GrazingHold: return "grazing_hold";
+    case EventKind::ContactToSlide:
+      return "contact_to_slide";
+    case EventKind::SlideToContact:
+      return "slide_to_contact";
+    case EventKind::SlideReversal:
+      return "slide_reversal";
+    case EventKind::Takeoff:
+      return "takeoff";
+    case EventKind::Landing:
+      return "landing";
+    case EventKind::WZero:
+      return "w_zero";
+    case EventKind::Overturn:
+      return "overturn";
+    case EventKind::Invalid:
+      return "invalid";
+    case EventKind::GroundBreak:
+      return "ground_break";
+    case EventKind::GrazingHold:
+      return "grazing_hold";
   }
   return "?";
 }
@@ -53,12 +63,30 @@ BlockForces WinklerBlock::forces(double t, const Mode& m, const State& z, const 
   const double ay = ff.Ry - 1.0 - a_v;
   if (m.regime == Regime::Contact) {
     const StickReaction st = stick_reaction(inertia_, arm, m.side, ff.torque, z[kVW], a_h);
-    return BlockForces{st.Rx, ff.Ry, ff.torque, torque_nonpot, st.Rx - a_h, ay, st.ww, 0.0,
-                       friction_margin(p_.mu, ff.Ry, st.Rx), -arm.B * z[kVW], ff.corners_below};
+    return BlockForces{st.Rx,
+                       ff.Ry,
+                       ff.torque,
+                       torque_nonpot,
+                       st.Rx - a_h,
+                       ay,
+                       st.ww,
+                       0.0,
+                       friction_margin(p_.mu, ff.Ry, st.Rx),
+                       -arm.B * z[kVW],
+                       ff.corners_below};
   }
   const double Rx = m.friction_sign * p_.mu * ff.Ry;
-  return BlockForces{Rx, ff.Ry, ff.torque, torque_nonpot, Rx - a_h, ay, (ff.torque + arm.B * Rx) / inertia_,
-                     z[kVX] + arm.B * z[kVW], 0.0, 0.0, ff.corners_below};
+  return BlockForces{Rx,
+                     ff.Ry,
+                     ff.torque,
+                     torque_nonpot,
+                     Rx - a_h,
+                     ay,
+                     (ff.torque + arm.B * Rx) / inertia_,
+                     z[kVX] + arm.B * z[kVW],
+                     0.0,
+                     0.0,
+                     ff.corners_below};
 }
 
 [[gnu::flatten]] Energy WinklerBlock::energy_rates(double t, const Mode& m, const State& z) const {
@@ -98,14 +126,14 @@ void WinklerBlock::complete(const Mode& m, State& z, const Tilt& tilt) const {
   z[kVX] = -arm.B * z[kVW];
 }
 
-[[gnu::flatten]] void WinklerBlock::complete_and_events(double t, const Mode& m, State& z, std::array<double, kNumEvents>& g) const {
+[[gnu::flatten]] void WinklerBlock::complete_and_events(double t, const Mode& m, State& z,
+                                                        std::array<double, kNumEvents>& g) const {
   const Tilt tilt = make_tilt(z[kW]);  // complete() changes x and x', not w
   complete(m, z, tilt);
   events(t, m, z, tilt, g);
 }
 
-void WinklerBlock::events(double t, const Mode& m, const State& z,
-                          std::array<double, kNumEvents>& g) const {
+void WinklerBlock::events(double t, const Mode& m, const State& z, std::array<double, kNumEvents>& g) const {
   events(t, m, z, make_tilt(z[kW]), g);
 }
 
@@ -126,7 +154,8 @@ void WinklerBlock::events(double t, const Mode& m, const State& z, const Tilt& t
 }
 
 [[gnu::flatten]] void WinklerBlock::event_rates(double t, const Mode& m, const State& z, const State& dz,
-                               std::array<double, kNumEvents>& g, std::array<double, kNumEvents>& gdot) const {
+                                                std::array<double, kNumEvents>& g,
+                                                std::array<double, kNumEvents>& gdot) const {
   const Tilt tilt = make_tilt(z[kW]);
   const CornerHeights ch = corner_heights(p_.r, z[kH], tilt);
   const double vw = dz[kW];
@@ -191,8 +220,7 @@ WinklerBlock::Mode WinklerBlock::initial_mode(double t, const State& z) const {
   return submerged_mode(t, z, side);
 }
 
-Transition<WinklerBlock::Mode> WinklerBlock::transition(double t, const Mode& m, State& z,
-                                                        int event) const {
+Transition<WinklerBlock::Mode> WinklerBlock::transition(double t, const Mode& m, State& z, int event) const {
   Transition<Mode> tr;
   tr.next = m;
   switch (event) {
@@ -224,8 +252,7 @@ Transition<WinklerBlock::Mode> WinklerBlock::transition(double t, const Mode& m,
         tr.next = Mode{Regime::Slide, m.side, sign_of(forces(t, m, z).Rx), 0.0};
       } else {
         tr.next = stick_or_slip(t, z, m.side, -m.friction_sign);
-        tr.kind = int(tr.next.regime == Regime::Contact ? EventKind::SlideToContact
-                                                        : EventKind::SlideReversal);
+        tr.kind = int(tr.next.regime == Regime::Contact ? EventKind::SlideToContact : EventKind::SlideReversal);
       }
       break;
     case kBreakpoint:
@@ -321,8 +348,8 @@ std::optional<std::string> WinklerBlock::validity_problem(const State& z) const 
   for (std::size_t i = 0; i < 6; ++i)
     if (!std::isfinite(z[i])) return std::string("state contains a non-finite value");
   if (std::fabs(z[kW]) > alpha_)
-    return "|w| = " + number_text(std::fabs(z[kW]), 6) + " exceeds the overturning angle alpha = atan(r) = " +
-           number_text(alpha_, 6);
+    return "|w| = " + number_text(std::fabs(z[kW]), 6) +
+           " exceeds the overturning angle alpha = atan(r) = " + number_text(alpha_, 6);
   const CornerHeights ch = corner_heights(p_.r, z[kH], z[kW]);
   if (std::max(ch.other_bottom, ch.upper_pivot_side) < 0.0)
     return std::string("more than two corners are below the foundation surface (the model allows at most two)");

@@ -8,21 +8,28 @@
 #include <string>
 #include <vector>
 
+#include "blockdyn/excitation/ground_motion.hpp"
 #include "blockdyn/integrate/hybrid_integrator.hpp"
-#include "blockdyn/model/winkler/winkler_params.hpp"
-#include "blockdyn/model/winkler/winkler_state.hpp"
 #include "blockdyn/model/winkler/energy.hpp"
 #include "blockdyn/model/winkler/foundation_force.hpp"
-#include "blockdyn/excitation/ground_motion.hpp"
+#include "blockdyn/model/winkler/winkler_params.hpp"
+#include "blockdyn/model/winkler/winkler_state.hpp"
 
 namespace blockdyn {
 
 enum class EventKind : int {
-  ContactToSlide, SlideToContact, SlideReversal, Takeoff, Landing, WZero, Overturn, Invalid,
-  GroundBreak, GrazingHold
+  ContactToSlide,
+  SlideToContact,
+  SlideReversal,
+  Takeoff,
+  Landing,
+  WZero,
+  Overturn,
+  Invalid,
+  GroundBreak,
+  GrazingHold
 };
 const char* to_string(EventKind k);
-
 
 // Everything the equations of motion compute at one state (also used for output).
 struct BlockForces {

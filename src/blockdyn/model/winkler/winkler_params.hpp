@@ -6,12 +6,12 @@
 namespace blockdyn {
 
 struct BlockParams {
-  double r = 0.5;    // aspect ratio width / height, > 0
-  double mu = 0.2;   // friction coefficient, >= 0
-  double k = 1e5;    // foundation stiffness k_phys a b / (m g), > 0
+  double r = 0.5;   // aspect ratio width / height, > 0
+  double mu = 0.2;  // friction coefficient, >= 0
+  double k = 1e5;   // foundation stiffness k_phys a b / (m g), > 0
 
-  double alpha() const { return std::atan(r); }               // overturning angle
-  double inertia() const { return (1.0 + r * r) / 12.0; }     // centroidal, units m a^2
+  double alpha() const { return std::atan(r); }            // overturning angle
+  double inertia() const { return (1.0 + r * r) / 12.0; }  // centroidal, units m a^2
 };
 
 // The model's numeric range. Beyond k = 1e12 the static settlement 1/k is below 1e-12 of the

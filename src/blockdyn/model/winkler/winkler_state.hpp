@@ -19,20 +19,19 @@ struct BlockState {
   double x = 0, y = 0.5, w = 0, vx = 0, vy = 0, vw = 0;
 };
 
-inline BlockStateVec to_vec(const BlockState& s) {
-  return {s.x, s.y - 0.5, s.w, s.vx, s.vy, s.vw, 0.0, 0.0, 0.0};
-}
-inline BlockState to_state(const BlockStateVec& z) {
-  return {z[kX], z[kH] + 0.5, z[kW], z[kVX], z[kVY], z[kVW]};
-}
+inline BlockStateVec to_vec(const BlockState& s) { return {s.x, s.y - 0.5, s.w, s.vx, s.vy, s.vw, 0.0, 0.0, 0.0}; }
+inline BlockState to_state(const BlockStateVec& z) { return {z[kX], z[kH] + 0.5, z[kW], z[kVX], z[kVY], z[kVW]}; }
 
 enum class Regime : std::uint8_t { Contact, Slide, Flight };
 
 inline const char* to_string(Regime m) {
   switch (m) {
-    case Regime::Contact: return "contact";
-    case Regime::Slide: return "slide";
-    case Regime::Flight: return "flight";
+    case Regime::Contact:
+      return "contact";
+    case Regime::Slide:
+      return "slide";
+    case Regime::Flight:
+      return "flight";
   }
   return "?";
 }
