@@ -9,7 +9,7 @@ with the jumps at impacts; the ground acceleration; contact forces; the energy t
 balance. An SVG is written beside the PNG.
 """
 
-from plotkit import figure_parser, legend_outside, shade_runs, np, plt, read_rows, save
+from plotkit import figure_parser, legend_outside, np, plot_in_power_of_ten, plt, read_rows, save, shade_runs
 
 MECH_COLOURS = {"rest": "0.92", "slide": "#cfe8ff", "rock": "#fff2c2", "slide_rock": "#ffd8b0",
                 "flight": "#e4d4ff"}
@@ -69,11 +69,7 @@ def main():
     ax[4].set_xlabel("t [s]")
     bal = num("energy_balance")
     ax4b = ax[4].twinx()
-    # The power of ten goes into the axis label rather than an offset text over the panel above.
-    top = float(np.nanmax(np.abs(bal))) if len(bal) else 0.0
-    e10 = int(np.floor(np.log10(top))) if top > 0 and np.isfinite(top) else 0
-    ax4b.plot(t, bal / 10.0**e10, lw=0.6, color="k", alpha=0.6)
-    ax4b.set_ylabel(f"balance error [1e{e10} J]" if e10 else "balance error [J]", fontsize=8)
+    plot_in_power_of_ten(ax4b, t, bal, "balance error", "J", lw=0.6, color="k", alpha=0.6)
     # The balance error's own axis sits on the right: this legend goes below the panel.
     ax[4].legend(fontsize=7, ncol=5, loc="upper left", bbox_to_anchor=(0.0, -0.28), frameon=False)
 

@@ -10,7 +10,7 @@ reactions Rx, Ry; the energy components with the closed balance. An SVG is writt
 """
 import csv
 
-from plotkit import figure_parser, np, plt, save, shade_runs
+from plotkit import figure_parser, np, plot_in_power_of_ten, plt, save, shade_runs
 
 MODE_COLOURS = {"contact": "0.93", "slide": "#cfe8ff", "flight": "#e4d4ff"}
 
@@ -71,11 +71,7 @@ def main():
     ax[2, 1].legend(fontsize=7, ncol=6, loc="lower left", bbox_to_anchor=(0, 1.0), frameon=False)
     bal = ax[2, 1].twinx()
     err = d["energy_balance"] - d["energy_balance"][0]
-    # The power of ten goes into the axis label: as an offset text it would sit on the legend.
-    top = float(np.nanmax(np.abs(err))) if len(err) else 0.0
-    e10 = int(np.floor(np.log10(top))) if top > 0 and np.isfinite(top) else 0
-    bal.plot(t, err / 10.0**e10, lw=0.6, color="0.4", ls=":")
-    bal.set_ylabel(f"balance error [1e{e10} m g a]" if e10 else "balance error [m g a]", fontsize=8)
+    plot_in_power_of_ten(bal, t, err, "balance error", "m g a", lw=0.6, color="0.4", ls=":")
     fig.suptitle(a.title or a.csv, fontsize=10)
     save(fig, a.out)
 

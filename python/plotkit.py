@@ -141,6 +141,15 @@ def stem(out):
     return os.path.splitext(out)[0]
 
 
+def plot_in_power_of_ten(ax, t, y, name, unit, **style):
+    """Plots y scaled by its power of ten and puts that power into the axis label (as matplotlib's
+    offset text it sat above the axes, over a legend or the panel above)."""
+    top = float(np.nanmax(np.abs(y))) if len(y) else 0.0
+    e10 = int(np.floor(np.log10(top))) if top > 0 and np.isfinite(top) else 0
+    ax.plot(t, y / 10.0**e10, **style)
+    ax.set_ylabel(f"{name} [1e{e10} {unit}]" if e10 else f"{name} [{unit}]", fontsize=8)
+
+
 def thin_crowded_ticks(fig, dpi):
     """Fewer ticks on any linear x axis whose tick labels touch (long labels such as -0.0105 on a
     narrow panel ran into each other)."""
