@@ -10,7 +10,7 @@
 
 #include "blockdyn/api/option_spec.hpp"
 #include "blockdyn/api/settings.hpp"
-#include "blockdyn/integrate/hybrid_integrator.hpp"
+#include "blockdyn/integrate/integrator_options.hpp"
 #include "blockdyn/io/json_event_spool.hpp"
 #include "blockdyn/model/winkler/winkler_params.hpp"
 

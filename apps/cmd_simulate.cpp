@@ -10,6 +10,7 @@
 #include "assembly_flags.hpp"
 #include "blockdyn/api/ground_settings.hpp"
 #include "blockdyn/api/simulate_run.hpp"
+#include "blockdyn/family/family.hpp"
 #include "blockdyn/units/physical_units.hpp"
 #include "cli_common.hpp"
 #include "cli_registry.hpp"
@@ -84,11 +85,12 @@ void add(CLI::App& app) {
   s->add_option("scenario", f->scenario_file, "TOML scenario file (flags given as well override it)");
   std::string models;
   std::vector<std::string> names;
-  for (const SimulateFamily& fam : simulate_families()) {
+  for (const Family& fam : families()) {
     models += (models.empty() ? "" : ", ") + std::string(fam.name) + " (" + fam.description + ")";
     names.emplace_back(fam.name);
   }
-  s->add_option("--model", f->model, "model family: " + models + "; default winkler")->check(CLI::IsMember(names));
+  s->add_option("--model", f->model, "model family: " + models + "; default " + families().front().name)
+      ->check(CLI::IsMember(names));
   add_block_options(*s, f->p);
   add_tolerance_options(*s, f->integ);
   s->add_option("--ic", f->ic, "winkler: initial conditions ic1 (tilted, at rest), ic2 (upright, impulse), custom")

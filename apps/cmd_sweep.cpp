@@ -12,6 +12,7 @@
 #include "blockdyn/analysis/sweep/sweep_metrics.hpp"
 #include "blockdyn/analysis/sweep/sweep_runner.hpp"
 #include "blockdyn/api/sweep_settings.hpp"
+#include "blockdyn/family/family.hpp"
 #include "blockdyn/io/json_io.hpp"
 #include "cli_common.hpp"
 #include "cli_registry.hpp"
@@ -118,10 +119,8 @@ void run(const CLI::App& s, const RunnerFlags& f) {
   require_range("progress-interval", f.progress_interval, 0.0, 1e9, false);
   const Settings given = settings_of(s, kRunnerFlags);
   if (f.list_axes) {
-    if (sweep_model(given) == "winkler")
-      std::printf("k, r | inv_r, mu, ic (flags --k --r --inv-r --mu --ic; [axes] in a definition file)\n");
-    else
-      for (const auto& [name, what] : rigid_axis_catalog()) std::printf("%-20s %s\n", name.c_str(), what.c_str());
+    for (const auto& [name, what] : sweep_family(given).sweep_axes())
+      std::printf("%-20s %s\n", name.c_str(), what.c_str());
     return;
   }
   const SweepDefinition d = sweep_definition(given);

@@ -16,7 +16,7 @@ namespace {
 
 Assembly trilith(double phi_deg, bool rigid = false) {
   PresetOptions o;
-  o.rigid_contacts = rigid;
+  o.contact = rigid ? blockdyn::ContactKind::Rigid : blockdyn::ContactKind::Deformable;
   if (rigid) o.ground_law.restitution = o.block_law.restitution = 0.0;
   o.ground_law.mu_s = o.ground_law.mu_k = o.block_law.mu_s = o.block_law.mu_k =
       phi_deg >= 90 ? kNoSlipFriction : std::tan(phi_deg * M_PI / 180);

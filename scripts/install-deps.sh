@@ -5,7 +5,7 @@
 #   plot   Python and matplotlib for the figures and animations (Pillow: GIF)
 #   test   what the test suite adds: GoogleTest, Google Benchmark, Open MPI, SciPy, pytest,
 #          pybind11 (the Python module), ffmpeg (MP4), dpkg-dev and file (the .deb package),
-#          clang and libFuzzer (the sanitizer job)
+#          clang and libFuzzer (the sanitizer job), clang-format (the style check)
 #   docs   MkDocs with the Material theme, and Chromium to check the site renders
 # No argument: build, plot and test.
 set -euo pipefail
@@ -14,7 +14,7 @@ declare -A GROUP=(
            libtomlplusplus-dev nlohmann-json3-dev libfmt-dev"
   [plot]="python3-numpy python3-matplotlib python3-pil"
   [test]="libgtest-dev libgmock-dev libbenchmark-dev libopenmpi-dev openmpi-bin python3-scipy python3-pytest
-          python3-dev pybind11-dev ffmpeg dpkg-dev file clang libclang-rt-14-dev"
+          python3-dev pybind11-dev ffmpeg dpkg-dev file clang libclang-rt-14-dev clang-format"
   [docs]="mkdocs mkdocs-material chromium"
 )
 groups=("$@")

@@ -410,7 +410,7 @@ namespace {
 
 PresetOptions rigid_preset() {
   PresetOptions o = seed_preset();
-  o.rigid_contacts = true;
+  o.contact = blockdyn::ContactKind::Rigid;
   o.ground_law.restitution = o.block_law.restitution = 0.0;
   return o;
 }
@@ -553,7 +553,7 @@ TEST(AssemblyRigidLaw, ColumnsRockOnlyRestriction) {
   EXPECT_EQ(j.status, SimStatus::Invalid);
   EXPECT_NE(j.note.find("left the ground"), std::string::npos) << j.note;
   EXPECT_LT(j.t_final, 0.01);
-  jump.contact = "deformable";
+  jump.contact = blockdyn::ContactKind::Deformable;
   EXPECT_THROW(validate(jump), std::invalid_argument);
 }
 

@@ -165,6 +165,78 @@ TEST(CliRobustness, InterruptedRunLeavesNoTemporaryFile) {
   EXPECT_FALSE(exists(d.path + "/t.csv"));
 }
 
+namespace {
+
+// Hostile option values: empty, non-numbers, infinities, denormals, huge, paths, format strings.
+const std::vector<std::string>& hostile_values() {
+  static const std::vector<std::string> v = {"",
+                                             "nan",
+                                             "inf",
+                                             "-inf",
+                                             "-1",
+                                             "0",
+                                             "1e308",
+                                             "-1e308",
+                                             "1e-310",
+                                             "4.9e-324",
+                                             "1e300",
+                                             "abc",
+                                             "1e3:1e4:5",
+                                             "0.2",
+                                             "1",
+                                             "2",
+                                             "0.5",
+                                             "-0.3",
+                                             "1e9",
+                                             "1,2,3",
+                                             "1e3:1e4:1e300",
+                                             "..",
+                                             "/dev/zero",
+                                             "/",
+                                             "%s%n",
+                                             "9999999999999999999"};
+  return v;
+}
+
+// The options of `simulate` the random command lines draw from.
+const std::vector<std::string>& drawn_options() {
+  static const std::vector<std::string> v = {"--r",
+                                             "--mu",
+                                             "--k",
+                                             "--w0",
+                                             "--vw0",
+                                             "--x0",
+                                             "--y0",
+                                             "--vx0",
+                                             "--vy0",
+                                             "--rtol",
+                                             "--atol",
+                                             "--ic",
+                                             "--ground-h",
+                                             "--ground-h-amplitude",
+                                             "--ground-h-frequency",
+                                             "--ground-h-phase",
+                                             "--ground-h-duration",
+                                             "--ground-h-pulse",
+                                             "--ground-h-start",
+                                             "--ground-v",
+                                             "--width",
+                                             "--height",
+                                             "--mass",
+                                             "--mu-s",
+                                             "--mu-k",
+                                             "--restitution",
+                                             "--impact",
+                                             "--model",
+                                             "--output-interval",
+                                             "--units",
+                                             "--density",
+                                             "--thickness"};
+  return v;
+}
+
+}  // namespace
+
 // A bounded random generator (fixed seed): command lines from the options of `simulate` and
 // `sweep` with hostile values, and scenario files mutated from a valid one. Every run ends by
 // itself within the time limit, exits 0, 1 or 2 (never a signal), a usage error is one line, and
@@ -172,64 +244,8 @@ TEST(CliRobustness, InterruptedRunLeavesNoTemporaryFile) {
 TEST(CliRobustness, RandomHostileInputNeverCrashesOrHangs) {
   TmpDir d("fuzz");
   std::mt19937_64 rng(20261123);
-  const std::vector<std::string> values = {"",
-                                           "nan",
-                                           "inf",
-                                           "-inf",
-                                           "-1",
-                                           "0",
-                                           "1e308",
-                                           "-1e308",
-                                           "1e-310",
-                                           "4.9e-324",
-                                           "1e300",
-                                           "abc",
-                                           "1e3:1e4:5",
-                                           "0.2",
-                                           "1",
-                                           "2",
-                                           "0.5",
-                                           "-0.3",
-                                           "1e9",
-                                           "1,2,3",
-                                           "1e3:1e4:1e300",
-                                           "..",
-                                           "/dev/zero",
-                                           "/",
-                                           "%s%n",
-                                           "9999999999999999999"};
-  const std::vector<std::string> opts = {"--r",
-                                         "--mu",
-                                         "--k",
-                                         "--w0",
-                                         "--vw0",
-                                         "--x0",
-                                         "--y0",
-                                         "--vx0",
-                                         "--vy0",
-                                         "--rtol",
-                                         "--atol",
-                                         "--ic",
-                                         "--ground-h",
-                                         "--ground-h-amplitude",
-                                         "--ground-h-frequency",
-                                         "--ground-h-phase",
-                                         "--ground-h-duration",
-                                         "--ground-h-pulse",
-                                         "--ground-h-start",
-                                         "--ground-v",
-                                         "--width",
-                                         "--height",
-                                         "--mass",
-                                         "--mu-s",
-                                         "--mu-k",
-                                         "--restitution",
-                                         "--impact",
-                                         "--model",
-                                         "--output-interval",
-                                         "--units",
-                                         "--density",
-                                         "--thickness"};
+  const std::vector<std::string>& values = hostile_values();
+  const std::vector<std::string>& opts = drawn_options();
   const auto t0 = std::chrono::steady_clock::now();
   int runs = 0;
   for (int i = 0; i < 120; ++i) {

@@ -320,7 +320,7 @@ TEST(ForcedModels, EveryFamilyFindsTheSameOneOneOrbit) {
   }
   for (bool rigid : {false, true}) {
     PresetOptions p2;
-    p2.rigid_contacts = rigid;
+    p2.contact = rigid ? blockdyn::ContactKind::Rigid : blockdyn::ContactKind::Deformable;
     if (rigid) p2.ground_law.restitution = p2.block_law.restitution = 0.8;
     const Assembly a = make_preset("block", p2);
     AssemblyRunOptions ao;
@@ -370,7 +370,7 @@ TEST(ForcedModels, WithRigidContactsEveryPassageIsAnImpact) {
   // passage of a column through 0 ends a swing and is an impact (the law reports a step's
   // contact changes at the step's end, after the crossing it interpolates inside the step).
   PresetOptions po;
-  po.rigid_contacts = true;
+  po.contact = blockdyn::ContactKind::Rigid;
   po.ground_law.restitution = po.block_law.restitution = 0.0;
   const Assembly a = make_preset("trilith", po);
   SurvivalOptions so;

@@ -35,7 +35,7 @@ PresetOptions arch_options(int n, double ratio, bool rigid = true) {
   o.thickness_ratio = ratio;
   o.radius = 1.0;
   o.thickness = 0.2;
-  o.rigid_contacts = rigid;
+  o.contact = rigid ? blockdyn::ContactKind::Rigid : blockdyn::ContactKind::Deformable;
   for (ContactLaw* l : {&o.ground_law, &o.block_law}) {
     l->restitution = rigid ? 0.0 : 0.5;
     l->k_normal = 1e9;  // stiff: the deformable arch settles by micrometres
@@ -46,7 +46,7 @@ PresetOptions arch_options(int n, double ratio, bool rigid = true) {
 PresetOptions rigid_preset(double slenderness) {
   PresetOptions o;
   o.slenderness = slenderness;
-  o.rigid_contacts = true;
+  o.contact = blockdyn::ContactKind::Rigid;
   o.ground_law.restitution = o.block_law.restitution = 0.0;
   return o;
 }
@@ -192,7 +192,7 @@ TEST(MasonryGeometry, ARectangleAsVerticesIsTheRectangle) {
   for (const Case c : {Case{"block", false, 0.05, 0}, Case{"block", true, 0.05, 0}, Case{"trilith", false, 0, 0.5},
                        Case{"trilith", true, 0, 0.5}, Case{"column", true, 0, 0.4}}) {
     PresetOptions o = rigid_preset(4);
-    o.rigid_contacts = c.rigid;
+    o.contact = c.rigid ? blockdyn::ContactKind::Rigid : blockdyn::ContactKind::Deformable;
     if (!c.rigid) o.ground_law.restitution = o.block_law.restitution = 0.5;
     o.drums = 3;
     o.tilt = c.tilt;

@@ -216,7 +216,7 @@ TEST(RestExit, AsymmetricResistanceFailsOnTheWeakerSideOfTheMotion) {
 // crossing of their static limit (b/h of the whole = 0.25, whatever the lintel).
 TEST(RestExit, RigidAssemblyEveryExcitationKindAtTheThreshold) {
   PresetOptions o;
-  o.rigid_contacts = true;
+  o.contact = blockdyn::ContactKind::Rigid;
   o.ground_law.restitution = o.block_law.restitution = 0.0;
   for (const char* preset : {"block", "trilith", "column"}) {
     const Assembly a = make_preset(preset, o);

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "blockdyn/integrate/hybrid_integrator.hpp"
 #include "blockdyn/model/winkler/initial_conditions.hpp"
 #include "blockdyn/model/winkler/rigid_limit.hpp"
 #include "blockdyn/simulation/rigid_simulation.hpp"

@@ -24,7 +24,7 @@ namespace {
 
 PresetOptions rigid_preset() {
   PresetOptions o;  // seed 002: b = 0.12 m, depth 0.06 m, 2700 kg/m^3, lambda = 4
-  o.rigid_contacts = true;
+  o.contact = blockdyn::ContactKind::Rigid;
   o.ground_law.restitution = o.block_law.restitution = 0.0;
   return o;
 }

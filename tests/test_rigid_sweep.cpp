@@ -70,7 +70,7 @@ TEST(RigidSweep, DefinitionFileEqualsFlags) {
 
 TEST(RigidSweep, RowsEqualSingleRuns) {
   blockdyn::RigidSweepSpec s;
-  s.model = "rigid";
+  s.model = &blockdyn::three_dof_on_rigid_ground();
   s.block.shape.width = 0.3;
   s.block.shape.height = 1.0;
   s.ground.horizontal.frequency = 1.5;

@@ -28,7 +28,7 @@ import numpy as np
 from . import _core
 
 __version__ = _core.__version__
-__all__ = ["simulate", "simulate_many", "motion_generate", "motion_info", "limit_analysis", "rocking_spectrum", "fragility", "Simulator", "assembly", "spectrum", "survival", "response_curve", "cycles", "impact_map", "sweep", "map", "run",
+__all__ = ["families", "simulate", "simulate_many", "motion_generate", "motion_info", "limit_analysis", "rocking_spectrum", "fragility", "Simulator", "assembly", "spectrum", "survival", "response_curve", "cycles", "impact_map", "sweep", "map", "run",
            "Simulation", "Assembly", "lyapunov", "chaos_map", "periodic_orbits", "__version__"]
 
 # Where the plot scripts are once installed (share/blockdyn/python beside lib/python3/...).
@@ -458,6 +458,24 @@ def map(**options):  # noqa: A001 (the command's name)
     return _table_command("map", None, options)
 
 
+def families():
+    """The registered model families, the default first: a list of dicts with "name",
+    "description" and what each takes part in ("scenario", "rigid_ground", "sweep", "forced",
+    "free_lyapunov")."""
+    return _core.families()
+
+
+def _family(name):
+    """The family registered under `name` (None: the default); ValueError naming the choices."""
+    fams = _core.families()
+    if name is None:
+        return fams[0]
+    for f in fams:
+        if f["name"] == name:
+            return f
+    raise ValueError(f"model = {name!r} is not one of: " + ", ".join(f["name"] for f in fams))
+
+
 def lyapunov(**options):
     """Runs `blockdyn lyapunov` (the free Winkler block, or model="housner"|"rigid"|"assembly" under
     a ground motion) and returns its JSON summary with the convergence history as arrays "t",
@@ -466,7 +484,7 @@ def lyapunov(**options):
     for reserved in ("csv", "twin_csv", "json", "json_out", "plot"):
         if reserved in options:
             raise ValueError(f"{reserved}: set by blockdyn.lyapunov itself")
-    forced = options.get("model", "winkler") != "winkler"
+    forced = not _family(options.get("model")).get("free_lyapunov")
     tables = ["history", *(["twin"] if forced else [])]
     _, summary, _, series = _core.study("lyapunov", _options(options), True, tables)
     j = json.loads(summary)

@@ -28,6 +28,7 @@
 #include "blockdyn/api/simulate_run.hpp"
 #include "blockdyn/api/study_command.hpp"
 #include "blockdyn/api/sweep_settings.hpp"
+#include "blockdyn/family/family.hpp"
 #include "blockdyn/io/json_io.hpp"
 #include "blockdyn/version.hpp"
 #include "cli_run.hpp"
@@ -296,6 +297,10 @@ void add_studies(py::module_& m) {
       },
       py::arg("options"), py::arg("threads") = 0,
       "Runs `blockdyn map` in memory; returns (columns, sidecar JSON text, boundary columns, their meta JSON).");
+}
+
+// Records, limit analysis, the registries (families, studies) and the command line in process.
+void add_records_and_catalogues(py::module_& m) {
   m.def(
       "motion_generate",
       [](const OptionList& options) {
@@ -308,6 +313,24 @@ void add_studies(py::module_& m) {
   m.def(
       "limit_analysis", [](const OptionList& options) { return json_call(limit_analysis_run, options); },
       py::arg("options"), "Static limit analysis of an assembly (`blockdyn limit-analysis`): JSON text.");
+  m.def(
+      "families",
+      [] {
+        py::list l;
+        for (const Family& f : families()) {
+          py::dict d;
+          d["name"] = f.name;
+          d["description"] = f.description;
+          d["scenario"] = f.scenario();
+          d["rigid_ground"] = f.rigid_ground != nullptr;
+          d["sweep"] = f.sweep != nullptr;
+          d["forced"] = f.forced != nullptr;
+          d["free_lyapunov"] = f.free_lyapunov != nullptr;
+          l.append(d);
+        }
+        return l;
+      },
+      "The registered model families, the default first: [{name, description, and what each takes part in}].");
   m.def(
       "studies",
       [] {
@@ -341,4 +364,5 @@ PYBIND11_MODULE(_core, m) {
   m.attr("git_describe") = blockdyn::kGitDescribe;
   add_runs(m);
   add_studies(m);
+  add_records_and_catalogues(m);
 }

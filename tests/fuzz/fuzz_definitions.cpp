@@ -31,10 +31,11 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   refused_or_read([&] { blockdyn::parse_scenario(text, "fuzz.toml", nowhere); });
   refused_or_read([&] {
     blockdyn::Assembly a = blockdyn::parse_assembly(text, "fuzz.toml");
-    a.contact = "rigid";
+    a.contact = blockdyn::ContactKind::Rigid;
     blockdyn::validate(a, 64);
   });
   refused_or_read([&] { blockdyn::parse_sweep(text, "fuzz.toml"); });
-  refused_or_read([&] { blockdyn::parse_rigid_sweep(text, "fuzz.toml", nowhere); });
+  refused_or_read(
+      [&] { blockdyn::parse_rigid_sweep(text, "fuzz.toml", blockdyn::three_dof_on_rigid_ground(), nowhere); });
   return 0;
 }

@@ -14,20 +14,19 @@ namespace {
 
 // The option values with the command line's defaults.
 struct Values {
-  std::string file, preset, contact;
+  std::string file, preset;
+  ContactKind contact;
   double phi_s, phi_l, tilt, k_normal, k_tangential, restitution, collapse_rotation, min_bearing, g;
   std::optional<double> phi_s_kinetic, phi_l_kinetic;
-  bool rigid;
+  // The law's traits (contact_kind.hpp).
+  const ContactKindInfo& law() const { return info(contact); }
 };
 
 Values values_of(const Settings& s) {
   Values v;
   v.file = s.text("file", s.text("scenario"));
   v.preset = s.text("preset");
-  v.contact = s.text("contact", "deformable");
-  if (v.contact != "deformable" && v.contact != "rigid")
-    throw std::invalid_argument("--contact = '" + v.contact + "' is not one of: deformable, rigid");
-  v.rigid = v.contact == "rigid";
+  v.contact = contact_kind_from("--contact", s.text("contact", to_string(ContactKind::Deformable)));
   v.phi_s = s.number("phi-s", 90);
   v.phi_l = s.number("phi-l", 90);
   v.phi_s_kinetic = s.number("phi-s-kinetic");
@@ -36,7 +35,7 @@ Values values_of(const Settings& s) {
   v.k_normal = s.number("normal-stiffness", 1e7);
   v.k_tangential = s.number("tangential-stiffness", -1);
   // The rigid law's Newton restitution defaults to 0 (a plastic contact, as Housner's block).
-  v.restitution = s.number("restitution", v.rigid ? 0.0 : 0.5);
+  v.restitution = s.number("restitution", v.law().plastic_impacts ? 0.0 : 0.5);
   v.collapse_rotation = s.number("collapse-rotation", 1.0);
   v.min_bearing = s.number("min-bearing", 0.0);
   v.g = s.number("g", 9.81);
@@ -57,19 +56,20 @@ void check_values(const Settings& s, const Values& v) {
   require_in_range("tilt", v.tilt, -1.5, 1.5, false, false);
   require_in_range("normal-stiffness", v.k_normal, 1, 1e13);
   if (s.has("tangential-stiffness")) require_in_range("tangential-stiffness", v.k_tangential, 1, 1e13);
-  require_in_range("restitution", v.restitution, v.rigid ? 0.0 : 1e-3, 1);
+  require_in_range("restitution", v.restitution, v.law().plastic_impacts ? 0.0 : 1e-3, 1);
   const std::string scheme = s.text("scheme", "event-driven");
   if (scheme != "event-driven" && scheme != "time-stepping")
     throw std::invalid_argument("--scheme = '" + scheme + "' is not one of: event-driven, time-stepping");
-  if (!v.rigid && s.has("scheme")) throw std::invalid_argument("--scheme belongs to --contact rigid");
+  if (!v.law().schemes && s.has("scheme")) throw std::invalid_argument("--scheme belongs to --contact rigid");
   for (const char* n : {"normal-stiffness", "tangential-stiffness"})
-    if (v.rigid && s.has(n)) throw std::invalid_argument(std::string("--") + n + " belongs to --contact deformable");
-  if (v.rigid && scheme == "time-stepping")
+    if (!v.law().springs && s.has(n))
+      throw std::invalid_argument(std::string("--") + n + " belongs to --contact deformable");
+  if (v.law().schemes && scheme == "time-stepping")
     for (const char* n : {"rtol", "atol", "method"})
       if (s.has(n))
         throw std::invalid_argument(std::string("--") + n +
                                     " belongs to --scheme event-driven (time-stepping has --step)");
-  if (!v.rigid && s.has("step")) throw std::invalid_argument("--step belongs to --contact rigid");
+  if (!v.law().schemes && s.has("step")) throw std::invalid_argument("--step belongs to --contact rigid");
   if (s.flag("columns-rock-only") && scheme == "event-driven" && s.has("scheme"))
     throw std::invalid_argument(
         "--columns-rock-only (seed 001's 5-DOF restriction) is integrated by --scheme time-stepping only");
@@ -106,7 +106,7 @@ Assembly from_file(const Settings& s, const Values& v) {
     if (!ground && s.has("phi-l")) l.mu_s = l.mu_k = friction_of_angle(v.phi_l, "phi-l");
     set_kinetic(l, ground ? v.phi_s_kinetic : v.phi_l_kinetic, ground ? "phi-s-kinetic" : "phi-l-kinetic");
   }
-  apply_default_restitution(a, v.rigid);  // one default per law: the presets' (0.5 deformable, 0 rigid)
+  apply_default_restitution(a, v.law().plastic_impacts);  // one default per law: the presets' (0.5 deformable, 0 rigid)
   if (s.has("g")) a.g = v.g;
   a.contact = v.contact;
   return a;
@@ -119,7 +119,7 @@ Assembly from_preset(const Settings& s, const Values& v) {
   o.block_law = preset_law(v, v.phi_l, "phi-l");
   set_kinetic(o.ground_law, v.phi_s_kinetic, "phi-s-kinetic");
   set_kinetic(o.block_law, v.phi_l_kinetic, "phi-l-kinetic");
-  o.rigid_contacts = v.rigid;
+  o.contact = v.contact;
   if (v.preset == "arch" && s.has("tilt"))
     throw std::invalid_argument("--tilt belongs to --preset block|trilith|column");
   Assembly a = make_preset(v.preset, o);
@@ -257,7 +257,7 @@ AssemblySetup assembly_from(const Settings& s) {
                                                       : AssemblyScheme::TimeStepping;
   // Above kEventDrivenMaxBlocks blocks the rigid law's default is time-stepping, whose options
   // are not the integrator's.
-  if (setup.assembly.contact == "rigid" && effective_scheme(setup.assembly, o) == AssemblyScheme::TimeStepping)
+  if (info(setup.assembly.contact).schemes && effective_scheme(setup.assembly, o) == AssemblyScheme::TimeStepping)
     for (const char* n : {"rtol", "atol", "method"})
       if (s.has(n))
         throw std::invalid_argument(std::string("--") + n +

@@ -16,10 +16,12 @@
 #include "blockdyn/analysis/forced/chaos_map.hpp"
 #include "blockdyn/analysis/forced/forced_lyapunov_report.hpp"
 #include "blockdyn/analysis/winkler/lyapunov_block.hpp"
+#include "blockdyn/api/forced_model_settings.hpp"
 #include "blockdyn/api/ground_settings.hpp"
 #include "blockdyn/api/harmonic_run.hpp"
 #include "blockdyn/api/winkler_orbit.hpp"
 #include "blockdyn/base/range_check.hpp"
+#include "blockdyn/family/family.hpp"
 #include "blockdyn/io/json_io.hpp"
 #include "blockdyn/simulation/simulate.hpp"
 
@@ -71,12 +73,14 @@ ChaosMapOptions chaos_options_of(const StudyOptions& s) {
   o.transient_periods = s.number("transient-periods");
   o.interval_periods = s.number("interval-periods");
   o.threshold = s.number("threshold");
-  // Assemblies: the tangent carries the stiff contact modes, which the integrator must resolve;
-  // at 1e-6 the exponent agrees with 1e-8 to a few per cent at a hundredth of the cost
-  // (docs/forced-chaos.md).
-  const bool assembly = s.text("model") == "assembly";
-  o.integrator.rtol = s.given("rtol") ? s.number("rtol") : assembly ? 1e-6 : o.integrator.rtol;
-  o.integrator.atol = s.given("atol") ? s.number("atol") : assembly ? 1e-8 : o.integrator.atol;
+  // The family's defaults (an assembly's tangent carries stiff contact modes: ForcedFamily).
+  const ForcedFamily& ff = *forced_family(s.text("model")).forced;
+  o.integrator.rtol = s.given("rtol")         ? s.number("rtol")
+                      : ff.chaos_map_rtol > 0 ? ff.chaos_map_rtol
+                                              : o.integrator.rtol;
+  o.integrator.atol = s.given("atol")         ? s.number("atol")
+                      : ff.chaos_map_atol > 0 ? ff.chaos_map_atol
+                                              : o.integrator.atol;
   validate(o);
   SimulationOptions so;
   so.integrator = o.integrator;
@@ -88,9 +92,9 @@ StudyReport chaos_map_study(const Settings& given, const StudyRequest& request) 
   const StudyOptions s(given, chaos_map_options());
   const ChaosMapOptions o = chaos_options_of(s);
   const ForcedModel fm = forced_model_of(s);
-  if (fm.description.contains("contact") && fm.description["contact"] == "rigid")
-    throw std::invalid_argument(
-        "--contact rigid: no Lyapunov exponent (Moreau-Jean time-stepping); use --contact deformable");
+  if (!fm.linearisable)
+    throw std::invalid_argument("--contact " + fm.description["contact"].get<std::string>() +
+                                ": no Lyapunov exponent (Moreau-Jean time-stepping); use --contact deformable");
   const auto lyap = fm.lyapunov;
   const ForcedLyapunovRun run = [lyap](const GroundMotion& g, const ForcedLyapunovOptions& fo) {
     return lyap(g, fo, RigidInitial{});
@@ -203,13 +207,13 @@ ForcedExcitation forced_excitation(const StudyOptions& o, const ForcedModel& fm)
 }
 
 ForcedLyapunovOptions forced_lyapunov_options(const StudyOptions& o, double T) {
-  const bool assembly = o.text("model") == "assembly";
+  const ForcedFamily& ff = *forced_family(o.text("model")).forced;
   ForcedLyapunovOptions f;
   f.t_end = o.number("t-end");
   f.t_transient = o.given("t-transient") ? o.number("t-transient") : 0.0;
   f.interval = o.given("interval") ? o.number("interval") : T;
-  f.integrator.rtol = o.given("rtol") ? o.number("rtol") : assembly ? 1e-8 : 1e-10;
-  f.integrator.atol = o.given("atol") ? o.number("atol") : assembly ? 1e-10 : 1e-12;
+  f.integrator.rtol = o.given("rtol") ? o.number("rtol") : ff.lyapunov_rtol;
+  f.integrator.atol = o.given("atol") ? o.number("atol") : ff.lyapunov_atol;
   const auto m = method_from_string(o.text("integrator-method"));
   if (!m)
     throw std::invalid_argument("--integrator-method = '" + o.text("integrator-method") +
@@ -222,7 +226,7 @@ ForcedLyapunovOptions forced_lyapunov_options(const StudyOptions& o, double T) {
 }
 
 RigidInitial forced_initial(const StudyOptions& o) {
-  if (o.text("model") == "assembly")
+  if (!forced_family(o.text("model")).forced->initial_state)
     refuse_given(o, {"w0", "vw0", "x0", "y0", "vx0", "vy0"}, "does not apply to assemblies (they start as built)");
   RigidInitial init;
   init.w0 = o.given("w0") ? o.number("w0") : 0.0;
@@ -240,10 +244,10 @@ StudyReport forced_lyapunov_study(const StudyOptions& o, const StudyRequest& req
   if (o.text("method") != "time")
     throw std::invalid_argument("--method " + o.text("method") + ": forced models renormalise at fixed times only");
   const ForcedModel fm = forced_model_of(o);
-  if (fm.description.contains("contact") && fm.description["contact"] == "rigid")
-    throw std::invalid_argument(
-        "--contact rigid: no Lyapunov exponent (Moreau-Jean time-stepping has no event-located orbit to linearise); "
-        "use --contact deformable");
+  if (!fm.linearisable)
+    throw std::invalid_argument("--contact " + fm.description["contact"].get<std::string>() +
+                                ": no Lyapunov exponent (Moreau-Jean time-stepping has no event-located orbit to "
+                                "linearise); use --contact deformable");
   const ForcedExcitation x = forced_excitation(o, fm);
   const ForcedLyapunovOptions f = forced_lyapunov_options(o, x.T);
   const ForcedLyapunovOutcome r = fm.lyapunov(x.g, f, forced_initial(o));
@@ -273,6 +277,8 @@ StudyReport forced_lyapunov_study(const StudyOptions& o, const StudyRequest& req
   if (!tl.note.empty()) append_text(rep.text, "note: %s\n", tl.note.c_str());
   return rep;
 }
+
+}  // namespace
 
 StudyReport winkler_lyapunov_study(const StudyOptions& o, const StudyRequest& request) {
   std::vector<std::string> forced_only = {"beta", "omega", "phase", "t-transient", "twin-d0"};
@@ -340,12 +346,13 @@ StudyReport winkler_lyapunov_study(const StudyOptions& o, const StudyRequest& re
   return rep;
 }
 
+namespace {
+
 StudyReport lyapunov_study(const Settings& given, const StudyRequest& request) {
   const StudyOptions o(given, lyapunov_options());
-  const std::string model = o.text("model");
-  if (model != "winkler" && model != "housner" && model != "rigid" && model != "assembly")
-    throw std::invalid_argument("--model = '" + model + "' is not one of: winkler, housner, rigid, assembly");
-  return model == "winkler" ? winkler_lyapunov_study(o, request) : forced_lyapunov_study(o, request);
+  const Family& f =
+      family_named("--model", o.text("model"), [](const Family& x) { return x.free_lyapunov || x.forced; });
+  return f.free_lyapunov ? f.free_lyapunov(o, request) : forced_lyapunov_study(o, request);
 }
 
 }  // namespace

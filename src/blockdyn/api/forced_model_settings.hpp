@@ -9,6 +9,7 @@
 
 #include "blockdyn/analysis/forced/forced_model.hpp"
 #include "blockdyn/api/settings.hpp"
+#include "blockdyn/family/family.hpp"
 
 namespace blockdyn {
 
@@ -20,10 +21,18 @@ struct ForcedModelChoice {
   std::string model = "housner", preset, contact = "deformable";
   double phi_s = 90, phi_l = 90;
   bool columns_rock_only = false;
-  bool assembly() const { return model == "assembly"; }
+  const Family* family = nullptr;
+  // Friction by angles per interface (an assembly's --phi-s/--phi-l).
+  bool friction_angles() const { return family->forced->friction_angles; }
   std::string label() const { return model + (preset.empty() ? "" : " " + preset); }  // "assembly trilith"
 };
+// Throws std::invalid_argument unless `model` names a family of the forced analyses.
 ForcedModelChoice forced_model_choice(const Settings& s);
+const Family& forced_family(const std::string& name);
+// The families' entries (family_registry.cpp).
+const ForcedFamily& housner_forced();
+const ForcedFamily& rigid_forced();
+const ForcedFamily& assembly_forced();
 // Throws std::invalid_argument naming the option.
 ForcedModel forced_model_from(const Settings& s);
 

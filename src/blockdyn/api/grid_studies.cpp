@@ -62,7 +62,7 @@ SurvivalOptions excitation_grid_of(const StudyOptions& o) {
 
 std::string title_of(const ForcedModelChoice& m, const std::string& excitation) {
   std::string title = m.label() + ", " + excitation;
-  if (m.assembly())
+  if (m.friction_angles())
     title += ", " + m.contact + " law, phi_s = " + short_num(m.phi_s) + ", phi_l = " + short_num(m.phi_l);
   return title;
 }
@@ -381,7 +381,7 @@ struct CurveAxes {
 };
 
 CurveAxes curve_axes(const StudyOptions& so, const ForcedModelChoice& choice, const SurvivalOptions& o) {
-  if ((so.given("phi-s-values") || so.given("phi-l-values")) && !choice.assembly())
+  if ((so.given("phi-s-values") || so.given("phi-l-values")) && !choice.friction_angles())
     throw std::invalid_argument("phi-s-values, phi-l-values: friction angles belong to --model assembly");
   CurveAxes a;
   a.phi_s = phi_axis(so, "phi-s", choice.phi_s);
@@ -394,7 +394,7 @@ CurveAxes curve_axes(const StudyOptions& so, const ForcedModelChoice& choice, co
   for (double ps : a.phi_s)
     for (double pl : a.phi_l) {
       Settings m = model;
-      if (choice.assembly()) {
+      if (choice.friction_angles()) {
         m.set("phi-s", Settings::exact(ps));
         m.set("phi-l", Settings::exact(pl));
       }
@@ -405,7 +405,7 @@ CurveAxes curve_axes(const StudyOptions& so, const ForcedModelChoice& choice, co
 
 std::string curve_title(const ForcedModelChoice& m, const SurvivalOptions& o, const CurveAxes& a, bool versus_phi) {
   std::string title = m.label() + ", " + o.excitation + (versus_phi ? ", omega = " + short_num(o.omega_min) : "");
-  if (m.assembly()) {
+  if (m.friction_angles()) {
     title += ", " + m.contact + " law" + (m.columns_rock_only ? " (columns only rock)" : "");
     if (a.phi_s.size() == 1) title += ", phi_s = " + short_num(a.phi_s[0]);
     if (a.phi_l.size() == 1) title += ", phi_l = " + short_num(a.phi_l[0]);
@@ -437,7 +437,7 @@ GridStudy response_curve_grid(const Settings& given, const std::string& output) 
   const ForcedModelChoice choice = forced_model_choice(given);
   const auto axes = std::make_shared<const CurveAxes>(curve_axes(so, choice, o));
   const ForcedModel& fm = axes->models.front();
-  const bool assembly = choice.assembly(), versus_phi = axes->phi_l.size() > 1;
+  const bool assembly = choice.friction_angles(), versus_phi = axes->phi_l.size() > 1;
   const json options = {{"excitation", o.excitation},
                         {"phase", o.phase},
                         {"t_end", o.periods > 0 ? json(nullptr) : json(o.t_end)},

@@ -12,8 +12,10 @@
 #include "blockdyn/api/motion_info.hpp"
 #include "blockdyn/base/number_text.hpp"
 #include "blockdyn/base/range_check.hpp"
+#include "blockdyn/family/family.hpp"
 #include "blockdyn/io/json_io.hpp"
 #include "blockdyn/model/rigid/rigid_params.hpp"
+#include "blockdyn/simulation/rigid_ground_model.hpp"
 
 namespace blockdyn {
 
@@ -103,8 +105,8 @@ json rows_json(const Table& t, const Axes& ax) {
 GridStudy rocking_grid(const Settings& given, const std::string& output) {
   const StudyOptions so(given, rocking_spectrum_options());
   const std::string model = so.text("model");
-  if (model != "housner" && model != "rigid")
-    throw std::invalid_argument("model = '" + model + "' is not one of: housner, rigid");
+  const RigidGroundModel& m =
+      *family_named("model", model, [](const Family& f) { return f.rigid_ground != nullptr; }).rigid_ground;
   if (!so.given("alpha")) throw std::invalid_argument("alpha: give the slenderness angle [rad]");
   const double alpha = so.number("alpha");
   require_in_range("alpha", alpha, 0, M_PI / 4, false);
@@ -121,8 +123,7 @@ GridStudy rocking_grid(const Settings& given, const std::string& output) {
   // The block's size comes from g and p: each is checked as given, before any size is made of it.
   require_in_range("g", base.shape.g, 0, 1e3, false);
   require_in_range("mass", base.shape.mass, 0, 1e12, false);
-  const bool housner = model == "housner";
-  if (housner)
+  if (!m.friction)
     for (const char* n : {"mu-s", "mu-k", "impact"})
       if (so.given(n)) throw std::invalid_argument(std::string("--") + n + " applies to --model rigid only");
   base.interface.mu_s = so.number("mu-s");
@@ -136,8 +137,8 @@ GridStudy rocking_grid(const Settings& given, const std::string& output) {
   const double t_end = so.given("t-end") ? so.number("t-end") : rec->t_last() + t_after;
   require_in_range("t-end", t_end, 0, 1e5, false);
   // Every block of the grid is checked before any point runs (a restitution out of range, ...).
-  for (double p : ax.p) forced_block_model(block_of(base, alpha, p), housner);
-  const ForcedModel first = forced_block_model(block_of(base, alpha, ax.p.front()), housner);
+  for (double p : ax.p) forced_block_model(block_of(base, alpha, p), m);
+  const ForcedModel first = forced_block_model(block_of(base, alpha, ax.p.front()), m);
   const json definition = {{"model", model},
                            {"record", rec->source()},
                            {"record_digest", rec->digest()},
@@ -153,13 +154,13 @@ GridStudy rocking_grid(const Settings& given, const std::string& output) {
       std::vector<std::string>{"p", "scale", "width", "height", "max_abs_rotation_over_alpha", "overturned",
                                "overturn_time"},
       ax.p.size() * ax.scales.size(),
-      [ax, base, alpha, housner, rec, t_end](std::size_t i, RowBuilder& row) {
+      [ax, base, alpha, &m, rec, t_end](std::size_t i, RowBuilder& row) {
         const double p = ax.p[i % ax.p.size()], scale = ax.scales[i / ax.p.size()];
         const RigidBlockParams b = block_of(base, alpha, p);
         GroundMotion gm;
         gm.horizontal.record = rec;
         gm.horizontal.scale = scale;
-        const SurvivalOutcome out = forced_block_model(b, housner).run(gm, t_end);
+        const SurvivalOutcome out = forced_block_model(b, m).run(gm, t_end);
         row.add(p);
         row.add(scale);
         row.add(b.shape.width);

@@ -6,7 +6,9 @@
 
 #include "blockdyn/api/ground_settings.hpp"
 #include "blockdyn/base/range_check.hpp"
+#include "blockdyn/family/family.hpp"
 #include "blockdyn/model/rigid/rigid_params.hpp"
+#include "blockdyn/simulation/rigid_ground_model.hpp"
 
 namespace blockdyn {
 
@@ -32,7 +34,7 @@ const PhysOption kPhysOptions[] = {
 
 // Options that belong to one family only: a clear error instead of a silently ignored option.
 void check_family_options(const Settings& s, const std::string& model) {
-  const bool rigid = is_rigid_family(model);
+  const RigidGroundModel* rigid = scenario_family(model).rigid_ground;
   if (rigid) {
     for (const char* n : {"r", "k", "mu", "ic", "units"})
       if (s.has(n))
@@ -42,7 +44,7 @@ void check_family_options(const Settings& s, const std::string& model) {
       if (s.has(n))
         throw std::invalid_argument(std::string("--") + n + " belongs to --model housner|rigid, not to winkler");
   }
-  if (model == "housner")
+  if (rigid && !rigid->friction)
     for (const char* n : {"mu-s", "mu-k", "impact", "x0", "y0", "vx0", "vy0"})
       if (s.has(n))
         throw std::invalid_argument(std::string("--") + n +
@@ -51,7 +53,7 @@ void check_family_options(const Settings& s, const std::string& model) {
 
 // The physical-block options on top of the scenario's [physical] block (if any).
 void apply_physical(const Settings& s, Scenario& sc) {
-  const bool rigid = is_rigid_family(sc.model);
+  const bool rigid = scenario_family(sc.model).rigid_ground != nullptr;
   bool any = false;
   for (const PhysOption& po : kPhysOptions) {
     if (!s.has(po.name)) continue;
@@ -111,10 +113,7 @@ const std::vector<std::string>& scenario_option_names() {
 Scenario scenario_from(const Settings& s) {
   Scenario sc = s.has("scenario") ? load_scenario(s.text("scenario")) : Scenario{};
   if (s.has("model")) {
-    const std::string m = s.text("model");
-    if (m != "winkler" && !is_rigid_family(m))
-      throw std::invalid_argument("--model = '" + m + "' is not one of: winkler, housner, rigid");
-    sc.model = m;
+    sc.model = scenario_family(s.text("model")).name;
   }
   check_family_options(s, sc.model);
   sc.params.r = s.number("r", sc.params.r);
@@ -142,7 +141,7 @@ Scenario scenario_from(const Settings& s) {
   validate(sc.ground);
   validate(sc.options);
   require_in_range("output-interval", sc.output_interval, 0.0, 1e300);
-  if (!is_rigid_family(sc.model)) {
+  if (!scenario_family(sc.model).rigid_ground) {
     validate(sc.params);
     if (sc.units != "nondim" && sc.units != "physical")
       throw std::invalid_argument("units = '" + sc.units + "' is not one of: nondim, physical");

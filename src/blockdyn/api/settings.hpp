@@ -14,7 +14,7 @@
 
 #include "blockdyn/api/option_spec.hpp"
 #include "blockdyn/excitation/accelerogram.hpp"
-#include "blockdyn/integrate/hybrid_integrator.hpp"
+#include "blockdyn/integrate/integrator_options.hpp"
 
 namespace blockdyn {
 

@@ -12,6 +12,7 @@
 #include "blockdyn/api/assembly_settings.hpp"
 #include "blockdyn/api/scenario_settings.hpp"
 #include "blockdyn/base/range_check.hpp"
+#include "blockdyn/family/family.hpp"
 #include "blockdyn/io/assembly_json.hpp"
 #include "blockdyn/io/json_io.hpp"
 #include "blockdyn/simulation/rigid_simulation.hpp"
@@ -111,6 +112,8 @@ std::string rigid_text(const RigidResult& r, double alpha) {
   return s + buf;
 }
 
+}  // namespace
+
 SimulateReport run_winkler(const Scenario& given, const SimulateOutputs& out) {
   Scenario sc = given;
   // With a physical block every time is in seconds and every frequency in Hz.
@@ -151,9 +154,11 @@ SimulateReport run_winkler(const Scenario& given, const SimulateOutputs& out) {
   return rep;
 }
 
-std::string block_title(const std::string& model, const RigidBlockParams& p) {
+namespace {
+
+std::string block_title(const RigidGroundModel& m, const RigidBlockParams& p) {
   char buf[256];
-  if (model == "housner")
+  if (!m.friction)
     std::snprintf(buf, sizeof buf, "housner block %.4g m x %.4g m, e = %.4g", p.shape.width, p.shape.height, p.e());
   else
     std::snprintf(buf, sizeof buf, "rigid block %.4g m x %.4g m, mu_s %.3g, mu_k %.3g, %s impacts (e = %.3g)",
@@ -162,7 +167,8 @@ std::string block_title(const std::string& model, const RigidBlockParams& p) {
 }
 
 template <class Model, class Simulate>
-SimulateReport run_rigid_family(const Scenario& sc, const SimulateOutputs& out, Simulate&& sim) {
+SimulateReport run_rigid_family(const Scenario& sc, const SimulateOutputs& out, const RigidGroundModel& m,
+                                Simulate&& sim) {
   const RigidBlockParams p = rigid_params(sc);
   RigidInitial init;
   init.w0 = sc.initial.w0.value_or(0.0);
@@ -187,10 +193,10 @@ SimulateReport run_rigid_family(const Scenario& sc, const SimulateOutputs& out, 
   for (int i = 1; i < out.timing_repeat; ++i)
     r.timing = fastest(r.timing, sim(p, sc.ground, init, o, nullptr, nullptr).timing);
   SimulateReport rep;
-  rep.summary = rigid_result_json(p, sc.ground, o, r);
+  rep.summary = rigid_result_json(p, m, sc.ground, o, r);
   rep.text = rigid_text(r, p.shape.alpha());
   rep.timing = r.timing;
-  const std::string title = block_title(sc.model, p) + motion_phrase(sc.ground);
+  const std::string title = block_title(m, p) + motion_phrase(sc.ground);
   rep.figure.plot_script = "plot_rigid.py";
   rep.figure.plot_args = {"--alpha",  arg(p.shape.alpha()), "--model", sc.model,
                           "--status", to_string(r.status),  "--title", title};
@@ -201,8 +207,10 @@ SimulateReport run_rigid_family(const Scenario& sc, const SimulateOutputs& out, 
   return rep;
 }
 
+}  // namespace
+
 SimulateReport run_housner(const Scenario& sc, const SimulateOutputs& out) {
-  return run_rigid_family<HousnerBlock>(sc, out,
+  return run_rigid_family<HousnerBlock>(sc, out, housner_on_rigid_ground(),
                                         [](const RigidBlockParams& p, const GroundMotion& g, const RigidInitial& in,
                                            const RigidRunOptions& o, Observer<HousnerBlock>* obs, RigidEventSink* ev) {
                                           return simulate_housner(p.shape, p.restitution, g, in, o, obs, ev);
@@ -211,10 +219,12 @@ SimulateReport run_housner(const Scenario& sc, const SimulateOutputs& out) {
 
 SimulateReport run_rigid(const Scenario& sc, const SimulateOutputs& out) {
   return run_rigid_family<RigidBlock>(
-      sc, out,
+      sc, out, three_dof_on_rigid_ground(),
       [](const RigidBlockParams& p, const GroundMotion& g, const RigidInitial& in, const RigidRunOptions& o,
          Observer<RigidBlock>* obs, RigidEventSink* ev) { return simulate_rigid(p, g, in, o, obs, ev); });
 }
+
+namespace {
 
 class PreparedBlock final : public PreparedRun {
  public:
@@ -226,11 +236,15 @@ class PreparedBlock final : public PreparedRun {
   Scenario sc_;
 };
 
+}  // namespace
+
 std::unique_ptr<PreparedRun> prepare_block(const Settings& s) {
   Scenario sc = scenario_from(s);
-  if (is_rigid_family(sc.model)) (void)rigid_params(sc);  // invalid parameters fail here, not when run
+  if (family_named("--model", sc.model).rigid_ground) (void)rigid_params(sc);  // invalid parameters fail here
   return std::make_unique<PreparedBlock>(std::move(sc));
 }
+
+namespace {
 
 std::string assembly_text(const AssemblyResult& r) {
   char buf[512];
@@ -314,37 +328,15 @@ class PreparedAssembly final : public PreparedRun {
   AssemblySetup s_;
 };
 
+}  // namespace
+
 std::unique_ptr<PreparedRun> prepare_assembly(const Settings& s) {
   return std::make_unique<PreparedAssembly>(assembly_from(s));
 }
 
-}  // namespace
-
-const std::vector<SimulateFamily>& simulate_families() {
-  // One row per family: a new family is its folder (model, run) plus a row here.
-  static const std::vector<SimulateFamily> families{
-      {"winkler", "block on a Winkler foundation (non-dimensional unless a physical block is given)",
-       scenario_option_names, prepare_block, run_winkler},
-      {"housner", "1-DOF rocking on rigid ground", scenario_option_names, prepare_block, run_housner},
-      {"rigid", "3-DOF on rigid ground, five mechanisms", scenario_option_names, prepare_block, run_rigid},
-      {"assembly", "block assemblies (preset or TOML file) with deformable or rigid contacts", assembly_option_names,
-       prepare_assembly},
-  };
-  return families;
-}
-
-const SimulateFamily& simulate_family(const std::string& name) {
-  std::string names;
-  for (const SimulateFamily& f : simulate_families()) {
-    if (name == f.name) return f;
-    names += (names.empty() ? "" : ", ") + std::string(f.name);
-  }
-  throw std::invalid_argument("--model = '" + name + "' is not one of: " + names);
-}
-
 std::unique_ptr<PreparedRun> prepare_run(const Settings& s) {
   const std::string model = s.text("model");
-  const SimulateFamily& f = simulate_family(model.empty() ? "winkler" : model);
+  const Family& f = model.empty() ? families().front() : family_named("--model", model);
   s.require_known(f.options(), "--model " + std::string(f.name));
   return f.prepare(s);
 }
@@ -352,8 +344,8 @@ std::unique_ptr<PreparedRun> prepare_run(const Settings& s) {
 SimulateReport run_scenario(const Scenario& sc, const SimulateOutputs& out) {
   if (out.timing_repeat < 1 || out.timing_repeat > 1000)
     throw std::invalid_argument("timing-repeat = " + std::to_string(out.timing_repeat) + " is out of range: [1, 1000]");
-  const SimulateFamily& f = simulate_family(sc.model);
-  if (!f.run_scenario) throw std::invalid_argument("--model " + sc.model + " is not described by a scenario");
+  const Family& f = family_named("--model", sc.model);
+  if (!f.scenario()) throw std::invalid_argument("--model " + sc.model + " is not described by a scenario");
   return f.run_scenario(sc, out);
 }
 

@@ -3,7 +3,7 @@
 // One block's run of any registered family, from a Scenario to its outputs: the trajectory table
 // (CSV or memory), each event as JSON as it happens, and the summary. The command line, the Python
 // module and any C++ caller run a block through here; a family is one row of the registry
-// (simulate_families()) with its run function.
+// (families(), family/family.hpp) with its run function.
 #include <functional>
 #include <memory>
 #include <string>
@@ -50,21 +50,16 @@ class PreparedRun {
   virtual std::pair<std::string, std::string> scenario_outputs() const { return {}; }
 };
 
-struct SimulateFamily {
-  const char* name;                                          // the --model value
-  const char* description;                                   // for --help
-  const std::vector<std::string>& (*options)();              // the options it reads
-  std::unique_ptr<PreparedRun> (*prepare)(const Settings&);  // throws std::invalid_argument
-  // The run of a block described by a Scenario (winkler, housner, rigid); null for the others.
-  SimulateReport (*run_scenario)(const Scenario&, const SimulateOutputs&) = nullptr;
-};
+// The families' entries (family_registry.cpp): a block described by a Scenario (winkler,
+// housner, rigid) or an assembly, prepared from Settings, and each scenario family's run.
+std::unique_ptr<PreparedRun> prepare_block(const Settings& s);
+std::unique_ptr<PreparedRun> prepare_assembly(const Settings& s);
+SimulateReport run_winkler(const Scenario& sc, const SimulateOutputs& out);
+SimulateReport run_housner(const Scenario& sc, const SimulateOutputs& out);
+SimulateReport run_rigid(const Scenario& sc, const SimulateOutputs& out);
 
-// Every registered family, in the order --help lists them.
-const std::vector<SimulateFamily>& simulate_families();
-// The family named; throws std::invalid_argument listing the names.
-const SimulateFamily& simulate_family(const std::string& name);
 // The run the Settings describe: the family named by `model` (without it, a scenario file's model,
-// else winkler). Throws std::invalid_argument naming the option at fault.
+// else the first registered family). Throws std::invalid_argument naming the option at fault.
 std::unique_ptr<PreparedRun> prepare_run(const Settings& s);
 // A block's run from a Scenario (winkler, housner, rigid).
 SimulateReport run_scenario(const Scenario& sc, const SimulateOutputs& out);

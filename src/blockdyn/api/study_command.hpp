@@ -159,6 +159,8 @@ void add_equilibrium_studies(std::vector<StudyCommand>& to);
 void add_orbit_studies(std::vector<StudyCommand>& to);
 void add_harmonic_studies(std::vector<StudyCommand>& to);
 void add_chaos_studies(std::vector<StudyCommand>& to);
+// `lyapunov` of the free Winkler block (its family's entry, family_registry.cpp).
+StudyReport winkler_lyapunov_study(const StudyOptions& o, const StudyRequest& request);
 void add_periodic_orbit_studies(std::vector<StudyCommand>& to);
 
 }  // namespace blockdyn

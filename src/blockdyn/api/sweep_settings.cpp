@@ -10,6 +10,7 @@
 #include "blockdyn/analysis/sweep/sweep_evaluator.hpp"
 #include "blockdyn/analysis/sweep/sweep_toml.hpp"
 #include "blockdyn/api/ground_settings.hpp"
+#include "blockdyn/family/family.hpp"
 #include "blockdyn/io/scenario.hpp"
 #include "blockdyn/io/toml_read.hpp"
 #include "blockdyn/model/rigid/rigid_params.hpp"
@@ -64,7 +65,9 @@ void set_output(const Settings& s, std::string& output, std::string& plot, std::
 
 SweepPlotAxis plot_axis(const SweepAxis& a) { return {a.name, a.values, a.is_range && a.spacing == AxisSpacing::Log}; }
 
-SweepDefinition winkler_sweep(const Settings& s) {
+}  // namespace
+
+SweepDefinition winkler_sweep(const Settings& s, const Family& family) {
   for (const char* n : kRigidOnly)
     if (s.has(n)) throw std::invalid_argument(std::string("--") + n + " belongs to --model housner|rigid sweeps");
   SweepSpec sp = s.has("definition") ? load_sweep(s.text("definition")) : SweepSpec{};
@@ -85,7 +88,7 @@ SweepDefinition winkler_sweep(const Settings& s) {
   set_output(s, sp.output, sp.plot, sp.plot_column);
   validate(sp);
   SweepDefinition d;
-  d.model = "winkler";
+  d.model = family.name;
   auto table = std::make_shared<SweepEvaluator>(sp);
   d.definition = definition_json(sp);
   d.table = table;
@@ -97,6 +100,15 @@ SweepDefinition winkler_sweep(const Settings& s) {
   d.t_end = sp.options.t_end;
   return d;
 }
+
+std::vector<std::pair<std::string, std::string>> winkler_sweep_axes() {
+  return {{"k", "foundation stiffness (--k; [axes] k in a definition file)"},
+          {"r", "aspect ratio width/height (--r), or inv_r its inverse (--inv-r)"},
+          {"mu", "friction coefficient (--mu)"},
+          {"ic", "initial-condition sets ic1, ic2, custom (--ic)"}};
+}
+
+namespace {
 
 void apply_block(const Settings& s, RigidSweepSpec& sp) {
   BlockShape& shape = sp.block.shape;
@@ -130,16 +142,19 @@ void add_axes(const Settings& s, RigidSweepSpec& sp) {
   }
 }
 
-SweepDefinition rigid_sweep(const Settings& s, const std::string& model) {
+}  // namespace
+
+SweepDefinition rigid_sweep(const Settings& s, const Family& family) {
+  const std::string model = family.name;
   for (const char* n : kWinklerOnly)
     if (s.has(n))
       throw std::invalid_argument(std::string("--") + n + " belongs to the winkler sweep, not to --model " + model);
   RigidSweepSpec sp;
   if (s.has("definition"))
-    sp = load_rigid_sweep(s.text("definition"));
+    sp = load_rigid_sweep(s.text("definition"), *family.rigid_ground);
   else
     sp.block.shape.width = sp.block.shape.height = 0.0;  // the block must be given
-  sp.model = model;
+  sp.model = family.rigid_ground;
   apply_block(s, sp);
   apply_ground_settings(s, sp.ground);
   apply_tilt(s, [&](double v, bool over_alpha) {
@@ -176,8 +191,6 @@ SweepDefinition rigid_sweep(const Settings& s, const std::string& model) {
   d.t_end = sp.options.t_end;
   return d;
 }
-
-}  // namespace
 
 const std::vector<StudyOption>& sweep_options() {
   static const std::vector<StudyOption> options = [] {
@@ -226,8 +239,8 @@ const std::vector<StudyOption>& sweep_options() {
   return options;
 }
 
-std::string sweep_model(const Settings& s) {
-  std::string model = "winkler";
+const Family& sweep_family(const Settings& s) {
+  std::string model = families().front().name;
   if (s.has("model")) {
     model = s.text("model");
   } else if (s.has("definition")) {
@@ -235,15 +248,13 @@ std::string sweep_model(const Settings& s) {
     const toml::table root = toml_read::parse(toml_read::read_file(file, "sweep file"), file);
     if (const auto v = root["model"].value<std::string>()) model = *v;
   }
-  if (model != "winkler" && !is_rigid_family(model))
-    throw std::invalid_argument("model = '" + model + "' is not one of: winkler, housner, rigid");
-  return model;
+  return family_named("model", model, [](const Family& f) { return f.sweep != nullptr; });
 }
 
 SweepDefinition sweep_definition(const Settings& s) {
   s.require_known(sweep_options(), {"definition", "output"}, "sweep");
-  const std::string model = sweep_model(s);
-  return model == "winkler" ? winkler_sweep(s) : rigid_sweep(s, model);
+  const Family& f = sweep_family(s);
+  return f.sweep(s, f);
 }
 
 }  // namespace blockdyn

@@ -27,7 +27,7 @@ struct SweepPlotAxis {
 };
 
 struct SweepDefinition {
-  std::string model;                        // winkler | housner | rigid
+  std::string model;                        // the family's name
   std::shared_ptr<const PointTable> table;  // the points and their rows
   nlohmann::ordered_json definition;        // what determines the rows (the sidecar's)
   std::string output, plot, plot_column;    // plot_column: the figure's column (default resolved)
@@ -36,8 +36,15 @@ struct SweepDefinition {
   double t_end = 0;
 };
 
-// The family the options name: "model", else the definition file's `model` key, else winkler.
-std::string sweep_model(const Settings& s);
+struct Family;
+// The family the options name: "model", else the definition file's `model` key, else the first
+// registered; throws std::invalid_argument unless it has a sweep.
+const Family& sweep_family(const Settings& s);
+// The families' entries (family_registry.cpp): the Winkler block's sweep (axes k, r, mu, ic) and a
+// block on rigid ground's (its axes from rigid_axis_catalog()).
+SweepDefinition winkler_sweep(const Settings& s, const Family& family);
+SweepDefinition rigid_sweep(const Settings& s, const Family& family);
+std::vector<std::pair<std::string, std::string>> winkler_sweep_axes();
 // The sweep the options define; std::invalid_argument naming the option (or the file's key).
 SweepDefinition sweep_definition(const Settings& s);
 

@@ -9,7 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "blockdyn/api/study_command.hpp"
-#include "blockdyn/integrate/hybrid_integrator.hpp"
+#include "blockdyn/integrate/integrator_options.hpp"
 #include "blockdyn/model/winkler/winkler_params.hpp"
 #include "blockdyn/model/winkler/winkler_state.hpp"
 #include "blockdyn/simulation/simulate.hpp"

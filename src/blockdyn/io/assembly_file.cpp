@@ -120,9 +120,9 @@ void stand_tilted_polygons(Assembly& a) {
 
 }  // namespace
 
-void apply_default_restitution(Assembly& a, bool rigid) {
+void apply_default_restitution(Assembly& a, bool plastic) {
   for (AssemblyInterface& i : a.interfaces)
-    if (i.law.restitution == kUnsetRestitution) i.law.restitution = rigid ? 0.0 : 0.5;
+    if (i.law.restitution == kUnsetRestitution) i.law.restitution = plastic ? 0.0 : 0.5;
 }
 
 double friction_of_angle(double deg, const std::string& field) {

@@ -21,7 +21,7 @@ double friction_of_angle(double deg, const std::string& field);
 inline constexpr double kUnsetRestitution = -1.0;
 
 // Every interface without a restitution of its own gets the law's default (see above).
-void apply_default_restitution(Assembly& a, bool rigid);
+void apply_default_restitution(Assembly& a, bool plastic);
 
 Assembly read_assembly_file(const std::string& path);
 // The same from the file's text (`source` names it in errors).

@@ -10,9 +10,10 @@ using json = nlohmann::ordered_json;
 
 namespace {
 
-json law_json(const ContactLaw& l, double damping, const std::string& contact) {
-  if (contact == "rigid") return {{"law", "rigid"}, {"restitution", l.restitution}, {"mu_s", l.mu_s}, {"mu_k", l.mu_k}};
-  return {{"law", "deformable"},
+json law_json(const ContactLaw& l, double damping, ContactKind contact) {
+  if (!info(contact).springs)
+    return {{"law", to_string(contact)}, {"restitution", l.restitution}, {"mu_s", l.mu_s}, {"mu_k", l.mu_k}};
+  return {{"law", to_string(contact)},
           {"k_normal", l.k_normal},
           {"k_tangential", l.k_tangential > 0 ? l.k_tangential : l.k_normal / 3.0},
           {"restitution", l.damping >= 0 ? json(nullptr) : json(l.restitution)},
@@ -69,7 +70,7 @@ json assembly_result_json(const Assembly& a, const GroundMotion& g, const Assemb
   json j;
   j["run"] = run_info();
   j["model"] = "assembly";
-  j["contact"] = a.contact;
+  j["contact"] = to_string(a.contact);
   j["units"] = "SI (s, m, rad, kg, N, J); ground accelerations in g";
   j["assembly"] = to_json(a);
   json ifs = json::array();
@@ -119,7 +120,7 @@ json assembly_result_json(const Assembly& a, const GroundMotion& g, const Assemb
                  {"balance_final", r.energy_final.total - r.energy_initial.total - r.work_ground - r.work_normal -
                                        r.work_friction - r.work_switch}};
   j["max_abs_energy_error"] = r.max_abs_energy_error;
-  if (a.contact == "rigid") {
+  if (info(a.contact).schemes) {
     j["scheme"] = to_string(effective_scheme(a, o));
     j["step"] = o.step;
     if (effective_scheme(a, o) == AssemblyScheme::EventDriven)

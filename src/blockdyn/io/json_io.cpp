@@ -63,27 +63,6 @@ json to_json(const EventRecord& e) {
       {"ihor", e.ihor}, {"state", state_json(e.z)}};
 }
 
-json to_json(const RigidBlockParams& p, const std::string& model) {
-  const BlockShape& s = p.shape;
-  json j = {{"model", model},
-            {"width", s.width},
-            {"height", s.height},
-            {"mass", s.mass},
-            {"g", s.g},
-            {"alpha", s.alpha()},
-            {"half_diagonal", s.half_diagonal()},
-            {"p", s.p()},
-            {"inertia_centre", s.inertia_centre()},
-            {"housner_restitution", s.housner_restitution()}};
-  if (model == "rigid") {
-    j["mu_s"] = p.interface.mu_s;
-    j["mu_k"] = p.interface.mu_k;
-    j["impact"] = to_string(p.impact);
-  }
-  j["restitution"] = model == "housner" ? p.restitution.value_or(s.housner_restitution()) : p.e();
-  return j;
-}
-
 static json pose_json(const std::array<double, 6>& q) {
   return {{"x", q[0]}, {"y", q[1]}, {"w", q[2]}, {"vx", q[3]}, {"vy", q[4]}, {"vw", q[5]}};
 }
@@ -184,19 +163,17 @@ json result_json(const BlockParams& p, const GroundMotion& g, const SimulationOp
   return j;
 }
 
-json rigid_result_json(const RigidBlockParams& p, const GroundMotion& g, const RigidRunOptions& o,
-                       const RigidResult& r) {
+json rigid_result_json(const RigidBlockParams& p, const RigidGroundModel& m, const GroundMotion& g,
+                       const RigidRunOptions& o, const RigidResult& r) {
   auto opt = [](const std::optional<double>& v) { return v ? json(*v) : json(nullptr); };
   json j;
   j["run"] = run_info();
   j["model"] = r.model;
   j["units"] = "SI (s, m, rad, kg, N, J); ground accelerations in g";
-  j["parameters"] = to_json(p, r.model);
+  j["parameters"] = parameters_json(p, m);
   j["ground_motion"] = to_json(g);
   j["tolerances"] = to_json(o.integrator);
-  j["tolerances"]["atol_scaling"] =
-      r.model == "housner" ? "theta: atol, theta': atol p, works: atol m g R"
-                           : "x, y: atol h, x', y': atol sqrt(g h), theta: atol, theta': atol p, works: atol m g h";
+  j["tolerances"]["atol_scaling"] = m.atol_scaling;
   j["t_start"] = o.t_start;
   j["t_end"] = o.t_end;
   j["initial_state"] = pose_json(r.initial_state);

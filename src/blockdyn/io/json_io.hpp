@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "blockdyn/excitation/ground_motion.hpp"
+#include "blockdyn/simulation/rigid_ground_model.hpp"
 #include "blockdyn/simulation/rigid_simulation.hpp"
 #include "blockdyn/simulation/simulate.hpp"
 #include "blockdyn/units/physical_units.hpp"
@@ -34,11 +35,10 @@ std::string schema_name(const std::string& command, const std::string& kind);
 nlohmann::ordered_json result_json(const BlockParams& p, const GroundMotion& g, const SimulationOptions& o,
                                    const SimulationResult& r, const PhysicalBlock* phys = nullptr);
 
-// Everything `simulate --model housner|rigid --json` prints.
-nlohmann::ordered_json to_json(const RigidBlockParams& p, const std::string& model);
+// Everything `simulate --json` prints of a block on rigid ground (either model).
 nlohmann::ordered_json to_json(const RigidEventRecord& e);
-nlohmann::ordered_json rigid_result_json(const RigidBlockParams& p, const GroundMotion& g, const RigidRunOptions& o,
-                                         const RigidResult& r);
+nlohmann::ordered_json rigid_result_json(const RigidBlockParams& p, const RigidGroundModel& m, const GroundMotion& g,
+                                         const RigidRunOptions& o, const RigidResult& r);
 
 // The integration's wall and CPU time: {"integration_wall_s", "integration_cpu_s"}.
 nlohmann::ordered_json to_json(const RunTiming& t);

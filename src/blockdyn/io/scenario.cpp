@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "blockdyn/io/scenario.hpp"
 
+#include "blockdyn/family/family.hpp"
+
 #include "blockdyn/base/number_text.hpp"
 
 #include <cmath>
@@ -54,17 +56,18 @@ void read_component(const toml::table& t, const std::string& where, const std::s
 
 }  // namespace
 
-bool is_rigid_family(const std::string& m) { return m == "housner" || m == "rigid"; }
+const Family& scenario_family(const std::string& name, const std::string& field) {
+  return family_named(field, name, [](const Family& f) { return f.scenario(); });
+}
 
 Scenario parse_scenario(const std::string& text, const std::string& source, const std::string& base) {
   const toml::table root = toml_read::parse(text, source);
   Scenario s;
   check_keys(root, source, {"model", "block", "physical", "interface", "impact", "initial", "run", "ground", "output"});
   if (auto v = opt_string(root, source, "model")) {
-    if (*v != "winkler" && !is_rigid_family(*v)) fail("model", "'" + *v + "' is not one of: winkler, housner, rigid");
-    s.model = *v;
+    s.model = scenario_family(*v, "model").name;
   }
-  const bool rigid = is_rigid_family(s.model);
+  const bool rigid = scenario_family(s.model, "model").rigid_ground != nullptr;
   if (rigid && root.contains("block"))
     fail("block", "[block] (r, mu, k) belongs to the winkler model; give the " + s.model + " block in [physical]");
   if (!rigid && (root.contains("interface") || root.contains("impact")))

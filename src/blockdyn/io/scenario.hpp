@@ -20,7 +20,7 @@ struct InitialSpec {
 };
 
 struct Scenario {
-  std::string model = "winkler";  // winkler | housner | rigid
+  std::string model = "winkler";  // a family that a scenario describes (scenario_family())
   BlockParams params;
   std::optional<PhysicalBlock> physical;  // when given, params are derived from it
   // housner / rigid: the block's shape comes from [physical]; interface and impact from here.
@@ -36,8 +36,10 @@ struct Scenario {
   std::string units = "nondim";  // nondim | physical (adds physical columns / fields)
 };
 
-// Model families a scenario may name.
-bool is_rigid_family(const std::string& model);
+struct Family;
+// The family named, if a scenario describes it (winkler, housner, rigid); throws
+// std::invalid_argument "<field> = '<name>' is not one of: <those families>".
+const Family& scenario_family(const std::string& name, const std::string& field = "--model");
 
 // Reads a TOML scenario; throws std::invalid_argument with the offending key on error.
 // Record paths in [ground.*] are relative to the scenario file's directory.

@@ -8,7 +8,7 @@
 #include <set>
 #include <string>
 
-#include "blockdyn/integrate/hybrid_integrator.hpp"
+#include "blockdyn/integrate/integrator_options.hpp"
 
 namespace blockdyn::toml_read {
 

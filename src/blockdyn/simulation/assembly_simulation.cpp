@@ -404,7 +404,7 @@ AssemblyResult simulate_assembly(const Assembly& a, const GroundMotion& g, const
   validate(o);
   if (probe && a.blocks.size() > std::size_t(RunProbe::kMaxBlocks))
     throw std::invalid_argument("a probed run takes at most " + std::to_string(RunProbe::kMaxBlocks) + " blocks");
-  const bool rigid = a.contact == "rigid";
+  const bool rigid = !info(a.contact).springs;  // the rigid law's model, else the springs'
   const int n = int(a.blocks.size());
   const std::size_t ni = a.interfaces.size();
   const int cap = (n == 1 && ni <= 2) ? 1 : (n <= 3 && ni <= 4) ? 3 : (n <= 8 && ni <= 9) ? 8 : 24;

@@ -15,7 +15,7 @@
 #include <vector>
 
 #include "blockdyn/excitation/ground_motion.hpp"
-#include "blockdyn/integrate/hybrid_integrator.hpp"
+#include "blockdyn/integrate/integrator_options.hpp"
 #include "blockdyn/model/assembly/assembly_params.hpp"
 #include "blockdyn/simulation/run_options.hpp"
 #include "blockdyn/simulation/run_probe.hpp"

@@ -8,7 +8,7 @@
 #include <array>
 #include <cstddef>
 
-#include "blockdyn/integrate/hybrid_integrator.hpp"
+#include "blockdyn/integrate/hybrid_model.hpp"
 
 // The types of Observer<Model> in a class template derived from it (names of a dependent base
 // are not found without these declarations).

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <vector>
 
+#include "blockdyn/integrate/hybrid_integrator.hpp"
 #include "blockdyn/model/assembly/moreau_jean.hpp"
 
 namespace blockdyn {

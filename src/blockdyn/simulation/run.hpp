@@ -2,6 +2,7 @@
 #pragma once
 // One run of any hybrid model from a mode and state, with its observers: the integrator's
 // observer protocol bridged to Observer<Model>, the start and end announced.
+#include "blockdyn/integrate/hybrid_integrator.hpp"
 #include "blockdyn/simulation/observer.hpp"
 
 namespace blockdyn {

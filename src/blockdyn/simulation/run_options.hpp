@@ -3,7 +3,7 @@
 // The options of one run, shared by every model family, with one validation. A family's options
 // extend them (SimulationOptions: the Winkler block's stop criteria; AssemblyRunOptions: the
 // trajectory's interval, the rigid law's scheme and step).
-#include "blockdyn/integrate/hybrid_integrator.hpp"
+#include "blockdyn/integrate/integrator_options.hpp"
 
 namespace blockdyn {
 

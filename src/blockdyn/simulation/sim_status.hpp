@@ -2,7 +2,7 @@
 #pragma once
 // The one status vocabulary of a run's result, shared by every model family (the JSON's
 // "status"), beside the integrator's own RunStatus ("integrator_status").
-#include "blockdyn/integrate/hybrid_integrator.hpp"
+#include "blockdyn/integrate/integrator_options.hpp"
 
 namespace blockdyn {
 

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "blockdyn/integrate/hybrid_integrator.hpp"
+#include "blockdyn/integrate/integrator_options.hpp"
 #include "blockdyn/model/winkler/energy.hpp"
 #include "blockdyn/model/winkler/winkler_block.hpp"
 #include "blockdyn/simulation/run.hpp"

@@ -17,7 +17,7 @@
 //   kCompleteIsIdentity  complete() never changes a state (no projection of tangents needed).
 #include <array>
 
-#include "blockdyn/integrate/hybrid_integrator.hpp"
+#include "blockdyn/integrate/hybrid_model.hpp"
 
 namespace blockdyn {
 

@@ -27,7 +27,7 @@
 #include <optional>
 
 #include "blockdyn/analysis/dynamics/tangent_traits.hpp"
-#include "blockdyn/integrate/hybrid_integrator.hpp"
+#include "blockdyn/integrate/hybrid_model.hpp"
 
 namespace blockdyn {
 

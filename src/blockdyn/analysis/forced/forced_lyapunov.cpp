@@ -227,10 +227,10 @@ ForcedLyapunovOutcome assembly_run(const Assembly& a, const GroundMotion& g, con
 ForcedLyapunovOutcome assembly_lyapunov(const Assembly& a, const GroundMotion& g, const ForcedLyapunovOptions& o) {
   validate(a);
   validate(g);
-  if (a.contact == "rigid")
-    throw std::invalid_argument(
-        "contact = rigid: no Lyapunov exponent (Moreau-Jean time-stepping has no event-located orbit to "
-        "linearise); use the deformable contact law");
+  if (!info(a.contact).linearisable)
+    throw std::invalid_argument(std::string("contact = ") + to_string(a.contact) +
+                                ": no Lyapunov exponent (Moreau-Jean time-stepping has no event-located orbit to "
+                                "linearise); use the deformable contact law");
   const std::size_t n = a.blocks.size();
   if (n == 1 && a.interfaces.size() <= 2) return assembly_run<1>(a, g, o);
   if (n <= 3 && a.interfaces.size() <= 4) return assembly_run<3>(a, g, o);

@@ -10,6 +10,7 @@
 #include "blockdyn/analysis/forced/cycle_detection.hpp"
 #include "blockdyn/io/json_io.hpp"
 #include "blockdyn/simulation/assembly_simulation.hpp"
+#include "blockdyn/simulation/rigid_ground_model.hpp"
 #include "blockdyn/simulation/rigid_probe.hpp"
 #include "blockdyn/simulation/rigid_simulation.hpp"
 
@@ -34,14 +35,15 @@ SurvivalRun with_cycle(const std::function<SurvivalOutcome(const GroundMotion&, 
 
 }  // namespace
 
-ForcedModel forced_block_model(const RigidBlockParams& rp, bool housner) {
+ForcedModel forced_block_model(const RigidBlockParams& rp, const RigidGroundModel& m) {
+  const bool housner = !m.friction;  // Housner's 1-DOF block: its own probe, Lyapunov and impact rule
   validate(rp);
   if (housner) housner_coefficient(rp.shape, rp.restitution);
   ForcedModel fm;
   fm.alpha = rp.shape.alpha();
   fm.p = rp.shape.p();
   fm.width = rp.shape.width;
-  fm.description = to_json(rp, housner ? "housner" : "rigid");
+  fm.description = parameters_json(rp, m);
   fm.overturn_rule = "|theta| reaches pi/2";
   fm.tolerances = to_json(RigidRunOptions{}.integrator);
   fm.traced = [rp, housner](const GroundMotion& g, double t_end, RunProbe* probe) {
@@ -104,9 +106,10 @@ ForcedModel forced_assembly_model(const Assembly& a, nlohmann::ordered_json desc
     fm.p = std::sqrt(0.75 * a.g / (0.5 * std::hypot(x1 - x0, y1 - y0)));
   }
   fm.description = std::move(description);
+  fm.linearisable = info(a.contact).linearisable;
   fm.overturn_rule = "collapse mode 1 (rotation) or 2 (bearing)";
   fm.tolerances = to_json(AssemblyRunOptions{}.integrator);
-  if (a.contact == "rigid") {
+  if (info(a.contact).schemes) {
     fm.tolerances["rigid_scheme"] = to_string(effective_scheme(a, AssemblyRunOptions{}));
     fm.tolerances["moreau_jean_step_s"] = AssemblyRunOptions{}.step;
   }

@@ -40,11 +40,14 @@ struct ForcedModel {
   // the rigid-ground models; assemblies start as built).
   std::function<ForcedLyapunovOutcome(const GroundMotion& g, const ForcedLyapunovOptions& o, const RigidInitial& init)>
       lyapunov;
+  // Its orbits have a variational equation (false: an assembly run by time-stepping).
+  bool linearisable = true;
 };
 
-// A block on rigid ground: Housner's 1-DOF block (housner) or the 3-DOF block. Throws
-// std::invalid_argument for invalid parameters (a Housner block with b/h > sqrt(2) and no restitution).
-ForcedModel forced_block_model(const RigidBlockParams& p, bool housner);
+struct RigidGroundModel;
+// A block on rigid ground: Housner's 1-DOF block or the 3-DOF block. Throws std::invalid_argument
+// for invalid parameters (a Housner block with b/h > sqrt(2) and no restitution).
+ForcedModel forced_block_model(const RigidBlockParams& p, const RigidGroundModel& m);
 // An assembly (validated); `description` is recorded as the model's in the outputs.
 ForcedModel forced_assembly_model(const Assembly& a, nlohmann::ordered_json description);
 

@@ -10,6 +10,7 @@
 #include "blockdyn/analysis/dynamics/tangent_lyapunov.hpp"
 #include "blockdyn/analysis/forced/block_tangent_traits.hpp"
 #include "blockdyn/analysis/forced/linear_rocking_orbits.hpp"
+#include "blockdyn/integrate/hybrid_integrator.hpp"
 #include "blockdyn/model/rigid/housner_block.hpp"
 
 namespace blockdyn {

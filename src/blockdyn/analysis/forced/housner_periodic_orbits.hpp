@@ -23,7 +23,7 @@
 #include <string>
 #include <vector>
 
-#include "blockdyn/integrate/hybrid_integrator.hpp"
+#include "blockdyn/integrate/integrator_options.hpp"
 #include "blockdyn/model/common/block_shape.hpp"
 
 namespace blockdyn {

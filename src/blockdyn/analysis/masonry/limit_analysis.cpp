@@ -121,6 +121,32 @@ LimitAnalysis limit_analysis(const Assembly& a, int direction, bool exact) {
   return out;
 }
 
+namespace {
+
+// The root of the margin extrapolated from the standing arches (ratio, margin), thinnest first:
+// the quadratic through the three thinnest, the secant through two; NaN without one.
+double root_estimate(const std::vector<std::pair<double, double>>& standing) {
+  if (standing.size() < 2) return double(NAN);
+  const auto [t1, f1] = standing[0];
+  const auto [t2, f2] = standing[1];
+  const double a = (f2 - f1) / (t2 - t1);
+  if (standing.size() >= 3) {
+    const auto [t3, f3] = standing[2];
+    const double b = ((f3 - f2) / (t3 - t2) - a) / (t3 - t1);
+    // f1 + a x + b x (x + t1 - t2) = 0 with x = t - t1 < 0: the root nearest x = 0.
+    const double B = a + b * (t1 - t2), disc = B * B - 4.0 * b * f1;
+    if (b != 0.0 && disc >= 0.0) {
+      const double q = -0.5 * (B + std::copysign(std::sqrt(disc), B));
+      const double r1 = q / b, r2 = f1 / q;
+      const double x = std::fabs(r1) < std::fabs(r2) ? r1 : r2;
+      if (std::isfinite(x)) return t1 + x;
+    }
+  }
+  return a > 0 ? t1 - f1 / a : double(NAN);
+}
+
+}  // namespace
+
 MinThickness min_thickness_ratio(const PresetOptions& arch, double tol) {
   if (!(tol > 0 && tol < 0.1)) throw std::invalid_argument("tolerance must be in (0, 0.1)");
   MinThickness out;
@@ -186,27 +212,8 @@ MinThickness min_thickness_ratio(const PresetOptions& arch, double tol) {
     th = std::move(x);
     return true;
   };
-  auto estimate = [&]() {
-    if (standing.size() < 2) return double(NAN);
-    const auto [t1, f1] = standing[0];
-    const auto [t2, f2] = standing[1];
-    const double a = (f2 - f1) / (t2 - t1);
-    if (standing.size() >= 3) {
-      const auto [t3, f3] = standing[2];
-      const double b = ((f3 - f2) / (t3 - t2) - a) / (t3 - t1);
-      // f1 + a x + b x (x + t1 - t2) = 0 with x = t - t1 < 0: the root nearest x = 0.
-      const double B = a + b * (t1 - t2), disc = B * B - 4.0 * b * f1;
-      if (b != 0.0 && disc >= 0.0) {
-        const double q = -0.5 * (B + std::copysign(std::sqrt(disc), B));
-        const double r1 = q / b, r2 = f1 / q;
-        const double x = std::fabs(r1) < std::fabs(r2) ? r1 : r2;
-        if (std::isfinite(x)) return t1 + x;
-      }
-    }
-    return a > 0 ? t1 - f1 / a : double(NAN);
-  };
   while (hi - lo > tol && out.evaluations < 200) {
-    double est = estimate();
+    double est = root_estimate(standing);
     const double inset = std::fmin(0.25 * tol, 0.25 * (hi - lo));
     // Without an estimate, the bracket's geometric middle (thicknesses span two decades).
     if (!(est > lo + inset && est < hi - inset)) est = hi > 2.0 * lo ? std::sqrt(lo * hi) : 0.5 * (lo + hi);

@@ -21,7 +21,7 @@ namespace {
 
 struct AxisDef {
   std::string name, what;
-  bool rigid_only;
+  bool friction_only;  // a parameter of the models with friction
   std::function<void(RigidSweepPoint&, double)> apply;
 };
 
@@ -97,8 +97,7 @@ std::string describe(const RigidSweepSpec& s, const RigidSweepPoint& p) {
 }
 
 RigidResult run_point(const RigidSweepSpec& s, const RigidSweepPoint& p) {
-  if (s.model == "housner") return simulate_housner(p.block.shape, p.block.restitution, p.ground, p.initial, s.options);
-  return simulate_rigid(p.block, p.ground, p.initial, s.options);
+  return s.model->simulate(p.block, p.ground, p.initial, s.options);
 }
 
 }  // namespace
@@ -106,7 +105,7 @@ RigidResult run_point(const RigidSweepSpec& s, const RigidSweepPoint& p) {
 const std::vector<std::pair<std::string, std::string>>& rigid_axis_catalog() {
   static const std::vector<std::pair<std::string, std::string>> c = [] {
     std::vector<std::pair<std::string, std::string>> out;
-    for (const auto& d : axis_defs()) out.emplace_back(d.name, d.what + (d.rigid_only ? " (rigid only)" : ""));
+    for (const auto& d : axis_defs()) out.emplace_back(d.name, d.what + (d.friction_only ? " (rigid only)" : ""));
     return out;
   }();
   return c;
@@ -146,18 +145,16 @@ RigidSweepPoint sweep_point(const RigidSweepSpec& s, std::size_t index) {
 }
 
 void validate(const RigidSweepSpec& s) {
-  if (s.model != "housner" && s.model != "rigid")
-    throw std::invalid_argument("model = '" + s.model + "' is not one of: housner, rigid");
   for (std::size_t a = 0; a < s.axes.size(); ++a) {
     const AxisDef* d = find_def(s.axes[a].name);
     if (!d) {
       std::string names;
       for (const auto& x : axis_defs()) names += (names.empty() ? "" : ", ") + x.name;
-      throw std::invalid_argument("axes." + s.axes[a].name + ": not an axis of the " + s.model +
+      throw std::invalid_argument("axes." + s.axes[a].name + ": not an axis of the " + s.model->name +
                                   " model (axes: " + names + ")");
     }
-    if (d->rigid_only && s.model == "housner")
-      throw std::invalid_argument("axes." + d->name + ": belongs to the rigid model, not housner");
+    if (d->friction_only && !s.model->friction)
+      throw std::invalid_argument("axes." + d->name + ": belongs to the rigid model, not " + s.model->name);
     for (std::size_t b = 0; b < a; ++b)
       if (s.axes[b].name == s.axes[a].name) throw std::invalid_argument("axes." + s.axes[a].name + ": given twice");
     require_axis_range(s.axes[a], -1e300, true);
@@ -173,10 +170,7 @@ void validate(const RigidSweepSpec& s) {
     try {
       validate(p.block);
       validate(p.ground);
-      if (s.model == "housner")
-        (void)housner_initial_state(HousnerBlock(p.block.shape, p.block.e(), p.ground), p.initial);
-      else
-        (void)rigid_initial_state(RigidBlock(p.block, p.ground), p.initial);
+      s.model->check_initial(p.block, p.ground, p.initial);
     } catch (const std::invalid_argument& e) {
       throw std::invalid_argument(describe(s, p) + ": " + e.what());
     }
@@ -186,12 +180,12 @@ void validate(const RigidSweepSpec& s) {
 nlohmann::ordered_json definition_json(const RigidSweepSpec& s) {
   json j;
   j["format"] = "blockdyn-sweep-rigid-1";
-  j["model"] = s.model;
+  j["model"] = s.model->name;
   j["order"] = "index = i_0 + n_0 * (i_1 + n_1 * (...)), axes in the order listed";
   json axes = json::array();
   for (const auto& a : s.axes) axes.push_back(to_json(a));
   j["axes"] = axes;
-  j["base"] = to_json(s.block, s.model);
+  j["base"] = parameters_json(s.block, *s.model);
   j["ground_motion"] = to_json(s.ground);
   json init = {{"w0", s.initial.w0}, {"vw0", s.initial.vw0}};
   if (s.w0_over_alpha) init["w0_over_alpha"] = *s.w0_over_alpha;
@@ -263,7 +257,8 @@ SweepRow RigidSweepEvaluator::row(std::size_t index) const {
   return out;
 }
 
-RigidSweepSpec parse_rigid_sweep(const std::string& text, const std::string& source, const std::string& base_dir) {
+RigidSweepSpec parse_rigid_sweep(const std::string& text, const std::string& source, const RigidGroundModel& model,
+                                 const std::string& base_dir) {
   toml::table root = toml_read::parse(text, source);
   RigidSweepSpec s;
   toml::table output_t;
@@ -303,9 +298,9 @@ RigidSweepSpec parse_rigid_sweep(const std::string& text, const std::string& sou
   std::ostringstream rest;
   rest << root;
   const Scenario sc = parse_scenario(rest.str(), source, base_dir);
-  if (!is_rigid_family(sc.model))
-    throw std::invalid_argument(source + ": model = '" + sc.model + "': this reader is for housner and rigid sweeps");
-  s.model = sc.model;
+  if (sc.model != model.name)
+    throw std::invalid_argument(source + ": model = '" + sc.model + "': this reader is for " + model.name + " sweeps");
+  s.model = &model;
   s.ground = sc.ground;
   s.initial.w0 = sc.initial.w0.value_or(0.0);
   s.initial.vw0 = sc.initial.vw0.value_or(0.0);
@@ -338,9 +333,9 @@ RigidSweepSpec parse_rigid_sweep(const std::string& text, const std::string& sou
   return s;
 }
 
-RigidSweepSpec load_rigid_sweep(const std::string& path) {
+RigidSweepSpec load_rigid_sweep(const std::string& path, const RigidGroundModel& model) {
   const auto slash = path.find_last_of('/');
-  return parse_rigid_sweep(toml_read::read_file(path, "sweep file"), path,
+  return parse_rigid_sweep(toml_read::read_file(path, "sweep file"), path, model,
                            slash == std::string::npos ? "" : path.substr(0, slash));
 }
 

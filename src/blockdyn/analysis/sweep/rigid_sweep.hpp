@@ -13,13 +13,13 @@
 
 #include "blockdyn/analysis/sweep/point_table.hpp"
 #include "blockdyn/analysis/sweep/sweep_axis.hpp"
-#include "blockdyn/simulation/rigid_simulation.hpp"
+#include "blockdyn/simulation/rigid_ground_model.hpp"
 
 namespace blockdyn {
 
 struct RigidSweepSpec {
-  std::string model = "rigid";  // housner | rigid
-  RigidBlockParams block;       // the base point
+  const RigidGroundModel* model = &three_dof_on_rigid_ground();
+  RigidBlockParams block;  // the base point
   GroundMotion ground;
   RigidInitial initial;
   std::optional<double> w0_over_alpha;  // initial tilt as a fraction of each point's alpha
@@ -57,9 +57,10 @@ nlohmann::ordered_json definition_json(const RigidSweepSpec& s);
 // A rigid-family sweep file: a `simulate` scenario (model, [physical], [interface], [impact],
 // [initial], [run], [ground.*]) plus [axes] (name = axis) and [output] (csv, plot, plot_column);
 // [initial] also takes w0_over_alpha.
-RigidSweepSpec parse_rigid_sweep(const std::string& toml_text, const std::string& source,
+// The file's model is `model`'s family (the caller resolved its `model` key).
+RigidSweepSpec parse_rigid_sweep(const std::string& toml_text, const std::string& source, const RigidGroundModel& model,
                                  const std::string& base_dir = "");
-RigidSweepSpec load_rigid_sweep(const std::string& path);
+RigidSweepSpec load_rigid_sweep(const std::string& path, const RigidGroundModel& model);
 
 class RigidSweepEvaluator final : public PointTable {
  public:

@@ -3,7 +3,7 @@
 // What the flight and stability studies share: how each run is integrated, and one point of a
 // critical curve (the boundary found at one aspect ratio).
 #include "blockdyn/analysis/sweep/boundary_search.hpp"
-#include "blockdyn/integrate/hybrid_integrator.hpp"
+#include "blockdyn/integrate/integrator_options.hpp"
 
 namespace blockdyn {
 

@@ -21,7 +21,7 @@
 #include <string>
 
 #include "blockdyn/excitation/ground_motion.hpp"
-#include "blockdyn/integrate/hybrid_integrator.hpp"
+#include "blockdyn/integrate/hybrid_model.hpp"
 #include "blockdyn/model/assembly/assembly_params.hpp"
 #include "blockdyn/model/assembly/contact_point.hpp"
 #include "blockdyn/model/assembly/deformable_contact.hpp"

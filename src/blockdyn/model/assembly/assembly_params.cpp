@@ -187,9 +187,9 @@ Assembly make_preset(const std::string& name, const PresetOptions& o) {
   const double s = o.tilt >= 0 ? 1.0 : -1.0;  // theta > 0 turns about the left base corner
   Assembly a;
   a.preset = name;
-  a.contact = o.rigid_contacts ? "rigid" : "deformable";
+  a.contact = o.contact;
   // Rigid contacts do not settle: a factor 0 on every spring sink below.
-  const double settle = o.rigid_contacts ? 0.0 : 1.0;
+  const double settle = info(o.contact).springs ? 1.0 : 0.0;
   if (name == "block") {
     AssemblyBlock k = make_block("block", b, h, o);
     const double sink =
@@ -286,15 +286,15 @@ void check_overlaps(const Assembly& a, double min_size) {
     }
 }
 
-void check_law(const ContactLaw& l, const std::string& where, bool rigid) {
+void check_law(const ContactLaw& l, const std::string& where, bool plastic) {
   if (!(l.k_normal >= 1.0 && l.k_normal <= 1e13))
     throw std::invalid_argument(where + ".k_normal = " + number_text(l.k_normal, 6) + " must be in [1, 1e13] N/m");
   if (!(l.k_tangential < 0 || (l.k_tangential >= 1.0 && l.k_tangential <= 1e13)))
     throw std::invalid_argument(where + ".k_tangential = " + number_text(l.k_tangential, 6) +
                                 " must be in [1, 1e13] N/m");
-  if (!(l.restitution >= (rigid ? 0.0 : 1e-3) && l.restitution <= 1.0))
+  if (!(l.restitution >= (plastic ? 0.0 : 1e-3) && l.restitution <= 1.0))
     throw std::invalid_argument(where + ".restitution = " + number_text(l.restitution, 6) + " must be in [" +
-                                (rigid ? "0" : "0.001") + ", 1]");
+                                (plastic ? "0" : "0.001") + ", 1]");
   if (!(l.damping < 0 || (std::isfinite(l.damping) && l.damping <= 1e12)))
     throw std::invalid_argument(where + ".damping = " + number_text(l.damping, 6) + " must be in [0, 1e12] N s/m");
   if (!(l.mu_s >= 0 && l.mu_k >= 0 && l.mu_k <= l.mu_s && std::isfinite(l.mu_s)))
@@ -302,29 +302,9 @@ void check_law(const ContactLaw& l, const std::string& where, bool rigid) {
                                 ", mu_k = " + number_text(l.mu_k, 6) + " must satisfy 0 <= mu_k <= mu_s (finite)");
 }
 
-}  // namespace
-
-void validate(const Assembly& a, int max_blocks) {
+// Each block's size, mass, initial pose and polygon; returns the smallest block size.
+double check_blocks(const Assembly& a) {
   const int nb = int(a.blocks.size());
-  if (nb < 1 || nb > max_blocks)
-    throw std::invalid_argument(
-        "blocks: " + std::to_string(nb) + " given, 1 to " + std::to_string(max_blocks) + " allowed" +
-        (max_blocks < kMaxStaticBlocks
-             ? std::string(" in the dynamics (limit-analysis takes ") + std::to_string(kMaxStaticBlocks) + ")"
-             : std::string()));
-  if (a.interfaces.empty() || a.interfaces.size() > std::size_t(nb + 1))
-    throw std::invalid_argument("interfaces: " + std::to_string(a.interfaces.size()) + " given, 1 to " +
-                                std::to_string(nb + 1) + " allowed for " + std::to_string(nb) + " blocks");
-  if (a.contact != "deformable" && a.contact != "rigid")
-    throw std::invalid_argument("contact = '" + a.contact + "' must be deformable or rigid");
-  if (a.rock_only_on_ground && a.contact != "rigid")
-    throw std::invalid_argument("columns-rock-only (seed 001's 5-DOF restriction) needs the rigid contact law");
-  if (!(a.g > 0 && a.g <= 1e3))
-    throw std::invalid_argument("g = " + number_text(a.g, 6) + " must be in (0, 1000] m/s^2");
-  if (!(a.collapse_rotation > 0 && a.collapse_rotation <= 10))
-    throw std::invalid_argument("collapse_rotation = " + number_text(a.collapse_rotation, 6) + " must be in (0, 10]");
-  if (!(a.min_bearing >= 0 && std::isfinite(a.min_bearing)))
-    throw std::invalid_argument("min_bearing = " + number_text(a.min_bearing, 6) + " must be >= 0 m");
   double min_size = INFINITY;
   for (int i = 0; i < nb; ++i) {
     const AssemblyBlock& k = a.blocks[i];
@@ -349,6 +329,12 @@ void validate(const Assembly& a, int max_blocks) {
     }
     min_size = std::fmin(min_size, std::fmin(k.width, k.height));
   }
+  return min_size;
+}
+
+// Each interface's blocks, its law, and no joint twice; every block stands on one.
+void check_interfaces(const Assembly& a) {
+  const int nb = int(a.blocks.size());
   std::vector<int> supports(nb, 0);
   for (std::size_t j = 0; j < a.interfaces.size(); ++j) {
     const AssemblyInterface& f = a.interfaces[j];
@@ -369,17 +355,18 @@ void validate(const Assembly& a, int max_blocks) {
                                     ", upper = " + std::to_string(f.upper) + ") repeats interface " +
                                     std::to_string(k) + " the other way round: one joint is one interface");
     }
-    check_law(f.law, w, a.contact == "rigid");
+    check_law(f.law, w, info(a.contact).plastic_impacts);
     ++supports[f.upper];
   }
   for (int i = 0; i < nb; ++i)
     if (supports[i] == 0)
       throw std::invalid_argument("block " + std::to_string(i) + " stands on nothing (no interface has it as upper)");
-  check_overlaps(a, min_size);
-  // The initial configuration: every interface bears, touches (a block floating above its
-  // support is an input error, not a drop test) and does not interpenetrate.
+}
+
+// Every block is carried at the start by an interface whose push on it has an upward part.
+void check_carried(const Assembly& a) {
+  const int nb = int(a.blocks.size());
   auto pose_of = [&](int i) { return initial_pose(a, i); };
-  const double touch = 1e-3 * min_size, deep = 0.02 * min_size;
   // A block is carried by an interface whose push on it has an upward part: as the upper block, a
   // support face whose normal points up; as the lower block, one whose normal points down (an
   // arch's voussoirs past the crown). A block carried by none falls at the start.
@@ -402,6 +389,13 @@ void validate(const Assembly& a, int max_blocks) {
                                   ") is carried by none of its interfaces at the start" +
                                   (sideways[std::size_t(i)].empty() ? std::string() : ": " + sideways[std::size_t(i)]) +
                                   "; name the edge it stands on (upper_edge), or a support below it");
+}
+
+// The initial configuration: every interface bears, touches (a block floating above its support
+// is an input error, not a drop test) and does not interpenetrate.
+void check_initial_contacts(const Assembly& a, double min_size) {
+  auto pose_of = [&](int i) { return initial_pose(a, i); };
+  const double touch = 1e-3 * min_size, deep = 0.02 * min_size;
   for (std::size_t j = 0; j < a.interfaces.size(); ++j) {
     const AssemblyInterface& f = a.interfaces[j];
     const BodyPose lp = pose_of(f.lower), up = pose_of(f.upper);
@@ -428,8 +422,36 @@ void validate(const Assembly& a, int max_blocks) {
   }
 }
 
+}  // namespace
+
+void validate(const Assembly& a, int max_blocks) {
+  const int nb = int(a.blocks.size());
+  if (nb < 1 || nb > max_blocks)
+    throw std::invalid_argument(
+        "blocks: " + std::to_string(nb) + " given, 1 to " + std::to_string(max_blocks) + " allowed" +
+        (max_blocks < kMaxStaticBlocks
+             ? std::string(" in the dynamics (limit-analysis takes ") + std::to_string(kMaxStaticBlocks) + ")"
+             : std::string()));
+  if (a.interfaces.empty() || a.interfaces.size() > std::size_t(nb + 1))
+    throw std::invalid_argument("interfaces: " + std::to_string(a.interfaces.size()) + " given, 1 to " +
+                                std::to_string(nb + 1) + " allowed for " + std::to_string(nb) + " blocks");
+  if (a.rock_only_on_ground && !info(a.contact).rock_only_restriction)
+    throw std::invalid_argument("columns-rock-only (seed 001's 5-DOF restriction) needs the rigid contact law");
+  if (!(a.g > 0 && a.g <= 1e3))
+    throw std::invalid_argument("g = " + number_text(a.g, 6) + " must be in (0, 1000] m/s^2");
+  if (!(a.collapse_rotation > 0 && a.collapse_rotation <= 10))
+    throw std::invalid_argument("collapse_rotation = " + number_text(a.collapse_rotation, 6) + " must be in (0, 10]");
+  if (!(a.min_bearing >= 0 && std::isfinite(a.min_bearing)))
+    throw std::invalid_argument("min_bearing = " + number_text(a.min_bearing, 6) + " must be >= 0 m");
+  const double min_size = check_blocks(a);
+  check_interfaces(a);
+  check_overlaps(a, min_size);
+  check_carried(a);
+  check_initial_contacts(a, min_size);
+}
+
 void restrict_to_rocking_on_ground(Assembly& a) {
-  if (a.contact != "rigid")
+  if (!info(a.contact).rock_only_restriction)
     throw std::invalid_argument("--columns-rock-only (seed 001's 5-DOF restriction) needs --contact rigid");
   a.rock_only_on_ground = true;
   for (AssemblyInterface& i : a.interfaces)

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "blockdyn/model/assembly/contact_kind.hpp"
 #include "blockdyn/model/common/block_kinematics.hpp"
 
 namespace blockdyn {
@@ -53,8 +54,8 @@ inline constexpr int kMaxStaticBlocks = 2000;
 inline constexpr int kEventDrivenMaxBlocks = 8;
 
 struct Assembly {
-  std::string preset = "custom";       // block | trilith | column | arch | custom
-  std::string contact = "deformable";  // deformable | rigid (Moreau-Jean time-stepping)
+  std::string preset = "custom";  // block | trilith | column | arch | custom
+  ContactKind contact = ContactKind::Deformable;
   std::vector<AssemblyBlock> blocks;
   std::vector<AssemblyInterface> interfaces;
   double g = 9.81;
@@ -67,19 +68,19 @@ struct Assembly {
 
 // Preset geometry (seed 002: b = 0.12 m, thickness 0.06 m, density 2700 kg/m^3).
 struct PresetOptions {
-  double slenderness = 4;         // column height / width
-  double block_width = 0.12;      // m
-  double thickness = 0.06;        // m, out of plane
-  double density = 2700;          // kg/m^3
-  int drums = 4;                  // column preset
-  double lintel_length = -1;      // trilith: < 0 means the column height (seed 002's layout)
-  double overhang = 0;            // trilith: lintel beyond each column's outer face (m; < 0 inset)
-  double tilt = 0;                // initial rotation of the assembly's rocking mode (rad)
-  int voussoirs = 9;              // arch: number of equal voussoirs
-  double thickness_ratio = 0.15;  // arch: ring thickness / centreline radius
-  double radius = 1.0;            // arch: centreline radius (m)
-  double embrace = 180;           // arch: angle the arch spans (degrees)
-  bool rigid_contacts = false;    // no settlement into the contacts (the rigid law)
+  double slenderness = 4;                         // column height / width
+  double block_width = 0.12;                      // m
+  double thickness = 0.06;                        // m, out of plane
+  double density = 2700;                          // kg/m^3
+  int drums = 4;                                  // column preset
+  double lintel_length = -1;                      // trilith: < 0 means the column height (seed 002's layout)
+  double overhang = 0;                            // trilith: lintel beyond each column's outer face (m; < 0 inset)
+  double tilt = 0;                                // initial rotation of the assembly's rocking mode (rad)
+  int voussoirs = 9;                              // arch: number of equal voussoirs
+  double thickness_ratio = 0.15;                  // arch: ring thickness / centreline radius
+  double radius = 1.0;                            // arch: centreline radius (m)
+  double embrace = 180;                           // arch: angle the arch spans (degrees)
+  ContactKind contact = ContactKind::Deformable;  // the rigid law: no settlement into the contacts
   ContactLaw ground_law, block_law;
 };
 

@@ -635,10 +635,133 @@ bool MoreauJean::solve_lemke(int nc) {
   return true;
 }
 
-// Active-set iteration: for the guessed pattern (separate, stick, slip +/-) the impulses solve
-// one linear system (u_N = 0 for every end in contact, u_T = 0 for every sticking end, P_T =
-// -s mu_k P_N for every slipping one); then every condition is checked (P_N >= 0, the cone,
-// the slip direction, u_N >= 0 where separate) and the violated ones change their end's guess.
+// The linear system of the guessed pattern (separate, stick, slip +/-) into A_ and rhs_: u_N = 0
+// for every end in contact, u_T = 0 for every sticking end, P_T = -s mu_k P_N for every slipping
+// one. Returns its size.
+int MoreauJean::assemble_guess(int nc) {
+  const std::size_t S = std::size_t(m_cap_);
+  int m = 0;
+  // One tangential unknown per sticking face, on its first sticking end: the two ends of a face
+  // lie on one line along its tangent, so only the sum of their tangential impulses acts (the
+  // split, a redundancy, is shared out once solved). The unknowns go end by end, so that a
+  // chain of blocks (a column, an arch) gives a banded matrix.
+  for (int i = 0; i < nc; ++i) {
+    col_n_[i] = cls_[i] != kSeparate ? m++ : -1;
+    const int j = cls_[i] == kStick ? sticking_partner(nc, i) : 0;
+    col_t_[i] = cls_[i] == kStick && (j < 0 || j > i) ? m++ : -1;
+  }
+  // Equation rows in the same order as the unknowns: u_N of ends in contact, u_T of sticking ones.
+  auto coeff_row = [&](int wrow, double* out) {
+    for (int j = 0; j < nc; ++j) {
+      if (col_n_[j] < 0) continue;
+      double c = W(wrow, 2 * j);
+      if (cls_[j] == kSlipPos || cls_[j] == kSlipNeg)
+        c -= (cls_[j] == kSlipPos ? 1.0 : -1.0) * mu_[j] * W(wrow, 2 * j + 1);
+      out[col_n_[j]] = c;
+      if (col_t_[j] >= 0) out[col_t_[j]] = W(wrow, 2 * j + 1);
+    }
+  };
+  for (int i = 0; i < nc; ++i) {
+    if (col_n_[i] >= 0) {
+      coeff_row(2 * i, &A_[std::size_t(col_n_[i]) * S]);
+      rhs_[col_n_[i]] = -bn_[i];
+    }
+    if (col_t_[i] >= 0) {
+      coeff_row(2 * i + 1, &A_[std::size_t(col_t_[i]) * S]);
+      rhs_[col_t_[i]] = -bt_[i];
+    }
+  }
+  return m;
+}
+
+// The impulses of the guessed pattern from the assembled system of size m.
+void MoreauJean::solve_guess(int nc, int m, double diag_max) {
+  // Without slipping ends the system is the Delassus matrix's restriction (symmetric positive
+  // definite unless degenerate).
+  bool any_slip = false;
+  for (int i = 0; i < nc; ++i) any_slip = any_slip || cls_[i] == kSlipPos || cls_[i] == kSlipNeg;
+  if (any_slip)
+    gauss_solve(A_.data(), rhs_.data(), m, m_cap_, kSingularPivot * diag_max, pivots_.data());
+  else
+    cholesky_solve(A_.data(), rhs_.data(), m, m_cap_, kSingularPivot * diag_max, pivots_.data());
+  for (int i = 0; i < nc; ++i) {
+    pn_[i] = col_n_[i] >= 0 ? rhs_[col_n_[i]] : 0.0;
+    pt_[i] = col_t_[i] >= 0        ? rhs_[col_t_[i]]
+             : cls_[i] == kSlipPos ? -mu_[i] * pn_[i]
+             : cls_[i] == kSlipNeg ? mu_[i] * pn_[i]
+                                   : 0.0;
+  }
+}
+
+// Checks every condition of the guess (P_N >= 0, the cone, the slip direction, u_N >= 0 where
+// separate); each violated one proposes a new guess for its end in next_. Returns how many are
+// violated, the first in `first`; `accurate`: the holding ends' equations are met to tol.
+int MoreauJean::check_guess(int nc, double tol, double diag_max, int& first, bool& accurate) {
+  // Check every condition; the violated ones change their end's guess. The relative
+  // velocities after the step from the blocks' (sparse: two blocks per end).
+  velocity_change(nc, dv_);
+  for (int k = 0; k < 3 * nb_; ++k) vnew_[k] = vfree_[k] + dv_[k];
+  // The conditions of the regularised problem (u + c P = 0 where an end holds); each violated
+  // one proposes a new guess for its end (for the face's cone: for both its ends).
+  const double p_tol = tol / diag_max;
+  int violations = 0;
+  first = -1;
+  accurate = true;
+  for (int i = 0; i < nc; ++i) next_[i] = cls_[i];
+  for (int i = 0; i < nc; ++i) {
+    double un = dot3(&ju_[i][0], &vnew_[3 * ub_[i]]), ut = dot3(&ju_[i][3], &vnew_[3 * ub_[i]]);
+    if (lb_[i] >= 0) {
+      un += dot3(&jl_[i][0], &vnew_[3 * lb_[i]]);
+      ut += dot3(&jl_[i][3], &vnew_[3 * lb_[i]]);
+    }
+    un += un_shift_[i];  // Newton's law and the gap allowance (see step())
+    const double cn = un + compliance_ * pn_[i], ct = ut + compliance_ * pt_[i];
+    bool violated = false;
+    switch (cls_[i]) {
+      case kSeparate:
+        if (un < -tol) next_[i] = kStick, violated = true;
+        break;
+      case kStick: {
+        accurate = accurate && std::fabs(cn) <= tol && (col_t_[i] < 0 || std::fabs(ct) <= tol);
+        // The face's two ends lie on one line along its tangent, so only their tangential
+        // impulses' sum is defined (a redundant pair may put it all on one end): the cone is
+        // the face's, sum |P_T| <= sum mu P_N.
+        const int j = sticking_partner(nc, i);
+        const double pt = pt_[i] + (j >= 0 ? pt_[j] : 0.0);
+        const double cap = mu_[i] * pn_[i] + (j >= 0 ? mu_[j] * pn_[j] : 0.0);
+        if (pn_[i] < -p_tol) {
+          // Sticking pulls and separating penetrates (the end has gone back and forth): what
+          // remains is sliding at a vanishing normal impulse, against the tangential one.
+          next_[i] = flips_[i] >= 2 && j < 0 ? (pt > 0 ? kSlipNeg : kSlipPos) : kSeparate;
+          violated = true;
+        } else if (std::fabs(pt) > cap + p_tol && (j < 0 || pn_[j] >= -p_tol)) {
+          // Outside the cone: the face slips against the impulse's tendency.
+          next_[i] = pt > 0 ? kSlipNeg : kSlipPos;
+          if (j >= 0) next_[j] = next_[i];
+          violated = true;
+        }
+        break;
+      }
+      case kSlipPos:
+      case kSlipNeg: {
+        accurate = accurate && std::fabs(cn) <= tol;
+        const double sg = cls_[i] == kSlipPos ? 1.0 : -1.0;
+        if (pn_[i] < -p_tol) {
+          next_[i] = kSeparate, violated = true;
+        } else if (sg * ut < -tol) {
+          next_[i] = kStick, violated = true;
+        }
+        break;
+      }
+    }
+    if (violated && first < 0) first = i;
+    violations += violated;
+  }
+  return violations;
+}
+
+// Active-set iteration: for the guessed pattern the impulses solve one linear system; the
+// violated conditions change their end's guess.
 MoreauJean::DirectOutcome MoreauJean::solve_direct(int nc, double v_scale) {
   const double tol = kSolveTolerance * v_scale;
   const std::size_t S = std::size_t(m_cap_);
@@ -646,114 +769,12 @@ MoreauJean::DirectOutcome MoreauJean::solve_direct(int nc, double v_scale) {
   for (int k = 0; k < 2 * nc; ++k) diag_max = std::max(diag_max, W_[std::size_t(k) * (S + 1)]);
   int best = nc + 1, stalls = 0;
   for (int i = 0; i < nc; ++i) flips_[i] = 0;
-  const int max_iterations = kMaxActiveSetIterations;
-  for (int iter = 0; iter < max_iterations; ++iter) {
+  for (int iter = 0; iter < kMaxActiveSetIterations; ++iter) {
     ++stats_.active_set_iterations;
-    int m = 0;
-    // One tangential unknown per sticking face, on its first sticking end: the two ends of a face
-    // lie on one line along its tangent, so only the sum of their tangential impulses acts (the
-    // split, a redundancy, is shared out once solved). The unknowns go end by end, so that a
-    // chain of blocks (a column, an arch) gives a banded matrix.
-    for (int i = 0; i < nc; ++i) {
-      col_n_[i] = cls_[i] != kSeparate ? m++ : -1;
-      const int j = cls_[i] == kStick ? sticking_partner(nc, i) : 0;
-      col_t_[i] = cls_[i] == kStick && (j < 0 || j > i) ? m++ : -1;
-    }
-    // Equation rows in the same order as the unknowns: u_N of ends in contact, u_T of sticking ones.
-    auto coeff_row = [&](int wrow, double* out) {
-      for (int j = 0; j < nc; ++j) {
-        if (col_n_[j] < 0) continue;
-        double c = W(wrow, 2 * j);
-        if (cls_[j] == kSlipPos || cls_[j] == kSlipNeg)
-          c -= (cls_[j] == kSlipPos ? 1.0 : -1.0) * mu_[j] * W(wrow, 2 * j + 1);
-        out[col_n_[j]] = c;
-        if (col_t_[j] >= 0) out[col_t_[j]] = W(wrow, 2 * j + 1);
-      }
-    };
-    for (int i = 0; i < nc; ++i) {
-      if (col_n_[i] >= 0) {
-        coeff_row(2 * i, &A_[std::size_t(col_n_[i]) * S]);
-        rhs_[col_n_[i]] = -bn_[i];
-      }
-      if (col_t_[i] >= 0) {
-        coeff_row(2 * i + 1, &A_[std::size_t(col_t_[i]) * S]);
-        rhs_[col_t_[i]] = -bt_[i];
-      }
-    }
-    // Without slipping ends the system is the Delassus matrix's restriction (symmetric positive
-    // definite unless degenerate).
-    bool any_slip = false;
-    for (int i = 0; i < nc; ++i) any_slip = any_slip || cls_[i] == kSlipPos || cls_[i] == kSlipNeg;
-    if (any_slip)
-      gauss_solve(A_.data(), rhs_.data(), m, m_cap_, kSingularPivot * diag_max, pivots_.data());
-    else
-      cholesky_solve(A_.data(), rhs_.data(), m, m_cap_, kSingularPivot * diag_max, pivots_.data());
-    for (int i = 0; i < nc; ++i) {
-      pn_[i] = col_n_[i] >= 0 ? rhs_[col_n_[i]] : 0.0;
-      pt_[i] = col_t_[i] >= 0        ? rhs_[col_t_[i]]
-               : cls_[i] == kSlipPos ? -mu_[i] * pn_[i]
-               : cls_[i] == kSlipNeg ? mu_[i] * pn_[i]
-                                     : 0.0;
-    }
-    // Check every condition; the violated ones change their end's guess. The relative
-    // velocities after the step from the blocks' (sparse: two blocks per end).
-    velocity_change(nc, dv_);
-    for (int k = 0; k < 3 * nb_; ++k) vnew_[k] = vfree_[k] + dv_[k];
-    // The conditions of the regularised problem (u + c P = 0 where an end holds); each violated
-    // one proposes a new guess for its end (for the face's cone: for both its ends).
-    const double p_tol = tol / diag_max;
-    int violations = 0, first = -1;
+    solve_guess(nc, assemble_guess(nc), diag_max);
+    int first = -1;
     bool accurate = true;
-    for (int i = 0; i < nc; ++i) next_[i] = cls_[i];
-    for (int i = 0; i < nc; ++i) {
-      double un = dot3(&ju_[i][0], &vnew_[3 * ub_[i]]), ut = dot3(&ju_[i][3], &vnew_[3 * ub_[i]]);
-      if (lb_[i] >= 0) {
-        un += dot3(&jl_[i][0], &vnew_[3 * lb_[i]]);
-        ut += dot3(&jl_[i][3], &vnew_[3 * lb_[i]]);
-      }
-      un += un_shift_[i];  // Newton's law and the gap allowance (see step())
-      const double cn = un + compliance_ * pn_[i], ct = ut + compliance_ * pt_[i];
-      bool violated = false;
-      switch (cls_[i]) {
-        case kSeparate:
-          if (un < -tol) next_[i] = kStick, violated = true;
-          break;
-        case kStick: {
-          accurate = accurate && std::fabs(cn) <= tol && (col_t_[i] < 0 || std::fabs(ct) <= tol);
-          // The face's two ends lie on one line along its tangent, so only their tangential
-          // impulses' sum is defined (a redundant pair may put it all on one end): the cone is
-          // the face's, sum |P_T| <= sum mu P_N.
-          const int j = sticking_partner(nc, i);
-          const double pt = pt_[i] + (j >= 0 ? pt_[j] : 0.0);
-          const double cap = mu_[i] * pn_[i] + (j >= 0 ? mu_[j] * pn_[j] : 0.0);
-          if (pn_[i] < -p_tol) {
-            // Sticking pulls and separating penetrates (the end has gone back and forth): what
-            // remains is sliding at a vanishing normal impulse, against the tangential one.
-            next_[i] = flips_[i] >= 2 && j < 0 ? (pt > 0 ? kSlipNeg : kSlipPos) : kSeparate;
-            violated = true;
-          } else if (std::fabs(pt) > cap + p_tol && (j < 0 || pn_[j] >= -p_tol)) {
-            // Outside the cone: the face slips against the impulse's tendency.
-            next_[i] = pt > 0 ? kSlipNeg : kSlipPos;
-            if (j >= 0) next_[j] = next_[i];
-            violated = true;
-          }
-          break;
-        }
-        case kSlipPos:
-        case kSlipNeg: {
-          accurate = accurate && std::fabs(cn) <= tol;
-          const double sg = cls_[i] == kSlipPos ? 1.0 : -1.0;
-          if (pn_[i] < -p_tol) {
-            next_[i] = kSeparate, violated = true;
-          } else if (sg * ut < -tol) {
-            next_[i] = kStick, violated = true;
-          }
-          break;
-        }
-      }
-      if (violated && first < 0) first = i;
-      violations += violated;
-    }
+    const int violations = check_guess(nc, tol, diag_max, first, accurate);
     if (violations == 0) {
       if (!accurate) return kFailed;
       share_sticking_friction(nc);

@@ -122,6 +122,10 @@ class MoreauJean {
   bool solve_coulomb(int nc, double v_scale);
   enum DirectOutcome { kSolved, kFailed };
   DirectOutcome solve_direct(int nc, double v_scale);
+  // Its steps: the guess's linear system, its impulses, the conditions it violates.
+  int assemble_guess(int nc);
+  void solve_guess(int nc, int m, double diag_max);
+  int check_guess(int nc, double tol, double diag_max, int& first, bool& accurate);
   bool solve_gauss_seidel(int nc, double v_scale);
   bool solve_lemke(int nc);
   // The other end of active end i's face if it is sticking too (-1: none).

@@ -115,40 +115,38 @@ bool certified(glp_prob* lp, const std::vector<int>& ia, const std::vector<int>&
   return true;
 }
 
-}  // namespace
-
-// Columns: N per contact (>= 0), T per interface (free), lambda (free). Rows: the three
-// equilibrium equations per block, then |T| <= mu (N_1 + N_2) as two rows per interface.
-LoadMultiplier max_load_multiplier(const StaticProblem& p, int direction, bool exact) {
-  const int nb = int(p.mass.size()), nc = int(p.contacts.size()), ni = int(p.mu.size());
-  std::unique_ptr<glp_prob, LpDeleter> lp(glp_create_prob());
-  glp_set_obj_dir(lp.get(), GLP_MAX);
-  const int col_t = nc + 1, col_lambda = nc + ni + 1;
-  glp_add_cols(lp.get(), nc + ni + 1);
-  for (int c = 1; c <= nc; ++c) glp_set_col_bnds(lp.get(), c, GLP_LO, 0.0, 0.0);
-  for (int i = 0; i < ni; ++i) glp_set_col_bnds(lp.get(), col_t + i, GLP_FR, 0.0, 0.0);
-  glp_set_col_bnds(lp.get(), col_lambda, GLP_DB, -kLambdaCap, kLambdaCap);
-  glp_set_obj_coef(lp.get(), col_lambda, 1.0);
-
+// The constraint matrix as GLPK's triplets (1-based, entry 0 unused).
+struct Triplets {
   std::vector<int> ia{0}, ja{0};
   std::vector<double> ar{0.0};
-  // Rounding leaves entries of 1e-16 where the geometry has zeros (cos(pi/2) in a joint's normal):
-  // the rational simplex takes them as they are, the floating-point one alone stalls on them.
-  const double zero = exact ? 0.0 : 1e-13;
-  auto put = [&](int row, int col, double v) {
+  double zero = 0.0;  // entries at most this large are left out
+  void put(int row, int col, double v) {
     if (std::fabs(v) <= zero) return;
     ia.push_back(row);
     ja.push_back(col);
     ar.push_back(v);
-  };
-  glp_add_rows(lp.get(), 3 * nb);
+  }
+};
+
+// Columns: N per contact (>= 0), T per interface (free), lambda (free). Rows: the three
+// equilibrium equations per block, then |T| <= mu (N_1 + N_2) as two rows per interface.
+void build_equilibrium_lp(glp_prob* lp, const StaticProblem& p, int direction, Triplets& m) {
+  const int nb = int(p.mass.size()), nc = int(p.contacts.size()), ni = int(p.mu.size());
+  glp_set_obj_dir(lp, GLP_MAX);
+  const int col_t = nc + 1, col_lambda = nc + ni + 1;
+  glp_add_cols(lp, nc + ni + 1);
+  for (int c = 1; c <= nc; ++c) glp_set_col_bnds(lp, c, GLP_LO, 0.0, 0.0);
+  for (int i = 0; i < ni; ++i) glp_set_col_bnds(lp, col_t + i, GLP_FR, 0.0, 0.0);
+  glp_set_col_bnds(lp, col_lambda, GLP_DB, -kLambdaCap, kLambdaCap);
+  glp_set_obj_coef(lp, col_lambda, 1.0);
+  glp_add_rows(lp, 3 * nb);
   for (int b = 0; b < nb; ++b) {
     const double w = p.mass[b] * p.g;
     // Contact forces + (-w lambda direction, -w, 0) = 0.
-    glp_set_row_bnds(lp.get(), 3 * b + 1, GLP_FX, 0.0, 0.0);
-    glp_set_row_bnds(lp.get(), 3 * b + 2, GLP_FX, w, w);
-    glp_set_row_bnds(lp.get(), 3 * b + 3, GLP_FX, 0.0, 0.0);
-    put(3 * b + 1, col_lambda, -w * direction);
+    glp_set_row_bnds(lp, 3 * b + 1, GLP_FX, 0.0, 0.0);
+    glp_set_row_bnds(lp, 3 * b + 2, GLP_FX, w, w);
+    glp_set_row_bnds(lp, 3 * b + 3, GLP_FX, 0.0, 0.0);
+    m.put(3 * b + 1, col_lambda, -w * direction);
   }
   std::vector<char> has_t(static_cast<std::size_t>(ni), 0);
   for (int c = 0; c < nc; ++c) {
@@ -159,15 +157,15 @@ LoadMultiplier max_load_multiplier(const StaticProblem& p, int direction, bool e
       const int b = side > 0 ? k.upper : k.lower;
       if (b < 0) continue;
       const Vec2 r = k.P - p.centre[b];
-      put(3 * b + 1, c + 1, side * k.n.x);
-      put(3 * b + 2, c + 1, side * k.n.y);
-      put(3 * b + 3, c + 1, side * cross(r, k.n));
+      m.put(3 * b + 1, c + 1, side * k.n.x);
+      m.put(3 * b + 2, c + 1, side * k.n.y);
+      m.put(3 * b + 3, c + 1, side * cross(r, k.n));
       // A tangential force along the face has the same moment wherever on the face it acts:
       // one T per interface, applied at any of its points.
       if (first) {
-        put(3 * b + 1, col_t + k.iface, side * k.t.x);
-        put(3 * b + 2, col_t + k.iface, side * k.t.y);
-        put(3 * b + 3, col_t + k.iface, side * cross(r, k.t));
+        m.put(3 * b + 1, col_t + k.iface, side * k.t.x);
+        m.put(3 * b + 2, col_t + k.iface, side * k.t.y);
+        m.put(3 * b + 3, col_t + k.iface, side * cross(r, k.t));
       }
     }
   }
@@ -175,37 +173,41 @@ LoadMultiplier max_load_multiplier(const StaticProblem& p, int direction, bool e
   for (int c = 0; c < nc; ++c) of_iface[p.contacts[c].iface].push_back(c);
   for (int i = 0; i < ni; ++i) {
     if (!(p.mu[i] < kNoSlipFriction)) continue;
-    const int r0 = glp_add_rows(lp.get(), 2);
+    const int r0 = glp_add_rows(lp, 2);
     for (int s = 0; s < 2; ++s) {
-      glp_set_row_bnds(lp.get(), r0 + s, GLP_UP, 0.0, 0.0);
-      put(r0 + s, col_t + i, s == 0 ? 1.0 : -1.0);
-      for (int c : of_iface[i]) put(r0 + s, c + 1, -p.mu[i]);
+      glp_set_row_bnds(lp, r0 + s, GLP_UP, 0.0, 0.0);
+      m.put(r0 + s, col_t + i, s == 0 ? 1.0 : -1.0);
+      for (int c : of_iface[i]) m.put(r0 + s, c + 1, -p.mu[i]);
     }
   }
-  glp_load_matrix(lp.get(), int(ar.size()) - 1, ia.data(), ja.data(), ar.data());
+  glp_load_matrix(lp, int(m.ar.size()) - 1, m.ia.data(), m.ja.data(), m.ar.data());
+}
+
+// Solves the loaded problem to its optimum (x: the columns, pi: the rows' duals); false when it
+// has none (no equilibrium) or the solvers fail.
+bool solve_to_optimum(glp_prob* lp, const Triplets& m, bool exact, std::vector<double>& x, std::vector<double>& pi) {
   glp_smcp parm;
   glp_init_smcp(&parm);
   parm.msg_lev = GLP_MSG_OFF;
   parm.presolve = GLP_OFF;
-  LoadMultiplier out;
   if (!exact) {
     // Scaled, the floating-point simplex settles arches of thick rings that it calls infeasible
     // unscaled (its row norms span 1e-3 to 1e2).
     const int was = glp_term_out(GLP_OFF);
-    glp_scale_prob(lp.get(), GLP_SF_AUTO);
+    glp_scale_prob(lp, GLP_SF_AUTO);
     glp_term_out(was);
   }
-  int rc = glp_simplex(lp.get(), &parm);
-  int status = glp_get_status(lp.get());
+  int rc = glp_simplex(lp, &parm);
+  int status = glp_get_status(lp);
   if (!exact && (rc != 0 || status != GLP_OPT)) {
     // A second opinion before "no equilibrium": the dual simplex from an advanced basis (the
     // primal one stalls on some thick arches).
     const int was = glp_term_out(GLP_OFF);
-    glp_adv_basis(lp.get(), 0);
+    glp_adv_basis(lp, 0);
     glp_term_out(was);
     parm.meth = GLP_DUALP;
-    rc = glp_simplex(lp.get(), &parm);
-    status = glp_get_status(lp.get());
+    rc = glp_simplex(lp, &parm);
+    status = glp_get_status(lp);
   }
   // The floating-point simplex ends within its tolerances (1e-7); its basis solved again in
   // double precision (polish) gives the limit to the rounding of the result, which rest needs (it
@@ -213,20 +215,36 @@ LoadMultiplier max_load_multiplier(const StaticProblem& p, int direction, bool e
   // floating-point simplex left the problem open, the exact (rational) simplex from its basis
   // settles it.
   const bool settled = rc == 0 && (status == GLP_OPT || status == GLP_NOFEAS);
-  std::vector<double> x, pi;
-  bool polished = settled && status == GLP_OPT && polish(lp.get(), ia, ja, ar, x, pi);
-  if (!settled || (exact && !(polished && certified(lp.get(), ia, ja, ar, x, pi)))) {
-    if (glp_exact(lp.get(), &parm) != 0) return out;
-    if (glp_get_status(lp.get()) != GLP_OPT) return out;
-    polished = polish(lp.get(), ia, ja, ar, x, pi);
+  bool polished = settled && status == GLP_OPT && polish(lp, m.ia, m.ja, m.ar, x, pi);
+  if (!settled || (exact && !(polished && certified(lp, m.ia, m.ja, m.ar, x, pi)))) {
+    if (glp_exact(lp, &parm) != 0) return false;
+    if (glp_get_status(lp) != GLP_OPT) return false;
+    polished = polish(lp, m.ia, m.ja, m.ar, x, pi);
   }
-  if (glp_get_status(lp.get()) != GLP_OPT) return out;
+  if (glp_get_status(lp) != GLP_OPT) return false;
   if (!polished) {
     x.clear();
     pi.clear();
-    for (int j = 1; j <= glp_get_num_cols(lp.get()); ++j) x.push_back(glp_get_col_prim(lp.get(), j));
-    for (int i = 1; i <= glp_get_num_rows(lp.get()); ++i) pi.push_back(glp_get_row_dual(lp.get(), i));
+    for (int j = 1; j <= glp_get_num_cols(lp); ++j) x.push_back(glp_get_col_prim(lp, j));
+    for (int i = 1; i <= glp_get_num_rows(lp); ++i) pi.push_back(glp_get_row_dual(lp, i));
   }
+  return true;
+}
+
+}  // namespace
+
+LoadMultiplier max_load_multiplier(const StaticProblem& p, int direction, bool exact) {
+  const int nb = int(p.mass.size()), nc = int(p.contacts.size()), ni = int(p.mu.size());
+  std::unique_ptr<glp_prob, LpDeleter> lp(glp_create_prob());
+  Triplets m;
+  // Rounding leaves entries of 1e-16 where the geometry has zeros (cos(pi/2) in a joint's normal):
+  // the rational simplex takes them as they are, the floating-point one alone stalls on them.
+  m.zero = exact ? 0.0 : 1e-13;
+  build_equilibrium_lp(lp.get(), p, direction, m);
+  LoadMultiplier out;
+  std::vector<double> x, pi;
+  if (!solve_to_optimum(lp.get(), m, exact, x, pi)) return out;
+  const int col_t = nc + 1, col_lambda = nc + ni + 1;
   out.feasible = true;
   out.lambda = x[col_lambda - 1];
   out.mechanism.assign(3 * std::size_t(nb), 0.0);

@@ -710,127 +710,136 @@ bool RigidAssemblyModel<Cap>::project_step(const Mode& m, State& z, bool velocit
 }
 
 template <int Cap>
+void RigidAssemblyModel<Cap>::hand_over(Transition<Mode>& tr, const std::string& why) const {
+  tr.stop = true;
+  tr.kind = kAsmTimeStepping;
+  handover_ = true;
+  problem_ = why;
+}
+
+template <int Cap>
+void RigidAssemblyModel<Cap>::reselect(double t, Transition<Mode>& tr, State& z) const {
+  project(tr.next, z, false);
+  if (!select_mode(t, tr.next, z))
+    hand_over(tr, "no contact mode consistent (the acceleration-level contact problem has no solution)");
+}
+
+template <int Cap>
+void RigidAssemblyModel<Cap>::leave_rest(double t, const Mode& m, State& z, Transition<Mode>& tr) const {
+  Mode& n = tr.next;
+  const auto a = ground_acceleration(t);
+  const bool pos_fails = m.rest_pos * (1.0 + a[1]) - a[0] < 0.0;
+  const bool neg_fails = m.rest_neg * (1.0 + a[1]) + a[0] < 0.0;
+  tr.kind = kAsmBreakpoint;
+  if (!pos_fails && !neg_fails && 1.0 + a[1] > 0.0) return;
+  if (!(1.0 + a[1] > 0.0)) {
+    n.rest = false;
+    for (int p = 0; p < 2 * ni_; ++p) n.point[p] = PointState::Open;
+  } else {
+    n = mechanism_mode(m, z, pos_fails ? +1 : -1);
+  }
+  tr.kind = kAsmSlip;
+  for (int p = 0; p < 2 * ni_; ++p)
+    if (n.point[p] == PointState::Open) tr.kind = kAsmOpen;
+  reselect(t, tr, z);
+}
+
+template <int Cap>
+void RigidAssemblyModel<Cap>::open_or_close(double t, const Mode& m, State& z, int p, Transition<Mode>& tr) const {
+  Mode& n = tr.next;
+  if (is_closed(m.point[p])) {
+    n.point[p] = PointState::Open;
+    tr.kind = kAsmOpen;
+  } else {
+    n.point[p] = PointState::Stick;
+    const State before = z;
+    if (!impact(t, n, z)) return hand_over(tr, "an impact problem without a settled solution");
+    // An accumulation of impacts that does not settle (a chattering contact).
+    const std::size_t slot = std::size_t(impacts_++ % kAccumulationImpacts);
+    const double oldest = impact_times_[slot];
+    impact_times_[slot] = t;
+    if (impacts_ > kAccumulationImpacts && t - oldest < kAccumulationWindow * std::sqrt(len_ / g_))
+      return hand_over(tr, "impacts accumulating without settling (a chattering contact)");
+    // An impact when the velocities jumped; a contact closing without approach (grazing) otherwise.
+    tr.kind = kAsmClose;
+    for (int b = 0; b < nb_; ++b)
+      for (int k = 0; k < 3; ++k)
+        if (z[iv(b) + k] != before[iv(b) + k]) tr.kind = kAsmImpact;
+  }
+  reselect(t, tr, z);
+  if (!tr.stop) try_rest(t, n, z);
+}
+
+template <int Cap>
+void RigidAssemblyModel<Cap>::stick_or_slip(double t, const Mode& m, State& z, int p, Transition<Mode>& tr) const {
+  Mode& n = tr.next;
+  const int i = p / 2;
+  if (m.point[p] == PointState::Stick) {
+    Geometry geo;
+    geo_.geometry(z, geo);
+    std::array<PointRows, kPoints> r;
+    rows(z, geo, m, r);
+    const Solution s = solve(t, m, z, r);
+    double ft = 0.0;
+    for (int q = 2 * i; q < 2 * i + 2; ++q) ft += s.ft[q];
+    for (int q = 2 * i; q < 2 * i + 2; ++q)
+      if (is_closed(n.point[q])) n.point[q] = ft > 0 ? PointState::SlipNeg : PointState::SlipPos;
+    tr.kind = kAsmSlip;
+  } else {
+    for (int q = 2 * i; q < 2 * i + 2; ++q)
+      if (is_closed(n.point[q])) n.point[q] = PointState::Stick;
+    tr.kind = kAsmStick;
+  }
+  reselect(t, tr, z);
+  if (!tr.stop) try_rest(t, n, z);
+}
+
+template <int Cap>
+void RigidAssemblyModel<Cap>::switch_end(double t, State& z, int p, Transition<Mode>& tr) const {
+  Mode& n = tr.next;
+  n.owner[p] ^= 1;
+  tr.kind = kAsmEndSwitch;
+  if (is_closed(n.point[p])) {
+    // The other block's corner takes the contact with its own normal velocity (a rotating face
+    // passing a corner): approaching, it strikes (an impact); leaving, the end opens.
+    Geometry geo;
+    geo_.geometry(z, geo);
+    std::array<PointRows, kPoints> r;
+    rows(z, geo, n, r);
+    if (r[p].vn > kTol * v_scale_) {
+      n.point[p] = PointState::Open;
+    } else if (r[p].vn < -kTol * v_scale_ && !impact(t, n, z)) {
+      return hand_over(tr, "an impact problem without a settled solution");
+    }
+  }
+  reselect(t, tr, z);
+}
+
+template <int Cap>
 Transition<typename RigidAssemblyModel<Cap>::Mode> RigidAssemblyModel<Cap>::transition(double t, const Mode& m,
                                                                                        State& z, int event) const {
   Transition<Mode> tr;
   tr.next = m;
-  Mode& n = tr.next;
-  auto hand_over = [&](const std::string& why) {
-    tr.stop = true;
-    tr.kind = kAsmTimeStepping;
-    handover_ = true;
-    problem_ = why;
-  };
-  auto reselect = [&] {
-    project(n, z, false);
-    if (!select_mode(t, n, z))
-      hand_over("no contact mode consistent (the acceleration-level contact problem has no solution)");
-  };
   if (m.rest) {
-    const auto a = ground_acceleration(t);
-    const bool pos_fails = m.rest_pos * (1.0 + a[1]) - a[0] < 0.0;
-    const bool neg_fails = m.rest_neg * (1.0 + a[1]) + a[0] < 0.0;
+    leave_rest(t, m, z, tr);
+  } else if (event == kBreakpoint) {
     tr.kind = kAsmBreakpoint;
-    if (!pos_fails && !neg_fails && 1.0 + a[1] > 0.0) return tr;
-    if (!(1.0 + a[1] > 0.0)) {
-      n.rest = false;
-      for (int p = 0; p < 2 * ni_; ++p) n.point[p] = PointState::Open;
-    } else {
-      n = mechanism_mode(m, z, pos_fails ? +1 : -1);
-    }
-    tr.kind = kAsmSlip;
-    for (int p = 0; p < 2 * ni_; ++p)
-      if (n.point[p] == PointState::Open) tr.kind = kAsmOpen;
-    reselect();
-    return tr;
-  }
-  if (event == kBreakpoint) {
-    tr.kind = kAsmBreakpoint;
-    reselect();
-    if (!tr.stop) try_rest(t, n, z);
-    return tr;
-  }
-  if (event < ev_tangent(0) || (event >= ev_valid(0) && event < ev_wzero(0))) {
-    const int p = event < ev_tangent(0) ? event : event - ev_valid(0);
-    if (is_closed(m.point[p])) {
-      n.point[p] = PointState::Open;
-      tr.kind = kAsmOpen;
-    } else {
-      n.point[p] = PointState::Stick;
-      const State before = z;
-      if (!impact(t, n, z)) {
-        hand_over("an impact problem without a settled solution");
-        return tr;
-      }
-      // An accumulation of impacts that does not settle (a chattering contact).
-      const std::size_t slot = std::size_t(impacts_++ % kAccumulationImpacts);
-      const double oldest = impact_times_[slot];
-      impact_times_[slot] = t;
-      if (impacts_ > kAccumulationImpacts && t - oldest < kAccumulationWindow * std::sqrt(len_ / g_)) {
-        hand_over("impacts accumulating without settling (a chattering contact)");
-        return tr;
-      }
-      // An impact when the velocities jumped; a contact closing without approach (grazing) otherwise.
-      tr.kind = kAsmClose;
-      for (int b = 0; b < nb_; ++b)
-        for (int k = 0; k < 3; ++k)
-          if (z[iv(b) + k] != before[iv(b) + k]) tr.kind = kAsmImpact;
-    }
-    reselect();
-    if (!tr.stop) try_rest(t, n, z);
-    return tr;
-  }
-  if (event < ev_owner(0)) {
-    const int p = event - ev_tangent(0), i = p / 2;
-    if (m.point[p] == PointState::Stick) {
-      Geometry geo;
-      geo_.geometry(z, geo);
-      std::array<PointRows, kPoints> r;
-      rows(z, geo, m, r);
-      const Solution s = solve(t, m, z, r);
-      double ft = 0.0;
-      for (int q = 2 * i; q < 2 * i + 2; ++q) ft += s.ft[q];
-      for (int q = 2 * i; q < 2 * i + 2; ++q)
-        if (is_closed(n.point[q])) n.point[q] = ft > 0 ? PointState::SlipNeg : PointState::SlipPos;
-      tr.kind = kAsmSlip;
-    } else {
-      for (int q = 2 * i; q < 2 * i + 2; ++q)
-        if (is_closed(n.point[q])) n.point[q] = PointState::Stick;
-      tr.kind = kAsmStick;
-    }
-    reselect();
-    if (!tr.stop) try_rest(t, n, z);
-    return tr;
-  }
-  if (event < ev_valid(0)) {
-    const int p = event - ev_owner(0);
-    n.owner[p] ^= 1;
-    tr.kind = kAsmEndSwitch;
-    if (is_closed(n.point[p])) {
-      // The other block's corner takes the contact with its own normal velocity (a rotating face
-      // passing a corner): approaching, it strikes (an impact); leaving, the end opens.
-      Geometry geo;
-      geo_.geometry(z, geo);
-      std::array<PointRows, kPoints> r;
-      rows(z, geo, n, r);
-      if (r[p].vn > kTol * v_scale_) {
-        n.point[p] = PointState::Open;
-      } else if (r[p].vn < -kTol * v_scale_ && !impact(t, n, z)) {
-        hand_over("an impact problem without a settled solution");
-        return tr;
-      }
-    }
-    reselect();
-    return tr;
-  }
-  if (event < ev_collapse(0)) {
+    reselect(t, tr, z);
+    if (!tr.stop) try_rest(t, tr.next, z);
+  } else if (event < ev_tangent(0) || (event >= ev_valid(0) && event < ev_wzero(0))) {
+    open_or_close(t, m, z, event < ev_tangent(0) ? event : event - ev_valid(0), tr);
+  } else if (event < ev_owner(0)) {
+    stick_or_slip(t, m, z, event - ev_tangent(0), tr);
+  } else if (event < ev_valid(0)) {
+    switch_end(t, z, event - ev_owner(0), tr);
+  } else if (event < ev_collapse(0)) {
     const int b = event - ev_wzero(0);
-    n.side[b] = std::int8_t(-m.side[b]);
+    tr.next.side[b] = std::int8_t(-m.side[b]);
     tr.kind = kAsmWZero;
-    return tr;
+  } else {
+    tr.stop = true;
+    tr.kind = event < ev_bearing(0) ? kAsmCollapse1 : kAsmCollapse2;
   }
-  tr.stop = true;
-  tr.kind = event < ev_bearing(0) ? kAsmCollapse1 : kAsmCollapse2;
   return tr;
 }
 

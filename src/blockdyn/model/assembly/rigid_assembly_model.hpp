@@ -167,6 +167,16 @@ class RigidAssemblyModel {
   bool project_step(const Mode& m, State& z, bool velocities) const;
   // Enter rest if every point touches, nothing moves and rest holds at t.
   bool try_rest(double t, Mode& m, State& z) const;
+  // The transitions by kind of event (transition()): leaving rest, a contact point opening or
+  // closing (an impact), stick to slip and back, the contact passing to the other block's end.
+  void leave_rest(double t, const Mode& m, State& z, Transition<Mode>& tr) const;
+  void open_or_close(double t, const Mode& m, State& z, int point, Transition<Mode>& tr) const;
+  void stick_or_slip(double t, const Mode& m, State& z, int point, Transition<Mode>& tr) const;
+  void switch_end(double t, State& z, int point, Transition<Mode>& tr) const;
+  // Stops the event-driven run for time-stepping, saying why.
+  void hand_over(Transition<Mode>& tr, const std::string& why) const;
+  // The next mode consistent with the contact problem, after projecting z onto tr.next's constraints.
+  void reselect(double t, Transition<Mode>& tr, State& z) const;
   Mode mechanism_mode(const Mode& m, const State& z, int direction) const;
   // The static programme of the configuration z with the contact points of `r`.
   StaticProblem static_problem(const State& z, const std::array<PointRows, kPoints>& r) const;

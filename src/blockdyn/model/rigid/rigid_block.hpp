@@ -14,7 +14,7 @@
 
 #include "blockdyn/excitation/ground_motion.hpp"
 #include "blockdyn/excitation/rest_exit.hpp"
-#include "blockdyn/integrate/hybrid_integrator.hpp"
+#include "blockdyn/integrate/hybrid_model.hpp"
 #include "blockdyn/model/common/block_kinematics.hpp"
 #include "blockdyn/model/rigid/contact_problem.hpp"
 #include "blockdyn/model/rigid/mechanism.hpp"

@@ -6,7 +6,7 @@
 #include <array>
 #include <optional>
 
-#include "blockdyn/integrate/hybrid_integrator.hpp"
+#include "blockdyn/integrate/hybrid_model.hpp"
 #include "blockdyn/model/common/coulomb.hpp"
 #include "blockdyn/model/winkler/region.hpp"
 #include "blockdyn/model/winkler/winkler_params.hpp"

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "blockdyn/excitation/ground_motion.hpp"
-#include "blockdyn/integrate/hybrid_integrator.hpp"
+#include "blockdyn/integrate/hybrid_model.hpp"
 #include "blockdyn/model/winkler/energy.hpp"
 #include "blockdyn/model/winkler/foundation_force.hpp"
 #include "blockdyn/model/winkler/winkler_params.hpp"
