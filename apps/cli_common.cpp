@@ -58,7 +58,7 @@ void add_spec_options(CLI::App& app, const std::vector<StudyOption>& specs) {
   }
 }
 
-void add_block_options(CLI::App& app, BlockParams& p) {
+void add_block_options(CLI::App& app, WinklerParams& p) {
   app.add_option("--r", p.r, "aspect ratio width/height (> 0)")->default_str(number_text(p.r));
   app.add_option("--mu", p.mu, "friction coefficient (>= 0)")->default_str(number_text(p.mu));
   app.add_option("--k", p.k, "non-dimensional foundation stiffness k a b/(m g) (> 0)")->default_str(number_text(p.k));

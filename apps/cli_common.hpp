@@ -37,7 +37,7 @@ Settings settings_of(const CLI::App& app, const std::vector<std::string>& exclud
 void add_spec_options(CLI::App& app, const std::vector<StudyOption>& specs);
 
 // --r --mu --k bound to p (defaults kept unless given).
-void add_block_options(CLI::App& app, BlockParams& p);
+void add_block_options(CLI::App& app, WinklerParams& p);
 // --rtol --atol bound to o.
 void add_tolerance_options(CLI::App& app, IntegratorOptions& o);
 // --method dopri5|dop853|auto (part of add_tolerance_options; alone for commands with their own tolerances).

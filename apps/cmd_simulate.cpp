@@ -24,7 +24,7 @@ namespace {
 struct SimulateFlags {
   std::string scenario_file;
   std::string model = "winkler";
-  BlockParams p;
+  WinklerParams p;
   IntegratorOptions integ;
   std::string ic = "ic1";
   double w0 = 0, x0 = 0, y0 = 0, vx0 = 0, vy0 = 0, vw0 = 0;

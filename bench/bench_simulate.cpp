@@ -2,18 +2,18 @@
 #include <benchmark/benchmark.h>
 
 #include "blockdyn/model/winkler/initial_conditions.hpp"
-#include "blockdyn/simulation/simulate.hpp"
+#include "blockdyn/simulation/winkler_simulation.hpp"
 
 using namespace blockdyn;
 
 // Issue 2 benchmark: ic1, r = 0.2, mu = 0.2, to t = 30, k = 1e4, 1e6, 1e8.
 static void BM_Ic1(benchmark::State& state) {
-  const BlockParams p{0.2, 0.2, double(state.range(0))};
-  SimulationOptions o;
+  const WinklerParams p{0.2, 0.2, double(state.range(0))};
+  WinklerRunOptions o;
   o.t_end = 30;
   o.track_energy = false;
   o.record_events = false;
-  SimulationResult r;
+  WinklerResult r;
   for (auto _ : state) {
     r = simulate(p, {}, ic1(p), o);
     benchmark::DoNotOptimize(r.t_final);
@@ -33,12 +33,12 @@ BENCHMARK(BM_Ic1)->Arg(10000)->Arg(1000000)->Arg(100000000)->Unit(benchmark::kMi
 // corners submerged (the micro-bouncing late regime of the costliest map points): the model's
 // share of the cost of a step (twelve of these per DOP853 step).
 static void BM_WinklerRhs(benchmark::State& state) {
-  const BlockParams p{1.0, 0.2, 1e7};
+  const WinklerParams p{1.0, 0.2, 1e7};
   const WinklerBlock block(p);
-  const BlockMode mode =
-      state.range(0) == 0 ? BlockMode{Regime::Contact, 1, 0, 0.0} : BlockMode{Regime::Slide, 1, 1, 0.0};
-  BlockStateVec z{0.5, -2e-7, 2e-10, 0.0, 3e-4, 1e-8, 0.0, 0.0, 0.0};
-  BlockStateVec dz{};
+  const WinklerMode mode =
+      state.range(0) == 0 ? WinklerMode{Regime::Contact, 1, 0, 0.0} : WinklerMode{Regime::Slide, 1, 1, 0.0};
+  WinklerState z{0.5, -2e-7, 2e-10, 0.0, 3e-4, 1e-8, 0.0, 0.0, 0.0};
+  WinklerState dz{};
   for (auto _ : state) {
     z[kH] += 1e-22;  // a new state each time, so nothing is hoisted out of the loop
     block.rhs(0.0, mode, z, dz);

@@ -6,7 +6,7 @@ set(BLOCKDYN_PUBLIC_ENTRY_HEADERS
   api/settings.hpp
   api/scenario_settings.hpp
   api/simulate_run.hpp
-  simulation/simulate.hpp
+  simulation/winkler_simulation.hpp
   simulation/rigid_simulation.hpp
   simulation/run.hpp
   simulation/observer.hpp

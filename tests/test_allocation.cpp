@@ -7,7 +7,7 @@
 #include <new>
 
 #include "blockdyn/model/winkler/initial_conditions.hpp"
-#include "blockdyn/simulation/simulate.hpp"
+#include "blockdyn/simulation/winkler_simulation.hpp"
 
 namespace {
 std::atomic<long> g_allocations{0};
@@ -34,21 +34,21 @@ using namespace blockdyn;
 // therefore allocate exactly the same number of times.
 TEST(Allocation, NoHeapAllocationWhileIntegrating) {
   for (double k : {1e4, 1e6, 1e8}) {
-    const BlockParams p{0.2, 0.2, k};
-    const BlockStateVec z0 = ic1(p);
-    auto count = [&](double t_end, SimulationResult& r) {
-      SimulationOptions o;
+    const WinklerParams p{0.2, 0.2, k};
+    const WinklerState z0 = ic1(p);
+    auto count = [&](double t_end, WinklerResult& r) {
+      WinklerRunOptions o;
       o.t_end = t_end;
       o.record_events = false;  // the event list is the only thing that would grow
       const long before = g_allocations.load();
       r = simulate(p, {}, z0, o);
       return g_allocations.load() - before;
     };
-    SimulationResult short_run, long_run;
+    WinklerResult short_run, long_run;
     const long a_short = count(0.5, short_run);
     const long a_long = count(30.0, long_run);
     EXPECT_EQ(a_short, a_long) << "k = " << k;
     EXPECT_GT(long_run.stats.accepted, 10 * short_run.stats.accepted) << "the long run must integrate";
-    EXPECT_GT(long_run.event_counts[int(EventKind::WZero)], 5);
+    EXPECT_GT(long_run.event_counts[int(WinklerEventKind::WZero)], 5);
   }
 }

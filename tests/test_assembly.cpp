@@ -87,7 +87,7 @@ TEST(AssemblyContactLaw, FlatDropReboundsWithTheCalibratedRestitution) {
     a.blocks[0].vy = -0.05;
     a.interfaces[0].law.restitution = e;
     const AssemblyResult r = simulate_assembly(a, {}, assembly_run_to(0.02, 1e-11, 1e-14));
-    EXPECT_EQ(r.event_counts[kAsmOpen], 2) << e;  // both points release together (symmetry)
+    EXPECT_EQ(r.event_counts[kAssemblyContactOpens], 2) << e;  // both points release together (symmetry)
     EXPECT_NEAR(r.blocks[0].final_state[4] / 0.05, e, 1e-6) << e;
     EXPECT_NEAR(r.blocks[0].final_state[2], 0.0, 1e-12);
   }
@@ -129,7 +129,7 @@ TEST(AssemblyFriction, ABlockOnARampBelowItsFrictionAngleStaysAndAboveItSlides) 
   // step would overshoot the elastic springs and slip.
   const Assembly ramp = make_preset("block", o);
   AssemblyResult r = simulate_assembly(ramp, harmonic(0.2, 0.05), assembly_run_to(5));
-  EXPECT_EQ(r.event_counts[kAsmSlip], 0);
+  EXPECT_EQ(r.event_counts[kAssemblySlipStarts], 0);
   // The base only shifts by the tangential springs' deflection under the peak load:
   // 0.2 m g shared by two points of stiffness k_N / 3.
   const double deflection = 0.2 * ramp.blocks[0].mass * 9.81 / (2 * 1e7 / 3);
@@ -140,8 +140,8 @@ TEST(AssemblyFriction, ABlockOnARampBelowItsFrictionAngleStaysAndAboveItSlides) 
   const double mu = o.ground_law.mu_k;
   r = simulate_assembly(make_preset("block", o), g, assembly_run_to(0.5));
   const AssemblyResult r2 = simulate_assembly(make_preset("block", o), g, assembly_run_to(1.0));
-  EXPECT_EQ(r2.event_counts[kAsmSlip], 2);
-  EXPECT_EQ(r2.event_counts[kAsmStick], 0);
+  EXPECT_EQ(r2.event_counts[kAssemblySlipStarts], 2);
+  EXPECT_EQ(r2.event_counts[kAssemblyStickStarts], 0);
   const double dv = r2.blocks[0].final_state[3] - r.blocks[0].final_state[3];
   EXPECT_NEAR(dv / (-(0.4 - mu) * 9.81 * 0.5), 1.0, 1e-9);
   EXPECT_GT(r2.blocks[0].max_abs_sliding, 0.6);
@@ -276,7 +276,7 @@ TEST(AssemblyEnergy, ClosedBalanceAndConservationWithoutLosses) {
   o.block_law.mu_s = o.block_law.mu_k = 0;
   a = make_preset("block", o);
   const AssemblyResult r = simulate_assembly(a, {}, assembly_run_to(2, 1e-11, 1e-14));
-  EXPECT_GT(r.event_counts[kAsmClose], 0);
+  EXPECT_GT(r.event_counts[kAssemblyContactCloses], 0);
   EXPECT_LT(std::fabs(r.energy_final.total - r.energy_initial.total) / (a.blocks[0].mass * 9.81 * 0.48), 1e-8);
   EXPECT_LT(std::fabs(r.work_normal) + std::fabs(r.work_friction), 1e-8);
 }
@@ -347,7 +347,7 @@ TEST(AssemblySymmetry, AMirroredGroundMotionMirrorsTheResponse) {
   const Assembly a = make_preset("trilith", o);
   const AssemblyResult r = simulate_assembly(a, harmonic(0.35, 2.5), assembly_run_to(1.5, 1e-11, 1e-14));
   const AssemblyResult m = simulate_assembly(a, harmonic(-0.35, 2.5), assembly_run_to(1.5, 1e-11, 1e-14));
-  ASSERT_GT(r.event_counts[kAsmOpen], 0);
+  ASSERT_GT(r.event_counts[kAssemblyContactOpens], 0);
   ASSERT_EQ(r.status, SimStatus::TEnd);
   const int swap[3] = {1, 0, 2};  // the mirror exchanges the columns
   for (int b = 0; b < 3; ++b)
@@ -491,14 +491,14 @@ TEST(AssemblyRigidLaw, RestSlidingAndSymmetry) {
   g.horizontal.constant = 0.4;
   const AssemblyResult r = simulate_assembly(make_preset("block", o), g, rigid_run(1.0, 1e-4));
   EXPECT_NEAR(r.blocks[0].final_state[3] / (-(0.4 - o.ground_law.mu_k) * 9.81), 1.0, 1e-9);
-  EXPECT_GT(r.event_counts[kAsmSlip], 0);
+  EXPECT_GT(r.event_counts[kAssemblySlipStarts], 0);
   // A mirrored motion mirrors the trilith's response.
   PresetOptions f = rigid_preset();
   f.ground_law.mu_s = f.ground_law.mu_k = f.block_law.mu_s = f.block_law.mu_k = std::tan(20 * M_PI / 180);
   const Assembly t = make_preset("trilith", f);
   const AssemblyResult r1 = simulate_assembly(t, harmonic(0.3, 2.5), rigid_run(1.0, 1e-4));
   const AssemblyResult r2 = simulate_assembly(t, harmonic(-0.3, 2.5), rigid_run(1.0, 1e-4));
-  ASSERT_GT(r1.event_counts[kAsmOpen], 0);
+  ASSERT_GT(r1.event_counts[kAssemblyContactOpens], 0);
   const int swap[3] = {1, 0, 2};
   for (int b = 0; b < 3; ++b)
     for (int k = 0; k < 6; ++k) {
@@ -537,7 +537,7 @@ TEST(AssemblyRigidLaw, ColumnsRockOnlyRestriction) {
   for (AssemblyInterface& i : a.interfaces)
     if (i.lower < 0) i.law.mu_s = i.law.mu_k = kNoSlipFriction;
   const AssemblyResult r = simulate_assembly(a, harmonic(0.3, 2.0), rigid_run(3, 1e-4));
-  EXPECT_GT(r.event_counts[kAsmOpen], 0);
+  EXPECT_GT(r.event_counts[kAssemblyContactOpens], 0);
   EXPECT_EQ(r.interfaces[0].slips + r.interfaces[1].slips, 0);
   // Rocking about a base corner without slip moves the base centre by (b/2)(1 - cos theta) at most,
   // up to the pivot's play inside the activation band g h^2 (twice: both ends of the motion).
@@ -599,7 +599,7 @@ TEST(AssemblyRigidLaw, StaticFrictionHoldsAtRestAndKineticFrictionActsOnceSlidin
   // Sliding down the slope: it keeps sliding, accelerated by (a - mu_k) g.
   r = simulate_assembly(friction_block(true, -0.2), slope(a), rigid_run(1.0, h));
   EXPECT_NEAR(r.blocks[0].final_state[3], -0.2 - (a - mu_k) * g, 1e-12);
-  EXPECT_EQ(r.event_counts[kAsmStick], 0);
+  EXPECT_EQ(r.event_counts[kAssemblyStickStarts], 0);
   // Sliding up: decelerated by (a + mu_k) g, it stops within a step of the closed form and then
   // stays (the static cone holds it again).
   const double v0 = 0.3, t_stop = v0 / ((a + mu_k) * g);
@@ -607,7 +607,7 @@ TEST(AssemblyRigidLaw, StaticFrictionHoldsAtRestAndKineticFrictionActsOnceSlidin
   const double t_stick = first_event(r, "stick");
   EXPECT_GE(t_stick, t_stop);
   EXPECT_LE(t_stick, t_stop + h);
-  EXPECT_EQ(r.event_counts[kAsmSlip], r.event_counts[kAsmStick]);  // the two ends, once each
+  EXPECT_EQ(r.event_counts[kAssemblySlipStarts], r.event_counts[kAssemblyStickStarts]);  // the two ends, once each
   EXPECT_NEAR(r.blocks[0].final_state[3], 0.0, 1e-12);
   EXPECT_NEAR(r.blocks[0].final_state[0] - rest.blocks[0].x, v0 * v0 / (2 * (a + mu_k) * g), 1e-6);
   // A slowly rising slope: sliding starts where it reaches mu_s (not mu_k).
@@ -632,14 +632,14 @@ TEST(AssemblyFriction, StaticAndKineticFrictionTendToTheRigidLaw) {
   slow.horizontal.amplitude = a;
   slow.horizontal.frequency = 0.05;
   AssemblyResult r = simulate_assembly(rest, slow, assembly_run_to(5));
-  EXPECT_EQ(r.event_counts[kAsmSlip], 0);
+  EXPECT_EQ(r.event_counts[kAssemblySlipStarts], 0);
   const double deflection = a * rest.blocks[0].mass * g / (2 * 1e7 / 3);
   EXPECT_NEAR(r.blocks[0].max_abs_sliding / deflection, 1.0, 2e-2);
   // Sliding down: the velocity gain over 0.5 s equals the rigid law's (a - mu_k) g.
   const Assembly down = friction_block(false, -0.2);
   const AssemblyResult r1 = simulate_assembly(down, slope(a), assembly_run_to(0.5));
   const AssemblyResult r2 = simulate_assembly(down, slope(a), assembly_run_to(1.0));
-  EXPECT_EQ(r2.event_counts[kAsmStick], 0);
+  EXPECT_EQ(r2.event_counts[kAssemblyStickStarts], 0);
   EXPECT_NEAR((r2.blocks[0].final_state[3] - r1.blocks[0].final_state[3]) / (-(a - mu_k) * g * 0.5), 1.0, 1e-9);
   // Sliding up: it stops when the rigid law does (within the springs' loading time).
   const double v0 = 0.3, t_stop = v0 / ((a + mu_k) * g);
@@ -677,7 +677,7 @@ TEST(AssemblyFriction, EqualStaticAndKineticFrictionDoesNotChatter) {
         simulate_assembly(make_preset("trilith", o), harmonic(c.amplitude_g, c.hz), assembly_run_to(1.0));
     EXPECT_EQ(r.status, SimStatus::TEnd) << r.note;
     EXPECT_EQ(r.t_final, 1.0);
-    EXPECT_GT(r.event_counts[kAsmStick], 0);
+    EXPECT_GT(r.event_counts[kAssemblyStickStarts], 0);
     EXPECT_LT(r.max_abs_energy_error, 1e-6);
   }
 }

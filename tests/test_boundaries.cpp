@@ -224,7 +224,7 @@ TEST(FlightBoundary, CriticalBelowHighAndConsistentWithDefinition) {
   const auto s = coarse_k(1e2, 1e9);
   const auto c10 = k_critical(r, mu, ic, 10, o, s);
   const auto c2 = k_critical(r, mu, ic, 2, o, s);
-  const auto hi = k_high(r, mu, ic, FirstImpact::IhorBelow2, o, s);
+  const auto hi = k_high(r, mu, ic, FirstImpact::UprightPassagesBelow2, o, s);
   ASSERT_TRUE(c10.result.found());
   ASSERT_TRUE(c2.result.found());
   ASSERT_TRUE(hi.result.found());
@@ -235,12 +235,13 @@ TEST(FlightBoundary, CriticalBelowHighAndConsistentWithDefinition) {
   // Check the definition on fresh runs: below k_critical_2 no flight while ihor < 2, at the
   // upper end of the bracket a flight during the first swing.
   for (double f : {0.3, 0.7, 0.95})
-    EXPECT_TRUE(no_flight_while_ihor_below({r, mu, f * c2.result.lo}, ic, 2, o).holds) << f;
-  EXPECT_FALSE(no_flight_while_ihor_below({r, mu, c2.result.hi}, ic, 2, o).holds);
+    EXPECT_TRUE(no_flight_while_upright_passages_below({r, mu, f * c2.result.lo}, ic, 2, o).holds) << f;
+  EXPECT_FALSE(no_flight_while_upright_passages_below({r, mu, c2.result.hi}, ic, 2, o).holds);
   // Above k_high it always flies during the first impact.
   for (double f : {1.0, 1.5, 4.0})
-    EXPECT_TRUE(flies_during_first_impact({r, mu, f * hi.result.hi}, ic, FirstImpact::IhorBelow2, o).holds) << f;
-  EXPECT_FALSE(flies_during_first_impact({r, mu, hi.result.lo}, ic, FirstImpact::IhorBelow2, o).holds);
+    EXPECT_TRUE(flies_during_first_impact({r, mu, f * hi.result.hi}, ic, FirstImpact::UprightPassagesBelow2, o).holds)
+        << f;
+  EXPECT_FALSE(flies_during_first_impact({r, mu, hi.result.lo}, ic, FirstImpact::UprightPassagesBelow2, o).holds);
 }
 
 // Issue 12: the k_critical_2 curve (ic1, mu = 0.2) was jagged with the coarse search alone -
@@ -293,14 +294,14 @@ TEST(FlightBoundary, Ic1WNegativeWindowIsInsideIhor2Window) {
   const auto o = flight_run();
   const auto s = coarse_k(1e3, 1e10);
   const auto hw = k_high(r, mu, ic, FirstImpact::WNegative, o, s);
-  const auto h2 = k_high(r, mu, ic, FirstImpact::IhorBelow2, o, s);
+  const auto h2 = k_high(r, mu, ic, FirstImpact::UprightPassagesBelow2, o, s);
   ASSERT_TRUE(hw.result.found());
   ASSERT_TRUE(h2.result.found());
   EXPECT_GE(hw.result.hi, h2.result.lo);
   // Pointwise implication on fresh runs around the w_negative boundary.
   for (double k : {hw.result.lo, hw.result.hi, 2 * hw.result.hi}) {
     const bool w = flies_during_first_impact({r, mu, k}, ic, FirstImpact::WNegative, o).holds;
-    const bool i2 = flies_during_first_impact({r, mu, k}, ic, FirstImpact::IhorBelow2, o).holds;
+    const bool i2 = flies_during_first_impact({r, mu, k}, ic, FirstImpact::UprightPassagesBelow2, o).holds;
     EXPECT_TRUE(!w || i2) << k;
   }
   EXPECT_THROW(flies_during_first_impact({r, mu, 1e5}, IcChoice{IcChoice::Set::Ic2}, FirstImpact::WNegative, o),
@@ -308,19 +309,19 @@ TEST(FlightBoundary, Ic1WNegativeWindowIsInsideIhor2Window) {
 }
 
 TEST(FlightTime, StopsAtFirstFlightWithItsIhor) {
-  const BlockParams p{0.5, 0.2, 1e6};
+  const WinklerParams p{0.5, 0.2, 1e6};
   StudyRunOptions o;
   o.t_end = 3;
   const auto f = first_flight(p, IcChoice{IcChoice::Set::Ic1}, o);
   // Full run for reference: the same first flight time and ihor.
-  SimulationOptions full;
+  WinklerRunOptions full;
   full.t_end = 3;
   const auto ref = simulate(p, {}, ic1(p), full);
   ASSERT_TRUE(ref.first_flight_time.has_value());
   ASSERT_TRUE(f.flew);
   EXPECT_EQ(f.status, SimStatus::EarlyStop);
   EXPECT_NEAR(f.time, *ref.first_flight_time, 1e-9);
-  EXPECT_EQ(f.ihor, ref.ihor_at_first_flight);
+  EXPECT_EQ(f.upright_passages, ref.upright_passages_at_first_flight);
   // No flight within a short window: the end of the run is reported.
   o.t_end = 0.5 * f.time;
   const auto none = first_flight(p, IcChoice{IcChoice::Set::Ic1}, o);
@@ -362,10 +363,10 @@ TEST(StabilityCurve, K2AtMu02R02MatchesDefinition) {
   for (double f : {0.2, 0.5, 0.9, 0.99}) {
     const auto run = overturn_run({r, mu, f * k2.result.lo}, ic, o);
     EXPECT_TRUE(run.overturned) << f;
-    EXPECT_EQ(run.ihor, 1) << f;
+    EXPECT_EQ(run.upright_passages, 1) << f;
   }
   // Just above: it does not overturn while ihor < 2.
-  EXPECT_FALSE(overturns_while_ihor_below({r, mu, k2.result.hi * 1.01}, ic, 2, o));
+  EXPECT_FALSE(overturns_while_upright_passages_below({r, mu, k2.result.hi * 1.01}, ic, 2, o));
   // Thesis (Fig. 4.25): at r = 0.2 the two critical values coincide and above them the block
   // never overturns in 30 time units.
   const auto k3 = k3_stability(r, mu, k2.result, o, s);
@@ -390,11 +391,11 @@ TEST(StabilityCurve, K3AboveK2AtMu02R01WithSecondSwingOverturns) {
     const double k = a * std::pow(b / a, f);
     const auto run = overturn_run({r, mu, k}, ic, o);
     EXPECT_TRUE(run.overturned) << k;
-    EXPECT_EQ(run.ihor, 2) << k;
+    EXPECT_EQ(run.upright_passages, 2) << k;
   }
   // Above k3: no overturning while ihor < 3.
-  EXPECT_FALSE(overturns_while_ihor_below({r, mu, k3.point.result.hi * 1.01}, ic, 3, o));
-  EXPECT_FALSE(overturns_while_ihor_below({r, mu, k3.point.result.hi * 3}, ic, 3, o));
+  EXPECT_FALSE(overturns_while_upright_passages_below({r, mu, k3.point.result.hi * 1.01}, ic, 3, o));
+  EXPECT_FALSE(overturns_while_upright_passages_below({r, mu, k3.point.result.hi * 3}, ic, 3, o));
 }
 
 TEST(StabilityCurve, K1Ic1OverturnsWithoutPassingUpright) {
@@ -406,9 +407,9 @@ TEST(StabilityCurve, K1Ic1OverturnsWithoutPassingUpright) {
   for (double f : {0.3, 0.9}) {
     const auto run = overturn_run({r, mu, f * k1.result.lo}, ic, o);
     EXPECT_TRUE(run.overturned);
-    EXPECT_EQ(run.ihor, 0);
+    EXPECT_EQ(run.upright_passages, 0);
   }
-  EXPECT_FALSE(overturns_while_ihor_below({r, mu, k1.result.hi * 1.01}, ic, 1, o));
+  EXPECT_FALSE(overturns_while_upright_passages_below({r, mu, k1.result.hi * 1.01}, ic, 1, o));
   EXPECT_THROW(k1_stability(r, mu, IcChoice{IcChoice::Set::Ic2}, o, coarse_stab()), std::invalid_argument);
 }
 
@@ -427,7 +428,7 @@ TEST(StabilityBlowup, R2BelowR3AndOverturnsRegardlessOfK) {
   // Below r2_s: overturns during the first swing at every k tried.
   const IcChoice ic{IcChoice::Set::Ic2};
   for (double k : {30.0, 1e3, 1e5, 1e6})
-    EXPECT_TRUE(overturns_while_ihor_below({0.9 * r2.result.lo, mu, k}, ic, 2, o)) << k;
+    EXPECT_TRUE(overturns_while_upright_passages_below({0.9 * r2.result.lo, mu, k}, ic, 2, o)) << k;
 }
 
 // ---------------------------------------------------------------- command line
@@ -513,12 +514,12 @@ TEST(BoundaryCli, OverturnWindowAndKUns) {
   while (std::getline(in, line)) {
     ++rows;
     std::istringstream ls(line);
-    std::string k, over, t, ihor;
+    std::string k, over, t, upright_passages;
     std::getline(ls, k, ',');
     std::getline(ls, over, ',');
     std::getline(ls, t, ',');
-    std::getline(ls, ihor, ',');
-    second_swing += over == "1" && ihor == "2";
+    std::getline(ls, upright_passages, ',');
+    second_swing += over == "1" && upright_passages == "2";
   }
   EXPECT_EQ(rows, 50);
   EXPECT_GE(second_swing, 20) << "the window must be resolved, not crossed in 2-3 points";

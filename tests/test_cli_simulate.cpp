@@ -15,7 +15,7 @@
 #include <vector>
 
 #include "blockdyn/model/winkler/initial_conditions.hpp"
-#include "blockdyn/simulation/simulate.hpp"
+#include "blockdyn/simulation/winkler_simulation.hpp"
 
 namespace fs = std::filesystem;
 using json = nlohmann::json;
@@ -110,14 +110,14 @@ TEST_F(CliSimulate, JsonSummaryHasRequiredKeysAndMatchesLibrary) {
   for (const auto& e : j["events"])
     for (const char* key : {"t", "kind", "from", "to"}) EXPECT_TRUE(e.contains(key)) << key;
   // The same run in-process: the command line adds nothing and loses nothing.
-  const blockdyn::BlockParams p{0.5, 0.2, 1e4};
-  blockdyn::SimulationOptions o;
+  const blockdyn::WinklerParams p{0.5, 0.2, 1e4};
+  blockdyn::WinklerRunOptions o;
   o.t_end = 2.0;
-  const blockdyn::BlockStateVec z0 = blockdyn::ic1(p);
-  const blockdyn::SimulationResult lib = blockdyn::simulate(p, {}, z0, o);
+  const blockdyn::WinklerState z0 = blockdyn::ic1(p);
+  const blockdyn::WinklerResult lib = blockdyn::simulate(p, {}, z0, o);
   EXPECT_EQ(j["initial_state"]["w"].get<double>(), z0[blockdyn::kW]);  // ic1: alpha / 2
   EXPECT_DOUBLE_EQ(j["initial_state"]["w"].get<double>(), 0.5 * std::atan(0.5));
-  EXPECT_EQ(j["ihor"].get<long>(), lib.ihor);
+  EXPECT_EQ(j["ihor"].get<long>(), lib.upright_passages);
   EXPECT_EQ(j["events"].size(), lib.events.size());
   EXPECT_EQ(j["steps"].get<long>(), lib.stats.accepted);
   EXPECT_EQ(j["final_state"]["w"].get<double>(), lib.final_state[blockdyn::kW]);

@@ -11,7 +11,7 @@
 #include <string>
 
 #include "blockdyn/model/winkler/initial_conditions.hpp"
-#include "blockdyn/simulation/simulate.hpp"
+#include "blockdyn/simulation/winkler_simulation.hpp"
 
 #include "test_support.hpp"
 
@@ -22,21 +22,21 @@ namespace {
 
 // Tracks |E - E0| while at most one corner is submerged, and whether the non-potential work
 // stays exactly zero there.
-struct OneCornerEnergy : SimulationSink {
+struct OneCornerEnergy : WinklerSink {
   double e0 = 0, max_dev = 0;
   long samples = 0;
   bool two_seen = false, nonpot_moved = false;
   // Four points of every step's dense output (the step's end and three inside it), up to the
   // first step that ends with two corners submerged.
   void on_segment(const WinklerBlock& m, const DenseSegment<kStateDim>& seg, double t0, double t1,
-                  const BlockMode& mode) override {
+                  const WinklerMode& mode) override {
     if (two_seen || m.forces(t1, mode, completed_state(m, seg, mode, t1)).corners_below > 1) {
       two_seen = true;
       return;
     }
     for (int j = 1; j <= 4; ++j) {
       const double t = j == 4 ? t1 : t0 + 0.25 * j * (t1 - t0);
-      const BlockStateVec z = completed_state(m, seg, mode, t);
+      const WinklerState z = completed_state(m, seg, mode, t);
       ++samples;
       max_dev = std::fmax(max_dev, std::fabs(energy(m.params(), z).total() - e0));
       nonpot_moved |= z[kWorkNonPotential] != 0.0;
@@ -46,12 +46,12 @@ struct OneCornerEnergy : SimulationSink {
 
 // Friction work at every step boundary: never positive, never increasing. Also counts how
 // often two corners are submerged.
-struct FrictionWork : SimulationSink {
+struct FrictionWork : WinklerSink {
   double last = 0, max_increase = -1, max_value = -1;
   long steps = 0, two = 0;
   void on_segment(const WinklerBlock& m, const DenseSegment<kStateDim>& seg, double t0, double t1,
-                  const BlockMode& mode) override {
-    BlockStateVec a, b;
+                  const WinklerMode& mode) override {
+    WinklerState a, b;
     seg.eval(t0, a);
     seg.eval(t1, b);
     m.complete(mode, b);
@@ -69,15 +69,15 @@ struct FrictionWork : SimulationSink {
 TEST(Energy, ConservedWithoutFrictionOnOneCorner) {
   // ic1 (r = 0.3, k = 1e5, mu = 0): the block rocks on its lowest corner down to w = 0; only
   // the last instants before w = 0 have a second corner in the springs.
-  const BlockParams p{0.3, 0.0, 1e5};
+  const WinklerParams p{0.3, 0.0, 1e5};
   double dev[2];
   int i = 0;
   for (double rtol : {1e-8, 1e-11}) {
     OneCornerEnergy sink;
     sink.e0 = energy(p, ic1(p)).total();
-    SimulationOptions o = sim_options(5.0, rtol);
-    o.stop_at_ihor = 1;
-    const SimulationResult r = simulate(p, {}, ic1(p), o, &sink);
+    WinklerRunOptions o = sim_options(5.0, rtol);
+    o.stop_at_upright_passages = 1;
+    const WinklerResult r = simulate(p, {}, ic1(p), o, &sink);
     ASSERT_EQ(r.status, SimStatus::EarlyStop);
     EXPECT_GT(sink.samples, 100);
     EXPECT_TRUE(sink.two_seen);
@@ -95,13 +95,13 @@ TEST(Energy, ConservedWithoutFrictionUpright) {
   // Upright block bouncing vertically (see test_vertical_oscillation for the closed form) for
   // 80 flights: the energy error grows at most linearly with the number of submerged phases
   // and falls with the tolerance.
-  const BlockParams p{0.5, 0.0, 1e5};
-  const BlockStateVec z0 = upright_at_rest(-3.0 / p.k);
+  const WinklerParams p{0.5, 0.0, 1e5};
+  const WinklerState z0 = upright_at_rest(-3.0 / p.k);
   double dev[2];
   int i = 0;
   for (double rtol : {1e-10, 1e-12}) {
-    const SimulationResult r = simulate(p, {}, z0, sim_options(2.0, rtol));
-    const long flights = r.event_counts[int(EventKind::Takeoff)];
+    const WinklerResult r = simulate(p, {}, z0, sim_options(2.0, rtol));
+    const long flights = r.event_counts[int(WinklerEventKind::Takeoff)];
     EXPECT_EQ(flights, 83);  // 2.0 / T with T = 4 pi / (3 sqrt k) + 2 sqrt(3 / k)
     EXPECT_LT(r.max_abs_energy_change, 10 * rtol * flights * r.initial_energy.total());
     EXPECT_EQ(r.max_abs_energy_change, r.max_abs_energy_error);  // no friction, no wall term
@@ -114,15 +114,15 @@ TEST(Energy, ConservedWithoutFrictionUpright) {
 TEST(Energy, BalanceClosesWithFrictionAndTwoCorners) {
   // ic1 (r = 0.5, mu = 0.2, k = 1e4): contact, slides, flights; two corners submerged for a
   // good part of the time, so the non-potential torque does work.
-  const BlockParams p{0.5, 0.2, 1e4};
-  SimulationResult r[2];
+  const WinklerParams p{0.5, 0.2, 1e4};
+  WinklerResult r[2];
   FrictionWork fw[2];
   const double rtols[2] = {1e-8, 1e-11};
   for (int i = 0; i < 2; ++i) {
     r[i] = simulate(p, {}, ic1(p), sim_options(10.0, rtols[i]), &fw[i]);
     ASSERT_EQ(r[i].status, SimStatus::TEnd);
-    EXPECT_GT(r[i].event_counts[int(EventKind::SlideToContact)], 5);
-    EXPECT_GT(r[i].event_counts[int(EventKind::Takeoff)], 5);
+    EXPECT_GT(r[i].event_counts[int(WinklerEventKind::SlideToContact)], 5);
+    EXPECT_GT(r[i].event_counts[int(WinklerEventKind::Takeoff)], 5);
     EXPECT_GT(fw[i].two, fw[i].steps / 5);  // two corners in at least 20% of the steps
     // Friction dissipates a large part of the energy...
     EXPECT_LT(r[i].work_friction(), -0.5 * r[i].initial_energy.total());
@@ -150,11 +150,12 @@ TEST(Energy, BalanceClosesWithFrictionAndTwoCorners) {
 
 TEST(Energy, FrictionWorkNeverPositiveWithImpulseStart) {
   // ic2 on a soft foundation (k = 1e3): many slides and stops, both corners in the springs.
-  const BlockParams p{0.5, 0.2, 1e3};
+  const WinklerParams p{0.5, 0.2, 1e3};
   FrictionWork fw;
-  const SimulationResult r = simulate(p, {}, ic2(p), sim_options(10.0, 1e-10), &fw);
+  const WinklerResult r = simulate(p, {}, ic2(p), sim_options(10.0, 1e-10), &fw);
   ASSERT_EQ(r.status, SimStatus::TEnd);
-  EXPECT_GT(r.event_counts[int(EventKind::SlideToContact)] + r.event_counts[int(EventKind::SlideReversal)], 10);
+  EXPECT_GT(
+      r.event_counts[int(WinklerEventKind::SlideToContact)] + r.event_counts[int(WinklerEventKind::SlideReversal)], 10);
   EXPECT_LE(fw.max_increase, 0.0);
   EXPECT_LE(fw.max_value, 0.0);
   EXPECT_LT(r.work_friction(), 0.0);
@@ -167,18 +168,18 @@ TEST(Energy, FrictionWorkNeverPositiveWithImpulseStart) {
 // the value on the side the block tips to, its mode's side, whatever the rounding-level sign of
 // w says.
 TEST(Energy, NonPotentialTorqueAtTheUprightTakesTheTippingSide) {
-  const BlockParams p{0.5, 0.2, 1e4};
+  const WinklerParams p{0.5, 0.2, 1e4};
   const WinklerBlock block(p);
   const double h = -5e-4;  // both bottom corners 5e-4 deep when upright
   for (const int side : {1, -1}) {
-    for (const BlockMode m : {BlockMode{Regime::Slide, side, 1, 0.0}, BlockMode{Regime::Contact, side, 0, 0.0}}) {
+    for (const WinklerMode m : {WinklerMode{Regime::Slide, side, 1, 0.0}, WinklerMode{Regime::Contact, side, 0, 0.0}}) {
       auto torque_at = [&](double w) {
-        BlockStateVec z{0.0, h, w, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+        WinklerState z{0.0, h, w, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
         block.complete(m, z);
         return block.forces(0.0, m, z).torque_nonpot;
       };
       const double limit = torque_at(side * 1e-15);  // from the side the block tips to
-      ASSERT_EQ(block.forces(0.0, m, BlockStateVec{0.0, h, side * 1e-12}).corners_below, 2);
+      ASSERT_EQ(block.forces(0.0, m, WinklerState{0.0, h, side * 1e-12}).corners_below, 2);
       ASSERT_GT(std::fabs(limit), 0.0);
       EXPECT_EQ(std::signbit(limit), side < 0);  // it pushes the block on towards its lowest corner
       EXPECT_NEAR(torque_at(0.0), limit, 1e-9 * std::fabs(limit));
@@ -191,8 +192,8 @@ TEST(Energy, NonPotentialTorqueAtTheUprightTakesTheTippingSide) {
 // first step's non-potential work is exact to the tolerance only if its first stage takes the
 // tipping side (it took the mean, zero, and the work was 9 % short: 3.04e-13 for 3.33e-13).
 TEST(Energy, NonPotentialWorkFromTheUprightStartClosesTheBalance) {
-  const BlockParams p{0.5, 0.2, 1e4};
-  const SimulationResult r = simulate(p, {}, ic2(p), sim_options(0.05, 1e-11));
+  const WinklerParams p{0.5, 0.2, 1e4};
+  const WinklerResult r = simulate(p, {}, ic2(p), sim_options(0.05, 1e-11));
   ASSERT_EQ(r.status, SimStatus::TEnd);
   ASSERT_GT(std::fabs(r.work_nonpotential()), 1e-13);
   EXPECT_LT(r.max_abs_energy_error, 1e-2 * std::fabs(r.work_nonpotential()));
@@ -203,7 +204,7 @@ TEST(Energy, NonPotentialWorkFromTheUprightStartClosesTheBalance) {
 // along the right-hand side (z +- eps dz, completed) in every regime, with one and two corners
 // submerged, with friction sliding and sticking, and under ground motion.
 TEST(Energy, RatesAreTheTimeDerivativesOfTheComponents) {
-  const BlockParams p{0.5, 0.3, 1e4};
+  const WinklerParams p{0.5, 0.3, 1e4};
   GroundMotion shaken;
   shaken.horizontal.amplitude = 0.2;
   shaken.horizontal.frequency = 1.5;
@@ -211,8 +212,8 @@ TEST(Energy, RatesAreTheTimeDerivativesOfTheComponents) {
   shaken.vertical.frequency = 0.7;
   struct Case {
     const char* what;
-    BlockMode mode;
-    BlockStateVec z;
+    WinklerMode mode;
+    WinklerState z;
   };
   // Centre height with the lowest corner `depth` below the surface at tilt w.
   auto sunk = [&](double w, double depth) {
@@ -231,12 +232,12 @@ TEST(Energy, RatesAreTheTimeDerivativesOfTheComponents) {
     const WinklerBlock block(p, g);
     const double t = 0.3;
     for (const Case& c : cases) {
-      BlockStateVec z = c.z, dz;
+      WinklerState z = c.z, dz;
       block.complete(c.mode, z);
       block.rhs(t, c.mode, z, dz);
       const Energy rate = block.energy_rates(t, c.mode, z);
       const double eps = 1e-7;
-      BlockStateVec zp = z, zm = z;
+      WinklerState zp = z, zm = z;
       for (std::size_t i = 0; i < kStateDim; ++i) {
         zp[i] += eps * dz[i];
         zm[i] -= eps * dz[i];

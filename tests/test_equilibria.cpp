@@ -27,8 +27,8 @@ using namespace blockdyn;
 
 namespace {
 
-BlockParams P(double r, double k) {
-  BlockParams p;
+WinklerParams P(double r, double k) {
+  WinklerParams p;
   p.r = r;
   p.k = k;
   return p;
@@ -117,7 +117,7 @@ TEST(EquilArm, OddInTilt) {
     for (double k : {3.0, 100.0, 1e6})
       for (double f : {1e-6, 0.05, 0.4, 0.9}) {
         const double w = f * std::atan(r);
-        const BlockParams p = P(r, k);
+        const WinklerParams p = P(r, k);
         EXPECT_NEAR(equilibrium_arm(p, -w), -equilibrium_arm(p, w), 1e-15 * (1.0 + std::fabs(equilibrium_arm(p, w))));
       }
 }
@@ -361,7 +361,7 @@ TEST(EquilLandscape, TwoCornerPotentialHasACusp) {
   // With two corners the gap triangle under the side edge stores spring energy ~ |w|:
   // V + y grows like w / (6 r k^2) while -int arm is O(w^2). The force model is not a gradient.
   const double r = 0.9, k = 6.2, w = 1e-6;
-  const BlockParams p = P(r, k);
+  const WinklerParams p = P(r, k);
   const double h0 = resting_height(p, 0.0), h = resting_height(p, w);
   const double dP = spring_energy(p, h, w) + h - spring_energy(p, h0, 0.0) - h0;
   EXPECT_NEAR(dP / w, 1.0 / (6.0 * r * k * k), 1e-4 / (6.0 * r * k * k));
@@ -371,7 +371,7 @@ TEST(EquilLandscape, TwoCornerPotentialHasACusp) {
 }
 
 TEST(EquilLandscape, EnergyDerivativeIsMinusArm) {
-  const BlockParams p = P(0.7, 11.0);
+  const WinklerParams p = P(0.7, 11.0);
   const auto l = energy_landscape(p, 401);
   for (std::size_t i = 1; i + 1 < l.size(); i += 37) {
     const double d = (l[i + 1].energy - l[i - 1].energy) / (l[i + 1].w - l[i - 1].w);

@@ -14,7 +14,7 @@
 #include <vector>
 
 #include "blockdyn/model/winkler/initial_conditions.hpp"
-#include "blockdyn/simulation/simulate.hpp"
+#include "blockdyn/simulation/winkler_simulation.hpp"
 
 #include "test_support.hpp"
 
@@ -38,14 +38,14 @@ double bisect(const std::function<double(double)>& f, double a, double b) {
 
 TEST(Events, TimesStableUnderTighterTolerance) {
   // ic1 (r = 0.5, mu = 0.2, k = 1e4) over t in [0, 3]: contact, slides, w = 0 passages, flights.
-  const BlockParams p{0.5, 0.2, 1e4};
-  const SimulationResult ref = simulate(p, {}, ic1(p), sim_options(3.0, 1e-13));
+  const WinklerParams p{0.5, 0.2, 1e4};
+  const WinklerResult ref = simulate(p, {}, ic1(p), sim_options(3.0, 1e-13));
   ASSERT_GE(ref.events.size(), 15u);
-  std::map<EventKind, int> kinds;
-  for (const EventRecord& e : ref.events) ++kinds[e.kind];
+  std::map<WinklerEventKind, int> kinds;
+  for (const WinklerEventRecord& e : ref.events) ++kinds[e.kind];
   EXPECT_GE(kinds.size(), 6u);  // a varied sequence
   for (double rtol : {1e-8, 1e-10}) {
-    const SimulationResult r = simulate(p, {}, ic1(p), sim_options(3.0, rtol));
+    const WinklerResult r = simulate(p, {}, ic1(p), sim_options(3.0, rtol));
     ASSERT_EQ(r.events.size(), ref.events.size()) << rtol;
     double worst = 0;
     for (std::size_t i = 0; i < r.events.size(); ++i) {
@@ -61,42 +61,42 @@ TEST(Events, TimesStableUnderTighterTolerance) {
 namespace {
 
 // For every event, the event function that fired, evaluated on the trajectory that led to it.
-struct EventResiduals : SimulationSink {
+struct EventResiduals : WinklerSink {
   DenseSegment<kStateDim> last{};
-  BlockMode last_mode{};
+  WinklerMode last_mode{};
   double last_t1 = -1;
-  std::map<EventKind, double> worst;
-  std::map<EventKind, int> count;
+  std::map<WinklerEventKind, double> worst;
+  std::map<WinklerEventKind, int> count;
   int skipped = 0;
   void on_segment(const WinklerBlock&, const DenseSegment<kStateDim>& seg, double, double t1,
-                  const BlockMode& mode) override {
+                  const WinklerMode& mode) override {
     last = seg;
     last_mode = mode;
     last_t1 = t1;
   }
-  void on_event(const WinklerBlock& m, const EventRecord& e) override {
+  void on_event(const WinklerBlock& m, const WinklerEventRecord& e) override {
     if (last_t1 != e.t || last_mode.regime != e.from.regime || last_mode.side != e.from.side) {
       ++skipped;  // a second event at the same instant: no trajectory piece in its mode
       return;
     }
-    BlockStateVec z;  // state before the transition
+    WinklerState z;  // state before the transition
     last.eval(e.t, z);
     m.complete(e.from, z);
-    const BlockParams& p = m.params();
+    const WinklerParams& p = m.params();
     double g;
     switch (e.kind) {
-      case EventKind::Takeoff:
-      case EventKind::Landing:
+      case WinklerEventKind::Takeoff:
+      case WinklerEventKind::Landing:
         g = corner_heights(p.r, z[kH], z[kW]).lowest * p.k;
         break;  // depth scale 1/k
-      case EventKind::WZero:
+      case WinklerEventKind::WZero:
         g = z[kW];
         break;
-      case EventKind::SlideReversal:
-      case EventKind::SlideToContact:
+      case WinklerEventKind::SlideReversal:
+      case WinklerEventKind::SlideToContact:
         g = z[kVX] + corner_arms(p.r, z[kW], e.from.side).B * z[kVW];
         break;
-      case EventKind::ContactToSlide:
+      case WinklerEventKind::ContactToSlide:
         g = m.forces(e.t, e.from, z).margin;
         break;
       default:
@@ -110,24 +110,24 @@ struct EventResiduals : SimulationSink {
 }  // namespace
 
 TEST(Events, EventFunctionsVanishAtEventStates) {
-  for (const BlockParams& p : {BlockParams{0.3, 0.2, 1e5}, BlockParams{0.5, 0.2, 1e4}}) {
+  for (const WinklerParams& p : {WinklerParams{0.3, 0.2, 1e5}, WinklerParams{0.5, 0.2, 1e4}}) {
     EventResiduals s;
-    const SimulationResult r = simulate(p, {}, ic1(p), sim_options(10.0, 1e-10), &s);
+    const WinklerResult r = simulate(p, {}, ic1(p), sim_options(10.0, 1e-10), &s);
     ASSERT_EQ(r.status, SimStatus::TEnd);
     EXPECT_LE(s.skipped, 2);
     const std::string tag = p.r == 0.3 ? "r03_" : "r05_";
     for (const auto& [k, v] : s.worst) record((tag + to_string(k)).c_str(), v);
-    for (EventKind k : {EventKind::Takeoff, EventKind::Landing, EventKind::WZero, EventKind::SlideToContact,
-                        EventKind::ContactToSlide})
+    for (WinklerEventKind k : {WinklerEventKind::Takeoff, WinklerEventKind::Landing, WinklerEventKind::WZero,
+                               WinklerEventKind::SlideToContact, WinklerEventKind::ContactToSlide})
       EXPECT_GT(s.count[k], 3) << to_string(k) << " r = " << p.r;
     // Lowest-corner height in units of the static sink 1/k; v_P and the friction margin in
     // units of the block's own velocity and weight; w in radians.
-    EXPECT_LT(s.worst[EventKind::Takeoff], 1e-8);
-    EXPECT_LT(s.worst[EventKind::Landing], 1e-8);
-    EXPECT_LT(s.worst[EventKind::WZero], 1e-13);
-    EXPECT_LT(s.worst[EventKind::SlideToContact], 1e-9);
-    EXPECT_LT(s.worst[EventKind::SlideReversal], 1e-9);
-    EXPECT_LT(s.worst[EventKind::ContactToSlide], 1e-9);
+    EXPECT_LT(s.worst[WinklerEventKind::Takeoff], 1e-8);
+    EXPECT_LT(s.worst[WinklerEventKind::Landing], 1e-8);
+    EXPECT_LT(s.worst[WinklerEventKind::WZero], 1e-13);
+    EXPECT_LT(s.worst[WinklerEventKind::SlideToContact], 1e-9);
+    EXPECT_LT(s.worst[WinklerEventKind::SlideReversal], 1e-9);
+    EXPECT_LT(s.worst[WinklerEventKind::ContactToSlide], 1e-9);
   }
 }
 
@@ -151,8 +151,8 @@ struct Flight {
   }
 };
 
-BlockStateVec flight_state(const Flight& f) {
-  BlockStateVec z{};
+WinklerState flight_state(const Flight& f) {
+  WinklerState z{};
   z[kH] = f.h0;
   z[kW] = f.w0;
   z[kVW] = f.om;
@@ -164,7 +164,7 @@ BlockStateVec flight_state(const Flight& f) {
 TEST(Events, WZeroJustBeforeLandingBothFound) {
   // Tilted block falling while it rotates back through upright: w = 0 is reached 1e-7 before
   // the corner would land upright; the new lowest corner (w < 0) lands some 1e-7 later.
-  const BlockParams p{0.5, 0.2, 1e5};
+  const WinklerParams p{0.5, 0.2, 1e5};
   Flight f{p.r, 1e-3, 0.0, -0.05};
   const double t_upright = std::sqrt(2 * f.h0);
   f.w0 = -f.om * (t_upright - 1e-7);
@@ -173,22 +173,22 @@ TEST(Events, WZeroJustBeforeLandingBothFound) {
   ASSERT_GT(tl - tc, 1e-8);
   ASSERT_LT(tl - tc, 1e-6);
   for (double rtol : {1e-6, 1e-10}) {
-    const SimulationResult r = simulate(p, {}, flight_state(f), sim_options(0.1, rtol));
+    const WinklerResult r = simulate(p, {}, flight_state(f), sim_options(0.1, rtol));
     ASSERT_GE(r.events.size(), 2u);
-    EXPECT_EQ(r.events[0].kind, EventKind::WZero);
-    EXPECT_EQ(r.events[1].kind, EventKind::Landing);
+    EXPECT_EQ(r.events[0].kind, WinklerEventKind::WZero);
+    EXPECT_EQ(r.events[1].kind, WinklerEventKind::Landing);
     EXPECT_EQ(r.events[1].from.side, -1);
     // Flight is integrated exactly (polynomial); the times are as good as the root finder.
     EXPECT_NEAR(r.events[0].t, tc, 1e-14);
     EXPECT_NEAR(r.events[1].t, tl, 1e-13);
-    EXPECT_EQ(r.ihor, 1);
+    EXPECT_EQ(r.upright_passages, 1);
   }
 }
 
 TEST(Events, LandingJustBeforeWZeroBothFound) {
   // The same fall, with the tilt reaching zero 2e-7 after the corner lands: the landing comes
   // first; the springs barely act in 2e-7 (depth ~1e-9), so w = 0 stays at -w0/om.
-  const BlockParams p{0.5, 0.2, 1e5};
+  const WinklerParams p{0.5, 0.2, 1e5};
   Flight f{p.r, 1e-3, 0.0, -0.05};
   // Choose w0 so that the tilt vanishes 2e-7 after the landing (bisection on w0).
   auto gap = [&](double w0) {
@@ -200,11 +200,11 @@ TEST(Events, LandingJustBeforeWZeroBothFound) {
   const double tl = f.landing(0.0), tc = f.w_zero();
   ASSERT_NEAR(tc - tl, 2e-7, 1e-12);
   for (double rtol : {1e-6, 1e-10}) {
-    const SimulationResult r = simulate(p, {}, flight_state(f), sim_options(0.1, rtol));
+    const WinklerResult r = simulate(p, {}, flight_state(f), sim_options(0.1, rtol));
     ASSERT_GE(r.events.size(), 2u);
-    EXPECT_EQ(r.events[0].kind, EventKind::Landing);
+    EXPECT_EQ(r.events[0].kind, WinklerEventKind::Landing);
     EXPECT_EQ(r.events[0].from.side, +1);
-    EXPECT_EQ(r.events[1].kind, EventKind::WZero);
+    EXPECT_EQ(r.events[1].kind, WinklerEventKind::WZero);
     EXPECT_NEAR(r.events[0].t, tl, 1e-13);
     EXPECT_NEAR(r.events[1].t, tc, 1e-12);
   }
@@ -214,14 +214,14 @@ TEST(Events, BriefFlightsBetweenSamplesAreNotSkipped) {
   // Upright block released from rest with compression (1 + beta)/k: it flies only if beta > 1,
   // for 2 v = 2 sqrt((beta^2 - 1)/k), rising (beta^2 - 1)/(2k) above the surface. For beta close
   // to 1 the flights are far shorter than the integration steps (~1e-4).
-  const BlockParams p{0.5, 0.0, 1e5};
+  const WinklerParams p{0.5, 0.0, 1e5};
   const double om = std::sqrt(p.k);
   for (double eps : {1e-2, 1e-4, 1e-6}) {
     const double beta = 1 + eps;
     const double phi = std::acos(-1 / beta);  // take-off phase
     const double v = std::sqrt(beta * beta - 1) / om;
     const double T = 2 * phi / om + 2 * v;
-    const SimulationResult r = simulate(p, {}, upright_at_rest(-(1 + beta) / p.k), sim_options(0.2, 1e-10));
+    const WinklerResult r = simulate(p, {}, upright_at_rest(-(1 + beta) / p.k), sim_options(0.2, 1e-10));
     std::vector<double> expect;
     for (int n = 0; phi / om + n * T < 0.2; ++n) {
       expect.push_back(phi / om + n * T);
@@ -229,7 +229,7 @@ TEST(Events, BriefFlightsBetweenSamplesAreNotSkipped) {
     }
     ASSERT_EQ(r.events.size(), expect.size()) << "eps = " << eps;
     for (std::size_t i = 0; i < expect.size(); ++i) {
-      EXPECT_EQ(r.events[i].kind, i % 2 == 0 ? EventKind::Takeoff : EventKind::Landing);
+      EXPECT_EQ(r.events[i].kind, i % 2 == 0 ? WinklerEventKind::Takeoff : WinklerEventKind::Landing);
       // Near the threshold the crossings are ill-conditioned: an amplitude error dh shifts them
       // by dh / v. Allow dh = 2 rtol (2/k) per period elapsed (the amplitude is 2/k).
       const double dh = 2 * 1e-10 * (2 / p.k) * double(i / 2 + 1);
@@ -247,11 +247,11 @@ TEST(Events, BriefFlightsBetweenSamplesAreNotSkipped) {
 // force continued past take-offs turned these switches into dips of the friction margin that
 // the scan missed.
 TEST(Events, StickSlipJustBeforeTakeoffAtEveryTolerance) {
-  const BlockParams p{0.2, 0.2, 1e6};
-  const SimulationResult a = simulate(p, {}, ic1(p), sim_options(4.0, 1e-10));
-  const SimulationResult b = simulate(p, {}, ic1(p), sim_options(4.0, 1e-12));
+  const WinklerParams p{0.2, 0.2, 1e6};
+  const WinklerResult a = simulate(p, {}, ic1(p), sim_options(4.0, 1e-10));
+  const WinklerResult b = simulate(p, {}, ic1(p), sim_options(4.0, 1e-12));
   ASSERT_EQ(a.events.size(), b.events.size());
-  EXPECT_GT(a.event_counts[int(EventKind::ContactToSlide)], 10);
+  EXPECT_GT(a.event_counts[int(WinklerEventKind::ContactToSlide)], 10);
   for (std::size_t i = 0; i < a.events.size(); ++i) {
     ASSERT_EQ(a.events[i].kind, b.events[i].kind) << i << " t = " << b.events[i].t;
     EXPECT_NEAR(a.events[i].t, b.events[i].t, 1e-6) << i;
@@ -269,17 +269,18 @@ TEST(Events, FusedCompleteAndEventsEqualsTheTwoCalls) {
   shaken.horizontal.frequency = 1.5;
   int compared = 0;
   for (const GroundMotion& g : {GroundMotion{}, shaken}) {
-    const BlockParams p{0.4, 0.3, 1e5};
+    const WinklerParams p{0.4, 0.3, 1e5};
     const WinklerBlock block(p, g);
     for (int n = 0; n < 200; ++n) {
       const int side = U(rng) < 0.0 ? -1 : 1;
-      BlockStateVec z{0.1 * U(rng), 2e-5 * U(rng), side * 0.3 * std::fabs(U(rng)),
-                      0.1 * U(rng), 1e-2 * U(rng), 0.2 * U(rng),
-                      0.0,          0.0,           0.0};
-      for (const BlockMode m : {BlockMode{Regime::Contact, side, 0, 0.05 * U(rng)},
-                                BlockMode{Regime::Slide, side, 1, 0.0}, BlockMode{Regime::Flight, side, 0, 0.0}}) {
+      WinklerState z{0.1 * U(rng), 2e-5 * U(rng), side * 0.3 * std::fabs(U(rng)),
+                     0.1 * U(rng), 1e-2 * U(rng), 0.2 * U(rng),
+                     0.0,          0.0,           0.0};
+      for (const WinklerMode m :
+           {WinklerMode{Regime::Contact, side, 0, 0.05 * U(rng)}, WinklerMode{Regime::Slide, side, 1, 0.0},
+            WinklerMode{Regime::Flight, side, 0, 0.0}}) {
         const double t = 2.0 * std::fabs(U(rng));
-        BlockStateVec a = z, b = z;
+        WinklerState a = z, b = z;
         std::array<double, WinklerBlock::kNumEvents> ga{}, gb{};
         block.complete(m, a);
         block.events(t, m, a, ga);
@@ -299,24 +300,24 @@ TEST(Events, FusedCompleteAndEventsEqualsTheTwoCalls) {
 // step holds that, within step_hint(); a falling corner, contact, slide and a shaken block keep
 // the step they are given.
 TEST(Events, FirstFlightStepHoldsThePredictedFlight) {
-  const BlockParams p{0.5, 0.2, 1e6};
+  const WinklerParams p{0.5, 0.2, 1e6};
   GroundMotion shaken;
   shaken.horizontal.amplitude = 0.1;
   shaken.horizontal.frequency = 2.0;
   const WinklerBlock block(p), shaken_block(p, shaken);
   const double v = 1e-3, h_in = 1e-7;
-  const BlockMode flight{Regime::Flight, 1, 0, 0.0};
-  BlockStateVec z{0.0, 0.0, 0.0, 0.0, v, 0.0, 0.0, 0.0, 0.0};  // h = 0: the base on the surface
-  BlockStateVec dz;
+  const WinklerMode flight{Regime::Flight, 1, 0, 0.0};
+  WinklerState z{0.0, 0.0, 0.0, 0.0, v, 0.0, 0.0, 0.0, 0.0};  // h = 0: the base on the surface
+  WinklerState dz;
   block.rhs(0.0, flight, z, dz);
   const double h = block.restart_step(0.0, flight, z, dz, h_in);
   EXPECT_GE(h, 2.0 * v);
   EXPECT_LE(h, 1.5 * 2.0 * v);
   EXPECT_LE(h, block.step_hint(flight));
   EXPECT_EQ(shaken_block.restart_step(0.0, flight, z, dz, h_in), h_in);
-  for (const BlockMode m : {BlockMode{Regime::Contact, 1, 0, 0.0}, BlockMode{Regime::Slide, 1, 1, 0.0}})
+  for (const WinklerMode m : {WinklerMode{Regime::Contact, 1, 0, 0.0}, WinklerMode{Regime::Slide, 1, 1, 0.0}})
     EXPECT_EQ(block.restart_step(0.0, m, z, dz, h_in), h_in);
-  BlockStateVec falling = z;
+  WinklerState falling = z;
   falling[kVY] = -v;
   block.rhs(0.0, flight, falling, dz);
   EXPECT_EQ(block.restart_step(0.0, flight, falling, dz, h_in), h_in);
@@ -325,13 +326,13 @@ TEST(Events, FirstFlightStepHoldsThePredictedFlight) {
   // step_hint() caps the first step).
   for (const double vy : {v, 0.2}) {
     z[kVY] = vy;
-    SimulationOptions o;
+    WinklerRunOptions o;
     o.t_end = 3.0 * vy;
-    const SimulationResult r = simulate(p, {}, z, o);
+    const WinklerResult r = simulate(p, {}, z, o);
     ASSERT_GE(r.events.size(), 2u);
-    EXPECT_EQ(r.events[0].kind, EventKind::Takeoff);
+    EXPECT_EQ(r.events[0].kind, WinklerEventKind::Takeoff);
     EXPECT_EQ(r.events[0].t, 0.0);
-    EXPECT_EQ(r.events[1].kind, EventKind::Landing);
+    EXPECT_EQ(r.events[1].kind, WinklerEventKind::Landing);
     EXPECT_NEAR(r.events[1].t, 2.0 * vy, 1e-15 + 1e-13 * vy);
   }
 }
@@ -341,17 +342,17 @@ namespace {
 // The first time a corner height (pick) changes sign along the trajectory from z in mode m,
 // by fixed-step RK4 of the model's right-hand side (dt, linear interpolation in the last step);
 // infinity if it does not before t_max.
-double first_corner_crossing(const WinklerBlock& block, const BlockMode& m, BlockStateVec z, double dt, double t_max,
+double first_corner_crossing(const WinklerBlock& block, const WinklerMode& m, WinklerState z, double dt, double t_max,
                              double (*pick)(const CornerHeights&)) {
-  auto f = [&](const BlockStateVec& y, BlockStateVec& dy) {
-    BlockStateVec yc = y;
+  auto f = [&](const WinklerState& y, WinklerState& dy) {
+    WinklerState yc = y;
     block.complete(m, yc);
     block.rhs(0.0, m, yc, dy);
   };
   const double r = block.params().r;
   double g0 = pick(corner_heights(r, z[kH], z[kW]));
   for (double t = 0.0; t < t_max; t += dt) {
-    BlockStateVec k1, k2, k3, k4, y;
+    WinklerState k1, k2, k3, k4, y;
     f(z, k1);
     for (std::size_t i = 0; i < kStateDim; ++i) y[i] = z[i] + 0.5 * dt * k1[i];
     f(y, k2);
@@ -381,28 +382,28 @@ double lowest_corner(const CornerHeights& c) { return c.lowest; }
 // (the integrator then only approaches it). None when the block is upright (both corners meet
 // the surface together) or in flight.
 TEST(Events, KinkAheadPredictsCornerCrossings) {
-  const BlockParams p{1.0, 0.2, 1e7};
+  const WinklerParams p{1.0, 0.2, 1e7};
   const WinklerBlock block(p);
-  const double w = 2e-10, vy = -2e-4, hint = block.step_hint(BlockMode{Regime::Contact, 1, 0, 0.0});
-  for (const BlockMode m : {BlockMode{Regime::Slide, 1, 1, 0.0}, BlockMode{Regime::Contact, 1, 0, 0.0}}) {
+  const double w = 2e-10, vy = -2e-4, hint = block.step_hint(WinklerMode{Regime::Contact, 1, 0, 0.0});
+  for (const WinklerMode m : {WinklerMode{Regime::Slide, 1, 1, 0.0}, WinklerMode{Regime::Contact, 1, 0, 0.0}}) {
     // The lowest corner (side +1, w > 0) at the surface, falling: the far one r sin w above it.
-    BlockStateVec z{0.0, 0.5 * (p.r * std::sin(w) - (1.0 - std::cos(w))), w, 0.0, vy, 0.0, 0.0, 0.0, 0.0};
+    WinklerState z{0.0, 0.5 * (p.r * std::sin(w) - (1.0 - std::cos(w))), w, 0.0, vy, 0.0, 0.0, 0.0, 0.0};
     block.complete(m, z);
-    BlockStateVec dz;
+    WinklerState dz;
     block.rhs(0.0, m, z, dz);
     const double far = first_corner_crossing(block, m, z, 1e-9, 1e-4, far_corner);
     ASSERT_LT(far, 0.1 * hint);
     EXPECT_NEAR(block.kink_ahead(0.0, m, z, dz), far, 1e-5 * far);
     // Tilted by 1e-4 (the far corner 1e-4 up), the lowest corner 1e-9 deep and rising: the take-off.
     const double wu = 1e-4;
-    BlockStateVec up{0.0, 0.5 * (p.r * std::sin(wu) - (1.0 - std::cos(wu))) - 1e-9, wu, 0.0, -vy, 0.0, 0.0, 0.0, 0.0};
+    WinklerState up{0.0, 0.5 * (p.r * std::sin(wu) - (1.0 - std::cos(wu))) - 1e-9, wu, 0.0, -vy, 0.0, 0.0, 0.0, 0.0};
     block.complete(m, up);
     block.rhs(0.0, m, up, dz);
     const double lift = first_corner_crossing(block, m, up, 1e-9, 1e-4, lowest_corner);
     ASSERT_LT(lift, 0.1 * hint);
     EXPECT_NEAR(block.kink_ahead(0.0, m, up, dz), lift, 1e-5 * lift);
     // Far corner 5e-4 up: reached in several step_hints.
-    BlockStateVec far_above = z;
+    WinklerState far_above = z;
     far_above[kW] = 1e-3;
     block.complete(m, far_above);
     block.rhs(0.0, m, far_above, dz);
@@ -413,22 +414,22 @@ TEST(Events, KinkAheadPredictsCornerCrossings) {
     // the surface (crossing now, where the last step ended), the lowest 3e-12 below. That kink is
     // too close to step to; the take-off 3e-8 later must still be reported.
     const double wb = 3e-12, hb = -1e-17 - 0.5 * (p.r * std::sin(wb) + (1.0 - std::cos(wb)));
-    BlockStateVec bounce{0.0, hb, wb, 0.0, 1e-4, 0.0, 0.0, 0.0, 0.0};
+    WinklerState bounce{0.0, hb, wb, 0.0, 1e-4, 0.0, 0.0, 0.0, 0.0};
     block.complete(m, bounce);
     block.rhs(0.0, m, bounce, dz);
     const double bounce_lift = first_corner_crossing(block, m, bounce, 1e-10, 1e-6, lowest_corner);
     ASSERT_GT(bounce_lift, 1e-8);
     ASSERT_LT(bounce_lift, 1e-7);
     EXPECT_NEAR(block.kink_ahead(0.0, m, bounce, dz), bounce_lift, 1e-5 * bounce_lift);
-    BlockStateVec upright = z;
+    WinklerState upright = z;
     upright[kW] = 0.0;
     upright[kH] = 0.0;
     block.complete(m, upright);
     block.rhs(0.0, m, upright, dz);
     EXPECT_EQ(block.kink_ahead(0.0, m, upright, dz), INFINITY);
   }
-  BlockStateVec z{0.0, 1e-6, 0.0, 0.0, 1e-3, 0.0, 0.0, 0.0, 0.0}, dz;
-  const BlockMode flight{Regime::Flight, 1, 0, 0.0};
+  WinklerState z{0.0, 1e-6, 0.0, 0.0, 1e-3, 0.0, 0.0, 0.0, 0.0}, dz;
+  const WinklerMode flight{Regime::Flight, 1, 0, 0.0};
   block.rhs(0.0, flight, z, dz);
   EXPECT_EQ(block.kink_ahead(0.0, flight, z, dz), INFINITY);
 }
@@ -438,8 +439,8 @@ TEST(Events, KinkAheadPredictsCornerCrossings) {
 // and shrinking after the rejections, it had 3,275 rejected steps for 6,115 accepted (54 %);
 // stepping onto them, 226 for 5,147 (4 %).
 TEST(Events, StepsEndAtKinksInsteadOfBeingRejectedAcrossThem) {
-  const BlockParams p{0.5, 0.2, 1e6};
-  const SimulationResult r = simulate(p, {}, ic2(p), sim_options(5.0));
+  const WinklerParams p{0.5, 0.2, 1e6};
+  const WinklerResult r = simulate(p, {}, ic2(p), sim_options(5.0));
   ASSERT_EQ(r.status, SimStatus::TEnd);
   long events = 0;
   for (const long n : r.event_counts) events += n;
@@ -454,16 +455,16 @@ TEST(Events, StepsEndAtKinksInsteadOfBeingRejectedAcrossThem) {
 // rejected steps per bounce: 6,989 rejected for 37,325 accepted in t = 1 (1,463 take-offs); with
 // the second kink announced, 2 for 36,839.
 TEST(Events, BouncingBlockStepsOntoBothKinksOfATakeoff) {
-  const BlockParams p{1.0, 0.2, 1e8};
-  BlockStateVec z{};
+  const WinklerParams p{1.0, 0.2, 1e8};
+  WinklerState z{};
   z[kH] = -1.0 / p.k;
   z[kW] = 3e-12;
   z[kVY] = 1.5e-4;  // a vertical amplitude 1.5 times the rest depth 1/k: it takes off
-  const SimulationResult r = simulate(p, {}, z, sim_options(1.0));
+  const WinklerResult r = simulate(p, {}, z, sim_options(1.0));
   ASSERT_EQ(r.status, SimStatus::TEnd);
-  RecordProperty("takeoffs", std::to_string(r.event_counts[std::size_t(EventKind::Takeoff)]));
+  RecordProperty("takeoffs", std::to_string(r.event_counts[std::size_t(WinklerEventKind::Takeoff)]));
   RecordProperty("accepted", std::to_string(r.stats.accepted));
   RecordProperty("rejected", std::to_string(r.stats.rejected));
-  ASSERT_GT(r.event_counts[std::size_t(EventKind::Takeoff)], 1000);
+  ASSERT_GT(r.event_counts[std::size_t(WinklerEventKind::Takeoff)], 1000);
   EXPECT_LT(r.stats.rejected, r.stats.accepted / 50);
 }

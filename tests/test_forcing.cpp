@@ -18,7 +18,7 @@
 #include <cmath>
 #include <functional>
 
-#include "blockdyn/simulation/simulate.hpp"
+#include "blockdyn/simulation/winkler_simulation.hpp"
 
 #include "test_support.hpp"
 
@@ -41,27 +41,27 @@ GroundMotion vertical_ground(double av) {
 }
 
 // Calls a check on the completed state at a few points of every accepted piece of trajectory.
-struct Probe : SimulationSink {
-  std::function<void(double, const BlockMode&, const BlockStateVec&, const BlockForces&)> check;
+struct Probe : WinklerSink {
+  std::function<void(double, const WinklerMode&, const WinklerState&, const BlockForces&)> check;
   void on_segment(const WinklerBlock& m, const DenseSegment<kStateDim>& seg, double t0, double t1,
-                  const BlockMode& mode) override {
+                  const WinklerMode& mode) override {
     sample_segment(m, seg, t0, t1, mode, 1, 8,
-                   [&](double t, const BlockStateVec& z) { check(t, mode, z, m.forces(t, mode, z)); });
+                   [&](double t, const WinklerState& z) { check(t, mode, z, m.forces(t, mode, z)); });
   }
 };
 
 }  // namespace
 
 TEST(Forcing, HorizontalBelowFrictionSticks) {
-  const BlockParams p{0.5, 0.3, 1e5};
+  const WinklerParams p{0.5, 0.3, 1e5};
   const double a = 0.1;
   const GroundMotion g = horizontal_ground(a);
-  const SimulationOptions o = sim_options(1.0);
+  const WinklerRunOptions o = sim_options(1.0);
   const double rear_corner_x0 = -p.r / 2;
   double w_min = 1, w_max = -1, corner_drift = 0, min_margin = 1;
   bool always_contact = true;
   Probe probe;
-  probe.check = [&](double, const BlockMode& mode, const BlockStateVec& z, const BlockForces& f) {
+  probe.check = [&](double, const WinklerMode& mode, const WinklerState& z, const BlockForces& f) {
     always_contact &= mode.regime == Regime::Contact && mode.side == 1;
     w_min = std::fmin(w_min, z[kW]);
     w_max = std::fmax(w_max, z[kW]);
@@ -69,12 +69,12 @@ TEST(Forcing, HorizontalBelowFrictionSticks) {
     corner_drift = std::fmax(corner_drift, std::fabs(corner_x - rear_corner_x0));
     min_margin = std::fmin(min_margin, f.margin);
   };
-  const SimulationResult r = simulate(p, g, upright_at_rest(-1.0 / p.k), o, &probe);
+  const WinklerResult r = simulate(p, g, upright_at_rest(-1.0 / p.k), o, &probe);
   ASSERT_EQ(r.status, SimStatus::TEnd);
   EXPECT_EQ(r.initial_mode.regime, Regime::Contact);
-  EXPECT_EQ(r.event_counts[int(EventKind::ContactToSlide)], 0);
-  EXPECT_EQ(r.event_counts[int(EventKind::SlideToContact)], 0);
-  EXPECT_EQ(r.event_counts[int(EventKind::SlideReversal)], 0);
+  EXPECT_EQ(r.event_counts[int(WinklerEventKind::ContactToSlide)], 0);
+  EXPECT_EQ(r.event_counts[int(WinklerEventKind::SlideToContact)], 0);
+  EXPECT_EQ(r.event_counts[int(WinklerEventKind::SlideReversal)], 0);
   EXPECT_TRUE(always_contact);
   EXPECT_GT(min_margin, 0.0);
   EXPECT_LT(corner_drift, 1e-12);  // the base corner stays where it was: no sliding
@@ -86,27 +86,27 @@ TEST(Forcing, HorizontalBelowFrictionSticks) {
 }
 
 TEST(Forcing, HorizontalAboveFrictionSlides) {
-  const BlockParams p{0.5, 0.3, 1e5};
+  const WinklerParams p{0.5, 0.3, 1e5};
   const double a = 0.5;
   const GroundMotion g = horizontal_ground(a);
-  const SimulationOptions o = sim_options(1.0);
+  const WinklerRunOptions o = sim_options(1.0);
   // Find the onset of sliding first, then check the identity from that state on.
-  const SimulationResult r = simulate(p, g, upright_at_rest(-1.0 / p.k), o);
+  const WinklerResult r = simulate(p, g, upright_at_rest(-1.0 / p.k), o);
   ASSERT_EQ(r.status, SimStatus::TEnd);
   ASSERT_GE(r.events.size(), 1u);
-  const EventRecord& s = r.events.front();
-  ASSERT_EQ(s.kind, EventKind::ContactToSlide);
+  const WinklerEventRecord& s = r.events.front();
+  ASSERT_EQ(s.kind, WinklerEventKind::ContactToSlide);
   EXPECT_LT(s.t, 0.05);  // the springs take up the overturning moment within a few periods
   EXPECT_EQ(s.to.friction_sign, +1);
-  for (const EventRecord& e : r.events) {  // slides backwards all the time, never stops
-    EXPECT_NE(e.kind, EventKind::SlideToContact);
-    EXPECT_NE(e.kind, EventKind::SlideReversal);
+  for (const WinklerEventRecord& e : r.events) {  // slides backwards all the time, never stops
+    EXPECT_NE(e.kind, WinklerEventKind::SlideToContact);
+    EXPECT_NE(e.kind, WinklerEventKind::SlideReversal);
   }
   const double c0 = s.z[kX] - p.mu * s.z[kH], c1 = s.z[kVX] - p.mu * s.z[kVY];
   double worst = 0, max_dvy = 0;
   bool sliding = true;
   Probe probe;
-  probe.check = [&](double t, const BlockMode& mode, const BlockStateVec& z, const BlockForces&) {
+  probe.check = [&](double t, const WinklerMode& mode, const WinklerState& z, const BlockForces&) {
     if (t <= s.t) return;
     sliding &= mode.regime == Regime::Slide && mode.friction_sign == 1;
     const double tau = t - s.t;
@@ -114,7 +114,7 @@ TEST(Forcing, HorizontalAboveFrictionSlides) {
     worst = std::fmax(worst, std::fabs(z[kX] - p.mu * z[kH] - exact));
     max_dvy = std::fmax(max_dvy, std::fabs(z[kVY] - s.z[kVY]));
   };
-  const SimulationResult r2 = simulate(p, g, upright_at_rest(-1.0 / p.k), o, &probe);
+  const WinklerResult r2 = simulate(p, g, upright_at_rest(-1.0 / p.k), o, &probe);
   EXPECT_TRUE(sliding);
   EXPECT_LT(worst, 1e-10);
   // Averaged over the slide, Ry = 1 + (change of y') / duration: the relative acceleration is
@@ -127,15 +127,15 @@ TEST(Forcing, HorizontalAboveFrictionSlides) {
 }
 
 TEST(Forcing, VerticalShiftsStaticSink) {
-  const BlockParams p{0.5, 0.2, 1e5};
+  const WinklerParams p{0.5, 0.2, 1e5};
   const double av = 0.2;
   const GroundMotion g = vertical_ground(av);
-  const SimulationOptions o = sim_options(0.5);
+  const WinklerRunOptions o = sim_options(0.5);
   const double om = std::sqrt(p.k);
   // At the new static sink nothing moves (to the tolerance: with nothing to resolve the steps
   // grow until error control alone keeps rounding-level disturbances at rtol).
   {
-    const SimulationResult r = simulate(p, g, upright_at_rest(-(1 + av) / p.k), o);
+    const WinklerResult r = simulate(p, g, upright_at_rest(-(1 + av) / p.k), o);
     EXPECT_TRUE(r.events.empty());
     const double rtol = o.integrator.rtol, hs = (1 + av) / p.k;
     EXPECT_NEAR(r.final_state[kH], -hs, 10 * rtol * hs);
@@ -145,17 +145,17 @@ TEST(Forcing, VerticalShiftsStaticSink) {
   // Released from the unloaded sink: h = -(1 + av)/k + (av/k) cos(omega t), 25 periods.
   double errs[2];
   for (int i = 0; i < 2; ++i) {
-    SimulationOptions oi = o;
+    WinklerRunOptions oi = o;
     oi.integrator.rtol = i == 0 ? 1e-10 : 1e-12;
     oi.integrator.atol = oi.integrator.rtol * 1e-2;
     double worst = 0;
     bool upright = true;
     Probe probe;
-    probe.check = [&](double t, const BlockMode&, const BlockStateVec& z, const BlockForces&) {
+    probe.check = [&](double t, const WinklerMode&, const WinklerState& z, const BlockForces&) {
       worst = std::fmax(worst, std::fabs(z[kH] - (-(1 + av) / p.k + av / p.k * std::cos(om * t))));
       upright &= z[kW] == 0.0 && z[kX] == 0.0;
     };
-    const SimulationResult r = simulate(p, g, upright_at_rest(-1.0 / p.k), oi, &probe);
+    const WinklerResult r = simulate(p, g, upright_at_rest(-1.0 / p.k), oi, &probe);
     EXPECT_TRUE(r.events.empty());
     EXPECT_TRUE(upright);
     EXPECT_LT(worst, 1e3 * oi.integrator.rtol * av / p.k);
@@ -168,12 +168,12 @@ TEST(Forcing, VerticalShiftsStaticSink) {
 TEST(Forcing, VerticalPulseWithBreakpoints) {
   // a_v = 0.2 only on [t1, t1 + d): static before, harmonic about the loaded sink during, and a
   // free oscillation about the unloaded sink after, continuing from the state at the end.
-  const BlockParams p{0.5, 0.0, 1e5};
+  const WinklerParams p{0.5, 0.0, 1e5};
   const double av = 0.2, t1 = 0.013, d = 0.0071;
   GroundMotion g = vertical_ground(av);
   g.vertical.t_start = t1;
   g.vertical.duration = d;
-  const SimulationOptions o = sim_options(0.05);
+  const WinklerRunOptions o = sim_options(0.05);
   const double om = std::sqrt(p.k);
   auto exact = [&](double t) {
     if (t < t1) return -1.0 / p.k;
@@ -183,12 +183,12 @@ TEST(Forcing, VerticalPulseWithBreakpoints) {
   };
   double worst = 0;
   Probe probe;
-  probe.check = [&](double t, const BlockMode&, const BlockStateVec& z, const BlockForces&) {
+  probe.check = [&](double t, const WinklerMode&, const WinklerState& z, const BlockForces&) {
     worst = std::fmax(worst, std::fabs(z[kH] - exact(t)));
   };
-  const SimulationResult r = simulate(p, g, upright_at_rest(-1.0 / p.k), o, &probe);
+  const WinklerResult r = simulate(p, g, upright_at_rest(-1.0 / p.k), o, &probe);
   ASSERT_EQ(r.status, SimStatus::TEnd);
-  EXPECT_EQ(r.event_counts[int(EventKind::Takeoff)], 0);
+  EXPECT_EQ(r.event_counts[int(WinklerEventKind::Takeoff)], 0);
   EXPECT_LT(worst, 1e-8 * av / p.k);
   // The ground's work: it acts only during the pulse, and closes the energy balance.
   EXPECT_NE(r.work_ground(), 0.0);

@@ -229,7 +229,7 @@ TEST(Geometry, OneCornerClosedFormAndSpringEnergy) {
     EXPECT_NEAR(d, q.d, 1e-12);
     const RegionIntegrals c = region_integrals(q.r, q.h, q.w);
     EXPECT_NEAR(c.area, d * d / (2 * sc), 1e-12 * c.area);
-    const BlockParams p{q.r, 0.0, 1e4};
+    const WinklerParams p{q.r, 0.0, 1e4};
     EXPECT_NEAR(spring_energy(p, q.h, q.w), p.k * d * d * d / (6 * q.r * sc), 1e-12 * spring_energy(p, q.h, q.w));
   }
 }
@@ -288,7 +288,7 @@ double derivative(F&& f, double x, double step) {
 
 TEST(Geometry, VerticalReactionIsMinusEnergyGradient) {
   for (const Pose& q : random_poses(400, 11u)) {
-    const BlockParams p{q.r, 0.0, 1.0};
+    const WinklerParams p{q.r, 0.0, 1.0};
     const FoundationForce f = foundation_force(p, q.h, q.w);
     const Gaps g = gaps(q.r, std::fabs(q.w));
     const double step = 1e-3 * std::min({q.d, std::fabs(q.d - g.other_bottom), std::fabs(q.d - g.upper_pivot)});
@@ -302,7 +302,7 @@ TEST(Geometry, NonPotentialTorqueIsTorquePlusEnergyGradient) {
   // non-zero with two (the Region ends in a vertical wall), with dV/dw from finite differences.
   int two_nonzero = 0;
   for (const Pose& q : random_poses(600, 13u)) {
-    const BlockParams p{q.r, 0.0, 1.0};
+    const WinklerParams p{q.r, 0.0, 1.0};
     const FoundationForce f = foundation_force(p, q.h, q.w);
     const double torque_nonpot = f.torque_nonpot(q.w > 0.0 ? 1 : -1);  // the lowest corner's side
     // Step limited so that no corner crosses the surface within the stencil.

@@ -2,7 +2,7 @@
 // Lemke's method (lemke.hpp) on the problems the contact solver gives it: positive definite,
 // positive semi-definite with redundant rows (a statically indeterminate assembly), and the
 // Anitescu-Potra form of 2D Coulomb friction; every solution checked for complementarity.
-#include "blockdyn/model/common/lemke.hpp"
+#include "blockdyn/numerics/lemke.hpp"
 
 #include <gtest/gtest.h>
 

@@ -104,7 +104,7 @@ LyapunovResult estimate(const M& m, const A& a, SideMode m0, Vec<M::kDim> z0, Ly
   return est.run(m0, z0);
 }
 
-LyapunovResult block(const BlockParams& p, const BlockStateVec& z0, double t_end,
+LyapunovResult block(const WinklerParams& p, const WinklerState& z0, double t_end,
                      LyapunovMethod method = LyapunovMethod::Time, double d0 = 1e-8) {
   LyapunovOptions o;
   o.t_end = t_end;
@@ -155,7 +155,7 @@ TEST(LyapunovToy, SwitchedSpiralGivesTheMeanGrowthRate) {
 }
 
 TEST(LyapunovBlock, RockToVerticalIsChaotic) {
-  const BlockParams p{0.1, 0.2, 1e6};
+  const WinklerParams p{0.1, 0.2, 1e6};
   const auto r = block(p, ic1(p), 100);
   EXPECT_EQ(r.status, LyapunovStatus::Completed);
   EXPECT_GT(r.exponent, 1.0);  // thesis: larger than 1
@@ -163,9 +163,9 @@ TEST(LyapunovBlock, RockToVerticalIsChaotic) {
 }
 
 TEST(LyapunovBlock, ZeroFrictionExponentsExceedTwoOrNearly) {
-  const BlockParams tall{0.1, 0.0, 1e6};                 // rock to vertical with mu = 0
+  const WinklerParams tall{0.1, 0.0, 1e6};               // rock to vertical with mu = 0
   EXPECT_GT(block(tall, ic1(tall), 100).exponent, 2.0);  // thesis: larger than 2 for mu = 0
-  const BlockParams wide{0.5, 0.0, 1e4};                 // zero-friction rock-flight
+  const WinklerParams wide{0.5, 0.0, 1e4};               // zero-friction rock-flight
   const auto t = block(wide, ic1(wide), 150);
   const auto s = block(wide, ic1(wide), 150, LyapunovMethod::Section);
   EXPECT_GT(t.exponent, 1.5);
@@ -173,11 +173,11 @@ TEST(LyapunovBlock, ZeroFrictionExponentsExceedTwoOrNearly) {
 }
 
 TEST(LyapunovBlock, SteadyRockingAndSettleDownAreNotChaotic) {
-  const BlockParams rock{0.5, 0.0, 100};
+  const WinklerParams rock{0.5, 0.0, 100};
   const auto a = block(rock, ic1(rock), 300);
   EXPECT_LT(std::fabs(tail_exponent(a, 150)), 0.01);
   EXPECT_LT(std::fabs(a.exponent), 0.03);
-  const BlockParams settle{0.5, 0.1, 1e5};
+  const WinklerParams settle{0.5, 0.1, 1e5};
   const auto b = block(settle, ic1(settle), 100);
   EXPECT_LT(std::fabs(tail_exponent(b, 50)), 0.05);  // after the transient the orbit is regular
 }
@@ -185,14 +185,14 @@ TEST(LyapunovBlock, SteadyRockingAndSettleDownAreNotChaotic) {
 TEST(LyapunovBlock, PairedIntegrationMakesTheEstimateIndependentOfD0) {
   // Integration errors common to both copies cancel; with independent integrations they would
   // bias a zero exponent upwards the more, the smaller d0.
-  const BlockParams p{0.5, 0.0, 100};
+  const WinklerParams p{0.5, 0.0, 100};
   const double e7 = block(p, ic1(p), 200, LyapunovMethod::Time, 1e-7).exponent;
   const double e10 = block(p, ic1(p), 200, LyapunovMethod::Time, 1e-10).exponent;
   EXPECT_NEAR(e7, e10, 1e-3);
 }
 
 TEST(LyapunovBlock, InvalidOptionsAreRejected) {
-  const BlockParams p{0.5, 0.0, 100};
+  const WinklerParams p{0.5, 0.0, 100};
   EXPECT_THROW(block(p, ic1(p), -1), std::invalid_argument);
   EXPECT_THROW(block(p, ic1(p), 10, LyapunovMethod::Time, 1.0), std::invalid_argument);
   EXPECT_EQ(lyapunov_cli("lyapunov --d0 1 --t-end 1"), 2);

@@ -23,13 +23,13 @@ namespace {
 
 struct Section {
   std::vector<PoincarePoint> pts;
-  SimulationResult res;
+  WinklerResult res;
 };
 
-Section section(const BlockParams& p, const BlockStateVec& z0, double t_end,
+Section section(const WinklerParams& p, const WinklerState& z0, double t_end,
                 CrossingDirection dir = CrossingDirection::Both) {
   PoincareCollector col(p, dir);
-  SimulationOptions o;
+  WinklerRunOptions o;
   o.t_end = t_end;
   o.record_events = false;
   Section s;
@@ -46,10 +46,10 @@ int poincare_cli(const std::string& args) {
 }  // namespace
 
 TEST(PoincareSection, PointsLieOnWZeroToRoundoff) {
-  const BlockParams p{0.5, 0.0, 1e4};  // zero-friction rock-flight: crossings in every regime
+  const WinklerParams p{0.5, 0.0, 1e4};  // zero-friction rock-flight: crossings in every regime
   const auto s = section(p, ic1(p), 100);
   ASSERT_GT(s.pts.size(), 100u);
-  EXPECT_EQ(long(s.pts.size()), s.res.ihor);  // ic1 starts tilted: every passage is a crossing
+  EXPECT_EQ(long(s.pts.size()), s.res.upright_passages);  // ic1 starts tilted: every passage is a crossing
   constexpr double eps = std::numeric_limits<double>::epsilon();
   bool saw_flight = false;
   for (const auto& q : s.pts) {
@@ -64,7 +64,7 @@ TEST(PoincareSection, PointsLieOnWZeroToRoundoff) {
 TEST(PoincareSection, ZeroFrictionPointsLieOnTheEnergySurface) {
   // mu = 0: E = E0 + W_nonpotential (the thesis's foundation torque is not exactly conservative
   // with two corners submerged) up to the integration error.
-  const BlockParams p{0.5, 0.0, 1e4};
+  const WinklerParams p{0.5, 0.0, 1e4};
   const auto s = section(p, ic1(p), 100);
   const double e0 = s.res.initial_energy.total();
   ASSERT_FALSE(s.pts.empty());
@@ -77,7 +77,7 @@ TEST(PoincareSection, ZeroFrictionPointsLieOnTheEnergySurface) {
 TEST(PoincareSection, PointsLieInsideTheProjectedEnergySurface) {
   // With friction the crossings stay inside E <= E0 (+ W_nonpotential): check the (y, y')
   // projection of eq. 5.1 at each crossing.
-  const BlockParams p{0.2, 0.3, 1e5};
+  const WinklerParams p{0.2, 0.3, 1e5};
   const auto s = section(p, ic1(p), 60);
   const double e0 = s.res.initial_energy.total();
   ASSERT_GT(s.pts.size(), 20u);
@@ -86,7 +86,7 @@ TEST(PoincareSection, PointsLieInsideTheProjectedEnergySurface) {
 }
 
 TEST(PoincareSection, DirectionFilterKeepsOneSide) {
-  const BlockParams p{0.5, 0.0, 1e4};
+  const WinklerParams p{0.5, 0.0, 1e4};
   const auto all = section(p, ic1(p), 50);
   const auto pos = section(p, ic1(p), 50, CrossingDirection::Positive);
   const auto neg = section(p, ic1(p), 50, CrossingDirection::Negative);
@@ -99,7 +99,8 @@ TEST(PoincareSection, DirectionFilterKeepsOneSide) {
 
 TEST(PoincareEnergySurface, NumericalHeaveMinimumMatchesTheThesisClosedForm) {
   // The (y, y') projection of the thesis uses min_w V(h, w) = V(h, 0); check it numerically.
-  for (const BlockParams p : {BlockParams{0.2, 0.3, 1e5}, BlockParams{0.5, 0.0, 1e4}, BlockParams{1.0, 0.1, 50}}) {
+  for (const WinklerParams p :
+       {WinklerParams{0.2, 0.3, 1e5}, WinklerParams{0.5, 0.0, 1e4}, WinklerParams{1.0, 0.1, 50}}) {
     for (double s : {-3.0, -1.0, -0.3, 0.0, 0.5, 2.0}) {
       const double h = s / p.k;
       const double num = heave_potential(p, h), cf = heave_potential_closed_form(p, h);
@@ -109,7 +110,7 @@ TEST(PoincareEnergySurface, NumericalHeaveMinimumMatchesTheThesisClosedForm) {
 }
 
 TEST(PoincareEnergySurface, RockPotentialIsTheMinimumOverHeight) {
-  const BlockParams p{0.2, 0.3, 1e5};
+  const WinklerParams p{0.2, 0.3, 1e5};
   for (double w : {0.0, 0.02, -0.05, 0.1}) {
     const double u = rock_potential(p, w);
     const double h = static_height(p, w, 1.0), dh = 1e-3 / p.k;
@@ -122,15 +123,15 @@ TEST(PoincareEnergySurface, RockPotentialIsTheMinimumOverHeight) {
 
 TEST(PoincareEnergySurface, InitialConditionOnTheEnergyOfIc1ReproducesFigure511) {
   // Fig. 5.11: r = 0.2, k = 1e4, mu = 0.2, E of ic1, w0 = alpha/8, y0 = 0.50132 -> y0' = 0.0943112665.
-  const BlockParams p{0.2, 0.2, 1e4};
+  const WinklerParams p{0.2, 0.2, 1e4};
   const double E = energy(p, ic1(p)).total();
-  const BlockStateVec z = state_on_energy_surface(p, E, p.alpha() / 8, 0.50132);
+  const WinklerState z = state_on_energy_surface(p, E, p.alpha() / 8, 0.50132);
   EXPECT_NEAR(z[kVY], 0.0943112665, 5e-9);
   EXPECT_NEAR(energy(p, z).total(), E, 1e-15);
   EXPECT_EQ(z[kVX], 0.0);
   EXPECT_EQ(z[kVW], 0.0);
   // The lowest corner starts at x = 0 and at rest horizontally: no initial dissipation.
-  SimulationOptions o;
+  WinklerRunOptions o;
   o.t_end = 0.5;
   const auto r = simulate(p, {}, z, o);
   EXPECT_LT(std::fabs(r.work_friction()), 1e-6 * E);
@@ -139,7 +140,7 @@ TEST(PoincareEnergySurface, InitialConditionOnTheEnergyOfIc1ReproducesFigure511)
 }
 
 TEST(PoincareEnergySurface, TrajectoryStaysInsideBothProjections) {
-  const BlockParams p{0.5, 0.0, 1e4};
+  const WinklerParams p{0.5, 0.0, 1e4};
   const double E = energy(p, ic1(p)).total();
   const auto s = section(p, ic1(p), 30);
   for (const auto& q : s.pts) {

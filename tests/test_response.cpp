@@ -20,7 +20,7 @@ using namespace blockdyn;
 
 namespace {
 
-ResponseRun run(const BlockParams& p, const BlockStateVec& z0, double t_end, double phase_dt = 0.0) {
+ResponseRun run(const WinklerParams& p, const WinklerState& z0, double t_end, double phase_dt = 0.0) {
   ResponseOptions o;
   o.t_end = t_end;
   o.phase_dt = phase_dt;
@@ -28,14 +28,14 @@ ResponseRun run(const BlockParams& p, const BlockStateVec& z0, double t_end, dou
 }
 
 // Evaluates w' on the dense output at given times, in a second identical run.
-class RateProbe : public SimulationSink {
+class RateProbe : public WinklerSink {
  public:
   explicit RateProbe(std::vector<double> times) : times_(std::move(times)), vw_(times_.size(), NAN) {}
   void on_segment(const WinklerBlock& m, const DenseSegment<kStateDim>& seg, double t0, double t1,
-                  const BlockMode& mode) override {
+                  const WinklerMode& mode) override {
     for (std::size_t i = 0; i < times_.size(); ++i) {
       if (times_[i] < t0 || times_[i] > t1) continue;
-      BlockStateVec z;
+      WinklerState z;
       seg.eval(times_[i], z);
       m.complete(mode, z);
       vw_[i] = z[kVW];
@@ -55,14 +55,14 @@ int response_cli(const std::string& args) {
 }  // namespace
 
 TEST(ResponseSwings, TurningPointsAreRootsOfAngularVelocity) {
-  const BlockParams p{0.5, 0.0, 100};  // steady rocking, no flight
+  const WinklerParams p{0.5, 0.0, 100};  // steady rocking, no flight
   const auto r = run(p, ic1(p), 30);
   ASSERT_GT(r.swings.size(), 10u);
   EXPECT_EQ(r.swings.front().t_start, 0.0);  // ic1 is released from rest: a turning point
   std::vector<double> ends;
   for (const auto& s : r.swings) ends.push_back(s.t_end);
   RateProbe probe(ends);
-  SimulationOptions o;
+  WinklerRunOptions o;
   o.t_end = 30;
   o.record_events = false;
   simulate(p, {}, ic1(p), o, &probe);
@@ -76,7 +76,7 @@ TEST(ResponseSwings, TurningPointsAreRootsOfAngularVelocity) {
 
 TEST(ResponseSwings, AveragedTotalEnergyLiesInTheRangeOfTheEnergy) {
   // The swing average of E(t) must lie within [E0 - max|E - E0|, E0 + max|E - E0|].
-  const BlockParams p{0.5, 0.0, 1e4};  // zero-friction rock-flight: E changes only by W_nonpotential
+  const WinklerParams p{0.5, 0.0, 1e4};  // zero-friction rock-flight: E changes only by W_nonpotential
   const auto r = run(p, ic1(p), 40);
   const double e0 = r.result.initial_energy.total(), spread = r.result.max_abs_energy_change;
   ASSERT_GT(r.swings.size(), 20u);
@@ -95,7 +95,7 @@ TEST(ResponseSwings, AveragedTotalEnergyLiesInTheRangeOfTheEnergy) {
 // 7e-6; the plain trapezoidal rule at two samples a step was off by 1e-3, in kinetic_y and
 // springs, which exchange energy at the vertical frequency).
 TEST(ResponseSwings, AveragesMatchAFinelySampledRun) {
-  const BlockParams p{0.5, 0.1, 1e5};
+  const WinklerParams p{0.5, 0.1, 1e5};
   ResponseOptions o;
   o.t_end = 20;
   const ResponseRun coarse = run_response(p, {}, ic1(p), o);
@@ -115,7 +115,7 @@ TEST(ResponseSwings, AveragesMatchAFinelySampledRun) {
 }
 
 TEST(ResponseSwings, DissipationMakesAveragedEnergyDecrease) {
-  const BlockParams p{0.5, 0.1, 1e5};  // settle down
+  const WinklerParams p{0.5, 0.1, 1e5};  // settle down
   const auto r = run(p, ic1(p), 20);
   ASSERT_GT(r.swings.size(), 10u);
   const double tol = 2.0 * std::fabs(r.result.work_nonpotential()) + 1e-9;
@@ -124,7 +124,7 @@ TEST(ResponseSwings, DissipationMakesAveragedEnergyDecrease) {
 }
 
 TEST(ResponseSwings, PhaseSamplesAtConstantIntervals) {
-  const BlockParams p{0.2, 0.2, 1e3};
+  const WinklerParams p{0.2, 0.2, 1e3};
   const double dt = 0.05, t_end = 20;
   const auto r = run(p, ic1(p), t_end, dt);
   ASSERT_EQ(r.phase.size(), std::size_t(std::floor(t_end / dt + 1e-9)) + 1);
@@ -133,10 +133,10 @@ TEST(ResponseSwings, PhaseSamplesAtConstantIntervals) {
 
 TEST(ResponseSwings, SwingLengthsFollowTheThesisFigure457) {
   // Steady rocking: nearly constant swing length; settle down: swings shrink to almost nothing.
-  const BlockParams rock{0.5, 0.0, 100};
+  const WinklerParams rock{0.5, 0.0, 100};
   const auto a = run(rock, ic1(rock), 100);
   EXPECT_LT(a.report.metrics.late_swing_length_cv, 0.05);
-  const BlockParams settle{0.5, 0.1, 1e5};
+  const WinklerParams settle{0.5, 0.1, 1e5};
   const auto b = run(settle, ic1(settle), 60);
   EXPECT_LT(b.report.metrics.late_swing_length, 0.2 * b.report.metrics.early_swing_length);
 }
@@ -155,7 +155,7 @@ class ResponseTable41 : public ::testing::TestWithParam<TablePoint> {};
 
 TEST_P(ResponseTable41, ClassifiesAsInTheThesis) {
   const TablePoint& tp = GetParam();
-  const BlockParams p{tp.r, tp.mu, tp.k};
+  const WinklerParams p{tp.r, tp.mu, tp.k};
   ResponseOptions o;
   o.t_end = tp.t_end;
   const auto rep = classify_response(p, {}, tp.ic2 ? ic2(p) : ic1(p), o);
@@ -206,7 +206,7 @@ TEST(ResponseSettled, BlocksThatFlewAndCameToRestAreSettled) {
   o.t_end = 30;
   for (const auto& [k, use_ic2] :
        {std::pair{1e6, true}, std::pair{1e4, true}, std::pair{1e6, false}, std::pair{5e6, true}}) {
-    const BlockParams p{1.0, 0.2, k};
+    const WinklerParams p{1.0, 0.2, k};
     const auto rep = classify_response(p, {}, use_ic2 ? ic2(p) : ic1(p), o);
     const auto& m = rep.metrics;
     SCOPED_TRACE("k = " + std::to_string(k) + (use_ic2 ? " ic2" : " ic1") + ": " + rep.reason);
@@ -226,26 +226,26 @@ TEST(ResponseSettled, HoppingAndRockingBlocksAreNotSettled) {
   ResponseOptions o;
   o.t_end = 30;
   // k = 1e7, ic2: all the rocking gone but the block still hops (E >= 0): settle down.
-  const BlockParams hop{1.0, 0.2, 1e7};
+  const WinklerParams hop{1.0, 0.2, 1e7};
   const auto a = classify_response(hop, {}, ic2(hop), o);
   EXPECT_EQ(a.type, ResponseType::SettleDown) << a.reason;
   EXPECT_GE(a.metrics.late_energy_max, 0.0);
   // k = 10, ic2: slides and loses 97 % of its energy but keeps rocking with 3 % of it on the soft
   // foundation; the swing length stays constant: steady rocking.
-  const BlockParams soft{1.0, 0.2, 10};
+  const WinklerParams soft{1.0, 0.2, 10};
   const auto b = classify_response(soft, {}, ic2(soft), o);
   EXPECT_EQ(b.type, ResponseType::SteadyRocking) << b.reason;
   EXPECT_GT(b.metrics.late_energy_fraction, o.criteria.settled_energy);
   // Without friction nothing is lost (up to the two-corner non-potential work of the model, a
   // few 1e-6 here): never settled.
-  const BlockParams rock{0.5, 0.0, 100};
+  const WinklerParams rock{0.5, 0.0, 100};
   const auto c = classify_response(rock, {}, ic1(rock), o);
   EXPECT_EQ(c.type, ResponseType::SteadyRocking) << c.reason;
   EXPECT_GT(c.metrics.late_energy_fraction, 0.99);
 }
 
 TEST(ResponseClassify, CriteriaAreReportedAndValidated) {
-  const BlockParams p{0.5, 0.1, 1e5};
+  const WinklerParams p{0.5, 0.1, 1e5};
   ResponseOptions o;
   o.t_end = 30;
   o.criteria.settle_dissipation = 1.5;

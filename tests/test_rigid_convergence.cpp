@@ -15,7 +15,7 @@
 #include "blockdyn/model/winkler/initial_conditions.hpp"
 #include "blockdyn/model/winkler/rigid_limit.hpp"
 #include "blockdyn/simulation/rigid_simulation.hpp"
-#include "blockdyn/simulation/simulate.hpp"
+#include "blockdyn/simulation/winkler_simulation.hpp"
 
 #include "test_support.hpp"
 
@@ -35,7 +35,7 @@ struct RigidTimes {
 };
 
 RigidTimes rigid_reference() {
-  const BlockParams p{kR, kMu, 1.0};  // k plays no role in the rigid model
+  const WinklerParams p{kR, kMu, 1.0};  // k plays no role in the rigid model
   const RigidGroundBlock model(p);
   RigidGroundBlock::State z{corner_arms(kR, kW0, 1).A, kW0, 0.0, 0.0};  // pivot at x = 0, at rest
   RigidLimitMode mode = model.initial_mode(z);
@@ -67,9 +67,11 @@ RigidTimes rigid_reference() {
 }
 
 // Stops the Winkler run at the first slide reversal.
-struct UntilReversal : SimulationSink {
+struct UntilReversal : WinklerSink {
   bool done = false;
-  void on_event(const WinklerBlock&, const EventRecord& e) override { done |= e.kind == EventKind::SlideReversal; }
+  void on_event(const WinklerBlock&, const WinklerEventRecord& e) override {
+    done |= e.kind == WinklerEventKind::SlideReversal;
+  }
   bool keep_going() const override { return !done; }
 };
 
@@ -80,19 +82,19 @@ struct WinklerTimes {
 };
 
 WinklerTimes winkler(double k) {
-  const BlockParams p{kR, kMu, k};
-  SimulationOptions o;
+  const WinklerParams p{kR, kMu, k};
+  WinklerRunOptions o;
   o.t_end = 3.0;
   UntilReversal sink;
-  const SimulationResult r = simulate(p, {}, ic1(p, kW0), o, &sink);
+  const WinklerResult r = simulate(p, {}, ic1(p, kW0), o, &sink);
   WinklerTimes out;
   out.start = r.initial_mode.regime;
-  for (const EventRecord& e : r.events) {
-    if (e.kind == EventKind::ContactToSlide && std::isnan(out.contact_to_slide)) {
+  for (const WinklerEventRecord& e : r.events) {
+    if (e.kind == WinklerEventKind::ContactToSlide && std::isnan(out.contact_to_slide)) {
       out.contact_to_slide = e.t;
       out.slide_sign = e.to.friction_sign;
     }
-    if (e.kind == EventKind::SlideReversal && std::isnan(out.reversal)) {
+    if (e.kind == WinklerEventKind::SlideReversal && std::isnan(out.reversal)) {
       out.reversal = e.t;
       out.reversed_sign = e.to.friction_sign;
     }
@@ -192,14 +194,14 @@ TEST(RigidConvergence, WinklerFirstRockingPhaseTendsToRigid) {
   ASSERT_FALSE(std::isnan(t_rigid));
   double prev = INFINITY;
   for (double k : {1e4, 1e6, 1e8}) {
-    const BlockParams wp{r, mu, k};
-    SimulationOptions so;
+    const WinklerParams wp{r, mu, k};
+    WinklerRunOptions so;
     so.t_end = t_rigid * 1.5;
-    so.stop_at_ihor = 1;
-    const SimulationResult w = simulate(wp, {}, ic1(wp, in.w0), so);
+    so.stop_at_upright_passages = 1;
+    const WinklerResult w = simulate(wp, {}, ic1(wp, in.w0), so);
     double t_w = NAN;
     for (const auto& e : w.events)
-      if (e.kind == EventKind::WZero) t_w = e.t;
+      if (e.kind == WinklerEventKind::WZero) t_w = e.t;
     ASSERT_FALSE(std::isnan(t_w)) << k;
     const double d = std::fabs(t_w - t_rigid);
     EXPECT_LT(d, prev) << "k " << k;

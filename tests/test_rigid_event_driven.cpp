@@ -174,8 +174,8 @@ TEST(RigidEventDriven, ChatteringContactsAreHandedToTimeSteppingAndBack) {
   ASSERT_GT(r.time_stepping_windows, 0);
   EXPECT_FALSE(r.time_stepping_reason.empty());
   EXPECT_NE(r.note.find("Moreau-Jean"), std::string::npos);
-  EXPECT_EQ(r.event_counts[kAsmTimeStepping], r.time_stepping_windows);
-  EXPECT_GE(r.event_counts[kAsmEventDriven], r.time_stepping_windows - 1);
+  EXPECT_EQ(r.event_counts[kAssemblyToTimeStepping], r.time_stepping_windows);
+  EXPECT_GE(r.event_counts[kAssemblyToEventDriven], r.time_stepping_windows - 1);
   EXPECT_GT(r.time_stepping_steps, 0);
   EXPECT_NEAR(r.time_stepping_time, r.time_stepping_steps * run.step, 1e-9);
   const double scale = a.blocks[2].mass * 9.81 * a.blocks[0].height;

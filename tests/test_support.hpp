@@ -11,7 +11,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "blockdyn/simulation/simulate.hpp"
+#include "blockdyn/simulation/winkler_simulation.hpp"
 
 namespace blockdyn::test {
 
@@ -36,31 +36,31 @@ inline void record(const char* key, double v) {
 inline std::string rtol_tag(double rtol) { return std::to_string(int(std::lround(-std::log10(rtol)))); }
 
 // Default integrator settings, run up to t_end.
-inline SimulationOptions sim_options(double t_end) {
-  SimulationOptions o;
+inline WinklerRunOptions sim_options(double t_end) {
+  WinklerRunOptions o;
   o.t_end = t_end;
   return o;
 }
 
 // Run up to t_end at relative tolerance rtol (absolute tolerance rtol / 100).
-inline SimulationOptions sim_options(double t_end, double rtol) {
-  SimulationOptions o = sim_options(t_end);
+inline WinklerRunOptions sim_options(double t_end, double rtol) {
+  WinklerRunOptions o = sim_options(t_end);
   o.integrator.rtol = rtol;
   o.integrator.atol = rtol * 1e-2;
   return o;
 }
 
 // The upright block at rest with its base at height h (h < 0: submerged).
-inline BlockStateVec upright_at_rest(double h) {
-  BlockStateVec z{};
+inline WinklerState upright_at_rest(double h) {
+  WinklerState z{};
   z[kH] = h;
   return z;
 }
 
 // The completed state of a dense-output segment at time t.
-inline BlockStateVec completed_state(const WinklerBlock& m, const DenseSegment<kStateDim>& seg, const BlockMode& mode,
-                                     double t) {
-  BlockStateVec z;
+inline WinklerState completed_state(const WinklerBlock& m, const DenseSegment<kStateDim>& seg, const WinklerMode& mode,
+                                    double t) {
+  WinklerState z;
   seg.eval(t, z);
   m.complete(mode, z);
   return z;
@@ -69,7 +69,7 @@ inline BlockStateVec completed_state(const WinklerBlock& m, const DenseSegment<k
 // Calls f(t, z) with the completed state z at t = t0 + (t1 - t0) j / n, j = first, ..., n.
 template <class F>
 void sample_segment(const WinklerBlock& m, const DenseSegment<kStateDim>& seg, double t0, double t1,
-                    const BlockMode& mode, int first, int n, F&& f) {
+                    const WinklerMode& mode, int first, int n, F&& f) {
   for (int j = first; j <= n; ++j) {
     const double t = t0 + (t1 - t0) * j / double(n);
     f(t, completed_state(m, seg, mode, t));

@@ -79,7 +79,7 @@ TEST(SweepRun, RowFieldsMatchSimulate) {
   const auto cells = cells_of(ev.row(idx).text);
   ASSERT_EQ(cells.size(), ev.columns().size());
   const SweepPoint p = sweep_point(s, idx);
-  const SimulationResult r = simulate(p.params, {}, sweep_initial_state(s, p), ev.options());
+  const WinklerResult r = simulate(p.params, {}, sweep_initial_state(s, p), ev.options());
   auto col = [&](const std::string& name) {
     for (std::size_t i = 0; i < cells.size(); ++i)
       if (ev.columns()[i] == name) return cells[i];
@@ -92,7 +92,7 @@ TEST(SweepRun, RowFieldsMatchSimulate) {
   EXPECT_EQ(col("status"), to_string(r.status));
   ASSERT_TRUE(r.first_flight_time.has_value());
   EXPECT_EQ(std::stod(col("first_flight_time")), *r.first_flight_time);  // %.17g round-trips
-  EXPECT_EQ(std::stol(col("ihor_final")), r.ihor);
+  EXPECT_EQ(std::stol(col("ihor_final")), r.upright_passages);
   EXPECT_EQ(std::stod(col("energy_lost")), -r.work_friction());
   EXPECT_EQ(std::stol(col("steps")), r.stats.accepted);
   EXPECT_EQ(col("overturned"), r.overturn_time ? "1" : "0");
@@ -100,11 +100,11 @@ TEST(SweepRun, RowFieldsMatchSimulate) {
 
 namespace {
 // A metric observing the trajectory: counts segments and sums their durations.
-struct CountingSink : SimulationSink {
+struct CountingSink : WinklerSink {
   long segments = 0;
   double time = 0;
   void on_segment(const WinklerBlock&, const DenseSegment<kStateDim>&, double t0, double t1,
-                  const BlockMode&) override {
+                  const WinklerMode&) override {
     ++segments;
     time += t1 - t0;
   }
@@ -112,10 +112,10 @@ struct CountingSink : SimulationSink {
 struct CountingMetric : PointMetric {
   std::vector<std::string> columns() const override { return {"segments", "segment_time", "label"}; }
   bool needs_events() const override { return true; }
-  std::unique_ptr<SimulationSink> make_sink(const PointContext&) const override {
+  std::unique_ptr<WinklerSink> make_sink(const PointContext&) const override {
     return std::make_unique<CountingSink>();
   }
-  void compute(const PointContext& ctx, const SimulationResult& r, const SimulationSink* sink,
+  void compute(const PointContext& ctx, const WinklerResult& r, const WinklerSink* sink,
                std::vector<MetricValue>& out) const override {
     const auto& s = static_cast<const CountingSink&>(*sink);
     out.emplace_back((long long)s.segments);
@@ -137,7 +137,7 @@ TEST(SweepRun, MetricsAddColumnsAndSeeTheTrajectory) {
   EXPECT_NE(ev.header().find(",n_takeoff,"), std::string::npos);
   EXPECT_NE(ev.header().find(",time_contact,time_slide,time_flight,segments,"), std::string::npos);
   const SweepPoint p = sweep_point(s, 3);
-  const SimulationResult r = simulate(p.params, {}, sweep_initial_state(s, p), ev.options());
+  const WinklerResult r = simulate(p.params, {}, sweep_initial_state(s, p), ev.options());
   const std::string row = ev.row(3).text;
   // Quoted text cell (it contains a comma and quotes), last in the row.
   EXPECT_NE(row.find(",\"n,\"\"" + std::to_string(r.events.size()) + "\"\"\"\n"), std::string::npos) << row;
@@ -159,7 +159,7 @@ TEST(SweepRun, MetricsAddColumnsAndSeeTheTrajectory) {
   };
   EXPECT_NEAR(at("time_contact") + at("time_slide") + at("time_flight"), r.t_final, 1e-12);
   EXPECT_GT(at("time_flight"), 0.0);
-  EXPECT_EQ(at("n_takeoff"), double(r.event_counts[int(EventKind::Takeoff)]));
+  EXPECT_EQ(at("n_takeoff"), double(r.event_counts[int(WinklerEventKind::Takeoff)]));
   EXPECT_GT(at("segments"), 10.0);
   EXPECT_NEAR(at("segment_time"), 0.0, 1e-12);
 }

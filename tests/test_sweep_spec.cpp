@@ -97,7 +97,7 @@ metrics = ["event_counts"]
   EXPECT_EQ(*s.initial.vx0, 0.05);
   EXPECT_EQ(s.options.t_end, 12.5);
   EXPECT_EQ(s.options.integrator.rtol, 1e-9);
-  EXPECT_EQ(s.options.stop_at_ihor, 3);
+  EXPECT_EQ(s.options.stop_at_upright_passages, 3);
   EXPECT_TRUE(s.options.stop_at_first_flight);
   EXPECT_EQ(s.output, "map.csv");
   EXPECT_EQ(point_count(s), 40u * 30u * 2u * 2u);
@@ -156,7 +156,7 @@ TEST(SweepSpec, Ic1OverrideByFractionOfAlpha) {
   s.initial.sets = {"ic2"};
   s.initial.w0_over_alpha.reset();
   s.initial.vx0 = 0.03;
-  const BlockStateVec z = sweep_initial_state(s, sweep_point(s, 0));
+  const WinklerState z = sweep_initial_state(s, sweep_point(s, 0));
   EXPECT_EQ(z[kVX], 0.03);
   EXPECT_EQ(z[kW], 0.0);
 }

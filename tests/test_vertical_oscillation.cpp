@@ -17,7 +17,7 @@
 #include <string>
 #include <vector>
 
-#include "blockdyn/simulation/simulate.hpp"
+#include "blockdyn/simulation/winkler_simulation.hpp"
 
 #include "test_support.hpp"
 
@@ -46,7 +46,7 @@ struct Closed {
 };
 
 // Checks the trajectory between events against the closed form, and that it never rotates.
-struct Check : SimulationSink {
+struct Check : WinklerSink {
   Closed c;
   double max_h_err = 0;
   bool rotated = false;
@@ -54,8 +54,8 @@ struct Check : SimulationSink {
   std::vector<double> apex_h;
   explicit Check(double k) : c(k) {}
   void on_segment(const WinklerBlock& m, const DenseSegment<kStateDim>& seg, double t0, double t1,
-                  const BlockMode& mode) override {
-    sample_segment(m, seg, t0, t1, mode, 0, 4, [&](double t, const BlockStateVec& z) {
+                  const WinklerMode& mode) override {
+    sample_segment(m, seg, t0, t1, mode, 0, 4, [&](double t, const WinklerState& z) {
       max_h_err = std::fmax(max_h_err, std::fabs(z[kH] - c.h(t)));
       rotated |= z[kW] != 0.0 || z[kVW] != 0.0 || z[kX] != x0 || z[kVX] != 0.0;
     });
@@ -64,7 +64,7 @@ struct Check : SimulationSink {
         const double ta = c.takeoff(n) + c.v;
         if (ta > t1) break;
         if (ta < t0) continue;
-        BlockStateVec z;
+        WinklerState z;
         seg.eval(ta, z);
         apex_h.push_back(z[kH]);
       }
@@ -73,12 +73,12 @@ struct Check : SimulationSink {
 };
 
 void run_case(double mu) {
-  const BlockParams p{0.5, mu, 1e5};
+  const WinklerParams p{0.5, mu, 1e5};
   const Closed c(p.k);
-  const BlockStateVec z0 = upright_at_rest(-3.0 / p.k);  // y0 = 1/2 - 3/k, all rates zero, w0 = 0
-  const SimulationOptions o = sim_options(0.2);
+  const WinklerState z0 = upright_at_rest(-3.0 / p.k);  // y0 = 1/2 - 3/k, all rates zero, w0 = 0
+  const WinklerRunOptions o = sim_options(0.2);
   Check sink(p.k);
-  const SimulationResult r = simulate(p, {}, z0, o, &sink);
+  const WinklerResult r = simulate(p, {}, z0, o, &sink);
   ASSERT_EQ(r.status, SimStatus::TEnd);
 
   // Rotation and horizontal motion stay exactly zero, in every regime.
@@ -86,21 +86,21 @@ void run_case(double mu) {
   EXPECT_EQ(r.final_state[kW], 0.0);
   EXPECT_EQ(r.final_state[kVW], 0.0);
   EXPECT_EQ(r.final_state[kX], 0.0);
-  EXPECT_EQ(r.ihor, 1);  // starts at w = 0, never passes through it again
+  EXPECT_EQ(r.upright_passages, 1);  // starts at w = 0, never passes through it again
 
   // Events: take-off and landing alternate at the closed-form times.
   const Regime submerged = mu > 0 ? Regime::Contact : Regime::Slide;
   int n_off = 0, n_land = 0;
   double worst = 0;
-  for (const EventRecord& e : r.events) {
+  for (const WinklerEventRecord& e : r.events) {
     EXPECT_EQ(e.z[kW], 0.0);
-    if (e.kind == EventKind::Takeoff) {
+    if (e.kind == WinklerEventKind::Takeoff) {
       EXPECT_EQ(e.from.regime, submerged);
       EXPECT_EQ(e.to.regime, Regime::Flight);
       worst = std::fmax(worst, std::fabs(e.t - c.takeoff(n_off)) / c.takeoff(n_off));
       EXPECT_NEAR(e.z[kVY], c.v, 1e-8 * c.v);
       ++n_off;
-    } else if (e.kind == EventKind::Landing) {
+    } else if (e.kind == WinklerEventKind::Landing) {
       EXPECT_EQ(e.from.regime, Regime::Flight);
       EXPECT_EQ(e.to.regime, submerged);
       EXPECT_EQ(n_land + 1, n_off);
@@ -125,8 +125,8 @@ void run_case(double mu) {
 
   // Period from consecutive take-offs, apex height, trajectory between events.
   std::vector<double> offs;
-  for (const EventRecord& e : r.events)
-    if (e.kind == EventKind::Takeoff) offs.push_back(e.t);
+  for (const WinklerEventRecord& e : r.events)
+    if (e.kind == WinklerEventKind::Takeoff) offs.push_back(e.t);
   for (std::size_t i = 1; i < offs.size(); ++i) EXPECT_NEAR(offs[i] - offs[i - 1], c.T, 1e-9 * c.T);
   ASSERT_EQ(sink.apex_h.size(), std::size_t(expect_land));
   for (double ha : sink.apex_h) EXPECT_NEAR(ha, 1.5 / p.k, 1e-8 / p.k);
@@ -149,15 +149,15 @@ TEST(VerticalOscillation, WithFrictionMatchesClosedForm) { run_case(0.2); }
 
 TEST(VerticalOscillation, EventTimesConvergeWithTolerance) {
   // The error of the last landing time shrinks in proportion to the tolerance.
-  const BlockParams p{0.5, 0.0, 1e5};
+  const WinklerParams p{0.5, 0.0, 1e5};
   const Closed c(p.k);
-  const BlockStateVec z0 = upright_at_rest(-3.0 / p.k);
+  const WinklerState z0 = upright_at_rest(-3.0 / p.k);
   std::vector<double> err;
   for (double rtol : {1e-8, 1e-10, 1e-12}) {
-    const SimulationResult r = simulate(p, {}, z0, sim_options(0.2, rtol));
+    const WinklerResult r = simulate(p, {}, z0, sim_options(0.2, rtol));
     ASSERT_EQ(r.events.size(), 16u);
-    const EventRecord& last = r.events.back();
-    ASSERT_EQ(last.kind, EventKind::Landing);
+    const WinklerEventRecord& last = r.events.back();
+    ASSERT_EQ(last.kind, WinklerEventKind::Landing);
     err.push_back(std::fabs(last.t - c.landing(7)) / c.landing(7));
     record(("last_landing_rel_err_rtol" + rtol_tag(rtol)).c_str(), err.back());
     EXPECT_LT(err.back(), 20 * rtol) << rtol;

@@ -23,7 +23,7 @@
 #include "blockdyn/base/range_check.hpp"
 #include "blockdyn/family/family.hpp"
 #include "blockdyn/io/json_io.hpp"
-#include "blockdyn/simulation/simulate.hpp"
+#include "blockdyn/simulation/winkler_simulation.hpp"
 
 namespace blockdyn {
 
@@ -82,7 +82,7 @@ ChaosMapOptions chaos_options_of(const StudyOptions& s) {
                       : ff.chaos_map_atol > 0 ? ff.chaos_map_atol
                                               : o.integrator.atol;
   validate(o);
-  SimulationOptions so;
+  WinklerRunOptions so;
   so.integrator = o.integrator;
   validate(so);
   return o;
@@ -291,7 +291,7 @@ StudyReport winkler_lyapunov_study(const StudyOptions& o, const StudyRequest& re
   if (request.asked("twin"))
     throw std::invalid_argument(
         "--twin-csv applies to --model housner|rigid|assembly only (the Winkler block runs free here)");
-  const BlockParams p{o.number("r"), o.number("mu"), o.number("k")};
+  const WinklerParams p{o.number("r"), o.number("mu"), o.number("k")};
   validate(p);
   LyapunovOptions opt;
   opt.t_end = o.number("t-end");

@@ -70,7 +70,7 @@ std::string regime(double r, double k, const CriticalStiffness& c) {
   return "k < k_uns: no stable equilibrium with |w| <= alpha";
 }
 
-StudyTable landscape_table(const BlockParams& p, int points) {
+StudyTable landscape_table(const WinklerParams& p, int points) {
   StudyTable t;
   t.columns = {"w", "y_R", "h_R", "arm", "energy", "potential", "corners_below"};
   for (const auto& q : energy_landscape(p, points))
@@ -81,7 +81,7 @@ StudyTable landscape_table(const BlockParams& p, int points) {
 
 StudyReport equilibria_study(const Settings& given, const StudyRequest& request) {
   const StudyOptions o(given, equilibria_options());
-  BlockParams p;
+  WinklerParams p;
   p.r = o.number("r");
   p.k = o.number("k");
   require_in_range("r", p.r, kRMin, 1.0);

@@ -66,7 +66,7 @@ std::vector<StudyOption> flight_time_options() {
 
 StudyReport flight_time(const Settings& given, const StudyRequest&) {
   const StudyOptions o(given, flight_time_options());
-  BlockParams p{o.number("r"), o.number("mu"), 1e5};
+  WinklerParams p{o.number("r"), o.number("mu"), 1e5};
   require_in_range("r", p.r, kWinklerRMin, kRMax);
   require_in_range("mu", p.mu, 0.0, kMuMax);
   const double k_min = o.number("k-min"), k_max = o.number("k-max");
@@ -82,7 +82,7 @@ StudyReport flight_time(const Settings& given, const StudyRequest&) {
   int flown = 0, failed = 0;
   double k_first = NAN, k_always = NAN;
   for (const auto& x : runs) {
-    r.table.rows.push_back({cell_text(x.k), x.flew ? "1" : "0", cell_text(x.time), std::to_string(x.ihor),
+    r.table.rows.push_back({cell_text(x.k), x.flew ? "1" : "0", cell_text(x.time), std::to_string(x.upright_passages),
                             to_string(x.status), cell_text(x.t_final)});
     flown += x.flew;
     failed += x.status == SimStatus::NumericalFailure;
@@ -90,7 +90,7 @@ StudyReport flight_time(const Settings& given, const StudyRequest&) {
   }
   // Lowest grid k from which every larger grid k flies during the first impact (ihor < 2).
   for (std::size_t i = runs.size(); i-- > 0;) {
-    if (!(runs[i].flew && runs[i].ihor < 2)) break;
+    if (!(runs[i].flew && runs[i].upright_passages < 2)) break;
     k_always = runs[i].k;
   }
   json meta = header("flight-time", ic, p.mu, run);
@@ -142,7 +142,7 @@ std::vector<FirstImpact> high_criteria(const std::string& flag, const IcChoice& 
   const std::string high = flag.empty() ? (ic.is_ic1() ? "both" : "ihor2") : flag;
   if (high == "both") {
     if (!ic.is_ic1()) throw std::invalid_argument("high-criterion = both needs ic1 (w_negative applies to ic1 only)");
-    return {FirstImpact::WNegative, FirstImpact::IhorBelow2};
+    return {FirstImpact::WNegative, FirstImpact::UprightPassagesBelow2};
   }
   if (high == "w_negative" || high == "ihor2") {
     const FirstImpact c = parse_first_impact(high);
@@ -399,7 +399,7 @@ StudyReport flight_map(const Settings& given, const StudyRequest&) {
   int flown = 0, failed = 0;
   for (const auto& c : cells) {
     r.table.rows.push_back({cell_text(c.r), cell_text(c.k), c.flew ? "1" : "0", cell_text(c.time),
-                            std::to_string(c.ihor), to_string(c.status), cell_text(c.t_final)});
+                            std::to_string(c.upright_passages), to_string(c.status), cell_text(c.t_final)});
     flown += c.flew;
     failed += c.status == SimStatus::NumericalFailure;
   }

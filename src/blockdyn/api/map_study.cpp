@@ -14,7 +14,7 @@
 #include "blockdyn/base/range_check.hpp"
 #include "blockdyn/io/json_io.hpp"
 #include "blockdyn/model/winkler/winkler_params.hpp"
-#include "blockdyn/simulation/simulate.hpp"
+#include "blockdyn/simulation/winkler_simulation.hpp"
 
 namespace blockdyn {
 
@@ -47,7 +47,7 @@ MapBoundaryRow boundary_row(double inv_r, double mu, const IcChoice& ic, long n,
   fs.per_decade = 4;
   fs.bisect.rel_tol = 1e-2;
   fs.refine.per_decade = fine_per_decade;
-  const FirstImpact fi = ic.is_ic1() ? FirstImpact::WNegative : FirstImpact::IhorBelow2;
+  const FirstImpact fi = ic.is_ic1() ? FirstImpact::WNegative : FirstImpact::UprightPassagesBelow2;
   b.high = k_high(b.r, mu, ic, fi, run, fs);
   b.critical = k_critical(b.r, mu, ic, n, run, fs);
   return b;

@@ -78,7 +78,7 @@ json metrics_json(const ResponseMetrics& m) {
   j["late_energy_max"] = std::isfinite(m.late_energy_max) ? json(m.late_energy_max) : json();
   j["late_energy_fraction"] = m.late_energy_fraction;
   j["max_abs_energy_balance_error"] = m.max_abs_energy_error;
-  j["ihor"] = m.ihor;
+  j["ihor"] = m.upright_passages;
   j["takeoffs"] = m.takeoffs;
   j["late_takeoffs"] = m.late_takeoffs;
   j["flight_fraction"] = m.flight_fraction;
@@ -118,7 +118,7 @@ ResponseOptions response_run_options(const StudyOptions& o, const WinklerOrbit& 
 
 StudyReport response_study(const Settings& given, const StudyRequest& request) {
   const StudyOptions o(given, response_options());
-  const BlockParams p{o.number("r"), o.number("mu"), o.number("k")};
+  const WinklerParams p{o.number("r"), o.number("mu"), o.number("k")};
   validate(p);
   const std::string axis = o.text("energy-axis");
   if (axis != "lin" && axis != "log")
@@ -177,7 +177,7 @@ StudyReport poincare_study(const Settings& given, const StudyRequest&) {
   const StudyOptions o(given, poincare_options());
   const WinklerOrbit orbit = winkler_orbit(o);
   const double t_end = o.number("t-end"), t_min = o.number("t-min");
-  const SimulationOptions so = orbit_run_options(t_end, orbit.integrator);
+  const WinklerRunOptions so = orbit_run_options(t_end, orbit.integrator);
   require_in_range("t-min", t_min, 0.0, t_end);
   const std::string direction = o.text("direction");
   if (direction != "both" && direction != "positive" && direction != "negative")
@@ -186,7 +186,7 @@ StudyReport poincare_study(const Settings& given, const StudyRequest&) {
                                 : direction == "negative" ? CrossingDirection::Negative
                                                           : CrossingDirection::Both;
   PoincareCollector col(orbit.p, dir, t_min);
-  const SimulationResult r = simulate(orbit.p, {}, orbit.z0, so, &col);
+  const WinklerResult r = simulate(orbit.p, {}, orbit.z0, so, &col);
   const auto& pts = col.points();
 
   StudyReport rep;
@@ -208,7 +208,7 @@ StudyReport poincare_study(const Settings& given, const StudyRequest&) {
   j["status"] = to_string(r.status);
   j["t_final"] = r.t_final;
   j["crossings"] = pts.size();
-  j["ihor"] = r.ihor;
+  j["ihor"] = r.upright_passages;
   j["max_abs_w_at_crossings"] = max_w;
   j["energy_at_crossings"] = {{"min", pts.empty() ? NAN : e_lo}, {"max", pts.empty() ? NAN : e_hi}};
   j["energy_initial"] = r.initial_energy.total();
@@ -244,9 +244,9 @@ StudyTable projections_csv(const std::vector<RockBoundaryPoint>& rock) {
 StudyReport surface_study(const Settings& given, const StudyRequest& request) {
   const StudyOptions o(given, surface_options());
   const WinklerOrbit orbit = winkler_orbit(o);
-  const BlockParams& p = orbit.p;
+  const WinklerParams& p = orbit.p;
   const double t_end = o.number("t-end"), phase_dt = o.number("phase-dt");
-  const SimulationOptions so = orbit_run_options(t_end, orbit.integrator);
+  const WinklerRunOptions so = orbit_run_options(t_end, orbit.integrator);
   require_in_range("phase-dt", phase_dt, 0.0, t_end, false, true);
   require_sample_count("phase-dt", phase_dt, t_end, 1e7);
   const long n = o.integer("n");
@@ -259,7 +259,7 @@ StudyReport surface_study(const Settings& given, const StudyRequest& request) {
   sw.quadrature_dt = t_end;  // only the phase samples are wanted
   sw.min_samples_per_step = 1;
   SwingAccumulator acc(p, sw);
-  const SimulationResult r = simulate(p, {}, orbit.z0, so, &acc);
+  const WinklerResult r = simulate(p, {}, orbit.z0, so, &acc);
   // How far the sampled trajectory gets outside the projections (should be <= rounding + the
   // integration error for mu = 0, and negative margins when friction dissipates).
   double heave_excess = -INFINITY, rock_excess = -INFINITY;

@@ -17,7 +17,7 @@
 #include "blockdyn/io/json_io.hpp"
 #include "blockdyn/simulation/rigid_simulation.hpp"
 #include "blockdyn/simulation/rigid_trajectory.hpp"
-#include "blockdyn/simulation/simulate.hpp"
+#include "blockdyn/simulation/winkler_simulation.hpp"
 #include "blockdyn/simulation/winkler_trajectory.hpp"
 
 namespace blockdyn {
@@ -38,18 +38,18 @@ void require_rows(double interval, double span, double max_rows) {
 }
 
 // Streams the Winkler run's events and forwards everything to the trajectory (if any).
-class WinklerEventTee final : public SimulationSink {
+class WinklerEventTee final : public WinklerSink {
  public:
-  WinklerEventTee(SimulationSink* next, const std::function<void(const nlohmann::ordered_json&)>& on_event)
+  WinklerEventTee(WinklerSink* next, const std::function<void(const nlohmann::ordered_json&)>& on_event)
       : next_(next), on_event_(on_event) {}
-  void on_start(const WinklerBlock& m, double t, const BlockMode& md, const BlockStateVec& z) override {
+  void on_start(const WinklerBlock& m, double t, const WinklerMode& md, const WinklerState& z) override {
     if (next_) next_->on_start(m, t, md, z);
   }
   void on_segment(const WinklerBlock& m, const DenseSegment<kStateDim>& s, double t0, double t1,
-                  const BlockMode& md) override {
+                  const WinklerMode& md) override {
     if (next_) next_->on_segment(m, s, t0, t1, md);
   }
-  void on_event(const WinklerBlock& m, const EventRecord& e) override {
+  void on_event(const WinklerBlock& m, const WinklerEventRecord& e) override {
     if (on_event_) on_event_(to_json(e));
     if (next_) next_->on_event(m, e);
   }
@@ -57,7 +57,7 @@ class WinklerEventTee final : public SimulationSink {
   bool needs_dense() const override { return next_ && next_->needs_dense(); }
 
  private:
-  SimulationSink* next_;
+  WinklerSink* next_;
   const std::function<void(const nlohmann::ordered_json&)>& on_event_;
 };
 
@@ -70,20 +70,20 @@ class RigidEventTee final : public RigidEventSink {
   const std::function<void(const nlohmann::ordered_json&)>& f_;
 };
 
-long total_events(const SimulationResult& r) {
+long total_events(const WinklerResult& r) {
   long n = 0;
   for (long c : r.event_counts) n += c;
   return n;
 }
 
-std::string winkler_text(const SimulationResult& r, double seconds) {
+std::string winkler_text(const WinklerResult& r, double seconds) {
   const double ts = seconds > 0 ? seconds : 1.0;
   const char* unit = seconds > 0 ? " s" : "";
   char buf[1024];
   std::string s;
   std::snprintf(buf, sizeof buf, "status: %s at t = %.10g%s\n", to_string(r.status), r.t_final * ts, unit);
   s += buf;
-  std::snprintf(buf, sizeof buf, "ihor: %ld, first flight: %s%s\n", r.ihor,
+  std::snprintf(buf, sizeof buf, "ihor: %ld, first flight: %s%s\n", r.upright_passages,
                 r.first_flight_time ? std::to_string(*r.first_flight_time * ts).c_str() : "none",
                 r.first_flight_time ? unit : "");
   s += buf;
@@ -124,7 +124,7 @@ SimulateReport run_winkler(const Scenario& given, const SimulateOutputs& out) {
     sc.output_interval /= tau;
     sc.ground = in_time_unit(sc.ground, tau);
   }
-  const BlockStateVec z0 = initial_state(sc);
+  const WinklerState z0 = initial_state(sc);
   std::optional<UnitScales> scales;
   if (sc.units == "physical") scales = scales_of(*sc.physical);
   std::optional<WinklerTrajectory> rows;
@@ -134,7 +134,7 @@ SimulateReport run_winkler(const Scenario& given, const SimulateOutputs& out) {
   }
   sc.options.record_events = false;  // counted in the result, streamed to on_event
   WinklerEventTee tee(rows ? &*rows : nullptr, out.on_event);
-  SimulationResult r = simulate(sc.params, sc.ground, z0, sc.options, (rows || out.on_event) ? &tee : nullptr);
+  WinklerResult r = simulate(sc.params, sc.ground, z0, sc.options, (rows || out.on_event) ? &tee : nullptr);
   for (int i = 1; i < out.timing_repeat; ++i)
     r.timing = fastest(r.timing, simulate(sc.params, sc.ground, z0, sc.options).timing);
   SimulateReport rep;

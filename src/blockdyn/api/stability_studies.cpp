@@ -95,7 +95,7 @@ std::vector<StudyOption> overturn_options() {
 // ic2: the k window where the block overturns on its second swing, (k2, k3), is a few per cent
 // wide (r = 0.1: 730-794) and gets 2-3 points of the log grid; --window-points adds a fine grid
 // over it, located first with the stability searches.
-json add_window(std::vector<double>& ks, const BlockParams& p, double k_min, double k_max, int window_points,
+json add_window(std::vector<double>& ks, const WinklerParams& p, double k_min, double k_max, int window_points,
                 const StudyRunOptions& run) {
   StabilitySearchOptions ss;
   ss.k_lo = k_min;
@@ -118,7 +118,7 @@ json add_window(std::vector<double>& ks, const BlockParams& p, double k_min, dou
 
 StudyReport overturn_study(const Settings& given, const StudyRequest&) {
   const StudyOptions o(given, overturn_options());
-  const BlockParams p{o.number("r"), o.number("mu"), 1e3};
+  const WinklerParams p{o.number("r"), o.number("mu"), 1e3};
   const double k_min = o.number("k-min"), k_max = o.number("k-max");
   require_in_range("r", p.r, kWinklerRMin, kRMax);
   require_in_range("mu", p.mu, 0.0, kMuMax);
@@ -139,8 +139,8 @@ StudyReport overturn_study(const Settings& given, const StudyRequest&) {
   int over = 0, failed = 0;
   double k_first_stable = NAN;
   for (const auto& x : runs) {
-    r.table.rows.push_back(
-        {cell_text(x.k), x.overturned ? "1" : "0", cell_text(x.time), std::to_string(x.ihor), to_string(x.status)});
+    r.table.rows.push_back({cell_text(x.k), x.overturned ? "1" : "0", cell_text(x.time),
+                            std::to_string(x.upright_passages), to_string(x.status)});
     over += x.overturned;
     failed += x.status == SimStatus::NumericalFailure;
     if (!x.overturned && std::isnan(k_first_stable)) k_first_stable = x.k;

@@ -83,7 +83,7 @@ SweepDefinition winkler_sweep(const Settings& s, const Family& family) {
   });
   apply_state_and_run(s, sp.initial, sp.options);
   if (s.flag("stop-at-first-flight")) sp.options.stop_at_first_flight = true;
-  sp.options.stop_at_ihor = s.integer("stop-at-ihor", sp.options.stop_at_ihor);
+  sp.options.stop_at_upright_passages = s.integer("stop-at-ihor", sp.options.stop_at_upright_passages);
   if (s.has("metric")) sp.metrics = s.values("metric");
   set_output(s, sp.output, sp.plot, sp.plot_column);
   validate(sp);

@@ -16,7 +16,7 @@
 namespace blockdyn {
 
 std::vector<StudyOption> winkler_orbit_options(const std::string& method_option) {
-  const BlockParams p;
+  const WinklerParams p;
   const IntegratorOptions integ;
   return {
       {"r", "aspect ratio width/height (> 0)", Settings::exact(p.r)},
@@ -57,7 +57,7 @@ std::string one_of(const StudyOptions& o, const std::string& name, const std::ve
   throw std::invalid_argument("--" + name + " = '" + v + "' is not one of: " + list);
 }
 
-std::optional<double> initial_tilt(const StudyOptions& o, const BlockParams& p) {
+std::optional<double> initial_tilt(const StudyOptions& o, const WinklerParams& p) {
   if (o.given("w0") && o.given("w0-alpha")) throw std::invalid_argument("give either --w0 or --w0-alpha, not both");
   if (o.given("w0")) return o.number("w0");
   if (!o.given("w0-alpha")) return std::nullopt;
@@ -66,8 +66,8 @@ std::optional<double> initial_tilt(const StudyOptions& o, const BlockParams& p) 
   return f * p.alpha();
 }
 
-BlockStateVec initial_of(const StudyOptions& o, const WinklerOrbit& orbit) {
-  const BlockParams& p = orbit.p;
+WinklerState initial_of(const StudyOptions& o, const WinklerOrbit& orbit) {
+  const WinklerParams& p = orbit.p;
   const std::optional<double> w0 = initial_tilt(o, p);
   const std::string of = one_of(o, "energy-of", {"ic1", "ic2"});
   const long sign = o.integer("vy-sign");
@@ -109,8 +109,8 @@ WinklerOrbit winkler_orbit(const StudyOptions& o, const std::string& method_opti
   return orbit;
 }
 
-SimulationOptions orbit_run_options(double t_end, const IntegratorOptions& integ) {
-  SimulationOptions so;
+WinklerRunOptions orbit_run_options(double t_end, const IntegratorOptions& integ) {
+  WinklerRunOptions so;
   so.t_end = t_end;
   so.integrator = integ;
   so.record_events = false;

@@ -12,15 +12,15 @@
 #include "blockdyn/integrate/integrator_options.hpp"
 #include "blockdyn/model/winkler/winkler_params.hpp"
 #include "blockdyn/model/winkler/winkler_state.hpp"
-#include "blockdyn/simulation/simulate.hpp"
+#include "blockdyn/simulation/winkler_simulation.hpp"
 
 namespace blockdyn {
 
 struct WinklerOrbit {
-  BlockParams p;
+  WinklerParams p;
   IntegratorOptions integrator;
   std::string ic;  // ic1, ic2, custom, surface
-  BlockStateVec z0{};
+  WinklerState z0{};
 };
 
 // method_option: the integrator's --method, or another name where the study has a --method of its
@@ -29,7 +29,7 @@ std::vector<StudyOption> winkler_orbit_options(const std::string& method_option 
 // Throws std::invalid_argument naming the option at fault.
 WinklerOrbit winkler_orbit(const StudyOptions& o, const std::string& method_option = "method");
 // Options of a run to t_end without an event log (validated).
-SimulationOptions orbit_run_options(double t_end, const IntegratorOptions& integ);
+WinklerRunOptions orbit_run_options(double t_end, const IntegratorOptions& integ);
 // The opening of every orbit study's summary: run info, block, initial state, integrator.
 nlohmann::ordered_json orbit_summary_head(const WinklerOrbit& orbit);
 

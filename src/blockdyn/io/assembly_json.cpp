@@ -141,14 +141,14 @@ json assembly_result_json(const Assembly& a, const GroundMotion& g, const Assemb
   j["rhs_evals"] = r.rhs_evals;
   json counts = json::object();
   for (int k = 0; k < int(r.event_counts.size()); ++k)
-    if (r.event_counts[k] && k != kAsmCollapse2) {
+    if (r.event_counts[k] && k != kAssemblyBearingCollapse) {
       const char* name = assembly_event_name(k);
       long n = r.event_counts[k];
-      if (k == kAsmCollapse1) n += r.event_counts[kAsmCollapse2];
+      if (k == kAssemblyRotationCollapse) n += r.event_counts[kAssemblyBearingCollapse];
       counts[name] = n;
     }
-  if (r.event_counts[kAsmCollapse2] && !r.event_counts[kAsmCollapse1])
-    counts["failure"] = r.event_counts[kAsmCollapse2];
+  if (r.event_counts[kAssemblyBearingCollapse] && !r.event_counts[kAssemblyRotationCollapse])
+    counts["failure"] = r.event_counts[kAssemblyBearingCollapse];
   j["event_counts"] = counts;
   j["events_total"] = r.events_total;
   json ev = json::array();

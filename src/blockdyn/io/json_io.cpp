@@ -9,7 +9,7 @@ namespace blockdyn {
 
 using json = nlohmann::ordered_json;
 
-json to_json(const BlockParams& p) {
+json to_json(const WinklerParams& p) {
   return {{"r", p.r}, {"mu", p.mu}, {"k", p.k}, {"alpha", p.alpha()}, {"inertia", p.inertia()}};
 }
 
@@ -39,11 +39,11 @@ json to_json(const IntegratorOptions& o) {
           {"max_steps", o.max_steps}};
 }
 
-json state_json(const BlockStateVec& z) {
+json state_json(const WinklerState& z) {
   return {{"x", z[kX]}, {"y", z[kH] + 0.5}, {"w", z[kW]}, {"vx", z[kVX]}, {"vy", z[kVY]}, {"vw", z[kVW]}};
 }
 
-json state_json(const BlockStateVec& z, const UnitScales& s) {
+json state_json(const WinklerState& z, const UnitScales& s) {
   return {{"x_m", z[kX] * s.length},
           {"y_m", (z[kH] + 0.5) * s.length},
           {"w_rad", z[kW]},
@@ -57,10 +57,13 @@ json to_json(const Energy& e) {
           {"gravity", e.gravity},     {"springs", e.springs},     {"total", e.total()}};
 }
 
-json to_json(const EventRecord& e) {
-  return {
-      {"t", e.t},       {"kind", to_string(e.kind)}, {"from", to_string(e.from.regime)}, {"to", to_string(e.to.regime)},
-      {"ihor", e.ihor}, {"state", state_json(e.z)}};
+json to_json(const WinklerEventRecord& e) {
+  return {{"t", e.t},
+          {"kind", to_string(e.kind)},
+          {"from", to_string(e.from.regime)},
+          {"to", to_string(e.to.regime)},
+          {"ihor", e.upright_passages},
+          {"state", state_json(e.z)}};
 }
 
 static json pose_json(const std::array<double, 6>& q) {
@@ -103,7 +106,7 @@ json run_info() { return {{"program", "blockdyn"}, {"version", kVersion}, {"git"
 
 static json opt_or_null(const std::optional<double>& v) { return v ? json(*v) : json(nullptr); }
 
-json result_json(const BlockParams& p, const GroundMotion& g, const SimulationOptions& o, const SimulationResult& r,
+json result_json(const WinklerParams& p, const GroundMotion& g, const WinklerRunOptions& o, const WinklerResult& r,
                  const PhysicalBlock* phys) {
   json j;
   j["run"] = run_info();
@@ -123,11 +126,11 @@ json result_json(const BlockParams& p, const GroundMotion& g, const SimulationOp
   j["final_state"] = state_json(r.final_state);
   j["final_mode"] = to_string(r.final_mode.regime);
   j["final_energy"] = to_json(r.final_energy);
-  j["ihor"] = r.ihor;
+  j["ihor"] = r.upright_passages;
   j["first_flight_time"] = opt_or_null(r.first_flight_time);
-  j["ihor_at_first_flight"] = r.first_flight_time ? json(r.ihor_at_first_flight) : json(nullptr);
+  j["ihor_at_first_flight"] = r.first_flight_time ? json(r.upright_passages_at_first_flight) : json(nullptr);
   j["overturn_time"] = opt_or_null(r.overturn_time);
-  j["ihor_at_overturn"] = r.overturn_time ? json(r.ihor_at_overturn) : json(nullptr);
+  j["ihor_at_overturn"] = r.overturn_time ? json(r.upright_passages_at_overturn) : json(nullptr);
   j["max_abs_energy_error"] = r.max_abs_energy_error;
   j["max_abs_energy_change"] = r.max_abs_energy_change;
   j["work_friction"] = r.work_friction();
@@ -139,7 +142,7 @@ json result_json(const BlockParams& p, const GroundMotion& g, const SimulationOp
   j["rhs_evals"] = r.stats.rhs_evals;
   json counts = json::object();
   for (int k = 0; k < kNumEventKinds; ++k)
-    if (r.event_counts[k]) counts[to_string(EventKind(k))] = r.event_counts[k];
+    if (r.event_counts[k]) counts[to_string(WinklerEventKind(k))] = r.event_counts[k];
   j["event_counts"] = counts;
   json ev = json::array();
   for (const auto& e : r.events) ev.push_back(to_json(e));

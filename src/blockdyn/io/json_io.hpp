@@ -9,18 +9,18 @@
 #include "blockdyn/excitation/ground_motion.hpp"
 #include "blockdyn/simulation/rigid_ground_model.hpp"
 #include "blockdyn/simulation/rigid_simulation.hpp"
-#include "blockdyn/simulation/simulate.hpp"
+#include "blockdyn/simulation/winkler_simulation.hpp"
 #include "blockdyn/units/physical_units.hpp"
 
 namespace blockdyn {
 
-nlohmann::ordered_json to_json(const BlockParams& p);
+nlohmann::ordered_json to_json(const WinklerParams& p);
 nlohmann::ordered_json to_json(const GroundMotion& g);
 nlohmann::ordered_json to_json(const IntegratorOptions& o);
-nlohmann::ordered_json state_json(const BlockStateVec& z);                       // x, y, w, vx, vy, vw
-nlohmann::ordered_json state_json(const BlockStateVec& z, const UnitScales& s);  // physical units
+nlohmann::ordered_json state_json(const WinklerState& z);                       // x, y, w, vx, vy, vw
+nlohmann::ordered_json state_json(const WinklerState& z, const UnitScales& s);  // physical units
 nlohmann::ordered_json to_json(const Energy& e);
-nlohmann::ordered_json to_json(const EventRecord& e);
+nlohmann::ordered_json to_json(const WinklerEventRecord& e);
 nlohmann::ordered_json run_info();  // program version, for every output
 // A number, or null where it is not finite (JSON has no NaN or infinity).
 inline nlohmann::ordered_json finite_or_null(double v) {
@@ -32,8 +32,8 @@ inline constexpr int kJsonSchemaVersion = 1;
 // "blockdyn.<command>.<kind>/<kJsonSchemaVersion>", e.g. "blockdyn.simulate.summary/1".
 std::string schema_name(const std::string& command, const std::string& kind);
 // Everything `simulate --json` prints (physical block and scales optional).
-nlohmann::ordered_json result_json(const BlockParams& p, const GroundMotion& g, const SimulationOptions& o,
-                                   const SimulationResult& r, const PhysicalBlock* phys = nullptr);
+nlohmann::ordered_json result_json(const WinklerParams& p, const GroundMotion& g, const WinklerRunOptions& o,
+                                   const WinklerResult& r, const PhysicalBlock* phys = nullptr);
 
 // Everything `simulate --json` prints of a block on rigid ground (either model).
 nlohmann::ordered_json to_json(const RigidEventRecord& e);

@@ -184,9 +184,9 @@ RigidBlockParams rigid_params(const Scenario& s) {
   return p;
 }
 
-BlockStateVec initial_state(const Scenario& s) {
+WinklerState initial_state(const Scenario& s) {
   const InitialSpec& in = s.initial;
-  BlockStateVec z{};
+  WinklerState z{};
   if (in.set == "ic1") {
     z = ic1(s.params, in.w0);
   } else if (in.set == "ic2") {

@@ -7,7 +7,7 @@
 
 #include "blockdyn/excitation/ground_motion.hpp"
 #include "blockdyn/model/rigid/rigid_params.hpp"
-#include "blockdyn/simulation/simulate.hpp"
+#include "blockdyn/simulation/winkler_simulation.hpp"
 #include "blockdyn/units/physical_units.hpp"
 
 namespace blockdyn {
@@ -21,7 +21,7 @@ struct InitialSpec {
 
 struct Scenario {
   std::string model = "winkler";  // a family that a scenario describes (scenario_family())
-  BlockParams params;
+  WinklerParams params;
   std::optional<PhysicalBlock> physical;  // when given, params are derived from it
   // housner / rigid: the block's shape comes from [physical]; interface and impact from here.
   Coulomb interface { 0.7, 0.7 };
@@ -29,7 +29,7 @@ struct Scenario {
   std::optional<double> restitution;
   GroundMotion ground;  // times in seconds for physical blocks and the rigid models
   InitialSpec initial;
-  SimulationOptions options;
+  WinklerRunOptions options;
   double output_interval = 0.01;
   std::string trajectory;        // CSV path, empty: none
   std::string plot;              // PNG path, empty: none
@@ -50,6 +50,6 @@ Scenario parse_scenario(const std::string& toml_text, const std::string& source_
 RigidBlockParams rigid_params(const Scenario& s);
 
 // The initial state vector the scenario asks for (validated against the model).
-BlockStateVec initial_state(const Scenario& s);
+WinklerState initial_state(const Scenario& s);
 
 }  // namespace blockdyn

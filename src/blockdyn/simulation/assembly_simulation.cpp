@@ -58,7 +58,7 @@ template <class M>
 class AssemblyRecorder final : public Observer<M> {
  public:
   BLOCKDYN_OBSERVER_TYPES(M);
-  static constexpr int Cap = M::kBlocks;
+  static constexpr int MaxBlocks = M::kBlocks;
 
   AssemblyRecorder(AssemblyResult& r, const AssemblyRunOptions& o) : r_(r), o_(o) {}
 
@@ -84,10 +84,10 @@ class AssemblyRecorder final : public Observer<M> {
   bool needs_dense() const override { return false; }  // step ends only
   bool on_event(const M& m, const Event& e) override {
     track(m, e.t, e.z_before);
-    if (e.kind == kAsmBreakpoint) return true;
+    if (e.kind == kAssemblyInputBreakpoint) return true;
     ++r_.event_counts[e.kind];
     ++r_.events_total;
-    if (e.kind == kAsmImpact) ++r_.impacts;
+    if (e.kind == kAssemblyImpact) ++r_.impacts;
     AssemblyEventRecord rec;
     rec.t = e.t;
     rec.kind = assembly_event_name(e.kind);
@@ -97,23 +97,23 @@ class AssemblyRecorder final : public Observer<M> {
       rec.interface = p / 2;
       rec.end = p % 2;
       rec.block = m.assembly().interfaces[p / 2].upper;
-      if (e.kind == kAsmOpen) ++r_.interfaces[p / 2].opens;
-      if (e.kind == kAsmSlip) ++r_.interfaces[p / 2].slips;
+      if (e.kind == kAssemblyContactOpens) ++r_.interfaces[p / 2].opens;
+      if (e.kind == kAssemblySlipStarts) ++r_.interfaces[p / 2].slips;
     } else if (idx < M::ev_bearing(0)) {
-      rec.block = (idx - M::ev_wzero(0)) % Cap;
+      rec.block = (idx - M::ev_wzero(0)) % MaxBlocks;
     } else {
       rec.interface = idx - M::ev_bearing(0);
       rec.block = m.assembly().interfaces[rec.interface].upper;
     }
-    if (e.kind == kAsmCollapse1 || e.kind == kAsmCollapse2) {
-      rec.collapse_mode = e.kind == kAsmCollapse1 ? 1 : 2;
+    if (e.kind == kAssemblyRotationCollapse || e.kind == kAssemblyBearingCollapse) {
+      rec.collapse_mode = e.kind == kAssemblyRotationCollapse ? 1 : 2;
       r_.collapse_mode = rec.collapse_mode;
       r_.t_failure = e.t;
       r_.failed_block = rec.block;
       r_.failed_interface = rec.interface;
       r_.status = SimStatus::Collapsed;
     }
-    if (e.kind == kAsmInvalid) {
+    if (e.kind == kAssemblyOutsideModel) {
       r_.status = SimStatus::Invalid;
       if constexpr (requires { m.problem(); })
         r_.note = m.problem();
@@ -147,7 +147,7 @@ class AssemblyRecorder final : public Observer<M> {
   }
   AssemblyResult& r_;
   const AssemblyRunOptions& o_;
-  std::array<double, Cap + 1> s0_{};
+  std::array<double, MaxBlocks + 1> s0_{};
   bool started_ = false;
 };
 
@@ -167,7 +167,7 @@ class AssemblyTrajectory final : public TrajectoryRows<M, AssemblyTrajectory<M>>
   std::vector<std::string> columns(const M& m) const { return assembly_columns(m.blocks(), m.interfaces()); }
   void started(const M& m, const Mode& md, const State& z) { e0_ = m.energy(md, z) - m.work(z); }
   bool on_event(const M& m, const Event& e) override {
-    if (e.kind == kAsmBreakpoint) return true;
+    if (e.kind == kAssemblyInputBreakpoint) return true;
     this->row(m, e.t, e.to, e.z, assembly_event_name(e.kind));
     return true;
   }
@@ -202,7 +202,7 @@ template <class M>
 class AssemblyProbe final : public Observer<M> {
  public:
   BLOCKDYN_OBSERVER_TYPES(M);
-  static constexpr int Cap = M::kBlocks;
+  static constexpr int MaxBlocks = M::kBlocks;
 
   explicit AssemblyProbe(RunProbe& p) : p_(p) {}
 
@@ -221,10 +221,10 @@ class AssemblyProbe final : public Observer<M> {
   bool on_event(const M& m, const Event& e) override {
     // The rigid law's impact and exit from rest change several points at once (the old pivot
     // lifts as the new one lands): one probe event per point that changed.
-    if (e.kind == kAsmImpact || (e.index < 0 && e.kind != kAsmBreakpoint)) {
+    if (e.kind == kAssemblyImpact || (e.index < 0 && e.kind != kAssemblyInputBreakpoint)) {
       for (int p = 0; p < 2 * m.interfaces(); ++p) {
         const bool was = is_closed(e.from.point[p]), is = is_closed(e.to.point[p]);
-        if (e.kind == kAsmImpact && p == e.index) {
+        if (e.kind == kAssemblyImpact && p == e.index) {
           // The hitting corner: closes, and leaves again at once if it bounced (restitution).
           contact_event(m, e, p, ProbeEvent::Close);
           if (!is) contact_event(m, e, p, ProbeEvent::Open);
@@ -237,11 +237,12 @@ class AssemblyProbe final : public Observer<M> {
     ProbeEvent pe;
     pe.t = e.t;
     const int idx = event_index(e);
-    if (e.kind == kAsmWZero) {
+    if (e.kind == kAssemblyUprightPassage) {
       pe.kind = ProbeEvent::Passage;
-      pe.block = (idx - M::ev_wzero(0)) % Cap;
-    } else if ((e.kind == kAsmClose || e.kind == kAsmImpact || e.kind == kAsmOpen) && idx < M::ev_wzero(0)) {
-      pe.kind = e.kind == kAsmOpen ? ProbeEvent::Open : ProbeEvent::Close;
+      pe.block = (idx - M::ev_wzero(0)) % MaxBlocks;
+    } else if ((e.kind == kAssemblyContactCloses || e.kind == kAssemblyImpact || e.kind == kAssemblyContactOpens) &&
+               idx < M::ev_wzero(0)) {
+      pe.kind = e.kind == kAssemblyContactOpens ? ProbeEvent::Open : ProbeEvent::Close;
       pe.block = m.assembly().interfaces[(idx % M::kPoints) / 2].upper;
       pe.side = (idx % M::kPoints) % 2 == 0 ? -1 : 1;
     } else {
@@ -348,7 +349,7 @@ AssemblyResult run(const Assembly& a, const GroundMotion& g, const AssemblyRunOp
     r.lemke_solves = w.lemke;
     r.active_set_iterations = w.active_set_iterations;
     r.gauss_seidel_sweeps = w.sweeps;
-    if (effective_scheme(a, o) == AssemblyScheme::TimeStepping) r.impacts = r.event_counts[kAsmImpact];
+    if (effective_scheme(a, o) == AssemblyScheme::TimeStepping) r.impacts = r.event_counts[kAssemblyImpact];
     if (w.count > 0 && r.note.empty())
       r.note = std::to_string(w.count) + " window(s), " + number_text(w.time, 6) +
                " s in all, integrated by Moreau-Jean time-stepping (h = " + number_text(o.step, 6) + " s): " + w.first;
@@ -383,8 +384,8 @@ AssemblyResult run(const Assembly& a, const GroundMotion& g, const AssemblyRunOp
   r.rhs_evals = out.stats.rhs_evals;
   if (r.collapse_mode)
     r.motion = "collapse";
-  else if (r.event_counts[kAsmOpen] > 0 || r.event_counts[kAsmSlip] > 0 || r.event_counts[kAsmClose] > 0 ||
-           r.event_counts[kAsmImpact] > 0 || moved_from_start(a, r))
+  else if (r.event_counts[kAssemblyContactOpens] > 0 || r.event_counts[kAssemblySlipStarts] > 0 ||
+           r.event_counts[kAssemblyContactCloses] > 0 || r.event_counts[kAssemblyImpact] > 0 || moved_from_start(a, r))
     r.motion = "stable";
   else
     r.motion = "rest";

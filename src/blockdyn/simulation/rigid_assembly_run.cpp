@@ -16,10 +16,10 @@ namespace {
 // A passage through theta = 0 counts once theta is this far on the other side (rounding).
 constexpr double kPassageBand = 1e-12;
 
-template <int Cap>
+template <int MaxBlocks>
 class TimeSteppingWindow {
  public:
-  using M = RigidAssemblyModel<Cap>;
+  using M = RigidAssemblyModel<MaxBlocks>;
   using Mode = typename M::Mode;
   using State = typename M::State;
   using Event = EventInfo<Mode, M::kDim>;
@@ -41,7 +41,7 @@ class TimeSteppingWindow {
       const State z0 = z;
       if (!mj_.step(t, q_, v_)) {
         m_.report("the contact problem (LCP) has no solution at t = " + number_text(t, 6) + " s");
-        emit(t, z, z, mode, mode, 0, kAsmInvalid, true);
+        emit(t, z, z, mode, mode, 0, kAssemblyOutsideModel, true);
         stopped = true;
         return false;
       }
@@ -126,13 +126,13 @@ class TimeSteppingWindow {
       // a step with an impact would not be one the scheme reached.
       Mode next = mode;
       next.side[b] = std::int8_t(-mode.side[b]);
-      emit(tc, z0, z1, mode, next, M::ev_wzero(b), kAsmWZero);
+      emit(tc, z0, z1, mode, next, M::ev_wzero(b), kAssemblyUprightPassage);
       mode = next;
     }
     if (failed >= 0) {
       if (t_fail > from) obs_.on_segment(m_, seg_, from, t_fail, mode);
       seg_.end_state = nullptr;
-      emit(t_fail, z0, z1, mode, mode, M::ev_collapse(failed), kAsmCollapse1, true);
+      emit(t_fail, z0, z1, mode, mode, M::ev_collapse(failed), kAssemblyRotationCollapse, true);
       return false;
     }
     obs_.on_segment(m_, seg_, from, t1, mode);
@@ -165,18 +165,18 @@ class TimeSteppingWindow {
         continue;
       }
       changed = true;
-      int kind = kAsmStick;
+      int kind = kAssemblyStickStarts;
       if (!is_closed(was))
-        kind = kAsmClose;
+        kind = kAssemblyContactCloses;
       else if (!is_closed(s))
-        kind = kAsmOpen;
+        kind = kAssemblyContactOpens;
       else if (slip_sign(s) != 0)
-        kind = kAsmSlip;
+        kind = kAssemblySlipStarts;
       // An impact when the end approached faster than one step of free fall.
-      const bool impact = kind == kAsmClose && e.un_before < -m_.assembly().g * mj_.h();
-      if (impact) kind = kAsmImpact;
+      const bool impact = kind == kAssemblyContactCloses && e.un_before < -m_.assembly().g * mj_.h();
+      if (impact) kind = kAssemblyImpact;
       emit(t1, impact ? z0 : z, z, mode, next,
-           kind == kAsmSlip || kind == kAsmStick ? M::ev_tangent(p) : M::ev_normal(p), kind);
+           kind == kAssemblySlipStarts || kind == kAssemblyStickStarts ? M::ev_tangent(p) : M::ev_normal(p), kind);
       mode = next;
     }
     return changed;
@@ -189,7 +189,7 @@ class TimeSteppingWindow {
       if (m_.assembly().interfaces[i].lower < 0 && !is_closed(mode.point[2 * i]) && !is_closed(mode.point[2 * i + 1])) {
         m_.report("block " + std::to_string(m_.assembly().interfaces[i].upper) + " left the ground at t = " +
                   number_text(t1, 6) + " s: outside seed 001's 5-DOF restriction (blocks on the ground only rock)");
-        emit(t1, z, z, mode, mode, M::ev_normal(2 * i), kAsmInvalid, true);
+        emit(t1, z, z, mode, mode, M::ev_normal(2 * i), kAssemblyOutsideModel, true);
         return false;
       }
     return true;
@@ -199,7 +199,7 @@ class TimeSteppingWindow {
   bool bearings_kept(double t1, const Mode& mode, const State& z) {
     for (int i = 0; i < ni_; ++i)
       if (m_.assembly().interfaces[i].lower >= 0 && m_.overlap_of(z, i) <= m_.assembly().min_bearing) {
-        emit(t1, z, z, mode, mode, M::ev_bearing(i), kAsmCollapse2, true);
+        emit(t1, z, z, mode, mode, M::ev_bearing(i), kAssemblyBearingCollapse, true);
         return false;
       }
     return true;
@@ -215,20 +215,20 @@ class TimeSteppingWindow {
 
 }  // namespace
 
-template <int Cap>
-RunOutcome<RigidAssemblyModel<Cap>> run_rigid_assembly(const RigidAssemblyModel<Cap>& m,
-                                                       typename RigidAssemblyModel<Cap>::Mode mode,
-                                                       typename RigidAssemblyModel<Cap>::State z,
-                                                       const AssemblyRunOptions& o,
-                                                       Observer<RigidAssemblyModel<Cap>>& obs,
-                                                       TimeSteppingWindows& windows) {
-  using M = RigidAssemblyModel<Cap>;
+template <int MaxBlocks>
+RunOutcome<RigidAssemblyModel<MaxBlocks>> run_rigid_assembly(const RigidAssemblyModel<MaxBlocks>& m,
+                                                             typename RigidAssemblyModel<MaxBlocks>::Mode mode,
+                                                             typename RigidAssemblyModel<MaxBlocks>::State z,
+                                                             const AssemblyRunOptions& o,
+                                                             Observer<RigidAssemblyModel<MaxBlocks>>& obs,
+                                                             TimeSteppingWindows& windows) {
+  using M = RigidAssemblyModel<MaxBlocks>;
   ObserverBridge<M> bridge{m, obs};
   obs.on_start(m, 0.0, mode, z);
   RunOutcome<M> out;
-  std::unique_ptr<TimeSteppingWindow<Cap>> window;
+  std::unique_ptr<TimeSteppingWindow<MaxBlocks>> window;
   auto open_window = [&] {
-    if (!window) window = std::make_unique<TimeSteppingWindow<Cap>>(m, m.assembly(), m.ground(), o.step, obs);
+    if (!window) window = std::make_unique<TimeSteppingWindow<MaxBlocks>>(m, m.assembly(), m.ground(), o.step, obs);
     mode.rest = false;
   };
   auto finish_stats = [&] {
@@ -267,7 +267,7 @@ RunOutcome<RigidAssemblyModel<Cap>> run_rigid_assembly(const RigidAssemblyModel<
     // A window of time-stepping, until the contacts are quiet and a consistent mode exists.
     if (windows.count++ == 0) windows.first = chatter ? "contact events repeating at one instant" : m.problem();
     if (chatter) {
-      EventInfo<typename M::Mode, M::kDim> e{out.t, z, z, mode, mode, 0, kAsmTimeStepping, false};
+      EventInfo<typename M::Mode, M::kDim> e{out.t, z, z, mode, mode, 0, kAssemblyToTimeStepping, false};
       obs.on_event(m, e);
     }
     open_window();
@@ -276,7 +276,7 @@ RunOutcome<RigidAssemblyModel<Cap>> run_rigid_assembly(const RigidAssemblyModel<
     while (!back) {
       if (!window->run(out.t, mode, z, o.t_end, windows.steps, stopped)) break;
       if (const auto resumed = m.resume(out.t, z, mode)) {
-        EventInfo<typename M::Mode, M::kDim> e{out.t, z, z, mode, *resumed, 0, kAsmEventDriven, false};
+        EventInfo<typename M::Mode, M::kDim> e{out.t, z, z, mode, *resumed, 0, kAssemblyToEventDriven, false};
         mode = *resumed;
         obs.on_event(m, e);
         back = true;

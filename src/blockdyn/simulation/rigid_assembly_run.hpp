@@ -29,12 +29,12 @@ struct TimeSteppingWindows {
 // Time-stepping steps without a contact change before the events take over again.
 inline constexpr int kQuietSteps = 50;
 
-template <int Cap>
-RunOutcome<RigidAssemblyModel<Cap>> run_rigid_assembly(const RigidAssemblyModel<Cap>& m,
-                                                       typename RigidAssemblyModel<Cap>::Mode mode,
-                                                       typename RigidAssemblyModel<Cap>::State z,
-                                                       const AssemblyRunOptions& o,
-                                                       Observer<RigidAssemblyModel<Cap>>& obs,
-                                                       TimeSteppingWindows& windows);
+template <int MaxBlocks>
+RunOutcome<RigidAssemblyModel<MaxBlocks>> run_rigid_assembly(const RigidAssemblyModel<MaxBlocks>& m,
+                                                             typename RigidAssemblyModel<MaxBlocks>::Mode mode,
+                                                             typename RigidAssemblyModel<MaxBlocks>::State z,
+                                                             const AssemblyRunOptions& o,
+                                                             Observer<RigidAssemblyModel<MaxBlocks>>& obs,
+                                                             TimeSteppingWindows& windows);
 
 }  // namespace blockdyn

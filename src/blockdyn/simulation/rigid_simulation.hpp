@@ -12,7 +12,7 @@
 #include "blockdyn/model/rigid/housner_block.hpp"
 #include "blockdyn/model/rigid/rigid_block.hpp"
 #include "blockdyn/simulation/observer.hpp"
-#include "blockdyn/simulation/simulate.hpp"
+#include "blockdyn/simulation/winkler_simulation.hpp"
 
 namespace blockdyn {
 

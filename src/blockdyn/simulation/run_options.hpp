@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The options of one run, shared by every model family, with one validation. A family's options
-// extend them (SimulationOptions: the Winkler block's stop criteria; AssemblyRunOptions: the
+// extend them (WinklerRunOptions: the Winkler block's stop criteria; AssemblyRunOptions: the
 // trajectory's interval, the rigid law's scheme and step).
 #include "blockdyn/integrate/integrator_options.hpp"
 

@@ -6,7 +6,7 @@ namespace blockdyn {
 WinklerTrajectory::WinklerTrajectory(TrajectoryTable& out, double interval, std::optional<UnitScales> s)
     : out_(out), interval_(interval), scales_(s) {}
 
-void WinklerTrajectory::on_start(const WinklerBlock& m, double t, const BlockMode& mode, const BlockStateVec& z) {
+void WinklerTrajectory::on_start(const WinklerBlock& m, double t, const WinklerMode& mode, const WinklerState& z) {
   std::vector<std::string> names{"t",          "x",
                                  "y",          "w",
                                  "vx",         "vy",
@@ -28,20 +28,20 @@ void WinklerTrajectory::on_start(const WinklerBlock& m, double t, const BlockMod
 }
 
 void WinklerTrajectory::on_segment(const WinklerBlock& m, const DenseSegment<kStateDim>& seg, double, double t1,
-                                   const BlockMode& mode) {
+                                   const WinklerMode& mode) {
   clock_.emit(t1, [&](double t) {
-    BlockStateVec z;
+    WinklerState z;
     seg.eval(t, z);
     m.complete(mode, z);
     row(m, t, mode, z, "");
   });
 }
 
-void WinklerTrajectory::on_event(const WinklerBlock& m, const EventRecord& e) {
+void WinklerTrajectory::on_event(const WinklerBlock& m, const WinklerEventRecord& e) {
   row(m, e.t, e.to, e.z, to_string(e.kind));
 }
 
-void WinklerTrajectory::row(const WinklerBlock& m, double t, const BlockMode& mode, const BlockStateVec& z,
+void WinklerTrajectory::row(const WinklerBlock& m, double t, const WinklerMode& mode, const WinklerState& z,
                             const char* event) {
   const BlockForces f = m.forces(t, mode, z);
   const Energy e = energy(m.params(), z);

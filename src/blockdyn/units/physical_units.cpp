@@ -30,7 +30,7 @@ double mass_of(const PhysicalBlock& b) {
   return *b.density * b.height * b.width * *b.thickness;
 }
 
-BlockParams to_nondimensional(const PhysicalBlock& b) {
+WinklerParams to_nondimensional(const PhysicalBlock& b) {
   if (b.height == 0.0)
     throw std::invalid_argument("height is missing: give the block's height [m] (--height, physical.height)");
   if (b.width == 0.0)
@@ -51,7 +51,7 @@ BlockParams to_nondimensional(const PhysicalBlock& b) {
   } else {
     throw std::invalid_argument("physical block: give subgrade_modulus (with thickness) or line_stiffness");
   }
-  BlockParams p;
+  WinklerParams p;
   p.r = b.width / b.height;
   p.mu = b.mu;
   p.k = k_line * b.height * b.width / (m * b.g);

@@ -25,7 +25,7 @@ struct UnitScales {
 };
 
 // Throws std::invalid_argument naming the missing or out-of-range field.
-BlockParams to_nondimensional(const PhysicalBlock& b);
+WinklerParams to_nondimensional(const PhysicalBlock& b);
 UnitScales scales_of(const PhysicalBlock& b);
 double mass_of(const PhysicalBlock& b);
 

@@ -64,9 +64,9 @@ struct TangentTraits<RigidBlock> {
   static bool jvp(const M&, double, const M::Mode&, const Vec<N>&, const Vec<N>&, Vec<N>&) { return false; }
 };
 
-template <int Cap>
-struct TangentTraits<AssemblyModel<Cap>> {
-  using M = AssemblyModel<Cap>;
+template <int MaxBlocks>
+struct TangentTraits<AssemblyModel<MaxBlocks>> {
+  using M = AssemblyModel<MaxBlocks>;
   static constexpr std::size_t N = M::kDim;
   static constexpr bool kCompleteIsIdentity = false;
   static Vec<N> scale(const M& m) {
@@ -79,7 +79,7 @@ struct TangentTraits<AssemblyModel<Cap>> {
     const double v = std::sqrt(a.g * w), p = std::sqrt(0.75 * a.g / R);
     Vec<N> s;
     s.fill(1.0);
-    for (int b = 0; b < Cap; ++b) {
+    for (int b = 0; b < MaxBlocks; ++b) {
       s[M::ix(b)] = s[M::ix(b) + 1] = w;
       s[M::ix(b) + 2] = 1.0;
       s[M::iv(b)] = s[M::iv(b) + 1] = v;

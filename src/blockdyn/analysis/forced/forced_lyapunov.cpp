@@ -201,19 +201,19 @@ ForcedLyapunovOutcome rigid_lyapunov(const RigidBlockParams& p, const GroundMoti
 
 namespace {
 
-template <int Cap>
+template <int MaxBlocks>
 ForcedLyapunovOutcome assembly_run(const Assembly& a, const GroundMotion& g, const ForcedLyapunovOptions& o) {
-  using M = AssemblyModel<Cap>;
+  using M = AssemblyModel<MaxBlocks>;
   const M m(a, g, std::fmax(1e-12, 10.0 * o.integrator.atol));
   typename M::State z = m.initial_state();
   typename M::Mode md = m.initial_mode(z);
   m.complete(md, z);
   if (auto why = m.validity_problem(md, z)) throw std::invalid_argument("initial state: " + *why);
-  EventReading<M> read{[](int, int kind) { return kind == kAsmClose; },
+  EventReading<M> read{[](int, int kind) { return kind == kAssemblyContactCloses; },
                        [](int kind) {
-                         return kind == kAsmCollapse1   ? std::optional<int>(1)
-                                : kind == kAsmCollapse2 ? std::optional<int>(2)
-                                                        : std::nullopt;
+                         return kind == kAssemblyRotationCollapse  ? std::optional<int>(1)
+                                : kind == kAssemblyBearingCollapse ? std::optional<int>(2)
+                                                                   : std::nullopt;
                        }};
   // The twin differs in the rotation rate of the last block (the lintel of a trilith, the top drum).
   const std::size_t rate = M::iv(m.blocks() - 1) + 2;

@@ -31,17 +31,17 @@ const std::vector<std::string> kBaseColumns = {"index",
                                                "rhs_evals"};
 
 // Forwards the trajectory to every metric's sink; stops when any of them asks to.
-class FanOutSink : public SimulationSink {
+class FanOutSink : public WinklerSink {
  public:
-  std::vector<SimulationSink*> sinks;
-  void on_start(const WinklerBlock& m, double t, const BlockMode& mode, const BlockStateVec& z) override {
+  std::vector<WinklerSink*> sinks;
+  void on_start(const WinklerBlock& m, double t, const WinklerMode& mode, const WinklerState& z) override {
     for (auto* s : sinks) s->on_start(m, t, mode, z);
   }
   void on_segment(const WinklerBlock& m, const DenseSegment<kStateDim>& seg, double t0, double t1,
-                  const BlockMode& mode) override {
+                  const WinklerMode& mode) override {
     for (auto* s : sinks) s->on_segment(m, seg, t0, t1, mode);
   }
-  void on_event(const WinklerBlock& m, const EventRecord& e) override {
+  void on_event(const WinklerBlock& m, const WinklerEventRecord& e) override {
     for (auto* s : sinks) s->on_event(m, e);
   }
   bool keep_going() const override {
@@ -134,10 +134,10 @@ SweepRow SweepEvaluator::row(std::size_t index) const {
   b.add(p.params.mu);
   b.add(csv_escape(p.ic));
   SweepRow out;
-  SimulationResult r;
-  BlockStateVec z0{};
+  WinklerResult r;
+  WinklerState z0{};
   const PointContext ctx{p, options_, z0};
-  std::vector<std::unique_ptr<SimulationSink>> owned;
+  std::vector<std::unique_ptr<WinklerSink>> owned;
   FanOutSink fan;
   try {
     z0 = sweep_initial_state(spec_, p);
@@ -165,7 +165,7 @@ SweepRow SweepEvaluator::row(std::size_t index) const {
   b.add(r.t_final);
   if (r.first_flight_time) {
     b.add(*r.first_flight_time);
-    b.add(r.ihor_at_first_flight);
+    b.add(r.upright_passages_at_first_flight);
   } else {
     b.empty();
     b.empty();
@@ -173,12 +173,12 @@ SweepRow SweepEvaluator::row(std::size_t index) const {
   b.add(r.status == SimStatus::Overturned ? 1L : 0L);
   if (r.overturn_time) {
     b.add(*r.overturn_time);
-    b.add(r.ihor_at_overturn);
+    b.add(r.upright_passages_at_overturn);
   } else {
     b.empty();
     b.empty();
   }
-  b.add(r.ihor);
+  b.add(r.upright_passages);
   b.add(r.initial_energy.total());
   b.add(-r.work_friction());
   if (options_.track_energy)

@@ -34,7 +34,7 @@ class SweepEvaluator final : public PointTable {
   const std::string& header() const override { return header_; }  // with '\n'
   // Identifies the definition and the columns (a journal is only resumed under the same one).
   const std::string& fingerprint() const override { return fingerprint_; }
-  const SimulationOptions& options() const { return options_; }
+  const WinklerRunOptions& options() const { return options_; }
   nlohmann::ordered_json definition() const override;
   nlohmann::ordered_json tolerances() const override;
   const std::string& output() const override { return spec_.output; }
@@ -48,7 +48,7 @@ class SweepEvaluator final : public PointTable {
   std::vector<std::size_t> metric_width_;
   std::vector<std::string> columns_;
   std::string header_, fingerprint_;
-  SimulationOptions options_;
+  WinklerRunOptions options_;
   std::size_t n_ = 0;
 };
 

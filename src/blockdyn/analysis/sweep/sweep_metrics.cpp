@@ -17,13 +17,14 @@ class EventCountsMetric : public PointMetric {
   std::vector<std::string> columns() const override {
     std::vector<std::string> c;
     for (int k = 0; k < kNumEventKinds; ++k)
-      if (EventKind(k) != EventKind::GroundBreak) c.push_back(std::string("n_") + to_string(EventKind(k)));
+      if (WinklerEventKind(k) != WinklerEventKind::GroundBreak)
+        c.push_back(std::string("n_") + to_string(WinklerEventKind(k)));
     return c;
   }
-  void compute(const PointContext&, const SimulationResult& r, const SimulationSink*,
+  void compute(const PointContext&, const WinklerResult& r, const WinklerSink*,
                std::vector<MetricValue>& out) const override {
     for (int k = 0; k < kNumEventKinds; ++k)
-      if (EventKind(k) != EventKind::GroundBreak) out.emplace_back((long long)r.event_counts[k]);
+      if (WinklerEventKind(k) != WinklerEventKind::GroundBreak) out.emplace_back((long long)r.event_counts[k]);
   }
 };
 
@@ -32,7 +33,7 @@ class FinalStateMetric : public PointMetric {
   std::vector<std::string> columns() const override {
     return {"x_final", "y_final", "w_final", "vx_final", "vy_final", "vw_final", "regime_final"};
   }
-  void compute(const PointContext&, const SimulationResult& r, const SimulationSink*,
+  void compute(const PointContext&, const WinklerResult& r, const WinklerSink*,
                std::vector<MetricValue>& out) const override {
     const BlockState s = to_state(r.final_state);
     for (double v : {s.x, s.y, s.w, s.vx, s.vy, s.vw}) out.emplace_back(v);
@@ -41,10 +42,10 @@ class FinalStateMetric : public PointMetric {
 };
 
 // Time spent in each regime, summed over the integrator's segments (needs a sink).
-class RegimeTimeSink : public SimulationSink {
+class RegimeTimeSink : public WinklerSink {
  public:
   void on_segment(const WinklerBlock&, const DenseSegment<kStateDim>&, double t0, double t1,
-                  const BlockMode& mode) override {
+                  const WinklerMode& mode) override {
     time[int(mode.regime)] += t1 - t0;
   }
   double time[3] = {0, 0, 0};
@@ -53,10 +54,10 @@ class RegimeTimeSink : public SimulationSink {
 class RegimeTimeMetric : public PointMetric {
  public:
   std::vector<std::string> columns() const override { return {"time_contact", "time_slide", "time_flight"}; }
-  std::unique_ptr<SimulationSink> make_sink(const PointContext&) const override {
+  std::unique_ptr<WinklerSink> make_sink(const PointContext&) const override {
     return std::make_unique<RegimeTimeSink>();
   }
-  void compute(const PointContext&, const SimulationResult&, const SimulationSink* sink,
+  void compute(const PointContext&, const WinklerResult&, const WinklerSink* sink,
                std::vector<MetricValue>& out) const override {
     const auto& s = static_cast<const RegimeTimeSink&>(*sink);
     for (Regime g : {Regime::Contact, Regime::Slide, Regime::Flight}) out.emplace_back(s.time[int(g)]);
@@ -68,12 +69,12 @@ class RegimeTimeMetric : public PointMetric {
 class ResponseTypeMetric : public PointMetric {
  public:
   std::vector<std::string> columns() const override { return {"response_type", "response_reason"}; }
-  std::unique_ptr<SimulationSink> make_sink(const PointContext& c) const override {
+  std::unique_ptr<WinklerSink> make_sink(const PointContext& c) const override {
     SwingOptions so;
     so.late_start = ResponseOptions{}.late_fraction * c.options.t_end;
     return std::make_unique<SwingAccumulator>(c.point.params, so);
   }
-  void compute(const PointContext& c, const SimulationResult& r, const SimulationSink* sink,
+  void compute(const PointContext& c, const WinklerResult& r, const WinklerSink* sink,
                std::vector<MetricValue>& out) const override {
     const ResponseCriteria crit;
     const auto& acc = static_cast<const SwingAccumulator&>(*sink);
@@ -89,10 +90,10 @@ class ResponseTypeMetric : public PointMetric {
 class SensitiveDependenceMetric : public PointMetric {
  public:
   std::vector<std::string> columns() const override { return {"w_separation", "sensitive_dependence"}; }
-  std::unique_ptr<SimulationSink> make_sink(const PointContext& c) const override {
+  std::unique_ptr<WinklerSink> make_sink(const PointContext& c) const override {
     return std::make_unique<RotationSampler>(c.options.t_end, TwinOptions{});
   }
-  void compute(const PointContext& c, const SimulationResult& r, const SimulationSink* sink,
+  void compute(const PointContext& c, const WinklerResult& r, const WinklerSink* sink,
                std::vector<MetricValue>& out) const override {
     const auto& ref = static_cast<const RotationSampler&>(*sink);
     const TwinDivergence d =

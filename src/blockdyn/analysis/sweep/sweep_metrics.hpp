@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Extra per-point columns of a sweep. A metric names its columns and fills them from the point,
-// its SimulationResult and (optionally) a per-point SimulationSink that watched the trajectory.
+// its WinklerResult and (optionally) a per-point WinklerSink that watched the trajectory.
 //
 // Adding a metric (e.g. the response-type classifier):
 //   1. derive from PointMetric (columns(), compute(); make_sink() if it must see the trajectory,
-//      needs_events() if it reads SimulationResult::events);
+//      needs_events() if it reads WinklerResult::events);
 //   2. add one entry to the catalogue in sweep_metrics.cpp (builtin list), or call
 //      register_metric() before the sweep starts (e.g. from an apps/ file);
 //   3. select it by name: `metrics = ["name"]` in [output] or `--metric name`.
@@ -19,7 +19,7 @@
 #include <vector>
 
 #include "blockdyn/analysis/sweep/sweep_spec.hpp"
-#include "blockdyn/simulation/simulate.hpp"
+#include "blockdyn/simulation/winkler_simulation.hpp"
 
 namespace blockdyn {
 
@@ -28,21 +28,21 @@ using MetricValue = std::variant<std::monostate, double, long long, std::string>
 
 // What a metric may know about the point it describes.
 struct PointContext {
-  const SweepPoint& point;             // index, params (k, r, mu), inv_r, ic
-  const SimulationOptions& options;    // as used for this run (t_end, tolerances, stop rules)
-  const BlockStateVec& initial_state;  // z0 handed to simulate()
+  const SweepPoint& point;            // index, params (k, r, mu), inv_r, ic
+  const WinklerRunOptions& options;   // as used for this run (t_end, tolerances, stop rules)
+  const WinklerState& initial_state;  // z0 handed to simulate()
 };
 
 class PointMetric {
  public:
   virtual ~PointMetric() = default;
   virtual std::vector<std::string> columns() const = 0;
-  // true: the sweep records the event list (SimulationOptions::record_events) for every point.
+  // true: the sweep records the event list (WinklerRunOptions::record_events) for every point.
   virtual bool needs_events() const { return false; }
   // Optional observer of one point's run (segments, events; may stop the run via keep_going).
-  virtual std::unique_ptr<SimulationSink> make_sink(const PointContext&) const { return nullptr; }
+  virtual std::unique_ptr<WinklerSink> make_sink(const PointContext&) const { return nullptr; }
   // Appends exactly columns().size() values. `sink` is what make_sink returned (or nullptr).
-  virtual void compute(const PointContext& ctx, const SimulationResult& result, const SimulationSink* sink,
+  virtual void compute(const PointContext& ctx, const WinklerResult& result, const WinklerSink* sink,
                        std::vector<MetricValue>& out) const = 0;
 };
 

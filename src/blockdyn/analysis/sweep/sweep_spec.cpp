@@ -40,7 +40,7 @@ SweepPoint sweep_point(const SweepSpec& s, std::size_t index) {
   return p;
 }
 
-BlockStateVec sweep_initial_state(const SweepSpec& s, const SweepPoint& p) {
+WinklerState sweep_initial_state(const SweepSpec& s, const SweepPoint& p) {
   Scenario sc;
   sc.params = p.params;
   sc.initial.set = p.ic;
@@ -79,8 +79,8 @@ void validate(const SweepSpec& s) {
   if (s.initial.w0_over_alpha && !(std::fabs(*s.initial.w0_over_alpha) <= 1.0))
     throw std::invalid_argument("initial.w0_over_alpha is out of range: must be in [-1, 1]");
   validate(s.options);
-  if (s.options.stop_at_ihor < 0)
-    throw std::invalid_argument("run.stop_at_ihor = " + std::to_string(s.options.stop_at_ihor) +
+  if (s.options.stop_at_upright_passages < 0)
+    throw std::invalid_argument("run.stop_at_ihor = " + std::to_string(s.options.stop_at_upright_passages) +
                                 " is out of range: must be >= 0 (0: never stop)");
   const std::size_t n = point_count(s);
   if (n == 0 || n > kMaxSweepPoints)
@@ -121,12 +121,12 @@ nlohmann::ordered_json definition_json(const SweepSpec& s) {
   put("vy0", s.initial.vy0);
   put("vw0", s.initial.vw0);
   j["initial"] = init;
-  const SimulationOptions& o = s.options;
+  const WinklerRunOptions& o = s.options;
   j["run"] = {{"t_start", o.t_start},
               {"t_end", o.t_end},
               {"track_energy", o.track_energy},
               {"stop_at_first_flight", o.stop_at_first_flight},
-              {"stop_at_ihor", o.stop_at_ihor}};
+              {"stop_at_ihor", o.stop_at_upright_passages}};
   json tol = to_json(o.integrator);
   tol["h_max"] = o.integrator.h_max;
   tol["chatter_limit"] = o.integrator.chatter_limit;

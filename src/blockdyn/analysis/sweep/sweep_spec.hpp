@@ -14,7 +14,7 @@
 #include "blockdyn/analysis/sweep/sweep_axis.hpp"
 #include "blockdyn/model/winkler/winkler_params.hpp"
 #include "blockdyn/model/winkler/winkler_state.hpp"
-#include "blockdyn/simulation/simulate.hpp"
+#include "blockdyn/simulation/winkler_simulation.hpp"
 
 namespace blockdyn {
 
@@ -30,7 +30,7 @@ struct SweepSpec {
   SweepAxis r = axis_list("r", {0.5});  // name "r" or "inv_r" (then r = 1 / value)
   SweepAxis mu = axis_list("mu", {0.2});
   SweepInitial initial;
-  SimulationOptions options = default_options();
+  WinklerRunOptions options = default_options();
   std::vector<std::string> metrics;  // extra per-point columns (see sweep_metrics.hpp)
 
   // Output settings: not part of the definition (they do not change any row).
@@ -38,8 +38,8 @@ struct SweepSpec {
   std::string plot;
   std::string plot_column;
 
-  static SimulationOptions default_options() {
-    SimulationOptions o;
+  static WinklerRunOptions default_options() {
+    WinklerRunOptions o;
     o.t_end = 30.0;
     o.record_events = false;  // sweeps keep counts only, unless a metric asks for the list
     return o;
@@ -49,7 +49,7 @@ struct SweepSpec {
 struct SweepPoint {
   std::size_t index = 0;
   std::size_t k_i = 0, r_i = 0, mu_i = 0, ic_i = 0;
-  BlockParams params;
+  WinklerParams params;
   double inv_r = 0;  // exact when the axis is inv_r, else 1 / r
   std::string ic;
 };
@@ -58,7 +58,7 @@ std::size_t point_count(const SweepSpec& s);
 SweepPoint sweep_point(const SweepSpec& s, std::size_t index);  // index < point_count
 
 // Initial state vector of a point (set + overrides). Throws std::invalid_argument.
-BlockStateVec sweep_initial_state(const SweepSpec& s, const SweepPoint& p);
+WinklerState sweep_initial_state(const SweepSpec& s, const SweepPoint& p);
 
 // Checks axes, sets, overrides, options, and that every point has a valid initial state.
 // Throws std::invalid_argument naming the key (and the point, for per-point failures).

@@ -101,7 +101,7 @@ SweepSpec parse_sweep(const std::string& text, const std::string& source) {
     check_keys(*r, "run",
                {"t_end", "rtol", "atol", "max_steps", "event_samples", "method", "track_energy", "stop_at_first_flight",
                 "stop_at_ihor"});
-    SimulationOptions& o = s.options;
+    WinklerRunOptions& o = s.options;
     if (auto v = opt_number(*r, "run", "t_end")) o.t_end = *v;
     if (auto v = opt_number(*r, "run", "rtol")) o.integrator.rtol = *v;
     if (auto v = opt_number(*r, "run", "atol")) o.integrator.atol = *v;
@@ -111,7 +111,7 @@ SweepSpec parse_sweep(const std::string& text, const std::string& source) {
     if (const auto* n = r->get("track_energy")) o.track_energy = boolean(*n, "run.track_energy");
     if (const auto* n = r->get("stop_at_first_flight"))
       o.stop_at_first_flight = boolean(*n, "run.stop_at_first_flight");
-    if (const auto* n = r->get("stop_at_ihor")) o.stop_at_ihor = integer(*n, "run.stop_at_ihor");
+    if (const auto* n = r->get("stop_at_ihor")) o.stop_at_upright_passages = integer(*n, "run.stop_at_ihor");
   }
   if (const auto* o = sub(root, "output")) {
     check_keys(*o, "output", {"csv", "plot", "plot_column", "metrics"});

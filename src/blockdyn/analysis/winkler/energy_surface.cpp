@@ -14,9 +14,9 @@
 
 namespace blockdyn {
 
-double potential(const BlockParams& p, double h, double w) { return h + spring_energy(p, h, w); }
+double potential(const WinklerParams& p, double h, double w) { return h + spring_energy(p, h, w); }
 
-double heave_potential(const BlockParams& p, double h) {
+double heave_potential(const WinklerParams& p, double h) {
   // potential is even in w; scan [0, alpha] and refine the best grid point.
   const double a = p.alpha();
   constexpr int n = 64;
@@ -34,11 +34,11 @@ double heave_potential(const BlockParams& p, double h) {
   return std::min(vbest, m.second);
 }
 
-double heave_potential_closed_form(const BlockParams& p, double h) { return h >= 0 ? h : h + 0.5 * p.k * h * h; }
+double heave_potential_closed_form(const WinklerParams& p, double h) { return h >= 0 ? h : h + 0.5 * p.k * h * h; }
 
-double rock_potential(const BlockParams& p, double w) { return potential(p, static_height(p, w, 1.0), w); }
+double rock_potential(const WinklerParams& p, double w) { return potential(p, static_height(p, w, 1.0), w); }
 
-std::vector<HeaveBoundaryPoint> heave_projection(const BlockParams& p, double E, int n) {
+std::vector<HeaveBoundaryPoint> heave_projection(const WinklerParams& p, double E, int n) {
   if (n < 2) throw std::invalid_argument("heave projection: n must be >= 2");
   // Range from the closed form (the numerical minimum is checked against it in the tests):
   // h + k h^2 / 2 = E below the surface, h = E above it.
@@ -56,7 +56,7 @@ std::vector<HeaveBoundaryPoint> heave_projection(const BlockParams& p, double E,
   return out;
 }
 
-std::vector<RockBoundaryPoint> rock_projection(const BlockParams& p, double E, int n) {
+std::vector<RockBoundaryPoint> rock_projection(const WinklerParams& p, double E, int n) {
   if (n < 2) throw std::invalid_argument("rock projection: n must be >= 2");
   const double a = p.alpha(), I = p.inertia();
   std::vector<RockBoundaryPoint> out(n);
@@ -70,7 +70,7 @@ std::vector<RockBoundaryPoint> rock_projection(const BlockParams& p, double E, i
   return out;
 }
 
-BlockStateVec state_on_energy_surface(const BlockParams& p, double E, double w0, double y0, int vy_sign) {
+WinklerState state_on_energy_surface(const WinklerParams& p, double E, double w0, double y0, int vy_sign) {
   validate(p);
   if (!std::isfinite(w0) || std::fabs(w0) > p.alpha()) {
     std::ostringstream os;
@@ -85,7 +85,7 @@ BlockStateVec state_on_energy_surface(const BlockParams& p, double E, double w0,
        << " it must be >= the potential energy " << v;
     throw std::invalid_argument(os.str());
   }
-  BlockStateVec z{};
+  WinklerState z{};
   z[kW] = w0;
   z[kH] = h0;
   const double A = corner_arms(p.r, std::fabs(w0), 1).A;

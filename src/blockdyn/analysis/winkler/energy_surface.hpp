@@ -12,16 +12,16 @@
 namespace blockdyn {
 
 // Potential energy (gravity + springs) at centre height h = y - 1/2 and tilt w.
-double potential(const BlockParams& p, double h, double w);
+double potential(const WinklerParams& p, double h, double w);
 
 // min over |w| <= alpha of potential(h, w), found numerically (grid + Brent refinement); a state
 // of height h can have y' at most sqrt(2 (E - this)).
-double heave_potential(const BlockParams& p, double h);
+double heave_potential(const WinklerParams& p, double h);
 // The thesis's closed form of the same minimum (attained upright): h for h >= 0, h + k h^2 / 2 below.
-double heave_potential_closed_form(const BlockParams& p, double h);
+double heave_potential_closed_form(const WinklerParams& p, double h);
 
 // min over h of potential(h, w) = potential(h_R(w), w), with h_R the height where Ry = 1.
-double rock_potential(const BlockParams& p, double w);
+double rock_potential(const WinklerParams& p, double w);
 
 struct HeaveBoundaryPoint {
   double y, v_min, vy_max;  // vy_max = sqrt(2 (E - v_min)), 0 outside the projection
@@ -34,13 +34,13 @@ struct RockBoundaryPoint {
 
 // Boundaries sampled on n points: heave over the y-range the projection occupies (with a margin),
 // rocking over |w| <= alpha.
-std::vector<HeaveBoundaryPoint> heave_projection(const BlockParams& p, double E, int n);
-std::vector<RockBoundaryPoint> rock_projection(const BlockParams& p, double E, int n);
+std::vector<HeaveBoundaryPoint> heave_projection(const WinklerParams& p, double E, int n);
+std::vector<RockBoundaryPoint> rock_projection(const WinklerParams& p, double E, int n);
 
 // Initial state on the energy surface E with given w0 and y0 and all rates zero except y0',
 // which is solved for (sign vy_sign): y0'^2 / 2 + potential(y0 - 1/2, w0) = E. The lowest corner
 // is placed at x = 0 (like ic1) and does not move horizontally, so nothing is dissipated at the
 // start. Throws std::invalid_argument if E is below the potential there.
-BlockStateVec state_on_energy_surface(const BlockParams& p, double E, double w0, double y0, int vy_sign = 1);
+WinklerState state_on_energy_surface(const WinklerParams& p, double E, double w0, double y0, int vy_sign = 1);
 
 }  // namespace blockdyn

@@ -47,12 +47,12 @@ double refine_root(const ReducedArm& g, double a, double b, double ga, double gb
 
 }  // namespace
 
-void validate_equilibrium_params(const BlockParams& p) {
+void validate_equilibrium_params(const WinklerParams& p) {
   require("r", p.r, 0.005, 1.0, "the thesis's equilibrium analysis covers blocks with r <= 1");
   require("k", p.k, 2.0, 1e10, "k >= 2 keeps at most two corners submerged at rest");
 }
 
-double resting_height(const BlockParams& p, double w) {
+double resting_height(const WinklerParams& p, double w) {
   const double a = std::fabs(w);
   // Parametrise by the depth d of the lowest corner: h = top - d, Ry(d) increases strictly.
   const double top = -corner_heights(p.r, 0.0, a).lowest;
@@ -75,7 +75,7 @@ double resting_height(const BlockParams& p, double w) {
   return top - 0.5 * (r.first + r.second);
 }
 
-ArmSample arm_sample(const BlockParams& p, double w) {
+ArmSample arm_sample(const WinklerParams& p, double w) {
   ArmSample s;
   s.w = w;
   s.h = resting_height(p, w);
@@ -85,7 +85,7 @@ ArmSample arm_sample(const BlockParams& p, double w) {
   return s;
 }
 
-double upright_arm_slope(const BlockParams& p) {
+double upright_arm_slope(const WinklerParams& p) {
   // arm(w)/w is smooth on the two-corner range 0 < w < ~2/(r k) (the far corner emerges when
   // r w / 2 reaches the upright depth 1/k); sample well inside it and extrapolate.
   const double w_c = std::min(p.alpha(), 2.0 / (p.r * p.k));
@@ -94,13 +94,13 @@ double upright_arm_slope(const BlockParams& p) {
 
 double upright_arm_slope_linearized(double r, double k) { return 0.5 - r * r * k / 12.0 - 0.25 / k; }
 
-double diagonal_arm_slope(const BlockParams& p) {
+double diagonal_arm_slope(const WinklerParams& p) {
   const double al = p.alpha();
   const double a0 = equilibrium_arm(p, al);
   return extrapolate_to_zero([&](double d) { return (a0 - equilibrium_arm(p, al - d)) / d; }, 0.01 * al, 5);
 }
 
-ReducedArm::ReducedArm(const BlockParams& p_)
+ReducedArm::ReducedArm(const WinklerParams& p_)
     : p(p_),
       alpha(p_.alpha()),
       square(p_.r == 1.0),
@@ -145,7 +145,7 @@ Stability from_slope(double s) {
   return s < 0.0 ? Stability::Stable : (s > 0.0 ? Stability::Unstable : Stability::Neutral);
 }
 
-Equilibrium make_equilibrium(const BlockParams& p, double w, double slope, EquilibriumBranch b) {
+Equilibrium make_equilibrium(const WinklerParams& p, double w, double slope, EquilibriumBranch b) {
   Equilibrium e;
   e.w = w;
   const ArmSample s = arm_sample(p, w);
@@ -159,7 +159,7 @@ Equilibrium make_equilibrium(const BlockParams& p, double w, double slope, Equil
 
 }  // namespace
 
-std::vector<Equilibrium> find_equilibria(const BlockParams& p, const EquilibriumSearch& opt) {
+std::vector<Equilibrium> find_equilibria(const WinklerParams& p, const EquilibriumSearch& opt) {
   validate_equilibrium_params(p);
   if (opt.scan_points < 8) throw std::invalid_argument("scan_points must be >= 8");
   const double al = p.alpha();
@@ -215,7 +215,7 @@ std::vector<Equilibrium> find_equilibria(const BlockParams& p, const Equilibrium
   return out;
 }
 
-std::vector<LandscapePoint> energy_landscape(const BlockParams& p, int points) {
+std::vector<LandscapePoint> energy_landscape(const WinklerParams& p, int points) {
   validate_equilibrium_params(p);
   if (points < 2 || points > 1000000)
     throw std::invalid_argument("points = " + std::to_string(points) + " is out of range: must be in [2, 1000000]");

@@ -15,25 +15,25 @@ namespace blockdyn {
 
 // Range in which the equilibrium analysis is defined (the thesis's: r <= 1, k >= 2 keeps at most
 // two corners submerged for every resting tilt |w| <= alpha). Throws std::invalid_argument.
-void validate_equilibrium_params(const BlockParams& p);
+void validate_equilibrium_params(const WinklerParams& p);
 
 // h_R(w) = y_R(w) - 1/2: centre height at which the Region carries the weight at tilt w.
-double resting_height(const BlockParams& p, double w);
+double resting_height(const WinklerParams& p, double w);
 
 struct ArmSample {
   double w = 0, h = 0, arm = 0;
   int corners_below = 0;
 };
 // arm(w) = x_R - x = moment / area at h_R(w).
-ArmSample arm_sample(const BlockParams& p, double w);
-inline double equilibrium_arm(const BlockParams& p, double w) { return arm_sample(p, w).arm; }
+ArmSample arm_sample(const WinklerParams& p, double w);
+inline double equilibrium_arm(const WinklerParams& p, double w) { return arm_sample(p, w).arm; }
 
 // d arm/dw at w = 0 (limit of arm(w)/w, extrapolated from tilts inside the two-corner range).
-double upright_arm_slope(const BlockParams& p);
+double upright_arm_slope(const WinklerParams& p);
 // The same from the linearisation at h = -1/k: 1/2 - r^2 k / 12 - 1 / (4k) (see docs/equilibria.md).
 double upright_arm_slope_linearized(double r, double k);
 // d arm/dw at w = alpha from below (for the square block arm(alpha) = 0 by symmetry).
-double diagonal_arm_slope(const BlockParams& p);
+double diagonal_arm_slope(const WinklerParams& p);
 
 // Reduced arm whose zeros in the open interval (0, alpha) are exactly the tilted equilibria:
 // g = arm / w, and for the square block (arm(alpha) = 0 by symmetry) g = arm / (w (alpha - w)).
@@ -41,9 +41,9 @@ double diagonal_arm_slope(const BlockParams& p);
 // bracketed. g > 0 near w = 0 means the upright is unstable; g decreasing through a zero means
 // that equilibrium is stable.
 struct ReducedArm {
-  explicit ReducedArm(const BlockParams& p);
+  explicit ReducedArm(const WinklerParams& p);
   double operator()(double w) const;
-  BlockParams p;
+  WinklerParams p;
   double alpha;
   bool square;            // r == 1
   double upright_slope;   // d arm/dw at 0
@@ -73,7 +73,7 @@ struct EquilibriumSearch {
 };
 
 // All equilibria with 0 <= w <= alpha, sorted by w (their mirror images -w are equilibria too).
-std::vector<Equilibrium> find_equilibria(const BlockParams& p, const EquilibriumSearch& opt = {});
+std::vector<Equilibrium> find_equilibria(const WinklerParams& p, const EquilibriumSearch& opt = {});
 
 struct LandscapePoint {
   double w = 0, h = 0, arm = 0;
@@ -84,6 +84,6 @@ struct LandscapePoint {
 // Uniform grid of `points` tilts on [0, alpha]; energy by adaptive Gauss-Kronrod per cell.
 // energy and potential agree while only one corner is submerged; with two the thesis's force
 // model is not conservative and they part (model/foundation_force.hpp).
-std::vector<LandscapePoint> energy_landscape(const BlockParams& p, int points);
+std::vector<LandscapePoint> energy_landscape(const WinklerParams& p, int points);
 
 }  // namespace blockdyn

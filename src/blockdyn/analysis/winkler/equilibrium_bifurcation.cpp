@@ -18,8 +18,8 @@ namespace {
 
 constexpr double kMinK = 2.0;  // below it a resting block may have three corners submerged
 
-BlockParams params(double r, double k) {
-  BlockParams p;
+WinklerParams params(double r, double k) {
+  WinklerParams p;
   p.r = r;
   p.k = k;
   p.mu = 0.0;  // friction plays no part in static equilibria
@@ -67,7 +67,7 @@ double find_k_os(double r) {
   return solve_in_k(f, lo, hi, flo, fhi);
 }
 
-double reduced_arm_minimum(const BlockParams& p, int scan_points) {
+double reduced_arm_minimum(const WinklerParams& p, int scan_points) {
   const ReducedArm g(p);
   const int n = scan_points;
   double best = std::min(g.at0, g.at_alpha);

@@ -26,7 +26,7 @@ double k_uns_one_corner(double r);
 // k where d arm/dw at w = 0 changes sign, solved numerically from the Region integrals.
 double find_k_os(double r);
 // Minimum over 0 <= w <= alpha of the reduced arm g (ReducedArm); > 0 means no tilted equilibrium.
-double reduced_arm_minimum(const BlockParams& p, int scan_points = 256);
+double reduced_arm_minimum(const WinklerParams& p, int scan_points = 256);
 // k_uns: r < 1, the fold where min g crosses 0 below k_os; r = 1, where d arm/dw at alpha changes sign.
 double find_k_uns(double r);
 

@@ -14,8 +14,8 @@ namespace blockdyn {
 namespace {
 
 // Options for runs that only need to know when the first take-off happens.
-SimulationOptions first_flight_options(const StudyRunOptions& o) {
-  SimulationOptions s = lean_study_options(o);
+WinklerRunOptions first_flight_options(const StudyRunOptions& o) {
+  WinklerRunOptions s = lean_study_options(o);
   s.stop_at_first_flight = true;
   return s;
 }
@@ -23,12 +23,12 @@ SimulationOptions first_flight_options(const StudyRunOptions& o) {
 // Stops the run as soon as w' turns positive: the end of the "while w' < 0" window of ic1
 // (released from rest at w0 > 0, w' = 0 at t = 0 and negative right after). w' is sampled on
 // the dense output so a sign change inside a step is caught before the step's end event.
-class WNegativeWindow : public SimulationSink {
+class WNegativeWindow : public WinklerSink {
  public:
   void on_segment(const WinklerBlock&, const DenseSegment<kStateDim>& seg, double t0, double t1,
-                  const BlockMode&) override {
+                  const WinklerMode&) override {
     if (closed_ || t1 <= t0) return;
-    BlockStateVec z;
+    WinklerState z;
     constexpr int kSamples = 8;
     for (int i = 1; i <= kSamples && !closed_; ++i) {
       seg.eval(t0 + (t1 - t0) * i / kSamples, z);
@@ -44,9 +44,9 @@ class WNegativeWindow : public SimulationSink {
 
 }  // namespace
 
-FirstFlight first_flight(const BlockParams& p, const IcChoice& ic, const StudyRunOptions& o) {
+FirstFlight first_flight(const WinklerParams& p, const IcChoice& ic, const StudyRunOptions& o) {
   // Not run_checked: a failed run is one point of a scan, reported through its status.
-  const SimulationResult res = simulate(p, {}, ic.state(p), first_flight_options(o));
+  const WinklerResult res = simulate(p, {}, ic.state(p), first_flight_options(o));
   FirstFlight f;
   f.r = p.r;
   f.k = p.k;
@@ -54,14 +54,14 @@ FirstFlight first_flight(const BlockParams& p, const IcChoice& ic, const StudyRu
   f.flew = res.first_flight_time.has_value();
   f.time = f.flew ? *res.first_flight_time : o.t_end;
   f.t_final = res.t_final;
-  f.ihor = f.flew ? res.ihor_at_first_flight : res.ihor;
+  f.upright_passages = f.flew ? res.upright_passages_at_first_flight : res.upright_passages;
   return f;
 }
 
-std::vector<FirstFlight> first_flight_scan(const BlockParams& base, const IcChoice& ic, const std::vector<double>& ks,
+std::vector<FirstFlight> first_flight_scan(const WinklerParams& base, const IcChoice& ic, const std::vector<double>& ks,
                                            const StudyRunOptions& o, int threads) {
   return parallel_map<FirstFlight>(ks.size(), threads, [&](std::size_t i) {
-    BlockParams p = base;
+    WinklerParams p = base;
     p.k = ks[i];
     return first_flight(p, ic, o);
   });
@@ -71,15 +71,15 @@ std::vector<FirstFlight> first_flight_map(double mu, const IcChoice& ic, const s
                                           const std::vector<double>& ks, const StudyRunOptions& o, int threads) {
   const std::size_t nk = ks.size();
   return parallel_map<FirstFlight>(rs.size() * nk, threads, [&](std::size_t i) {
-    return first_flight(BlockParams{rs[i / nk], mu, ks[i % nk]}, ic, o);
+    return first_flight(WinklerParams{rs[i / nk], mu, ks[i % nk]}, ic, o);
   });
 }
 
-double initial_energy(const BlockParams& p, const IcChoice& ic) { return energy(p, ic.state(p)).total(); }
+double initial_energy(const WinklerParams& p, const IcChoice& ic) { return energy(p, ic.state(p)).total(); }
 
 BoundaryResult k_min(double r, double mu, const IcChoice& ic, double k_lo, double k_hi, double per_decade) {
   const std::vector<double> grid = log_grid_per_decade(k_lo, k_hi, per_decade);
-  auto e0 = [&](double k) { return initial_energy(BlockParams{r, mu, k}, ic); };
+  auto e0 = [&](double k) { return initial_energy(WinklerParams{r, mu, k}, ic); };
   BoundaryResult res;
   res.lo = k_lo;
   res.hi = k_hi;
@@ -128,42 +128,43 @@ const char* to_string(FirstImpact c) { return c == FirstImpact::WNegative ? "w_n
 
 FirstImpact parse_first_impact(const std::string& s) {
   if (s == "w_negative") return FirstImpact::WNegative;
-  if (s == "ihor2") return FirstImpact::IhorBelow2;
+  if (s == "ihor2") return FirstImpact::UprightPassagesBelow2;
   throw std::invalid_argument("high-criterion = '" + s + "' is not one of: w_negative, ihor2");
 }
 
-FlightCheck no_flight_while_ihor_below(const BlockParams& p, const IcChoice& ic, long n, const StudyRunOptions& o) {
+FlightCheck no_flight_while_upright_passages_below(const WinklerParams& p, const IcChoice& ic, long n,
+                                                   const StudyRunOptions& o) {
   if (n < 1) throw std::invalid_argument("n = " + std::to_string(n) + " is out of range: must be >= 1");
-  SimulationOptions s = first_flight_options(o);
-  s.stop_at_ihor = n;
-  const SimulationResult res = run_checked(p, ic, s);
+  WinklerRunOptions s = first_flight_options(o);
+  s.stop_at_upright_passages = n;
+  const WinklerResult res = run_checked(p, ic, s);
   FlightCheck c;
-  const bool flew = res.first_flight_time && res.ihor_at_first_flight < n;
+  const bool flew = res.first_flight_time && res.upright_passages_at_first_flight < n;
   c.holds = !flew;
   // Settled by a flight, by reaching ihor = n, or by the end of the motion (overturn).
-  c.decided = flew || res.ihor >= n || res.status == SimStatus::Overturned;
+  c.decided = flew || res.upright_passages >= n || res.status == SimStatus::Overturned;
   return c;
 }
 
-FlightCheck flies_during_first_impact(const BlockParams& p, const IcChoice& ic, FirstImpact crit,
+FlightCheck flies_during_first_impact(const WinklerParams& p, const IcChoice& ic, FirstImpact crit,
                                       const StudyRunOptions& o) {
-  SimulationOptions s = first_flight_options(o);
+  WinklerRunOptions s = first_flight_options(o);
   FlightCheck c;
   if (crit == FirstImpact::WNegative) {
     if (!ic.is_ic1())
       throw std::invalid_argument("high-criterion = w_negative applies to ic1 only (use ihor2 for " + ic.name() + ")");
     WNegativeWindow window;
-    const SimulationResult res = run_checked(p, ic, s, &window);
+    const WinklerResult res = run_checked(p, ic, s, &window);
     // A take-off ends the run before the window closes; a closed window stops it first.
     c.holds = res.first_flight_time.has_value() && !window.closed();
     c.decided = c.holds || window.closed() || res.status == SimStatus::Overturned;
     return c;
   }
   const long n = 2;
-  s.stop_at_ihor = n;
-  const SimulationResult res = run_checked(p, ic, s);
-  c.holds = res.first_flight_time && res.ihor_at_first_flight < n;
-  c.decided = c.holds || res.ihor >= n || res.status == SimStatus::Overturned;
+  s.stop_at_upright_passages = n;
+  const WinklerResult res = run_checked(p, ic, s);
+  c.holds = res.first_flight_time && res.upright_passages_at_first_flight < n;
+  c.decided = c.holds || res.upright_passages >= n || res.status == SimStatus::Overturned;
   return c;
 }
 
@@ -198,13 +199,13 @@ CurvePoint curve_point(double r, const BoundarySearchOptions& s, Check check, Se
 
 CurvePoint k_critical(double r, double mu, const IcChoice& ic, long n, const StudyRunOptions& o,
                       const BoundarySearchOptions& s) {
-  auto check = [&](double k) { return no_flight_while_ihor_below(BlockParams{r, mu, k}, ic, n, o); };
+  auto check = [&](double k) { return no_flight_while_upright_passages_below(WinklerParams{r, mu, k}, ic, n, o); };
   return curve_point(r, s, check, sup_all_below, refine_sup_all_below, s.k_lo);
 }
 
 CurvePoint k_high(double r, double mu, const IcChoice& ic, FirstImpact c, const StudyRunOptions& o,
                   const BoundarySearchOptions& s) {
-  auto check = [&](double k) { return flies_during_first_impact(BlockParams{r, mu, k}, ic, c, o); };
+  auto check = [&](double k) { return flies_during_first_impact(WinklerParams{r, mu, k}, ic, c, o); };
   return curve_point(r, s, check, inf_all_above, refine_inf_all_above, s.k_hi);
 }
 

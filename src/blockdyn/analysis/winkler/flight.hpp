@@ -17,7 +17,7 @@
 #include "blockdyn/analysis/sweep/boundary_search.hpp"
 #include "blockdyn/analysis/winkler/ic_choice.hpp"
 #include "blockdyn/analysis/winkler/study_options.hpp"
-#include "blockdyn/simulation/simulate.hpp"
+#include "blockdyn/simulation/winkler_simulation.hpp"
 
 namespace blockdyn {
 
@@ -29,14 +29,14 @@ struct FirstFlight {
   // when the block overturned first: the motion is over and it never flew).
   double time = 0;
   double t_final = 0;                  // when the run ended
-  long ihor = 0;                       // ihor at first flight, or at the end of the run
+  long upright_passages = 0;           // ihor at first flight, or at the end of the run
   SimStatus status = SimStatus::TEnd;  // EarlyStop when stopped at the flight
 };
 
-FirstFlight first_flight(const BlockParams& p, const IcChoice& ic, const StudyRunOptions& o);
+FirstFlight first_flight(const WinklerParams& p, const IcChoice& ic, const StudyRunOptions& o);
 
 // first_flight at every k (mu, r from `base`), in parallel, results in the order of `ks`.
-std::vector<FirstFlight> first_flight_scan(const BlockParams& base, const IcChoice& ic, const std::vector<double>& ks,
+std::vector<FirstFlight> first_flight_scan(const WinklerParams& base, const IcChoice& ic, const std::vector<double>& ks,
                                            const StudyRunOptions& o, int threads);
 
 // Time-to-flight map over (k, r) (thesis Fig. 4.20); row-major: index = ir * ks.size() + ik.
@@ -44,7 +44,7 @@ std::vector<FirstFlight> first_flight_map(double mu, const IcChoice& ic, const s
                                           const std::vector<double>& ks, const StudyRunOptions& o, int threads);
 
 // Total initial energy of the initial-condition set (E = 0 is the least energy in flight).
-double initial_energy(const BlockParams& p, const IcChoice& ic);
+double initial_energy(const WinklerParams& p, const IcChoice& ic);
 
 // k_min(r) = inf of K such that E0(k) >= 0 for all k > K (thesis 4.2.1), found by scanning a log
 // grid in k downward for the first E0 < 0 and solving E0 = 0 (TOMS 748 in log k) above it.
@@ -52,7 +52,7 @@ double initial_energy(const BlockParams& p, const IcChoice& ic);
 BoundaryResult k_min(double r, double mu, const IcChoice& ic, double k_lo = 1e-2, double k_hi = 1e12,
                      double per_decade = 4);
 
-enum class FirstImpact { WNegative, IhorBelow2 };
+enum class FirstImpact { WNegative, UprightPassagesBelow2 };
 const char* to_string(FirstImpact c);
 FirstImpact parse_first_impact(const std::string& s);  // "w_negative" | "ihor2"
 
@@ -63,9 +63,10 @@ struct FlightCheck {
 };
 
 // Does the block stay on the foundation while ihor < n? (stops at first flight or at ihor = n)
-FlightCheck no_flight_while_ihor_below(const BlockParams& p, const IcChoice& ic, long n, const StudyRunOptions& o);
+FlightCheck no_flight_while_upright_passages_below(const WinklerParams& p, const IcChoice& ic, long n,
+                                                   const StudyRunOptions& o);
 // Does the block fly before or during the first impact (criterion c)?
-FlightCheck flies_during_first_impact(const BlockParams& p, const IcChoice& ic, FirstImpact c,
+FlightCheck flies_during_first_impact(const WinklerParams& p, const IcChoice& ic, FirstImpact c,
                                       const StudyRunOptions& o);
 
 struct BoundarySearchOptions {

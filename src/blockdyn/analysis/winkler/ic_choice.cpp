@@ -9,7 +9,7 @@
 
 namespace blockdyn {
 
-BlockStateVec IcChoice::state(const BlockParams& p) const {
+WinklerState IcChoice::state(const WinklerParams& p) const {
   if (set == Set::Ic2) return ic2(p);
   return ic1(p, w0_fraction * p.alpha());
 }

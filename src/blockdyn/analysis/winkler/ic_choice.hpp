@@ -14,7 +14,7 @@ struct IcChoice {
   enum class Set { Ic1, Ic2 } set = Set::Ic1;
   double w0_fraction = 0.5;  // ic1 only: w0 = w0_fraction * alpha, in (0, 1]
 
-  BlockStateVec state(const BlockParams& p) const;
+  WinklerState state(const WinklerParams& p) const;
   // "ic1", "ic2", or "ic1:<fraction>" for variants; parse(name()) round-trips.
   std::string name() const;
   bool is_ic1() const { return set == Set::Ic1; }

@@ -48,14 +48,14 @@ void BlockLyapunovAdapter::perturb(const Mode& mr, const State& zr, double d, Mo
   m_.complete(mp, zp);
 }
 
-LyapunovResult block_lyapunov(const BlockParams& p, const BlockStateVec& z0, const LyapunovOptions& o) {
+LyapunovResult block_lyapunov(const WinklerParams& p, const WinklerState& z0, const LyapunovOptions& o) {
   validate(p);
   validate(o);
   const WinklerBlock model(p);
-  BlockStateVec z = z0;
+  WinklerState z = z0;
   z[kWorkFriction] = z[kWorkNonPotential] = z[kWorkGround] = 0.0;
   if (auto why = model.validity_problem(z)) throw std::invalid_argument("initial state: " + *why);
-  const BlockMode m0 = model.initial_mode(o.t_start, z);
+  const WinklerMode m0 = model.initial_mode(o.t_start, z);
   const BlockLyapunovAdapter ad(model);
   const LyapunovEstimator<WinklerBlock, BlockLyapunovAdapter> est(model, ad, o);
   return est.run(m0, z);

@@ -14,8 +14,8 @@ namespace blockdyn {
 
 class BlockLyapunovAdapter {
  public:
-  using Mode = BlockMode;
-  using State = BlockStateVec;
+  using Mode = WinklerMode;
+  using State = WinklerState;
 
   explicit BlockLyapunovAdapter(const WinklerBlock& m);
 
@@ -32,6 +32,6 @@ class BlockLyapunovAdapter {
 };
 
 // Largest Lyapunov exponent along the orbit of the unforced block from z0.
-LyapunovResult block_lyapunov(const BlockParams& p, const BlockStateVec& z0, const LyapunovOptions& o);
+LyapunovResult block_lyapunov(const WinklerParams& p, const WinklerState& z0, const LyapunovOptions& o);
 
 }  // namespace blockdyn

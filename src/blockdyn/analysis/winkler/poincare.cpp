@@ -5,18 +5,18 @@
 
 namespace blockdyn {
 
-PoincareCollector::PoincareCollector(const BlockParams& p, CrossingDirection dir, double t_min)
+PoincareCollector::PoincareCollector(const WinklerParams& p, CrossingDirection dir, double t_min)
     : p_(p), dir_(dir), t_min_(t_min) {
   points_.reserve(1024);
 }
 
-void PoincareCollector::on_event(const WinklerBlock&, const EventRecord& e) {
-  if (e.kind != EventKind::WZero || e.t < t_min_) return;
+void PoincareCollector::on_event(const WinklerBlock&, const WinklerEventRecord& e) {
+  if (e.kind != WinklerEventKind::WZero || e.t < t_min_) return;
   const double vw = e.z[kVW];
   if ((dir_ == CrossingDirection::Positive && !(vw > 0)) || (dir_ == CrossingDirection::Negative && !(vw < 0))) return;
   PoincarePoint q;
   q.t = e.t;
-  q.ihor = e.ihor;
+  q.upright_passages = e.upright_passages;
   q.w = e.z[kW];
   q.h = e.z[kH];
   q.y = e.z[kH] + 0.5;
@@ -34,8 +34,8 @@ void PoincareCollector::on_event(const WinklerBlock&, const EventRecord& e) {
 void write_poincare_csv(std::ostream& out, const std::vector<PoincarePoint>& pts) {
   out << "t,ihor,w,h,y,vy,vw,x,vx,regime,energy,work_friction,work_nonpotential\n" << std::setprecision(17);
   for (const auto& q : pts)
-    out << q.t << ',' << q.ihor << ',' << q.w << ',' << q.h << ',' << q.y << ',' << q.vy << ',' << q.vw << ',' << q.x
-        << ',' << q.vx << ',' << to_string(q.regime) << ',' << q.energy << ',' << q.work_friction << ','
+    out << q.t << ',' << q.upright_passages << ',' << q.w << ',' << q.h << ',' << q.y << ',' << q.vy << ',' << q.vw
+        << ',' << q.x << ',' << q.vx << ',' << to_string(q.regime) << ',' << q.energy << ',' << q.work_friction << ','
         << q.work_nonpotential << '\n';
 }
 

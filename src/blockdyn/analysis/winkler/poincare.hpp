@@ -7,15 +7,15 @@
 #include <vector>
 
 #include "blockdyn/model/winkler/energy.hpp"
-#include "blockdyn/simulation/simulate.hpp"
+#include "blockdyn/simulation/winkler_simulation.hpp"
 
 namespace blockdyn {
 
 struct PoincarePoint {
   double t = 0;
-  long ihor = 0;  // passage count after this crossing
-  double w = 0;   // residual (rounding level)
-  double h = 0;   // y - 1/2, exact
+  long upright_passages = 0;  // passage count after this crossing
+  double w = 0;               // residual (rounding level)
+  double h = 0;               // y - 1/2, exact
   double y = 0, vy = 0, vw = 0, x = 0, vx = 0;
   Regime regime = Regime::Slide;  // regime the block continues in
   double energy = 0;              // total energy at the crossing
@@ -26,14 +26,15 @@ struct PoincarePoint {
 
 enum class CrossingDirection { Both, Positive, Negative };  // sign of w' at the crossing
 
-class PoincareCollector : public SimulationSink {
+class PoincareCollector : public WinklerSink {
  public:
-  explicit PoincareCollector(const BlockParams& p, CrossingDirection dir = CrossingDirection::Both, double t_min = 0.0);
-  void on_event(const WinklerBlock& m, const EventRecord& e) override;
+  explicit PoincareCollector(const WinklerParams& p, CrossingDirection dir = CrossingDirection::Both,
+                             double t_min = 0.0);
+  void on_event(const WinklerBlock& m, const WinklerEventRecord& e) override;
   const std::vector<PoincarePoint>& points() const { return points_; }
 
  private:
-  BlockParams p_;
+  WinklerParams p_;
   CrossingDirection dir_;
   double t_min_;
   std::vector<PoincarePoint> points_;

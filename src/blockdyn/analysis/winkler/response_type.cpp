@@ -85,7 +85,7 @@ std::string fmt(const char* f, double a, double b = 0, double c = 0) {
 
 }  // namespace
 
-ResponseMetrics compute_metrics(const BlockParams& p, const SimulationResult& r, const SwingAccumulator& acc,
+ResponseMetrics compute_metrics(const WinklerParams& p, const WinklerResult& r, const SwingAccumulator& acc,
                                 const ResponseCriteria& c) {
   ResponseMetrics m;
   m.status = r.status;
@@ -106,7 +106,7 @@ ResponseMetrics compute_metrics(const BlockParams& p, const SimulationResult& r,
     if (avail > 0) m.late_energy_fraction = (m.late_energy_max - m.e_rest) / avail;
   }
   m.max_abs_energy_error = r.max_abs_energy_error;
-  m.ihor = r.ihor;
+  m.upright_passages = r.upright_passages;
   m.takeoffs = acc.takeoffs();
   m.late_takeoffs = acc.late_takeoffs();
   m.flight_fraction = r.t_final > 0 ? acc.flight_time() / r.t_final : 0.0;
@@ -145,7 +145,7 @@ ResponseMetrics compute_metrics(const BlockParams& p, const SimulationResult& r,
   return m;
 }
 
-ResponseReport classify(const BlockParams& p, const ResponseMetrics& m, const ResponseCriteria& c) {
+ResponseReport classify(const WinklerParams& p, const ResponseMetrics& m, const ResponseCriteria& c) {
   ResponseReport rep;
   rep.metrics = m;
   auto set = [&](ResponseType t, std::string why) {
@@ -194,7 +194,7 @@ ResponseReport classify(const BlockParams& p, const ResponseMetrics& m, const Re
                  m.early_rotation_share > 0 ? m.late_rotation_share / m.early_rotation_share : 0.0));
 }
 
-ResponseRun run_response(const BlockParams& p, const GroundMotion& g, const BlockStateVec& z0,
+ResponseRun run_response(const WinklerParams& p, const GroundMotion& g, const WinklerState& z0,
                          const ResponseOptions& o) {
   validate(o);
   SwingOptions so;
@@ -202,7 +202,7 @@ ResponseRun run_response(const BlockParams& p, const GroundMotion& g, const Bloc
   so.phase_dt = o.phase_dt;
   so.late_start = o.late_fraction * o.t_end;
   SwingAccumulator acc(p, so);
-  SimulationOptions sim;
+  WinklerRunOptions sim;
   sim.t_end = o.t_end;
   sim.integrator = o.integrator;
   sim.record_events = false;

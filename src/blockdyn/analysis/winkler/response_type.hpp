@@ -27,7 +27,7 @@
 #include <vector>
 
 #include "blockdyn/analysis/winkler/swings.hpp"
-#include "blockdyn/simulation/simulate.hpp"
+#include "blockdyn/simulation/winkler_simulation.hpp"
 
 namespace blockdyn {
 
@@ -77,7 +77,7 @@ struct ResponseMetrics {
   double late_energy_max = std::numeric_limits<double>::quiet_NaN();
   double late_energy_fraction = 1;
   double max_abs_energy_error = 0;
-  long ihor = 0, takeoffs = 0, late_takeoffs = 0;
+  long upright_passages = 0, takeoffs = 0, late_takeoffs = 0;
   double flight_fraction = 0, late_flight_fraction = 0;  // of the run / of the late window
   long swings = 0, late_swings = 0;
   double early_swing_length = 0, late_swing_length = 0;      // means
@@ -92,9 +92,9 @@ struct ResponseReport {
   ResponseMetrics metrics;
 };
 
-ResponseMetrics compute_metrics(const BlockParams& p, const SimulationResult& r, const SwingAccumulator& acc,
+ResponseMetrics compute_metrics(const WinklerParams& p, const WinklerResult& r, const SwingAccumulator& acc,
                                 const ResponseCriteria& c);
-ResponseReport classify(const BlockParams& p, const ResponseMetrics& m, const ResponseCriteria& c = {});
+ResponseReport classify(const WinklerParams& p, const ResponseMetrics& m, const ResponseCriteria& c = {});
 
 struct ResponseOptions {
   double t_end = 1000;
@@ -109,18 +109,18 @@ void validate(const ResponseOptions& o);
 
 struct ResponseRun {
   ResponseReport report;
-  SimulationResult result;
+  WinklerResult result;
   std::vector<SwingRecord> swings;
   std::vector<PhaseSample> phase;
 };
 
 // One run from z0 with the swing accumulator attached, classified. Thread-safe (no shared state),
 // so a sweep can call it from parallel_map.
-ResponseRun run_response(const BlockParams& p, const GroundMotion& g, const BlockStateVec& z0,
+ResponseRun run_response(const WinklerParams& p, const GroundMotion& g, const WinklerState& z0,
                          const ResponseOptions& o);
 
 // The sweep entry point: type and metrics only.
-inline ResponseReport classify_response(const BlockParams& p, const GroundMotion& g, const BlockStateVec& z0,
+inline ResponseReport classify_response(const WinklerParams& p, const GroundMotion& g, const WinklerState& z0,
                                         const ResponseOptions& o) {
   ResponseOptions q = o;
   q.phase_dt = 0.0;

@@ -21,34 +21,35 @@ void check_search(const StabilitySearchOptions& s) {
 
 }  // namespace
 
-OverturnRun overturn_run(const BlockParams& p, const IcChoice& ic, const StudyRunOptions& o) {
+OverturnRun overturn_run(const WinklerParams& p, const IcChoice& ic, const StudyRunOptions& o) {
   // Not run_checked: a failed run is one point of a scan, reported through its status.
-  const SimulationResult res = simulate(p, {}, ic.state(p), lean_study_options(o));
+  const WinklerResult res = simulate(p, {}, ic.state(p), lean_study_options(o));
   OverturnRun out;
   out.r = p.r;
   out.k = p.k;
   out.status = res.status;
   out.overturned = res.overturn_time.has_value();
   out.time = out.overturned ? *res.overturn_time : res.t_final;
-  out.ihor = out.overturned ? res.ihor_at_overturn : res.ihor;
+  out.upright_passages = out.overturned ? res.upright_passages_at_overturn : res.upright_passages;
   return out;
 }
 
-std::vector<OverturnRun> overturn_scan(const BlockParams& base, const IcChoice& ic, const std::vector<double>& ks,
+std::vector<OverturnRun> overturn_scan(const WinklerParams& base, const IcChoice& ic, const std::vector<double>& ks,
                                        const StudyRunOptions& o, int threads) {
   return parallel_map<OverturnRun>(ks.size(), threads, [&](std::size_t i) {
-    BlockParams p = base;
+    WinklerParams p = base;
     p.k = ks[i];
     return overturn_run(p, ic, o);
   });
 }
 
-bool overturns_while_ihor_below(const BlockParams& p, const IcChoice& ic, long n, const StudyRunOptions& o) {
+bool overturns_while_upright_passages_below(const WinklerParams& p, const IcChoice& ic, long n,
+                                            const StudyRunOptions& o) {
   if (n < 1) throw std::invalid_argument("n = " + std::to_string(n) + " is out of range: must be >= 1");
-  SimulationOptions s = lean_study_options(o);
-  s.stop_at_ihor = n;  // once ihor = n the answer is no: stop there
-  const SimulationResult res = run_checked(p, ic, s);
-  return res.overturn_time.has_value() && res.ihor_at_overturn < n;
+  WinklerRunOptions s = lean_study_options(o);
+  s.stop_at_upright_passages = n;  // once ihor = n the answer is no: stop there
+  const WinklerResult res = run_checked(p, ic, s);
+  return res.overturn_time.has_value() && res.upright_passages_at_overturn < n;
 }
 
 CurvePoint k1_stability(double r, double mu, const IcChoice& ic, const StudyRunOptions& o,
@@ -56,7 +57,7 @@ CurvePoint k1_stability(double r, double mu, const IcChoice& ic, const StudyRunO
   if (!ic.is_ic1()) throw std::invalid_argument("k1_stability is defined for ic1 (or an ic1 variant)");
   CurvePoint cp;
   cp.r = r;
-  auto pred = [&](double k) { return overturns_while_ihor_below(BlockParams{r, mu, k}, ic, 1, o); };
+  auto pred = [&](double k) { return overturns_while_upright_passages_below(WinklerParams{r, mu, k}, ic, 1, o); };
   cp.result = sup_all_below(pred, log_grid_per_decade(s.k_lo, s.k_hi, s.per_decade), s.bisect);
   return cp;
 }
@@ -65,7 +66,7 @@ CurvePoint k2_stability(double r, double mu, const StudyRunOptions& o, const Sta
   CurvePoint cp;
   cp.r = r;
   const IcChoice ic{IcChoice::Set::Ic2};
-  auto pred = [&](double k) { return overturns_while_ihor_below(BlockParams{r, mu, k}, ic, 2, o); };
+  auto pred = [&](double k) { return overturns_while_upright_passages_below(WinklerParams{r, mu, k}, ic, 2, o); };
   cp.result = sup_all_below(pred, log_grid_per_decade(s.k_lo, s.k_hi, s.per_decade), s.bisect);
   return cp;
 }
@@ -83,7 +84,7 @@ K3Point k3_stability(double r, double mu, const BoundaryResult& k2, const StudyR
     return out;
   }
   const IcChoice ic{IcChoice::Set::Ic2};
-  auto pred = [&](double k) { return overturns_while_ihor_below(BlockParams{r, mu, k}, ic, 3, o); };
+  auto pred = [&](double k) { return overturns_while_upright_passages_below(WinklerParams{r, mu, k}, ic, 3, o); };
   // The scan starts at the edge of the excluded neighbourhood; for k2 below range, at k_lo.
   const double start = k2.status == BoundaryStatus::Found ? k2.hi * (1.0 + s.eps) : s.k_lo;
   if (start >= s.k_hi) {
@@ -111,7 +112,7 @@ BlowupPoint blowup_ratio(double mu, BlowupWhich which, double r_lo, double r_hi,
   // "Overturns while ihor < n regardless of k" (up to the cap k_hi). The cap is the likeliest
   // place to fail (stability grows with k), so it is tried first; the full search follows.
   auto always_overturns = [&](double r) {
-    if (!overturns_while_ihor_below(BlockParams{r, mu, s.k_hi}, ic, n, o)) return false;
+    if (!overturns_while_upright_passages_below(WinklerParams{r, mu, s.k_hi}, ic, n, o)) return false;
     const CurvePoint k2 = k2_stability(r, mu, o, s);
     if (k2.result.status == BoundaryStatus::Error) throw std::runtime_error(k2.result.message);
     if (which == BlowupWhich::R2) return k2.result.status == BoundaryStatus::AboveRange;

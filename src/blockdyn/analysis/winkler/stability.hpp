@@ -21,25 +21,26 @@
 #include "blockdyn/analysis/sweep/boundary_search.hpp"
 #include "blockdyn/analysis/winkler/ic_choice.hpp"
 #include "blockdyn/analysis/winkler/study_options.hpp"
-#include "blockdyn/simulation/simulate.hpp"
+#include "blockdyn/simulation/winkler_simulation.hpp"
 
 namespace blockdyn {
 
 struct OverturnRun {
   double r = 0, k = 0;
   bool overturned = false;
-  double time = 0;  // overturning time, or the end of the run
-  long ihor = 0;    // ihor at overturning, or at the end of the run
+  double time = 0;            // overturning time, or the end of the run
+  long upright_passages = 0;  // ihor at overturning, or at the end of the run
   SimStatus status = SimStatus::TEnd;
 };
 
 // Runs to t_end (o.t_end) or to overturning.
-OverturnRun overturn_run(const BlockParams& p, const IcChoice& ic, const StudyRunOptions& o);
-std::vector<OverturnRun> overturn_scan(const BlockParams& base, const IcChoice& ic, const std::vector<double>& ks,
+OverturnRun overturn_run(const WinklerParams& p, const IcChoice& ic, const StudyRunOptions& o);
+std::vector<OverturnRun> overturn_scan(const WinklerParams& base, const IcChoice& ic, const std::vector<double>& ks,
                                        const StudyRunOptions& o, int threads);
 
 // Does the block overturn (before t_end) while ihor < n? Stops as soon as ihor reaches n.
-bool overturns_while_ihor_below(const BlockParams& p, const IcChoice& ic, long n, const StudyRunOptions& o);
+bool overturns_while_upright_passages_below(const WinklerParams& p, const IcChoice& ic, long n,
+                                            const StudyRunOptions& o);
 
 struct StabilitySearchOptions {
   double k_lo = 10, k_hi = 1e7;  // k range; k_hi is also the cap of "regardless of k"

@@ -8,8 +8,8 @@
 
 namespace blockdyn {
 
-SimulationOptions lean_study_options(const StudyRunOptions& o) {
-  SimulationOptions s;
+WinklerRunOptions lean_study_options(const StudyRunOptions& o) {
+  WinklerRunOptions s;
   s.t_end = o.t_end;
   s.integrator = o.integrator;
   s.track_energy = false;
@@ -17,9 +17,8 @@ SimulationOptions lean_study_options(const StudyRunOptions& o) {
   return s;
 }
 
-SimulationResult run_checked(const BlockParams& p, const IcChoice& ic, const SimulationOptions& s,
-                             SimulationSink* sink) {
-  SimulationResult res = simulate(p, {}, ic.state(p), s, sink);
+WinklerResult run_checked(const WinklerParams& p, const IcChoice& ic, const WinklerRunOptions& s, WinklerSink* sink) {
+  WinklerResult res = simulate(p, {}, ic.state(p), s, sink);
   if (res.status == SimStatus::NumericalFailure)
     throw std::runtime_error("integration failed (" + std::string(to_string(res.run_status)) + ") for " + ic.name() +
                              ", r = " + number_text(p.r) + ", mu = " + number_text(p.mu) + ", k = " + number_text(p.k) +

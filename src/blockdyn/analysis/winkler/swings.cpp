@@ -39,26 +39,26 @@ void add_scaled(Energy& acc, const Energy& a, const Energy& b, double w, double 
 
 }  // namespace
 
-SwingAccumulator::SwingAccumulator(const BlockParams& p, SwingOptions opt) : p_(p), opt_(opt) {
+SwingAccumulator::SwingAccumulator(const WinklerParams& p, SwingOptions opt) : p_(p), opt_(opt) {
   validate(opt_);
   swings_.reserve(1024);
 }
 
 SwingAccumulator::Sample SwingAccumulator::sample_at(const DenseSegment<kStateDim>& seg, const WinklerBlock& m,
-                                                     const BlockMode& mode, double t, BlockStateVec& z) const {
+                                                     const WinklerMode& mode, double t, WinklerState& z) const {
   seg.eval(t, z);
   m.complete(mode, z);
   return Sample{t, z[kVW], energy(p_, z), m.energy_rates(t, mode, z)};
 }
 
 SwingAccumulator::Sample SwingAccumulator::end_sample(const DenseSegment<kStateDim>& seg, const WinklerBlock& m,
-                                                      const BlockMode& mode, double t1, BlockStateVec& z) const {
-  seg.completed_end(t1, z, [&](BlockStateVec& y) { m.complete(mode, y); });
+                                                      const WinklerMode& mode, double t1, WinklerState& z) const {
+  seg.completed_end(t1, z, [&](WinklerState& y) { m.complete(mode, y); });
   // Rates from the step's side of t1 (the ground motion just before it).
   return Sample{t1, z[kVW], energy(p_, z), m.energy_rates(std::nextafter(t1, -INFINITY), mode, z)};
 }
 
-void SwingAccumulator::on_start(const WinklerBlock& m, double t, const BlockMode& mode, const BlockStateVec& z) {
+void SwingAccumulator::on_start(const WinklerBlock& m, double t, const WinklerMode& mode, const WinklerState& z) {
   last_ = Sample{t, z[kVW], energy(p_, z), m.energy_rates(t, mode, z)};
   last_mode_ = mode;
   if (opt_.late_start <= t) {
@@ -113,14 +113,14 @@ void SwingAccumulator::close_swing(double t) {
 }
 
 void SwingAccumulator::on_segment(const WinklerBlock& m, const DenseSegment<kStateDim>& seg, double t0, double t1,
-                                  const BlockMode& mode) {
+                                  const WinklerMode& mode) {
   if (!(t1 > t0)) return;
   const bool flight = mode.regime == Regime::Flight;
   if (flight) {
     flight_time_ += t1 - t0;
     late_flight_time_ += std::max(0.0, t1 - std::max(t0, opt_.late_start));
   }
-  BlockStateVec z;
+  WinklerState z;
   // The energy rates at the step start on this step's side: those of the last sample unless the
   // mode changed there (an event) or the ground moves (an input breakpoint may fall there).
   const bool same_mode = last_mode_.regime == mode.regime && last_mode_.side == mode.side &&
@@ -186,13 +186,13 @@ void SwingAccumulator::on_segment(const WinklerBlock& m, const DenseSegment<kSta
       // Turning point inside (last_.t, tj]: locate it on the dense output.
       const int sg = sign_;
       auto g = [&](double tt) {
-        BlockStateVec zz;
+        WinklerState zz;
         seg.eval(tt, zz);
         m.complete(mode, zz);
         return sg * zz[kVW];
       };
       const double ts = locate_root(g, last_.t, tj, sg * last_.vw, sg * sj.vw);
-      BlockStateVec zs;
+      WinklerState zs;
       const Sample star = sample_at(seg, m, mode, ts, zs);
       integrate(last_, star);
       if (flight) swing_flight_ += ts - last_.t;
@@ -207,8 +207,8 @@ void SwingAccumulator::on_segment(const WinklerBlock& m, const DenseSegment<kSta
   }
 }
 
-void SwingAccumulator::on_event(const WinklerBlock&, const EventRecord& e) {
-  if (e.kind == EventKind::Takeoff) {
+void SwingAccumulator::on_event(const WinklerBlock&, const WinklerEventRecord& e) {
+  if (e.kind == WinklerEventKind::Takeoff) {
     ++takeoffs_;
     if (e.t >= opt_.late_start) ++late_takeoffs_;
   }

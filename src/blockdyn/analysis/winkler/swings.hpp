@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "blockdyn/model/winkler/energy.hpp"
-#include "blockdyn/simulation/simulate.hpp"
+#include "blockdyn/simulation/winkler_simulation.hpp"
 
 namespace blockdyn {
 
@@ -40,14 +40,14 @@ void validate(const SwingOptions& o);
 // A start with w' = 0 (ic1: released from rest) is a turning point, so the first swing begins
 // there; otherwise the motion before the first sign change is not a swing and is not reported.
 // The motion after the last turning point is not a (complete) swing either.
-class SwingAccumulator : public SimulationSink {
+class SwingAccumulator : public WinklerSink {
  public:
-  SwingAccumulator(const BlockParams& p, SwingOptions opt);
+  SwingAccumulator(const WinklerParams& p, SwingOptions opt);
 
-  void on_start(const WinklerBlock& m, double t, const BlockMode& mode, const BlockStateVec& z) override;
+  void on_start(const WinklerBlock& m, double t, const WinklerMode& mode, const WinklerState& z) override;
   void on_segment(const WinklerBlock& m, const DenseSegment<kStateDim>& seg, double t0, double t1,
-                  const BlockMode& mode) override;
-  void on_event(const WinklerBlock& m, const EventRecord& e) override;
+                  const WinklerMode& mode) override;
+  void on_event(const WinklerBlock& m, const WinklerEventRecord& e) override;
   // A step shorter than quadrature_dt is integrated from its two ends, which are exact on any
   // segment; a step with interior samples, a turning point, a phase sample or the late-statistics
   // start inside asks for the full dense output (DenseSegment::ensure_full()).
@@ -73,19 +73,19 @@ class SwingAccumulator : public SimulationSink {
     Energy rate;  // dE/dt of each component
   };
   // The sample at t inside the piece, and at its end t1 (the step's own end state when given).
-  Sample sample_at(const DenseSegment<kStateDim>& seg, const WinklerBlock& m, const BlockMode& mode, double t,
-                   BlockStateVec& z) const;
-  Sample end_sample(const DenseSegment<kStateDim>& seg, const WinklerBlock& m, const BlockMode& mode, double t1,
-                    BlockStateVec& z) const;
+  Sample sample_at(const DenseSegment<kStateDim>& seg, const WinklerBlock& m, const WinklerMode& mode, double t,
+                   WinklerState& z) const;
+  Sample end_sample(const DenseSegment<kStateDim>& seg, const WinklerBlock& m, const WinklerMode& mode, double t1,
+                    WinklerState& z) const;
   void integrate(const Sample& a, const Sample& b);
   void close_swing(double t);
 
-  BlockParams p_;
+  WinklerParams p_;
   SwingOptions opt_;
   std::vector<SwingRecord> swings_;
   std::vector<PhaseSample> phase_;
   Sample last_;
-  BlockMode last_mode_;    // the mode last_.rate was evaluated in
+  WinklerMode last_mode_;  // the mode last_.rate was evaluated in
   int sign_ = 0;           // sign of w' since the last turning point (0: not yet known)
   bool in_swing_ = false;  // a turning point has been seen
   double swing_t0_ = 0;

@@ -16,9 +16,9 @@ RotationSampler::RotationSampler(double t_end, const TwinOptions& o) {
 }
 
 void RotationSampler::on_segment(const WinklerBlock& m, const DenseSegment<kStateDim>& seg, double t0, double t1,
-                                 const BlockMode& mode) {
+                                 const WinklerMode& mode) {
   const auto w_at = [&](double t) {
-    BlockStateVec z;
+    WinklerState z;
     seg.eval(t, z);
     m.complete(mode, z);  // contact mode integrates a reduced state
     return z[kW];
@@ -37,17 +37,17 @@ bool ended_normally(SimStatus s) { return s == SimStatus::TEnd || s == SimStatus
 
 }  // namespace
 
-TwinDivergence twin_divergence(const BlockParams& p, const GroundMotion& g, const BlockStateVec& z0,
-                               const SimulationOptions& sim, const TwinOptions& o, const RotationSampler& reference,
+TwinDivergence twin_divergence(const WinklerParams& p, const GroundMotion& g, const WinklerState& z0,
+                               const WinklerRunOptions& sim, const TwinOptions& o, const RotationSampler& reference,
                                SimStatus reference_status) {
   if (!(o.delta != 0 && std::isfinite(o.delta)) || !(o.threshold > 0))
     throw std::invalid_argument("twin divergence: delta must be finite and non-zero, threshold > 0");
-  BlockStateVec z1 = z0;
+  WinklerState z1 = z0;
   z1[kVY] += o.delta;
-  SimulationOptions s = sim;
+  WinklerRunOptions s = sim;
   s.record_events = false;
   RotationSampler twin(sim.t_end, o);
-  const SimulationResult r = simulate(p, g, z1, s, &twin);
+  const WinklerResult r = simulate(p, g, z1, s, &twin);
   TwinDivergence d;
   d.outcome_differs = ended_normally(reference_status) != ended_normally(r.status);
   d.compared = std::min(reference.filled(), twin.filled());
@@ -59,12 +59,12 @@ TwinDivergence twin_divergence(const BlockParams& p, const GroundMotion& g, cons
   return d;
 }
 
-TwinDivergence twin_divergence(const BlockParams& p, const GroundMotion& g, const BlockStateVec& z0,
-                               const SimulationOptions& sim, const TwinOptions& o) {
-  SimulationOptions s = sim;
+TwinDivergence twin_divergence(const WinklerParams& p, const GroundMotion& g, const WinklerState& z0,
+                               const WinklerRunOptions& sim, const TwinOptions& o) {
+  WinklerRunOptions s = sim;
   s.record_events = false;
   RotationSampler ref(sim.t_end, o);
-  const SimulationResult r = simulate(p, g, z0, s, &ref);
+  const WinklerResult r = simulate(p, g, z0, s, &ref);
   return twin_divergence(p, g, z0, sim, o, ref, r.status);
 }
 

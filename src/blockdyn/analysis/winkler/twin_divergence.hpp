@@ -12,7 +12,7 @@
 // this only whether it took the two starts apart within t_end.
 #include <vector>
 
-#include "blockdyn/simulation/simulate.hpp"
+#include "blockdyn/simulation/winkler_simulation.hpp"
 
 namespace blockdyn {
 
@@ -25,11 +25,11 @@ struct TwinOptions {
 
 // Samples w on the dense output at the grid times of the late window, and the amplitude of w over
 // the whole run (at every step end and sample).
-class RotationSampler : public SimulationSink {
+class RotationSampler : public WinklerSink {
  public:
   RotationSampler(double t_end, const TwinOptions& o);
   void on_segment(const WinklerBlock& m, const DenseSegment<kStateDim>& seg, double t0, double t1,
-                  const BlockMode& mode) override;
+                  const WinklerMode& mode) override;
   const std::vector<double>& times() const { return times_; }
   const std::vector<double>& w() const { return w_; }
   std::size_t filled() const { return next_; }  // samples reached (fewer if the run stopped early)
@@ -49,12 +49,12 @@ struct TwinDivergence {
 };
 
 // Compares the reference run (its sampler and status) with the twin started from z0 + delta e_y'.
-TwinDivergence twin_divergence(const BlockParams& p, const GroundMotion& g, const BlockStateVec& z0,
-                               const SimulationOptions& sim, const TwinOptions& o, const RotationSampler& reference,
+TwinDivergence twin_divergence(const WinklerParams& p, const GroundMotion& g, const WinklerState& z0,
+                               const WinklerRunOptions& sim, const TwinOptions& o, const RotationSampler& reference,
                                SimStatus reference_status);
 
 // Both runs: the reference and its twin.
-TwinDivergence twin_divergence(const BlockParams& p, const GroundMotion& g, const BlockStateVec& z0,
-                               const SimulationOptions& sim, const TwinOptions& o = {});
+TwinDivergence twin_divergence(const WinklerParams& p, const GroundMotion& g, const WinklerState& z0,
+                               const WinklerRunOptions& sim, const TwinOptions& o = {});
 
 }  // namespace blockdyn

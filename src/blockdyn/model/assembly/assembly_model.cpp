@@ -12,31 +12,31 @@ namespace blockdyn {
 
 const char* assembly_event_name(int kind) {
   switch (kind) {
-    case kAsmOpen:
+    case kAssemblyContactOpens:
       return "open";
-    case kAsmClose:
+    case kAssemblyContactCloses:
       return "close";
-    case kAsmSlip:
+    case kAssemblySlipStarts:
       return "slip";
-    case kAsmStick:
+    case kAssemblyStickStarts:
       return "stick";
-    case kAsmEndSwitch:
+    case kAssemblyEndSwitch:
       return "end_switch";
-    case kAsmWZero:
+    case kAssemblyUprightPassage:
       return "w_zero";
-    case kAsmCollapse1:
+    case kAssemblyRotationCollapse:
       return "failure";
-    case kAsmCollapse2:
+    case kAssemblyBearingCollapse:
       return "failure";
-    case kAsmInvalid:
+    case kAssemblyOutsideModel:
       return "invalid";
-    case kAsmBreakpoint:
+    case kAssemblyInputBreakpoint:
       return "breakpoint";
-    case kAsmImpact:
+    case kAssemblyImpact:
       return "impact";
-    case kAsmTimeStepping:
+    case kAssemblyToTimeStepping:
       return "time_stepping";
-    case kAsmEventDriven:
+    case kAssemblyToEventDriven:
       return "event_driven";
   }
   return "?";
@@ -54,8 +54,8 @@ constexpr double kEndSwitchBand = 1e-10;
 constexpr double kStepHintFactor = 0.5;
 }  // namespace
 
-template <int Cap>
-AssemblyModel<Cap>::AssemblyModel(const Assembly& a, const GroundMotion& g, double noise_band)
+template <int MaxBlocks>
+AssemblyModel<MaxBlocks>::AssemblyModel(const Assembly& a, const GroundMotion& g, double noise_band)
     : asm_(a),
       ground_(g),
       forced_(!g.is_zero()),
@@ -63,7 +63,7 @@ AssemblyModel<Cap>::AssemblyModel(const Assembly& a, const GroundMotion& g, doub
       ni_(int(a.interfaces.size())),
       g_(a.g),
       rotation_band_(noise_band) {
-  if (nb_ < 1 || nb_ > Cap || ni_ < 1 || ni_ > kIfaces)
+  if (nb_ < 1 || nb_ > MaxBlocks || ni_ < 1 || ni_ > kIfaces)
     throw std::invalid_argument("assembly: " + std::to_string(nb_) + " blocks and " + std::to_string(ni_) +
                                 " interfaces do not fit this model's capacity");
   double min_size = INFINITY, reach = 0.0;
@@ -78,7 +78,7 @@ AssemblyModel<Cap>::AssemblyModel(const Assembly& a, const GroundMotion& g, doub
     y0_[b] = k.y;
     min_size = std::fmin(min_size, std::fmin(k.width, k.height));
   }
-  std::array<int, Cap> supports{};
+  std::array<int, MaxBlocks> supports{};
   for (const AssemblyInterface& f : a.interfaces) ++supports[f.upper];
   step_hint_ = INFINITY;
   for (int i = 0; i < ni_; ++i) {
@@ -106,8 +106,8 @@ AssemblyModel<Cap>::AssemblyModel(const Assembly& a, const GroundMotion& g, doub
   switch_band_ = std::fmax(kEndSwitchBand * min_size, noise_band);
 }
 
-template <int Cap>
-BodyPose AssemblyModel<Cap>::pose(const State& z, int b) const {
+template <int MaxBlocks>
+BodyPose AssemblyModel<MaxBlocks>::pose(const State& z, int b) const {
   BodyPose p;
   p.x = z[ix(b)];
   p.y = z[ix(b) + 1];
@@ -119,15 +119,15 @@ BodyPose AssemblyModel<Cap>::pose(const State& z, int b) const {
   return p;
 }
 
-template <int Cap>
-bool AssemblyModel<Cap>::any_slip(const Mode& m) const {
+template <int MaxBlocks>
+bool AssemblyModel<MaxBlocks>::any_slip(const Mode& m) const {
   for (int p = 0; p < 2 * ni_; ++p)
     if (slip_sign(m.point[p]) != 0) return true;
   return false;
 }
 
-template <int Cap>
-void AssemblyModel<Cap>::geometry(const State& z, Geometry& g) const {
+template <int MaxBlocks>
+void AssemblyModel<MaxBlocks>::geometry(const State& z, Geometry& g) const {
   for (int b = 0; b < nb_; ++b) g.pose[b] = pose(z, b);
   for (int i = 0; i < ni_; ++i) {
     const int l = lower_[i], u = upper_[i];
@@ -137,15 +137,16 @@ void AssemblyModel<Cap>::geometry(const State& z, Geometry& g) const {
   }
 }
 
-template <int Cap>
-double AssemblyModel<Cap>::overlap_of(const State& z, int i) const {
+template <int MaxBlocks>
+double AssemblyModel<MaxBlocks>::overlap_of(const State& z, int i) const {
   Geometry g;
   geometry(z, g);
   return overlap(g.lower[i], g.upper[i]);
 }
 
-template <int Cap>
-void AssemblyModel<Cap>::point_force(const Mode& m, const State& z, const Geometry& g, int p, PointForce& f) const {
+template <int MaxBlocks>
+void AssemblyModel<MaxBlocks>::point_force(const Mode& m, const State& z, const Geometry& g, int p,
+                                           PointForce& f) const {
   const int i = p / 2, end = p % 2;
   f.c = contact_point(g.of(lower_[i]), g.lower[i], g.of(upper_[i]), g.upper[i], end, m.owner[p]);
   f.d = -f.c.gap;
@@ -160,12 +161,12 @@ void AssemblyModel<Cap>::point_force(const Mode& m, const State& z, const Geomet
   }
 }
 
-template <int Cap>
-void AssemblyModel<Cap>::dynamics(double t, const Mode& m, const State& z, const Geometry& geo, Dynamics& d,
-                                  bool need_rates, bool all_points) const {
+template <int MaxBlocks>
+void AssemblyModel<MaxBlocks>::dynamics(double t, const Mode& m, const State& z, const Geometry& geo, Dynamics& d,
+                                        bool need_rates, bool all_points) const {
   d.ah = forced_ ? ground_.ah(t) : 0.0;
   d.av = forced_ ? ground_.av(t) : 0.0;
-  std::array<double, 3 * Cap> F;
+  std::array<double, 3 * MaxBlocks> F;
   for (int b = 0; b < nb_; ++b) {
     F[3 * b] = -m_[b] * g_ * d.ah;
     F[3 * b + 1] = -m_[b] * g_ * (1.0 + d.av);
@@ -206,16 +207,16 @@ void AssemblyModel<Cap>::dynamics(double t, const Mode& m, const State& z, const
 
 // Normal-force rate of a point: F_N' = k_N d' + c_N d'', with
 // gap'' = (a_A - a_B) . n + 2 omega_B v_AB . perp(n) for the corner of A on B's face.
-template <int Cap>
-double AssemblyModel<Cap>::normal_force_rate(const State& z, const std::array<double, 3 * Cap>& acc,
-                                             const PointForce& pf, int p) const {
+template <int MaxBlocks>
+double AssemblyModel<MaxBlocks>::normal_force_rate(const State& z, const std::array<double, 3 * MaxBlocks>& acc,
+                                                   const PointForce& pf, int p) const {
   const int i = p / 2;
   return law_[i].kn * pf.d_rate - law_[i].cn * gap_acceleration(z, acc, pf, i);
 }
 
-template <int Cap>
-double AssemblyModel<Cap>::gap_acceleration(const State& z, const std::array<double, 3 * Cap>& acc,
-                                            const PointForce& pf, int i) const {
+template <int MaxBlocks>
+double AssemblyModel<MaxBlocks>::gap_acceleration(const State& z, const std::array<double, 3 * MaxBlocks>& acc,
+                                                  const PointForce& pf, int i) const {
   auto material_acc = [&](int b, const Vec2& P) {
     if (b < 0) return Vec2{};
     return point_acceleration(acc[3 * b], acc[3 * b + 1], acc[3 * b + 2], z[iv(b) + 2],
@@ -228,8 +229,8 @@ double AssemblyModel<Cap>::gap_acceleration(const State& z, const std::array<dou
   return dot(material_acc(A, pf.c.P) - material_acc(B, pf.c.P), pf.c.n) + 2.0 * omega_b * dot(v_ab, perp(pf.c.n));
 }
 
-template <int Cap>
-void AssemblyModel<Cap>::rhs(double t, const Mode& m, const State& z, State& dz) const {
+template <int MaxBlocks>
+void AssemblyModel<MaxBlocks>::rhs(double t, const Mode& m, const State& z, State& dz) const {
   Geometry geo;
   geometry(z, geo);
   Dynamics d;
@@ -239,7 +240,7 @@ void AssemblyModel<Cap>::rhs(double t, const Mode& m, const State& z, State& dz)
       dz[ix(b) + k] = z[iv(b) + k];
       dz[iv(b) + k] = d.acc[3 * b + k];
     }
-  for (int b = nb_; b < Cap; ++b)
+  for (int b = nb_; b < MaxBlocks; ++b)
     for (int k = 0; k < 3; ++k) dz[ix(b) + k] = dz[iv(b) + k] = 0.0;
   double w_ground = 0.0;
   for (int b = 0; b < nb_; ++b) w_ground -= m_[b] * g_ * (d.ah * z[iv(b)] + d.av * z[iv(b) + 1]);
@@ -265,8 +266,9 @@ void AssemblyModel<Cap>::rhs(double t, const Mode& m, const State& z, State& dz)
   dz[kWSwitch] = 0.0;
 }
 
-template <int Cap>
-void AssemblyModel<Cap>::events(double t, const Mode& m, const State& z, std::array<double, kNumEvents>& g) const {
+template <int MaxBlocks>
+void AssemblyModel<MaxBlocks>::events(double t, const Mode& m, const State& z,
+                                      std::array<double, kNumEvents>& g) const {
   Geometry geo;
   geometry(z, geo);
   Dynamics d;
@@ -279,8 +281,8 @@ void AssemblyModel<Cap>::events(double t, const Mode& m, const State& z, std::ar
   event_values(m, z, geo, d, g);
 }
 
-template <int Cap>
-double AssemblyModel<Cap>::along_lower_rate(const Geometry& geo, int i, int side) const {
+template <int MaxBlocks>
+double AssemblyModel<MaxBlocks>::along_lower_rate(const Geometry& geo, int i, int side) const {
   // d/dt [(Q - c_L) . t_L] with Q the upper corner (a material point of the upper block), c_L the
   // lower face's centre (one of the lower block's) and t_L turning at omega_L: t_L' = omega_L n_L.
   const Face& lf = geo.lower[i];
@@ -292,9 +294,10 @@ double AssemblyModel<Cap>::along_lower_rate(const Geometry& geo, int i, int side
   return dot(vq - vc, lf.t) + lp.omega * dot(Q - lf.c, perp(lf.t));
 }
 
-template <int Cap>
-void AssemblyModel<Cap>::event_rates(double, const Mode& m, const State& z, const State& dz,
-                                     std::array<double, kNumEvents>& g, std::array<double, kNumEvents>& g_rate) const {
+template <int MaxBlocks>
+void AssemblyModel<MaxBlocks>::event_rates(double, const Mode& m, const State& z, const State& dz,
+                                           std::array<double, kNumEvents>& g,
+                                           std::array<double, kNumEvents>& g_rate) const {
   Geometry geo;
   geometry(z, geo);
   Dynamics d;
@@ -349,9 +352,9 @@ void AssemblyModel<Cap>::event_rates(double, const Mode& m, const State& z, cons
   }
 }
 
-template <int Cap>
-void AssemblyModel<Cap>::event_values(const Mode& m, const State& z, const Geometry& geo, const Dynamics& d,
-                                      std::array<double, kNumEvents>& g) const {
+template <int MaxBlocks>
+void AssemblyModel<MaxBlocks>::event_values(const Mode& m, const State& z, const Geometry& geo, const Dynamics& d,
+                                            std::array<double, kNumEvents>& g) const {
   g.fill(1.0);
   for (int p = 0; p < 2 * ni_; ++p) {
     const int i = p / 2;
@@ -377,8 +380,8 @@ void AssemblyModel<Cap>::event_values(const Mode& m, const State& z, const Geome
     if (lower_[i] >= 0) g[ev_bearing(i)] = overlap(geo.lower[i], geo.upper[i]) - asm_.min_bearing;
 }
 
-template <int Cap>
-void AssemblyModel<Cap>::complete(const Mode& m, State& z) const {
+template <int MaxBlocks>
+void AssemblyModel<MaxBlocks>::complete(const Mode& m, State& z) const {
   for (int p = 0; p < 2 * ni_; ++p)
     if (!is_closed(m.point[p])) z[iu(p)] = 0.0;  // an open point has no tangential spring
   if (!any_slip(m)) return;
@@ -392,14 +395,14 @@ void AssemblyModel<Cap>::complete(const Mode& m, State& z) const {
   }
 }
 
-template <int Cap>
-std::optional<Transition<typename AssemblyModel<Cap>::Mode>> AssemblyModel<Cap>::resolve_chatter(double, const Mode& m,
-                                                                                                 const State& z) const {
+template <int MaxBlocks>
+std::optional<Transition<typename AssemblyModel<MaxBlocks>::Mode>> AssemblyModel<MaxBlocks>::resolve_chatter(
+    double, const Mode& m, const State& z) const {
   Geometry geo;
   geometry(z, geo);
   Transition<Mode> tr;
   tr.next = m;
-  tr.kind = kAsmOpen;
+  tr.kind = kAssemblyContactOpens;
   bool any = false;
   for (int p = 0; p < 2 * ni_; ++p) {
     if (m.held[p]) continue;
@@ -415,8 +418,8 @@ std::optional<Transition<typename AssemblyModel<Cap>::Mode>> AssemblyModel<Cap>:
   return tr;  // complete() releases the opened points' tangential springs
 }
 
-template <int Cap>
-PointState AssemblyModel<Cap>::consistent_state(const Mode& m, const State& z, const Geometry& g, int p) const {
+template <int MaxBlocks>
+PointState AssemblyModel<MaxBlocks>::consistent_state(const Mode& m, const State& z, const Geometry& g, int p) const {
   const PointLaw& l = law_[p / 2];
   Mode probe = m;
   probe.point[p] = PointState::Stick;
@@ -429,13 +432,13 @@ PointState AssemblyModel<Cap>::consistent_state(const Mode& m, const State& z, c
   return m.point[p];
 }
 
-template <int Cap>
-Transition<typename AssemblyModel<Cap>::Mode> AssemblyModel<Cap>::transition(double, const Mode& m, State& z,
-                                                                             int event) const {
+template <int MaxBlocks>
+Transition<typename AssemblyModel<MaxBlocks>::Mode> AssemblyModel<MaxBlocks>::transition(double, const Mode& m,
+                                                                                         State& z, int event) const {
   Transition<Mode> tr;
   tr.next = m;
   if (event == kBreakpoint) {
-    tr.kind = kAsmBreakpoint;
+    tr.kind = kAssemblyInputBreakpoint;
     return tr;
   }
   const Energy e_before = energy_terms(m, z);
@@ -444,11 +447,11 @@ Transition<typename AssemblyModel<Cap>::Mode> AssemblyModel<Cap>::transition(dou
     const int p = event;
     if (is_closed(m.point[p])) {
       tr.next.point[p] = PointState::Open;
-      tr.kind = kAsmOpen;
+      tr.kind = kAssemblyContactOpens;
     } else {
       tr.next.point[p] = law_[p / 2].frictionless() ? PointState::SlipPos : PointState::Stick;
       tr.next.held[p] = 0;
-      tr.kind = kAsmClose;
+      tr.kind = kAssemblyContactCloses;
     }
     z[iu(p)] = 0.0;
   } else if (event < ev_owner(0)) {
@@ -458,10 +461,10 @@ Transition<typename AssemblyModel<Cap>::Mode> AssemblyModel<Cap>::transition(dou
       const double u = z[iu(p)];
       const int s = u != 0.0 ? (u > 0 ? 1 : -1) : (pf.c.slip_rate >= 0 ? 1 : -1);
       tr.next.point[p] = s > 0 ? PointState::SlipPos : PointState::SlipNeg;
-      tr.kind = kAsmSlip;
+      tr.kind = kAssemblySlipStarts;
     } else {
       tr.next.point[p] = PointState::Stick;
-      tr.kind = kAsmStick;
+      tr.kind = kAssemblyStickStarts;
     }
   } else if (event < ev_valid(0)) {
     const int p = event - ev_owner(0);
@@ -470,24 +473,24 @@ Transition<typename AssemblyModel<Cap>::Mode> AssemblyModel<Cap>::transition(dou
     geometry(z, geo);
     tr.next.point[p] = consistent_state(tr.next, z, geo, p);
     if (!is_closed(tr.next.point[p])) z[iu(p)] = 0.0;
-    tr.kind = kAsmEndSwitch;
+    tr.kind = kAssemblyEndSwitch;
     work_slot = kWSwitch;
   } else if (event < ev_wzero(0)) {
     tr.stop = true;
-    tr.kind = kAsmInvalid;
+    tr.kind = kAssemblyOutsideModel;
     return tr;
   } else if (event < ev_collapse(0)) {
     const int b = event - ev_wzero(0);
     tr.next.side[b] = std::int8_t(-m.side[b]);
-    tr.kind = kAsmWZero;
+    tr.kind = kAssemblyUprightPassage;
     return tr;
   } else if (event < ev_bearing(0)) {
     tr.stop = true;
-    tr.kind = kAsmCollapse1;
+    tr.kind = kAssemblyRotationCollapse;
     return tr;
   } else {
     tr.stop = true;
-    tr.kind = kAsmCollapse2;
+    tr.kind = kAssemblyBearingCollapse;
     return tr;
   }
   // The spring energy that a switch releases or stores (the static-to-kinetic drop of the
@@ -507,15 +510,15 @@ Transition<typename AssemblyModel<Cap>::Mode> AssemblyModel<Cap>::transition(dou
   return tr;
 }
 
-template <int Cap>
-typename AssemblyModel<Cap>::State AssemblyModel<Cap>::abs_tol_scale() const {
+template <int MaxBlocks>
+typename AssemblyModel<MaxBlocks>::State AssemblyModel<MaxBlocks>::abs_tol_scale() const {
   State s;
   s.fill(1.0);
   return s;
 }
 
-template <int Cap>
-typename AssemblyModel<Cap>::State AssemblyModel<Cap>::initial_state() const {
+template <int MaxBlocks>
+typename AssemblyModel<MaxBlocks>::State AssemblyModel<MaxBlocks>::initial_state() const {
   State z{};
   for (int b = 0; b < nb_; ++b) {
     const AssemblyBlock& k = asm_.blocks[b];
@@ -529,8 +532,8 @@ typename AssemblyModel<Cap>::State AssemblyModel<Cap>::initial_state() const {
   return z;
 }
 
-template <int Cap>
-typename AssemblyModel<Cap>::Mode AssemblyModel<Cap>::initial_mode(const State& z) const {
+template <int MaxBlocks>
+typename AssemblyModel<MaxBlocks>::Mode AssemblyModel<MaxBlocks>::initial_mode(const State& z) const {
   Mode m{};
   Geometry geo;
   geometry(z, geo);
@@ -543,8 +546,8 @@ typename AssemblyModel<Cap>::Mode AssemblyModel<Cap>::initial_mode(const State& 
   return m;
 }
 
-template <int Cap>
-std::optional<std::string> AssemblyModel<Cap>::validity_problem(const Mode& m, const State& z) const {
+template <int MaxBlocks>
+std::optional<std::string> AssemblyModel<MaxBlocks>::validity_problem(const Mode& m, const State& z) const {
   for (std::size_t k = 0; k < kDim; ++k)
     if (!std::isfinite(z[k])) return "the state is not finite";
   for (int p = 0; p < 2 * ni_; ++p) {
@@ -556,8 +559,8 @@ std::optional<std::string> AssemblyModel<Cap>::validity_problem(const Mode& m, c
   return std::nullopt;
 }
 
-template <int Cap>
-typename AssemblyModel<Cap>::Energy AssemblyModel<Cap>::energy_terms(const Mode& m, const State& z) const {
+template <int MaxBlocks>
+typename AssemblyModel<MaxBlocks>::Energy AssemblyModel<MaxBlocks>::energy_terms(const Mode& m, const State& z) const {
   Energy e;
   for (int b = 0; b < nb_; ++b) {
     const double vx = z[iv(b)], vy = z[iv(b) + 1], w = z[iv(b) + 2];

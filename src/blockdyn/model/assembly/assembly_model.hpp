@@ -9,7 +9,7 @@
 // criteria (mode 1: a block's rotation reaches its limit; mode 2: an interface loses its
 // bearing) and interpenetration beyond the model's validity.
 //
-// The capacity Cap (blocks) fixes the state size at compile time (no allocation in the loop);
+// The capacity MaxBlocks (blocks) fixes the state size at compile time (no allocation in the loop);
 // an assembly with fewer blocks leaves the spare slots at zero.
 // State: (x, y, theta) per block, their rates, the tangential elastic displacement of each
 // contact point, and the accumulated works of the ground, of the normal contacts (dashpots),
@@ -31,48 +31,48 @@ namespace blockdyn {
 
 // Kinds of assembly events reported to observers.
 enum AssemblyEventKind : int {
-  kAsmOpen = 1,
-  kAsmClose,
-  kAsmSlip,
-  kAsmStick,
-  kAsmEndSwitch,
-  kAsmWZero,
-  kAsmCollapse1,
-  kAsmCollapse2,
-  kAsmInvalid,
-  kAsmBreakpoint,
-  kAsmImpact,
+  kAssemblyContactOpens = 1,
+  kAssemblyContactCloses,
+  kAssemblySlipStarts,
+  kAssemblyStickStarts,
+  kAssemblyEndSwitch,
+  kAssemblyUprightPassage,
+  kAssemblyRotationCollapse,
+  kAssemblyBearingCollapse,
+  kAssemblyOutsideModel,
+  kAssemblyInputBreakpoint,
+  kAssemblyImpact,
   // The rigid law, event-driven: a window handed to time-stepping, and the return from it.
-  kAsmTimeStepping,
-  kAsmEventDriven
+  kAssemblyToTimeStepping,
+  kAssemblyToEventDriven
 };
 const char* assembly_event_name(int kind);
 
-template <int Cap>
+template <int MaxBlocks>
 struct AssemblyMode {
-  static constexpr int kIfaces = Cap + 1, kPoints = 2 * kIfaces;
+  static constexpr int kIfaces = MaxBlocks + 1, kPoints = 2 * kIfaces;
   std::array<PointState, kPoints> point{};
   std::array<std::uint8_t, kPoints> owner{};  // 0: the upper block's corner, 1: the lower's
-  std::array<std::int8_t, Cap> side{};        // sign of each block's rotation (+1 for 0)
+  std::array<std::int8_t, MaxBlocks> side{};  // sign of each block's rotation (+1 for 0)
   std::array<std::uint8_t, kPoints> held{};   // open points held open after chatter (PointLaw::close_band)
 };
 
-template <int Cap>
+template <int MaxBlocks>
 class AssemblyModel {
  public:
-  static constexpr int kBlocks = Cap, kIfaces = Cap + 1, kPoints = 2 * kIfaces;
-  static constexpr std::size_t kDim = 6 * Cap + kPoints + 4;
+  static constexpr int kBlocks = MaxBlocks, kIfaces = MaxBlocks + 1, kPoints = 2 * kIfaces;
+  static constexpr std::size_t kDim = 6 * MaxBlocks + kPoints + 4;
   // Per point: normal, tangential, end owner, validity; per block: theta = 0 and collapse;
   // per interface: bearing.
-  static constexpr std::size_t kNumEvents = 4 * kPoints + 2 * Cap + kIfaces;
+  static constexpr std::size_t kNumEvents = 4 * kPoints + 2 * MaxBlocks + kIfaces;
   static constexpr bool kStateJumps = false;
-  using Mode = AssemblyMode<Cap>;
+  using Mode = AssemblyMode<MaxBlocks>;
   using State = Vec<kDim>;
 
   static constexpr std::size_t ix(int b) { return 3 * b; }
-  static constexpr std::size_t iv(int b) { return 3 * Cap + 3 * b; }
-  static constexpr std::size_t iu(int p) { return 6 * Cap + p; }
-  static constexpr std::size_t kWGround = 6 * Cap + kPoints, kWNormal = kWGround + 1, kWFriction = kWGround + 2,
+  static constexpr std::size_t iv(int b) { return 3 * MaxBlocks + 3 * b; }
+  static constexpr std::size_t iu(int p) { return 6 * MaxBlocks + p; }
+  static constexpr std::size_t kWGround = 6 * MaxBlocks + kPoints, kWNormal = kWGround + 1, kWFriction = kWGround + 2,
                                kWSwitch = kWGround + 3;
   // Event index layout.
   static constexpr int ev_normal(int p) { return p; }
@@ -80,8 +80,8 @@ class AssemblyModel {
   static constexpr int ev_owner(int p) { return 2 * kPoints + p; }
   static constexpr int ev_valid(int p) { return 3 * kPoints + p; }
   static constexpr int ev_wzero(int b) { return 4 * kPoints + b; }
-  static constexpr int ev_collapse(int b) { return 4 * kPoints + Cap + b; }
-  static constexpr int ev_bearing(int i) { return 4 * kPoints + 2 * Cap + i; }
+  static constexpr int ev_collapse(int b) { return 4 * kPoints + MaxBlocks + b; }
+  static constexpr int ev_bearing(int i) { return 4 * kPoints + 2 * MaxBlocks + i; }
 
   // Elongation (m) by which a sticking point's tangential spring may exceed the static cone
   // before it slips (PointLaw::stick_band = k_T kStickBand: 3e-4 N at seed 002's stiffness, far
@@ -142,9 +142,9 @@ class AssemblyModel {
   };
   // The poses and faces of a state, computed once per evaluation (one sincos per block).
   struct Geometry {
-    std::array<BodyPose, Cap + 1> pose;  // blocks; the last slot is the ground (at rest)
+    std::array<BodyPose, MaxBlocks + 1> pose;  // blocks; the last slot is the ground (at rest)
     std::array<Face, kIfaces> lower, upper;
-    const BodyPose& of(int b) const { return b < 0 ? pose[Cap] : pose[b]; }
+    const BodyPose& of(int b) const { return b < 0 ? pose[MaxBlocks] : pose[b]; }
   };
   void geometry(const State& z, Geometry& g) const;
   void point_force(const Mode& m, const State& z, const Geometry& g, int p, PointForce& f) const;
@@ -166,7 +166,7 @@ class AssemblyModel {
   // their faces get only their gap (what the right-hand side needs).
   struct Dynamics {
     double ah, av;
-    std::array<double, 3 * Cap> acc;
+    std::array<double, 3 * MaxBlocks> acc;
     std::array<PointForce, kPoints> pf;
     std::array<double, kPoints> fn_rate;
   };
@@ -188,8 +188,10 @@ class AssemblyModel {
   void event_values(const Mode& m, const State& z, const Geometry& geo, const Dynamics& d,
                     std::array<double, kNumEvents>& g) const;
   // A point's gap acceleration for block accelerations acc, and its normal force's rate.
-  double gap_acceleration(const State& z, const std::array<double, 3 * Cap>& acc, const PointForce& pf, int i) const;
-  double normal_force_rate(const State& z, const std::array<double, 3 * Cap>& acc, const PointForce& pf, int p) const;
+  double gap_acceleration(const State& z, const std::array<double, 3 * MaxBlocks>& acc, const PointForce& pf,
+                          int i) const;
+  double normal_force_rate(const State& z, const std::array<double, 3 * MaxBlocks>& acc, const PointForce& pf,
+                           int p) const;
   // Rate of along_lower(lower, upper, side) (the upper base corner's coordinate along the lower
   // face) of interface i.
   double along_lower_rate(const Geometry& geo, int i, int side) const;
@@ -198,7 +200,7 @@ class AssemblyModel {
   GroundMotion ground_;
   bool forced_;
   int nb_, ni_;
-  std::array<double, Cap> m_{}, I_{}, inv_m_{}, inv_I_{}, limit_{}, y0_{};
+  std::array<double, MaxBlocks> m_{}, I_{}, inv_m_{}, inv_I_{}, limit_{}, y0_{};
   std::array<PointLaw, kIfaces> law_{};
   std::array<int, kIfaces> lower_{}, upper_{};
   std::array<LocalFace, kIfaces> lface_{}, uface_{};  // in the blocks' frames (the ground's: fixed)

@@ -47,7 +47,7 @@
 #include "blockdyn/model/assembly/assembly_params.hpp"
 #include "blockdyn/model/assembly/contact_point.hpp"
 #include "blockdyn/model/assembly/interface_faces.hpp"
-#include "blockdyn/model/common/lemke.hpp"
+#include "blockdyn/numerics/lemke.hpp"
 
 namespace blockdyn {
 

@@ -43,8 +43,8 @@ Assembly for_geometry(Assembly a) {
 }
 }  // namespace
 
-template <int Cap>
-RigidAssemblyModel<Cap>::RigidAssemblyModel(const Assembly& a, const GroundMotion& g, double noise_band)
+template <int MaxBlocks>
+RigidAssemblyModel<MaxBlocks>::RigidAssemblyModel(const Assembly& a, const GroundMotion& g, double noise_band)
     : geo_(for_geometry(a), g, noise_band),
       ground_(g),
       forced_(!g.is_zero()),
@@ -79,9 +79,9 @@ RigidAssemblyModel<Cap>::RigidAssemblyModel(const Assembly& a, const GroundMotio
   z0_ = geo_.initial_state();
 }
 
-template <int Cap>
-void RigidAssemblyModel<Cap>::rows(const State& z, const Geometry& geo, const Mode& m,
-                                   std::array<PointRows, kPoints>& r) const {
+template <int MaxBlocks>
+void RigidAssemblyModel<MaxBlocks>::rows(const State& z, const Geometry& geo, const Mode& m,
+                                         std::array<PointRows, kPoints>& r) const {
   for (int p = 0; p < 2 * ni_; ++p) {
     const int i = p / 2, owner = m.owner[p];
     const int u = upper_[i], l = lower_[i];
@@ -113,8 +113,9 @@ void RigidAssemblyModel<Cap>::rows(const State& z, const Geometry& geo, const Mo
   }
 }
 
-template <int Cap>
-double RigidAssemblyModel<Cap>::rate_of(const PointRows& r, const std::array<double, kCoords>& acc, bool normal) const {
+template <int MaxBlocks>
+double RigidAssemblyModel<MaxBlocks>::rate_of(const PointRows& r, const std::array<double, kCoords>& acc,
+                                              bool normal) const {
   const auto& ru = normal ? r.nu : r.tu;
   const auto& rl = normal ? r.nl : r.tl;
   double v = normal ? r.kn : r.kt;
@@ -178,8 +179,8 @@ double relative_rate(const std::array<double, NC>& w, const Rows& k, bool normal
 }
 }  // namespace
 
-template <int Cap>
-typename RigidAssemblyModel<Cap>::Solution RigidAssemblyModel<Cap>::solve(
+template <int MaxBlocks>
+typename RigidAssemblyModel<MaxBlocks>::Solution RigidAssemblyModel<MaxBlocks>::solve(
     double t, const Mode& m, const State& z, const std::array<PointRows, kPoints>& r) const {
   Solution s;
   const double ah = forced_ ? ground_.ah(t) : 0.0, av = forced_ ? ground_.av(t) : 0.0;
@@ -250,8 +251,8 @@ typename RigidAssemblyModel<Cap>::Solution RigidAssemblyModel<Cap>::solve(
   return s;
 }
 
-template <int Cap>
-void RigidAssemblyModel<Cap>::rhs(double t, const Mode& m, const State& z, State& dz) const {
+template <int MaxBlocks>
+void RigidAssemblyModel<MaxBlocks>::rhs(double t, const Mode& m, const State& z, State& dz) const {
   dz.fill(0.0);
   if (m.rest) return;
   Geometry geo;
@@ -273,8 +274,9 @@ void RigidAssemblyModel<Cap>::rhs(double t, const Mode& m, const State& z, State
   dz[kWFriction] = w_friction;
 }
 
-template <int Cap>
-void RigidAssemblyModel<Cap>::events(double t, const Mode& m, const State& z, std::array<double, kNumEvents>& g) const {
+template <int MaxBlocks>
+void RigidAssemblyModel<MaxBlocks>::events(double t, const Mode& m, const State& z,
+                                           std::array<double, kNumEvents>& g) const {
   g.fill(1.0);
   if (m.rest) {
     const auto a = ground_acceleration(t);
@@ -320,8 +322,8 @@ void RigidAssemblyModel<Cap>::events(double t, const Mode& m, const State& z, st
     if (lower_[i] >= 0) g[ev_bearing(i)] = overlap(geo.lower[i], geo.upper[i]) - geo_.assembly().min_bearing;
 }
 
-template <int Cap>
-bool RigidAssemblyModel<Cap>::select_mode(double t, Mode& m, const State& z) const {
+template <int MaxBlocks>
+bool RigidAssemblyModel<MaxBlocks>::select_mode(double t, Mode& m, const State& z) const {
   Geometry geo;
   geo_.geometry(z, geo);
   std::array<PointRows, kPoints> r;
@@ -376,8 +378,8 @@ bool RigidAssemblyModel<Cap>::select_mode(double t, Mode& m, const State& z) con
 
 // The velocity-level problem of one impact: the points in the impact set, which of them are
 // active (an impulse, the restitution target reached), each interface's slip, and the solution.
-template <int Cap>
-struct RigidAssemblyModel<Cap>::ImpactWork {
+template <int MaxBlocks>
+struct RigidAssemblyModel<MaxBlocks>::ImpactWork {
   static constexpr int kMaxU = kPoints + kIfaces;
   std::array<PointRows, kPoints> r;
   std::array<double, kCoords> v{}, vp{};  // velocities before and after
@@ -390,8 +392,8 @@ struct RigidAssemblyModel<Cap>::ImpactWork {
   double tol_v = 0, p_scale = 0;
 };
 
-template <int Cap>
-bool RigidAssemblyModel<Cap>::solve_impact(ImpactWork& w) const {
+template <int MaxBlocks>
+bool RigidAssemblyModel<MaxBlocks>::solve_impact(ImpactWork& w) const {
   auto& sys = w.sys;
   sys.clear();
   std::array<int, kPoints> jn{};
@@ -430,8 +432,8 @@ bool RigidAssemblyModel<Cap>::solve_impact(ImpactWork& w) const {
   return true;
 }
 
-template <int Cap>
-bool RigidAssemblyModel<Cap>::change_impact_set(ImpactWork& w) const {
+template <int MaxBlocks>
+bool RigidAssemblyModel<MaxBlocks>::change_impact_set(ImpactWork& w) const {
   // The most violated condition, if any: a pulling impulse, a point approaching, friction
   // beyond the cone, a slip reversing.
   double worst = 1.0;
@@ -463,8 +465,8 @@ bool RigidAssemblyModel<Cap>::change_impact_set(ImpactWork& w) const {
   return kind != 0;
 }
 
-template <int Cap>
-void RigidAssemblyModel<Cap>::apply_impact(const ImpactWork& w, Mode& m, State& z) const {
+template <int MaxBlocks>
+void RigidAssemblyModel<MaxBlocks>::apply_impact(const ImpactWork& w, Mode& m, State& z) const {
   // The impulses' works (exact: P (u+ + u-) / 2), and the new velocities.
   double w_n = 0.0, w_t = 0.0;
   std::array<bool, kIfaces> booked{};
@@ -501,8 +503,8 @@ void RigidAssemblyModel<Cap>::apply_impact(const ImpactWork& w, Mode& m, State& 
   }
 }
 
-template <int Cap>
-bool RigidAssemblyModel<Cap>::impact(double t, Mode& m, State& z) const {
+template <int MaxBlocks>
+bool RigidAssemblyModel<MaxBlocks>::impact(double t, Mode& m, State& z) const {
   ImpactWork w;
   Geometry geo;
   geo_.geometry(z, geo);
@@ -545,8 +547,9 @@ bool RigidAssemblyModel<Cap>::impact(double t, Mode& m, State& z) const {
   return true;
 }
 
-template <int Cap>
-StaticProblem RigidAssemblyModel<Cap>::static_problem(const State& z, const std::array<PointRows, kPoints>& r) const {
+template <int MaxBlocks>
+StaticProblem RigidAssemblyModel<MaxBlocks>::static_problem(const State& z,
+                                                            const std::array<PointRows, kPoints>& r) const {
   StaticProblem sp;
   sp.g = g_;
   for (int b = 0; b < nb_; ++b) {
@@ -567,8 +570,9 @@ StaticProblem RigidAssemblyModel<Cap>::static_problem(const State& z, const std:
   return sp;
 }
 
-template <int Cap>
-std::optional<typename RigidAssemblyModel<Cap>::RestLimits> RigidAssemblyModel<Cap>::rest_limits(const State& z) const {
+template <int MaxBlocks>
+std::optional<typename RigidAssemblyModel<MaxBlocks>::RestLimits> RigidAssemblyModel<MaxBlocks>::rest_limits(
+    const State& z) const {
   Geometry geo;
   geo_.geometry(z, geo);
   Mode m{};
@@ -582,8 +586,8 @@ std::optional<typename RigidAssemblyModel<Cap>::RestLimits> RigidAssemblyModel<C
   return RestLimits{pos.lambda, neg.lambda};
 }
 
-template <int Cap>
-bool RigidAssemblyModel<Cap>::try_rest(double t, Mode& m, State& z) const {
+template <int MaxBlocks>
+bool RigidAssemblyModel<MaxBlocks>::try_rest(double t, Mode& m, State& z) const {
   Geometry geo;
   geo_.geometry(z, geo);
   std::array<PointRows, kPoints> r;
@@ -624,9 +628,10 @@ bool RigidAssemblyModel<Cap>::try_rest(double t, Mode& m, State& z) const {
   return true;
 }
 
-template <int Cap>
-typename RigidAssemblyModel<Cap>::Mode RigidAssemblyModel<Cap>::mechanism_mode(const Mode& m, const State& z,
-                                                                               int direction) const {
+template <int MaxBlocks>
+typename RigidAssemblyModel<MaxBlocks>::Mode RigidAssemblyModel<MaxBlocks>::mechanism_mode(const Mode& m,
+                                                                                           const State& z,
+                                                                                           int direction) const {
   Geometry geo;
   geo_.geometry(z, geo);
   std::array<PointRows, kPoints> r;
@@ -656,8 +661,8 @@ typename RigidAssemblyModel<Cap>::Mode RigidAssemblyModel<Cap>::mechanism_mode(c
   return out;
 }
 
-template <int Cap>
-void RigidAssemblyModel<Cap>::project(const Mode& m, State& z, bool velocities) const {
+template <int MaxBlocks>
+void RigidAssemblyModel<MaxBlocks>::project(const Mode& m, State& z, bool velocities) const {
   // Positions: the closed points' gaps back to zero (they drift by the integration error and the
   // events' noise band, and a point that reopens must start on its face for its gap event to mean
   // what it says), by Newton steps until they are zero to rounding (one linearised step leaves a
@@ -671,8 +676,8 @@ void RigidAssemblyModel<Cap>::project(const Mode& m, State& z, bool velocities) 
   z[kWNormal] += energy_terms(m, z).total() - before.total();
 }
 
-template <int Cap>
-bool RigidAssemblyModel<Cap>::project_step(const Mode& m, State& z, bool velocities) const {
+template <int MaxBlocks>
+bool RigidAssemblyModel<MaxBlocks>::project_step(const Mode& m, State& z, bool velocities) const {
   Geometry geo;
   geo_.geometry(z, geo);
   std::array<PointRows, kPoints> r;
@@ -709,28 +714,28 @@ bool RigidAssemblyModel<Cap>::project_step(const Mode& m, State& z, bool velocit
   return true;
 }
 
-template <int Cap>
-void RigidAssemblyModel<Cap>::hand_over(Transition<Mode>& tr, const std::string& why) const {
+template <int MaxBlocks>
+void RigidAssemblyModel<MaxBlocks>::hand_over(Transition<Mode>& tr, const std::string& why) const {
   tr.stop = true;
-  tr.kind = kAsmTimeStepping;
+  tr.kind = kAssemblyToTimeStepping;
   handover_ = true;
   problem_ = why;
 }
 
-template <int Cap>
-void RigidAssemblyModel<Cap>::reselect(double t, Transition<Mode>& tr, State& z) const {
+template <int MaxBlocks>
+void RigidAssemblyModel<MaxBlocks>::reselect(double t, Transition<Mode>& tr, State& z) const {
   project(tr.next, z, false);
   if (!select_mode(t, tr.next, z))
     hand_over(tr, "no contact mode consistent (the acceleration-level contact problem has no solution)");
 }
 
-template <int Cap>
-void RigidAssemblyModel<Cap>::leave_rest(double t, const Mode& m, State& z, Transition<Mode>& tr) const {
+template <int MaxBlocks>
+void RigidAssemblyModel<MaxBlocks>::leave_rest(double t, const Mode& m, State& z, Transition<Mode>& tr) const {
   Mode& n = tr.next;
   const auto a = ground_acceleration(t);
   const bool pos_fails = m.rest_pos * (1.0 + a[1]) - a[0] < 0.0;
   const bool neg_fails = m.rest_neg * (1.0 + a[1]) + a[0] < 0.0;
-  tr.kind = kAsmBreakpoint;
+  tr.kind = kAssemblyInputBreakpoint;
   if (!pos_fails && !neg_fails && 1.0 + a[1] > 0.0) return;
   if (!(1.0 + a[1] > 0.0)) {
     n.rest = false;
@@ -738,18 +743,19 @@ void RigidAssemblyModel<Cap>::leave_rest(double t, const Mode& m, State& z, Tran
   } else {
     n = mechanism_mode(m, z, pos_fails ? +1 : -1);
   }
-  tr.kind = kAsmSlip;
+  tr.kind = kAssemblySlipStarts;
   for (int p = 0; p < 2 * ni_; ++p)
-    if (n.point[p] == PointState::Open) tr.kind = kAsmOpen;
+    if (n.point[p] == PointState::Open) tr.kind = kAssemblyContactOpens;
   reselect(t, tr, z);
 }
 
-template <int Cap>
-void RigidAssemblyModel<Cap>::open_or_close(double t, const Mode& m, State& z, int p, Transition<Mode>& tr) const {
+template <int MaxBlocks>
+void RigidAssemblyModel<MaxBlocks>::open_or_close(double t, const Mode& m, State& z, int p,
+                                                  Transition<Mode>& tr) const {
   Mode& n = tr.next;
   if (is_closed(m.point[p])) {
     n.point[p] = PointState::Open;
-    tr.kind = kAsmOpen;
+    tr.kind = kAssemblyContactOpens;
   } else {
     n.point[p] = PointState::Stick;
     const State before = z;
@@ -761,17 +767,18 @@ void RigidAssemblyModel<Cap>::open_or_close(double t, const Mode& m, State& z, i
     if (impacts_ > kAccumulationImpacts && t - oldest < kAccumulationWindow * std::sqrt(len_ / g_))
       return hand_over(tr, "impacts accumulating without settling (a chattering contact)");
     // An impact when the velocities jumped; a contact closing without approach (grazing) otherwise.
-    tr.kind = kAsmClose;
+    tr.kind = kAssemblyContactCloses;
     for (int b = 0; b < nb_; ++b)
       for (int k = 0; k < 3; ++k)
-        if (z[iv(b) + k] != before[iv(b) + k]) tr.kind = kAsmImpact;
+        if (z[iv(b) + k] != before[iv(b) + k]) tr.kind = kAssemblyImpact;
   }
   reselect(t, tr, z);
   if (!tr.stop) try_rest(t, n, z);
 }
 
-template <int Cap>
-void RigidAssemblyModel<Cap>::stick_or_slip(double t, const Mode& m, State& z, int p, Transition<Mode>& tr) const {
+template <int MaxBlocks>
+void RigidAssemblyModel<MaxBlocks>::stick_or_slip(double t, const Mode& m, State& z, int p,
+                                                  Transition<Mode>& tr) const {
   Mode& n = tr.next;
   const int i = p / 2;
   if (m.point[p] == PointState::Stick) {
@@ -784,21 +791,21 @@ void RigidAssemblyModel<Cap>::stick_or_slip(double t, const Mode& m, State& z, i
     for (int q = 2 * i; q < 2 * i + 2; ++q) ft += s.ft[q];
     for (int q = 2 * i; q < 2 * i + 2; ++q)
       if (is_closed(n.point[q])) n.point[q] = ft > 0 ? PointState::SlipNeg : PointState::SlipPos;
-    tr.kind = kAsmSlip;
+    tr.kind = kAssemblySlipStarts;
   } else {
     for (int q = 2 * i; q < 2 * i + 2; ++q)
       if (is_closed(n.point[q])) n.point[q] = PointState::Stick;
-    tr.kind = kAsmStick;
+    tr.kind = kAssemblyStickStarts;
   }
   reselect(t, tr, z);
   if (!tr.stop) try_rest(t, n, z);
 }
 
-template <int Cap>
-void RigidAssemblyModel<Cap>::switch_end(double t, State& z, int p, Transition<Mode>& tr) const {
+template <int MaxBlocks>
+void RigidAssemblyModel<MaxBlocks>::switch_end(double t, State& z, int p, Transition<Mode>& tr) const {
   Mode& n = tr.next;
   n.owner[p] ^= 1;
-  tr.kind = kAsmEndSwitch;
+  tr.kind = kAssemblyEndSwitch;
   if (is_closed(n.point[p])) {
     // The other block's corner takes the contact with its own normal velocity (a rotating face
     // passing a corner): approaching, it strikes (an impact); leaving, the end opens.
@@ -815,15 +822,17 @@ void RigidAssemblyModel<Cap>::switch_end(double t, State& z, int p, Transition<M
   reselect(t, tr, z);
 }
 
-template <int Cap>
-Transition<typename RigidAssemblyModel<Cap>::Mode> RigidAssemblyModel<Cap>::transition(double t, const Mode& m,
-                                                                                       State& z, int event) const {
+template <int MaxBlocks>
+Transition<typename RigidAssemblyModel<MaxBlocks>::Mode> RigidAssemblyModel<MaxBlocks>::transition(double t,
+                                                                                                   const Mode& m,
+                                                                                                   State& z,
+                                                                                                   int event) const {
   Transition<Mode> tr;
   tr.next = m;
   if (m.rest) {
     leave_rest(t, m, z, tr);
   } else if (event == kBreakpoint) {
-    tr.kind = kAsmBreakpoint;
+    tr.kind = kAssemblyInputBreakpoint;
     reselect(t, tr, z);
     if (!tr.stop) try_rest(t, tr.next, z);
   } else if (event < ev_tangent(0) || (event >= ev_valid(0) && event < ev_wzero(0))) {
@@ -835,17 +844,17 @@ Transition<typename RigidAssemblyModel<Cap>::Mode> RigidAssemblyModel<Cap>::tran
   } else if (event < ev_collapse(0)) {
     const int b = event - ev_wzero(0);
     tr.next.side[b] = std::int8_t(-m.side[b]);
-    tr.kind = kAsmWZero;
+    tr.kind = kAssemblyUprightPassage;
   } else {
     tr.stop = true;
-    tr.kind = event < ev_bearing(0) ? kAsmCollapse1 : kAsmCollapse2;
+    tr.kind = event < ev_bearing(0) ? kAssemblyRotationCollapse : kAssemblyBearingCollapse;
   }
   return tr;
 }
 
-template <int Cap>
-std::optional<typename RigidAssemblyModel<Cap>::Mode> RigidAssemblyModel<Cap>::resume(double t, State& z,
-                                                                                      Mode guess) const {
+template <int MaxBlocks>
+std::optional<typename RigidAssemblyModel<MaxBlocks>::Mode> RigidAssemblyModel<MaxBlocks>::resume(double t, State& z,
+                                                                                                  Mode guess) const {
   handover_ = false;
   problem_.clear();
   impacts_ = 0;
@@ -860,15 +869,15 @@ std::optional<typename RigidAssemblyModel<Cap>::Mode> RigidAssemblyModel<Cap>::r
   return guess;
 }
 
-template <int Cap>
-typename RigidAssemblyModel<Cap>::State RigidAssemblyModel<Cap>::abs_tol_scale() const {
+template <int MaxBlocks>
+typename RigidAssemblyModel<MaxBlocks>::State RigidAssemblyModel<MaxBlocks>::abs_tol_scale() const {
   State s;
   s.fill(1.0);
   return s;
 }
 
-template <int Cap>
-double RigidAssemblyModel<Cap>::next_breakpoint(double t, const Mode& m) const {
+template <int MaxBlocks>
+double RigidAssemblyModel<MaxBlocks>::next_breakpoint(double t, const Mode& m) const {
   if (!forced_) return INFINITY;
   if (!m.rest) return ground_.next_break(t);
   if (!(m.rest_pos == exit_pos_ && m.rest_neg == exit_neg_)) {
@@ -879,8 +888,8 @@ double RigidAssemblyModel<Cap>::next_breakpoint(double t, const Mode& m) const {
   return rest_exit_.checkpoint(t);
 }
 
-template <int Cap>
-typename RigidAssemblyModel<Cap>::Mode RigidAssemblyModel<Cap>::initial_mode(const State& z) const {
+template <int MaxBlocks>
+typename RigidAssemblyModel<MaxBlocks>::Mode RigidAssemblyModel<MaxBlocks>::initial_mode(const State& z) const {
   Mode m{};
   Geometry geo;
   geo_.geometry(z, geo);
@@ -906,8 +915,8 @@ typename RigidAssemblyModel<Cap>::Mode RigidAssemblyModel<Cap>::initial_mode(con
   return m;
 }
 
-template <int Cap>
-std::optional<std::string> RigidAssemblyModel<Cap>::validity_problem(const Mode& m, const State& z) const {
+template <int MaxBlocks>
+std::optional<std::string> RigidAssemblyModel<MaxBlocks>::validity_problem(const Mode& m, const State& z) const {
   for (std::size_t k = 0; k < kDim; ++k)
     if (!std::isfinite(z[k])) return "the state is not finite";
   Geometry geo;
@@ -920,8 +929,9 @@ std::optional<std::string> RigidAssemblyModel<Cap>::validity_problem(const Mode&
   return std::nullopt;
 }
 
-template <int Cap>
-typename RigidAssemblyModel<Cap>::Energy RigidAssemblyModel<Cap>::energy_terms(const Mode&, const State& z) const {
+template <int MaxBlocks>
+typename RigidAssemblyModel<MaxBlocks>::Energy RigidAssemblyModel<MaxBlocks>::energy_terms(const Mode&,
+                                                                                           const State& z) const {
   Energy e;
   for (int b = 0; b < nb_; ++b) {
     const double vx = z[iv(b)], vy = z[iv(b) + 1], w = z[iv(b) + 2];
@@ -931,9 +941,10 @@ typename RigidAssemblyModel<Cap>::Energy RigidAssemblyModel<Cap>::energy_terms(c
   return e;
 }
 
-template <int Cap>
-typename RigidAssemblyModel<Cap>::PointForce RigidAssemblyModel<Cap>::point_force(const Mode& m, const State& z,
-                                                                                  double t, int p) const {
+template <int MaxBlocks>
+typename RigidAssemblyModel<MaxBlocks>::PointForce RigidAssemblyModel<MaxBlocks>::point_force(const Mode& m,
+                                                                                              const State& z, double t,
+                                                                                              int p) const {
   Geometry geo;
   geo_.geometry(z, geo);
   std::array<PointRows, kPoints> r;
@@ -949,9 +960,10 @@ typename RigidAssemblyModel<Cap>::PointForce RigidAssemblyModel<Cap>::point_forc
   return f;
 }
 
-template <int Cap>
-typename RigidAssemblyModel<Cap>::PointForce RigidAssemblyModel<Cap>::point_force(const Mode& m, const State& z,
-                                                                                  int p) const {
+template <int MaxBlocks>
+typename RigidAssemblyModel<MaxBlocks>::PointForce RigidAssemblyModel<MaxBlocks>::point_force(const Mode& m,
+                                                                                              const State& z,
+                                                                                              int p) const {
   return point_force(m, z, 0.0, p);
 }
 

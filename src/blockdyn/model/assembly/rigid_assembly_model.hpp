@@ -39,22 +39,22 @@
 
 namespace blockdyn {
 
-template <int Cap>
-struct RigidAssemblyMode : AssemblyMode<Cap> {
+template <int MaxBlocks>
+struct RigidAssemblyMode : AssemblyMode<MaxBlocks> {
   bool rest = false;
   double rest_pos = 0, rest_neg = 0;  // at rest: the configuration's static limits
 };
 
-template <int Cap>
+template <int MaxBlocks>
 class RigidAssemblyModel {
  public:
-  using Base = AssemblyModel<Cap>;
-  static constexpr int kBlocks = Cap, kIfaces = Cap + 1, kPoints = 2 * kIfaces;
+  using Base = AssemblyModel<MaxBlocks>;
+  static constexpr int kBlocks = MaxBlocks, kIfaces = MaxBlocks + 1, kPoints = 2 * kIfaces;
   static constexpr std::size_t kDim = Base::kDim;
   static constexpr std::size_t kNumEvents = Base::kNumEvents;
   static constexpr bool kStateJumps = true;
-  static constexpr int kCoords = 3 * Cap;
-  using Mode = RigidAssemblyMode<Cap>;
+  static constexpr int kCoords = 3 * MaxBlocks;
+  using Mode = RigidAssemblyMode<MaxBlocks>;
   using State = Vec<kDim>;
   using Geometry = typename Base::Geometry;
   using PointForce = typename Base::PointForce;
@@ -186,7 +186,7 @@ class RigidAssemblyModel {
   GroundMotion ground_;
   bool forced_;
   int nb_, ni_;
-  std::array<double, Cap> m_{}, I_{}, y0_{};
+  std::array<double, MaxBlocks> m_{}, I_{}, y0_{};
   std::array<double, kCoords> inv_mass_{};
   std::array<double, kIfaces> mu_s_{}, mu_k_{}, e_{};
   std::array<int, kIfaces> lower_{}, upper_{};

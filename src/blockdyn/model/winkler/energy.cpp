@@ -5,11 +5,11 @@
 
 namespace blockdyn {
 
-double spring_energy(const BlockParams& p, double h, double w) {
+double spring_energy(const WinklerParams& p, double h, double w) {
   return 0.5 * p.k / p.r * region_integrals(p.r, h, w).s2;
 }
 
-Energy energy(const BlockParams& p, const BlockStateVec& z) {
+Energy energy(const WinklerParams& p, const WinklerState& z) {
   Energy e;
   e.kinetic_x = 0.5 * z[kVX] * z[kVX];
   e.kinetic_y = 0.5 * z[kVY] * z[kVY];

@@ -12,9 +12,9 @@ struct Energy {
 };
 
 // Energy relative to the block standing upright on rigid ground (gravity term y - 1/2).
-Energy energy(const BlockParams& p, const BlockStateVec& z);
+Energy energy(const WinklerParams& p, const WinklerState& z);
 
 // Spring energy (k / 2r) * integral s^2 dX of the Region.
-double spring_energy(const BlockParams& p, double h, double w);
+double spring_energy(const WinklerParams& p, double h, double w);
 
 }  // namespace blockdyn

@@ -24,7 +24,7 @@ struct FoundationForce {
 // The stiffness per unit length k / r and k / (6 r), fixed for a block (computed once by the model).
 struct FoundationStiffness {
   double kr = 0.0, kr6 = 0.0;
-  explicit FoundationStiffness(const BlockParams& p) : kr(p.k / p.r), kr6(kr / 6.0) {}
+  explicit FoundationStiffness(const WinklerParams& p) : kr(p.k / p.r), kr6(kr / 6.0) {}
 };
 
 inline FoundationForce foundation_force(const FoundationStiffness& ks, double r, double h, const Tilt& t) {
@@ -40,11 +40,11 @@ inline FoundationForce foundation_force(const FoundationStiffness& ks, double r,
   return f;
 }
 
-inline FoundationForce foundation_force(const BlockParams& p, double h, const Tilt& t) {
+inline FoundationForce foundation_force(const WinklerParams& p, double h, const Tilt& t) {
   return foundation_force(FoundationStiffness(p), p.r, h, t);
 }
 
-inline FoundationForce foundation_force(const BlockParams& p, double h, double w) {
+inline FoundationForce foundation_force(const WinklerParams& p, double h, double w) {
   return foundation_force(p, h, make_tilt(w));
 }
 

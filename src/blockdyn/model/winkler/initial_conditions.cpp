@@ -12,7 +12,7 @@
 
 namespace blockdyn {
 
-double static_height(const BlockParams& p, double w, double Ry) {
+double static_height(const WinklerParams& p, double w, double Ry) {
   const double a = std::fabs(w);
   const CornerHeights at_surface = corner_heights(p.r, 0.0, a);  // heights when h = 0
   // One submerged corner: area d^2 / (2 sin cos) = r Ry / k  (closed form of the thesis).
@@ -36,7 +36,7 @@ double static_height(const BlockParams& p, double w, double Ry) {
   return 0.5 * (r.first + r.second);
 }
 
-BlockStateVec ic1(const BlockParams& p, std::optional<double> w0_opt) {
+WinklerState ic1(const WinklerParams& p, std::optional<double> w0_opt) {
   const double w0 = w0_opt.value_or(0.5 * p.alpha());
   if (!std::isfinite(w0) || std::fabs(w0) > p.alpha() || w0 == 0.0) {
     std::ostringstream os;
@@ -46,7 +46,7 @@ BlockStateVec ic1(const BlockParams& p, std::optional<double> w0_opt) {
   const double a = std::fabs(w0);
   const RigidGroundBlock rigid(p);
   const double Ry0 = rigid.rest_reaction(a);
-  BlockStateVec z{};
+  WinklerState z{};
   z[kW] = w0;
   z[kH] = static_height(p, a, Ry0);
   const double A = corner_arms(p.r, a, 1).A;
@@ -54,8 +54,8 @@ BlockStateVec ic1(const BlockParams& p, std::optional<double> w0_opt) {
   return z;
 }
 
-BlockStateVec ic2(const BlockParams& p) {
-  BlockStateVec z{};
+WinklerState ic2(const WinklerParams& p) {
+  WinklerState z{};
   z[kH] = -1.0 / p.k;
   z[kX] = p.r / 2.0;
   z[kVX] = 0.06;

@@ -11,13 +11,13 @@ namespace blockdyn {
 
 // ic1: tilted by w0 (default alpha/2), released from rest, resting on the springs with the
 // rigid-ground reaction at release; lowest corner at x = 0. Mirrored for w0 < 0.
-BlockStateVec ic1(const BlockParams& p, std::optional<double> w0 = std::nullopt);
+WinklerState ic1(const WinklerParams& p, std::optional<double> w0 = std::nullopt);
 
 // ic2: upright block given a horizontal and a vertical impulse at its base.
-BlockStateVec ic2(const BlockParams& p);
+WinklerState ic2(const WinklerParams& p);
 
 // Centre height h = y - 1/2 at which the block tilted by w carries the vertical reaction Ry
 // (exact Region, any number of submerged corners up to two).
-double static_height(const BlockParams& p, double w, double Ry);
+double static_height(const WinklerParams& p, double w, double Ry);
 
 }  // namespace blockdyn

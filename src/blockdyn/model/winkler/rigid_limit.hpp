@@ -33,7 +33,7 @@ class RigidGroundBlock {
   using Mode = RigidLimitMode;
   using State = std::array<double, kDim>;
 
-  explicit RigidGroundBlock(const BlockParams& p) : p_(p) {}
+  explicit RigidGroundBlock(const WinklerParams& p) : p_(p) {}
 
   RigidLimitReactions reactions(const Mode& m, const State& z) const;
   void rhs(double t, const Mode& m, const State& z, State& dz) const;
@@ -52,7 +52,7 @@ class RigidGroundBlock {
 
  private:
   Mode stick_or_slip(const State& z, int slip_sign) const;
-  BlockParams p_;
+  WinklerParams p_;
 };
 
 }  // namespace blockdyn

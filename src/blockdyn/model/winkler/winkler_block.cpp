@@ -12,33 +12,33 @@
 
 namespace blockdyn {
 
-const char* to_string(EventKind k) {
+const char* to_string(WinklerEventKind k) {
   switch (k) {
-    case EventKind::ContactToSlide:
+    case WinklerEventKind::ContactToSlide:
       return "contact_to_slide";
-    case EventKind::SlideToContact:
+    case WinklerEventKind::SlideToContact:
       return "slide_to_contact";
-    case EventKind::SlideReversal:
+    case WinklerEventKind::SlideReversal:
       return "slide_reversal";
-    case EventKind::Takeoff:
+    case WinklerEventKind::Takeoff:
       return "takeoff";
-    case EventKind::Landing:
+    case WinklerEventKind::Landing:
       return "landing";
-    case EventKind::WZero:
+    case WinklerEventKind::WZero:
       return "w_zero";
-    case EventKind::Overturn:
+    case WinklerEventKind::Overturn:
       return "overturn";
-    case EventKind::Invalid:
+    case WinklerEventKind::Invalid:
       return "invalid";
-    case EventKind::GroundBreak:
+    case WinklerEventKind::GroundBreak:
       return "ground_break";
-    case EventKind::GrazingHold:
+    case WinklerEventKind::GrazingHold:
       return "grazing_hold";
   }
   return "?";
 }
 
-WinklerBlock::WinklerBlock(const BlockParams& p, const GroundMotion& g)
+WinklerBlock::WinklerBlock(const WinklerParams& p, const GroundMotion& g)
     : p_(p), ground_(g), forced_(!g.is_zero()), inertia_(p.inertia()), alpha_(p.alpha()), stiffness_(p) {}
 
 BlockForces WinklerBlock::forces(double t, const Mode& m, const State& z) const {
@@ -226,37 +226,38 @@ Transition<WinklerBlock::Mode> WinklerBlock::transition(double t, const Mode& m,
   switch (event) {
     case kEvOverturn:
       tr.stop = true;
-      tr.kind = int(EventKind::Overturn);
+      tr.kind = int(WinklerEventKind::Overturn);
       break;
     case kEvInvalid:
       tr.stop = true;
-      tr.kind = int(EventKind::Invalid);
+      tr.kind = int(WinklerEventKind::Invalid);
       break;
     case kEvSurface:
       if (m.regime == Regime::Flight) {
-        tr.kind = int(EventKind::Landing);
+        tr.kind = int(WinklerEventKind::Landing);
         tr.next = submerged_mode(t, z, m.side);
       } else {
-        tr.kind = int(EventKind::Takeoff);
+        tr.kind = int(WinklerEventKind::Takeoff);
         tr.next = Mode{Regime::Flight, m.side, 0, 0.0};
       }
       break;
     case kEvWZero:
-      tr.kind = int(EventKind::WZero);
+      tr.kind = int(WinklerEventKind::WZero);
       tr.next.side = -m.side;
       if (m.regime == Regime::Contact) tr.next = stick_or_slip(t, z, -m.side, 0);
       break;
     case kEvFriction:
       if (m.regime == Regime::Contact) {
-        tr.kind = int(EventKind::ContactToSlide);
+        tr.kind = int(WinklerEventKind::ContactToSlide);
         tr.next = Mode{Regime::Slide, m.side, sign_of(forces(t, m, z).Rx), 0.0};
       } else {
         tr.next = stick_or_slip(t, z, m.side, -m.friction_sign);
-        tr.kind = int(tr.next.regime == Regime::Contact ? EventKind::SlideToContact : EventKind::SlideReversal);
+        tr.kind =
+            int(tr.next.regime == Regime::Contact ? WinklerEventKind::SlideToContact : WinklerEventKind::SlideReversal);
       }
       break;
     case kBreakpoint:
-      tr.kind = int(EventKind::GroundBreak);
+      tr.kind = int(WinklerEventKind::GroundBreak);
       if (m.regime == Regime::Contact) tr.next = stick_or_slip(t, z, m.side, 0);
       break;
   }
@@ -283,10 +284,10 @@ std::optional<Transition<WinklerBlock::Mode>> WinklerBlock::resolve_chatter(doub
     const double margin1 = forces(t + dt, c, z1).margin;
     if (margin1 < 0.0 && margin1 < f0.margin && f0.Rx != 0.0) {
       const Mode s{Regime::Slide, m.side, sign_of(f0.Rx), 0.0};
-      return Transition<Mode>{s, false, int(EventKind::ContactToSlide)};
+      return Transition<Mode>{s, false, int(WinklerEventKind::ContactToSlide)};
     }
   }
-  return Transition<Mode>{c, false, int(EventKind::GrazingHold)};
+  return Transition<Mode>{c, false, int(WinklerEventKind::GrazingHold)};
 }
 
 double WinklerBlock::step_hint(const Mode& m) const {

@@ -17,7 +17,7 @@
 
 namespace blockdyn {
 
-enum class EventKind : int {
+enum class WinklerEventKind : int {
   ContactToSlide,
   SlideToContact,
   SlideReversal,
@@ -29,7 +29,7 @@ enum class EventKind : int {
   GroundBreak,
   GrazingHold
 };
-const char* to_string(EventKind k);
+const char* to_string(WinklerEventKind k);
 
 // Everything the equations of motion compute at one state (also used for output).
 struct BlockForces {
@@ -47,12 +47,12 @@ class WinklerBlock {
   enum Event : int { kEvOverturn, kEvInvalid, kEvSurface, kEvWZero, kEvFriction, kNumBlockEvents };
   static constexpr std::size_t kDim = kStateDim;
   static constexpr std::size_t kNumEvents = kNumBlockEvents;
-  using Mode = BlockMode;
-  using State = BlockStateVec;
+  using Mode = WinklerMode;
+  using State = WinklerState;
 
-  explicit WinklerBlock(const BlockParams& p, const GroundMotion& g = {});
+  explicit WinklerBlock(const WinklerParams& p, const GroundMotion& g = {});
 
-  const BlockParams& params() const { return p_; }
+  const WinklerParams& params() const { return p_; }
   const GroundMotion& ground() const { return ground_; }
 
   void rhs(double t, const Mode& m, const State& z, State& dz) const;
@@ -101,7 +101,7 @@ class WinklerBlock {
 
   static constexpr double kFlightStepMargin = 1.25;  // first flight step / predicted flight
 
-  BlockParams p_;
+  WinklerParams p_;
   GroundMotion ground_;
   bool forced_;
   double inertia_, alpha_;

@@ -5,7 +5,7 @@
 
 namespace blockdyn {
 
-struct BlockParams {
+struct WinklerParams {
   double r = 0.5;   // aspect ratio width / height, > 0
   double mu = 0.2;  // friction coefficient, >= 0
   double k = 1e5;   // foundation stiffness k_phys a b / (m g), > 0
@@ -23,6 +23,6 @@ inline constexpr double kWinklerKMin = 1e-6, kWinklerKMax = 1e12;
 inline constexpr double kWinklerMuMax = 1e3;
 
 // Throws std::invalid_argument naming the field and its allowed range.
-void validate(const BlockParams& p);
+void validate(const WinklerParams& p);
 
 }  // namespace blockdyn

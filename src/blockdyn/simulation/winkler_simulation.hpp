@@ -19,38 +19,38 @@
 namespace blockdyn {
 
 // The Winkler block's run: the shared options and its stop criteria.
-struct SimulationOptions : RunOptions {
+struct WinklerRunOptions : RunOptions {
   bool stop_at_first_flight = false;
-  long stop_at_ihor = 0;  // stop once ihor reaches this value (0: never)
+  long stop_at_upright_passages = 0;  // stop once ihor reaches this value (0: never)
 };
 
-struct EventRecord {
+struct WinklerEventRecord {
   double t = 0;
-  EventKind kind{};
-  BlockMode from, to;
-  BlockStateVec z{};
-  long ihor = 0;  // after the event
+  WinklerEventKind kind{};
+  WinklerMode from, to;
+  WinklerState z{};
+  long upright_passages = 0;  // after the event
 };
 
-constexpr int kNumEventKinds = int(EventKind::GrazingHold) + 1;
+constexpr int kNumEventKinds = int(WinklerEventKind::GrazingHold) + 1;
 
-struct SimulationResult {
+struct WinklerResult {
   SimStatus status = SimStatus::TEnd;
   RunStatus run_status = RunStatus::ReachedEnd;
   double t_final = 0;
-  BlockStateVec initial_state{}, final_state{};
-  BlockMode initial_mode, final_mode;
-  long ihor = 0;
+  WinklerState initial_state{}, final_state{};
+  WinklerMode initial_mode, final_mode;
+  long upright_passages = 0;
   std::optional<double> first_flight_time;
-  long ihor_at_first_flight = 0;
+  long upright_passages_at_first_flight = 0;
   std::optional<double> overturn_time;
-  long ihor_at_overturn = 0;
+  long upright_passages_at_overturn = 0;
   Energy initial_energy, final_energy;
   double max_abs_energy_error = 0;   // max |E - E0 - W_friction - W_nonpotential - W_ground|
   double max_abs_energy_change = 0;  // max |E - E0|
   StepperStats stats;
   RunTiming timing;  // of the integration alone
-  std::vector<EventRecord> events;
+  std::vector<WinklerEventRecord> events;
   std::array<long, kNumEventKinds> event_counts{};
 
   double work_friction() const { return final_state[kWorkFriction]; }
@@ -59,13 +59,13 @@ struct SimulationResult {
 };
 
 // Receives the trajectory as it is computed (dense output pieces and events).
-class SimulationSink {
+class WinklerSink {
  public:
-  virtual ~SimulationSink() = default;
-  virtual void on_start(const WinklerBlock&, double /*t*/, const BlockMode&, const BlockStateVec&) {}
+  virtual ~WinklerSink() = default;
+  virtual void on_start(const WinklerBlock&, double /*t*/, const WinklerMode&, const WinklerState&) {}
   virtual void on_segment(const WinklerBlock&, const DenseSegment<kStateDim>&, double /*t0*/, double /*t1*/,
-                          const BlockMode&) {}
-  virtual void on_event(const WinklerBlock&, const EventRecord&) {}
+                          const WinklerMode&) {}
+  virtual void on_event(const WinklerBlock&, const WinklerEventRecord&) {}
   virtual bool keep_going() const { return true; }
   // Whether on_segment evaluates the dense output inside every step (see Observer::needs_dense;
   // a sink that answers false may call DenseSegment::ensure_full() on the steps that need it).
@@ -73,7 +73,7 @@ class SimulationSink {
 };
 
 // Throws std::invalid_argument if the parameters, options or initial state are invalid.
-SimulationResult simulate(const BlockParams& p, const GroundMotion& g, const BlockStateVec& z0,
-                          const SimulationOptions& opt, SimulationSink* sink = nullptr);
+WinklerResult simulate(const WinklerParams& p, const GroundMotion& g, const WinklerState& z0,
+                       const WinklerRunOptions& opt, WinklerSink* sink = nullptr);
 
 }  // namespace blockdyn

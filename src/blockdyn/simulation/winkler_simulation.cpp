@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-#include "blockdyn/simulation/simulate.hpp"
+#include "blockdyn/simulation/winkler_simulation.hpp"
 
 #include <cmath>
 #include <sstream>
@@ -13,33 +13,33 @@ namespace {
 // list and counts; forwards the trajectory and the events to the user's sink.
 class WinklerRecorder final : public Observer<WinklerBlock> {
  public:
-  WinklerRecorder(const SimulationOptions& o, SimulationResult& r, SimulationSink* s) : opt_(o), res_(r), sink_(s) {
+  WinklerRecorder(const WinklerRunOptions& o, WinklerResult& r, WinklerSink* s) : opt_(o), res_(r), sink_(s) {
     if (o.record_events) res_.events.reserve(256);
   }
 
-  bool on_segment(const WinklerBlock& m, const Segment& seg, double t0, double t1, const BlockMode& mode) override {
+  bool on_segment(const WinklerBlock& m, const Segment& seg, double t0, double t1, const WinklerMode& mode) override {
     if (sink_) sink_->on_segment(m, seg, t0, t1, mode);
     return !sink_ || sink_->keep_going();
   }
 
   bool on_event(const WinklerBlock& m, const Event& e) override {
-    const EventKind kind = EventKind(e.kind);
-    if (kind == EventKind::GroundBreak) return true;
-    if (kind == EventKind::WZero) ++res_.ihor;
+    const WinklerEventKind kind = WinklerEventKind(e.kind);
+    if (kind == WinklerEventKind::GroundBreak) return true;
+    if (kind == WinklerEventKind::WZero) ++res_.upright_passages;
     ++res_.event_counts[int(kind)];
-    EventRecord rec{e.t, kind, e.from, e.to, e.z, res_.ihor};
-    if (kind == EventKind::Takeoff && !res_.first_flight_time) {
+    WinklerEventRecord rec{e.t, kind, e.from, e.to, e.z, res_.upright_passages};
+    if (kind == WinklerEventKind::Takeoff && !res_.first_flight_time) {
       res_.first_flight_time = e.t;
-      res_.ihor_at_first_flight = res_.ihor;
+      res_.upright_passages_at_first_flight = res_.upright_passages;
     }
-    if (kind == EventKind::Overturn) {
+    if (kind == WinklerEventKind::Overturn) {
       res_.overturn_time = e.t;
-      res_.ihor_at_overturn = res_.ihor;
+      res_.upright_passages_at_overturn = res_.upright_passages;
     }
     if (opt_.record_events) res_.events.push_back(rec);
     if (sink_) sink_->on_event(m, rec);
-    if (opt_.stop_at_first_flight && kind == EventKind::Takeoff) return stop();
-    if (opt_.stop_at_ihor > 0 && res_.ihor >= opt_.stop_at_ihor) return stop();
+    if (opt_.stop_at_first_flight && kind == WinklerEventKind::Takeoff) return stop();
+    if (opt_.stop_at_upright_passages > 0 && res_.upright_passages >= opt_.stop_at_upright_passages) return stop();
     return !sink_ || sink_->keep_going();
   }
 
@@ -52,34 +52,34 @@ class WinklerRecorder final : public Observer<WinklerBlock> {
     return false;
   }
 
-  const SimulationOptions& opt_;
-  SimulationResult& res_;
-  SimulationSink* sink_;
+  const WinklerRunOptions& opt_;
+  WinklerResult& res_;
+  WinklerSink* sink_;
   bool early_ = false;
 };
 
 }  // namespace
 
-SimulationResult simulate(const BlockParams& p, const GroundMotion& g, const BlockStateVec& z0,
-                          const SimulationOptions& opt, SimulationSink* sink) {
+WinklerResult simulate(const WinklerParams& p, const GroundMotion& g, const WinklerState& z0,
+                       const WinklerRunOptions& opt, WinklerSink* sink) {
   validate(p);
   validate(g);
   validate(opt);
   const WinklerBlock model(p, g);
-  BlockStateVec z = z0;
+  WinklerState z = z0;
   z[kWorkFriction] = z[kWorkNonPotential] = z[kWorkGround] = 0.0;
   if (auto why = model.validity_problem(z)) throw std::invalid_argument("initial state: " + *why);
-  SimulationResult res;
+  WinklerResult res;
   const double t = opt.t_start;
-  BlockMode mode = model.initial_mode(t, z);
+  WinklerMode mode = model.initial_mode(t, z);
   model.complete(mode, z);
   res.initial_state = z;
   res.initial_mode = mode;
   res.initial_energy = energy(p, z);
-  res.ihor = (z[kW] == 0.0) ? 1 : 0;
+  res.upright_passages = (z[kW] == 0.0) ? 1 : 0;
   if (mode.regime == Regime::Flight) {
     res.first_flight_time = t;
-    res.ihor_at_first_flight = res.ihor;
+    res.upright_passages_at_first_flight = res.upright_passages;
   }
   if (sink) sink->on_start(model, t, mode, z);
   WinklerRecorder rec(opt, res, sink);

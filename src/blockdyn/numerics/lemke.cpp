@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-#include "blockdyn/model/common/lemke.hpp"
+#include "blockdyn/numerics/lemke.hpp"
 
 #include <algorithm>
 #include <cmath>
