@@ -51,7 +51,7 @@ void run(benchmark::State& state, const Assembly& a, const GroundMotion& g, doub
   const auto inv = benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert;
   state.counters["ns_per_rhs"] = benchmark::Counter(double(r.rhs_evals), inv);
   state.counters["ns_per_step"] = benchmark::Counter(double(r.steps), inv);
-  if (a.contact == "rigid") {
+  if (blockdyn::info(a.contact).schemes) {  // the rigid law
     state.counters["direct"] = double(r.direct_solves);
     state.counters["gauss_seidel"] = double(r.gauss_seidel_solves);
   } else {

@@ -39,7 +39,9 @@ AssemblyRunOptions assembly_run_to(double t_end, double rtol = 1e-8, double atol
 
 double first_event(const AssemblyResult& r, const std::string& kind, int block = -1, int max_interface = 99) {
   for (const auto& e : r.events)
-    if (e.kind == kind && (block < 0 || e.block == block) && e.interface <= max_interface) return e.t;
+    if (blockdyn::assembly_event_name(e.kind) == kind && (block < 0 || e.block == block) &&
+        e.interface <= max_interface)
+      return e.t;
   return NAN;
 }
 

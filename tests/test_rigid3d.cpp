@@ -63,6 +63,7 @@ struct Flown {
 };
 
 Flown fly(const BodyFlight& m, BodyFlight::State z, double t_end, double rtol = 1e-13, double atol = 1e-15) {
+  // (the model's ground motion is the one it was built with)
   blockdyn::IntegratorOptions o;
   o.rtol = rtol;
   o.atol = atol;
@@ -222,6 +223,35 @@ TEST(Rigid3dFlight, TouchdownAtTheClosedFormInstant) {
   std::array<double, 1> g{};
   m.events(f.t, {}, f.z, g);
   EXPECT_NEAR(g[0], 0.0, 1e-12);
+}
+
+TEST(Rigid3dFlight, GroundMotionInThreeComponentsActsReversedOnTheBody) {
+  // In the ground's frame a constant ground acceleration a (g) is felt as -g a: the centroid's path
+  // is a parabola, and the touchdown under a vertical a_v comes at sqrt(2 L / (g (1 + a_v))).
+  blockdyn::GroundMotion3d gm;
+  gm.azimuth = 30;
+  gm.h.constant = 0.2;
+  gm.h2.constant = -0.1;
+  gm.v.constant = 0.5;
+  const Body3d b = box(0.4, 0.7, 1.5);
+  const BodyFlight m(b, gm);
+  const double lift = 0.6, t_land = std::sqrt(2 * lift / (b.g * 1.5));
+  const Flown f = fly(m, blockdyn::standing_state(b, 0.0, lift), 5.0);
+  ASSERT_EQ(f.events.size(), 1u);
+  EXPECT_NEAR(f.events[0], t_land, 1e-13);
+  const double az = 30 * M_PI / 180;
+  const double ax = 0.2 * std::cos(az) + 0.1 * std::sin(az), ay = 0.2 * std::sin(az) - 0.1 * std::cos(az);
+  EXPECT_NEAR(f.z[BodyFlight::kX], -0.5 * b.g * ax * t_land * t_land, 1e-13);
+  EXPECT_NEAR(f.z[BodyFlight::kY], -0.5 * b.g * ay * t_land * t_land, 1e-13);
+  // The components rotate with the azimuth: h along it, h2 at +90 degrees.
+  blockdyn::GroundMotion3d r;
+  r.azimuth = 90;
+  r.h.constant = 1.0;
+  const auto a = r.at(0.0);
+  EXPECT_NEAR(a[0], 0.0, 1e-16);
+  EXPECT_DOUBLE_EQ(a[1], 1.0);
+  r.azimuth = std::nan("");
+  EXPECT_THROW(blockdyn::validate(r), std::invalid_argument);
 }
 
 }  // namespace

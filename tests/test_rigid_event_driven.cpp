@@ -39,7 +39,7 @@ AssemblyRunOptions event_driven(double t_end) {
 std::vector<double> impact_times(const AssemblyResult& r) {
   std::vector<double> t;
   for (const auto& e : r.events)
-    if (e.kind == "impact") t.push_back(e.t);
+    if (e.kind == blockdyn::kAssemblyImpact) t.push_back(e.t);
   return t;
 }
 

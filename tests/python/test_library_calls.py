@@ -183,3 +183,17 @@ def test_limit_analysis_and_the_arch_from_python():
     assert stand.summary["contact_solves"]["gauss_seidel"] == 0
     with pytest.raises(ValueError, match="direction"):
         blockdyn.limit_analysis(preset="block", direction=2)
+
+
+def test_families_are_the_registry():
+    """blockdyn.families() is the C++ registry: the default first, each with what it takes part in;
+    a model that is not registered is a ValueError naming the choices."""
+    fams = blockdyn.families()
+    names = [f["name"] for f in fams]
+    assert names[0] == "winkler" and set(names) >= {"winkler", "housner", "rigid", "assembly"}
+    by = {f["name"]: f for f in fams}
+    assert by["winkler"]["free_lyapunov"] and not by["winkler"]["forced"]
+    assert by["housner"]["rigid_ground"] and by["housner"]["forced"] and by["housner"]["sweep"]
+    assert by["assembly"]["forced"] and not by["assembly"]["scenario"] and not by["assembly"]["sweep"]
+    with pytest.raises(ValueError, match="not one of: winkler"):
+        blockdyn.lyapunov(model="cylinder", t_end=1)

@@ -49,29 +49,28 @@ double GroundComponent::curvature_bound() const {
 }
 
 void validate(const GroundMotion& g) {
-  const GroundComponent* c[2] = {&g.horizontal, &g.vertical};
-  const char* name[2] = {"ground.horizontal", "ground.vertical"};
+  validate(g.horizontal, "ground.horizontal");
+  validate(g.vertical, "ground.vertical");
+}
+
+void validate(const GroundComponent& k, const std::string& n) {
   const double amax = kMaxGroundAcceleration;
-  for (int i = 0; i < 2; ++i) {
-    const GroundComponent& k = *c[i];
-    const std::string n = name[i];
-    const std::string acc = "finite, |value| <= " + std::to_string(int(amax)) + " g";
-    require(std::isfinite(k.constant) && std::fabs(k.constant) <= amax, n + ".constant", acc, k.constant);
-    require(std::isfinite(k.amplitude) && std::fabs(k.amplitude) <= amax, n + ".amplitude", acc, k.amplitude);
-    require(std::isfinite(k.frequency) && k.frequency >= 0.0 && k.frequency <= kMaxGroundFrequency, n + ".frequency",
-            "in [0, 1e4] (Hz, or cycles per time unit)", k.frequency);
-    require(std::isfinite(k.phase) && std::fabs(k.phase) <= 1e6, n + ".phase", "finite (rad)", k.phase);
-    require(std::isfinite(k.t_start) && k.t_start >= 0.0, n + ".t_start", "finite and >= 0", k.t_start);
-    require(std::isfinite(k.duration) && k.duration >= 0.0, n + ".duration", "finite and >= 0", k.duration);
-    require(std::isfinite(k.scale) && std::fabs(k.scale) <= amax, n + ".scale", "finite, |scale| <= 1000", k.scale);
-    if (k.has_pulse()) {
-      require(k.duration > 0.0, n + ".duration", "> 0 for a pulse (the pulse duration)", k.duration);
-      require(k.frequency == 0.0, n + ".frequency", "0 with a pulse (a pulse is set by its duration)", k.frequency);
-      require(k.phase == 0.0, n + ".phase", "0 with a pulse", k.phase);
-    }
-    if (!k.has_pulse() && k.amplitude != 0.0)
-      require(k.frequency > 0.0, n + ".frequency", "> 0 for a harmonic amplitude (or give a pulse)", k.frequency);
+  const std::string acc = "finite, |value| <= " + std::to_string(int(amax)) + " g";
+  require(std::isfinite(k.constant) && std::fabs(k.constant) <= amax, n + ".constant", acc, k.constant);
+  require(std::isfinite(k.amplitude) && std::fabs(k.amplitude) <= amax, n + ".amplitude", acc, k.amplitude);
+  require(std::isfinite(k.frequency) && k.frequency >= 0.0 && k.frequency <= kMaxGroundFrequency, n + ".frequency",
+          "in [0, 1e4] (Hz, or cycles per time unit)", k.frequency);
+  require(std::isfinite(k.phase) && std::fabs(k.phase) <= 1e6, n + ".phase", "finite (rad)", k.phase);
+  require(std::isfinite(k.t_start) && k.t_start >= 0.0, n + ".t_start", "finite and >= 0", k.t_start);
+  require(std::isfinite(k.duration) && k.duration >= 0.0, n + ".duration", "finite and >= 0", k.duration);
+  require(std::isfinite(k.scale) && std::fabs(k.scale) <= amax, n + ".scale", "finite, |scale| <= 1000", k.scale);
+  if (k.has_pulse()) {
+    require(k.duration > 0.0, n + ".duration", "> 0 for a pulse (the pulse duration)", k.duration);
+    require(k.frequency == 0.0, n + ".frequency", "0 with a pulse (a pulse is set by its duration)", k.frequency);
+    require(k.phase == 0.0, n + ".phase", "0 with a pulse", k.phase);
   }
+  if (!k.has_pulse() && k.amplitude != 0.0)
+    require(k.frequency > 0.0, n + ".frequency", "> 0 for a harmonic amplitude (or give a pulse)", k.frequency);
 }
 
 GroundMotion in_time_unit(const GroundMotion& g, double tu) {

@@ -92,6 +92,8 @@ std::string describe(const GroundMotion& g, const char* frequency_unit = "Hz", c
 
 // Checks every field (names them as ground.horizontal.<field> or ground.vertical.<field>).
 void validate(const GroundMotion& g);
+// One component's fields, named <name>.<field>.
+void validate(const GroundComponent& c, const std::string& name);
 
 // The same motion with times given in seconds re-expressed in a model time unit of
 // `seconds_per_unit` seconds (t_start, duration divided, frequency multiplied by it).

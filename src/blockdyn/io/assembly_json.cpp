@@ -56,7 +56,7 @@ json to_json(const Assembly& a) {
 }
 
 json to_json(const AssemblyEventRecord& e) {
-  json x = {{"t", e.t}, {"kind", e.kind}, {"block", e.block >= 0 ? json(e.block) : json(nullptr)}};
+  json x = {{"t", e.t}, {"kind", assembly_event_name(e.kind)}, {"block", e.block >= 0 ? json(e.block) : json(nullptr)}};
   if (e.interface >= 0) x["interface"] = e.interface;
   if (e.end >= 0) x["end"] = e.end;
   if (e.collapse_mode) x["collapse_mode"] = e.collapse_mode;

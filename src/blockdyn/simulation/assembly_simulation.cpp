@@ -90,7 +90,7 @@ class AssemblyRecorder final : public Observer<M> {
     if (e.kind == kAssemblyImpact) ++r_.impacts;
     AssemblyEventRecord rec;
     rec.t = e.t;
-    rec.kind = assembly_event_name(e.kind);
+    rec.kind = AssemblyEventKind(e.kind);
     const int idx = event_index(e);
     if (idx < M::ev_wzero(0)) {
       const int p = idx % M::kPoints;

@@ -16,6 +16,7 @@
 
 #include "blockdyn/excitation/ground_motion.hpp"
 #include "blockdyn/integrate/integrator_options.hpp"
+#include "blockdyn/model/assembly/assembly_event_kind.hpp"
 #include "blockdyn/model/assembly/assembly_params.hpp"
 #include "blockdyn/simulation/run_options.hpp"
 #include "blockdyn/simulation/run_probe.hpp"
@@ -26,8 +27,8 @@ namespace blockdyn {
 
 struct AssemblyEventRecord {
   double t = 0;
-  std::string kind;  // open, close, slip, stick, end_switch, w_zero, failure, invalid
-  int block = -1;    // the block concerned (contacts: the upper block of the interface)
+  AssemblyEventKind kind{};  // its name: assembly_event_name()
+  int block = -1;            // the block concerned (contacts: the upper block of the interface)
   int interface = -1, end = -1;
   int collapse_mode = 0;
   std::array<double, 3> pose{};  // x, y, theta of `block` after the event

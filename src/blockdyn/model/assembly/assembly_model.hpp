@@ -22,31 +22,13 @@
 
 #include "blockdyn/excitation/ground_motion.hpp"
 #include "blockdyn/integrate/hybrid_model.hpp"
+#include "blockdyn/model/assembly/assembly_event_kind.hpp"
 #include "blockdyn/model/assembly/assembly_params.hpp"
 #include "blockdyn/model/assembly/contact_point.hpp"
 #include "blockdyn/model/assembly/deformable_contact.hpp"
 #include "blockdyn/model/assembly/interface_faces.hpp"
 
 namespace blockdyn {
-
-// Kinds of assembly events reported to observers.
-enum AssemblyEventKind : int {
-  kAssemblyContactOpens = 1,
-  kAssemblyContactCloses,
-  kAssemblySlipStarts,
-  kAssemblyStickStarts,
-  kAssemblyEndSwitch,
-  kAssemblyUprightPassage,
-  kAssemblyRotationCollapse,
-  kAssemblyBearingCollapse,
-  kAssemblyOutsideModel,
-  kAssemblyInputBreakpoint,
-  kAssemblyImpact,
-  // The rigid law, event-driven: a window handed to time-stepping, and the return from it.
-  kAssemblyToTimeStepping,
-  kAssemblyToEventDriven
-};
-const char* assembly_event_name(int kind);
 
 template <int MaxBlocks>
 struct AssemblyMode {

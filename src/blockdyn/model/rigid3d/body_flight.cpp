@@ -15,8 +15,10 @@ Vec3 part(const BodyFlight::State& z, std::size_t i) { return {z[i], z[i + 1], z
 
 }  // namespace
 
-BodyFlight::BodyFlight(const Body3d& body) : body_(body), inertia_(body.inertia()) {
+BodyFlight::BodyFlight(const Body3d& body, const GroundMotion3d& ground)
+    : body_(body), ground_(ground), inertia_(body.inertia()) {
   validate(body_);
+  validate(ground_);
   const double len = body_.shape == BodyShape3d::Box ? std::fmax(body_.width, body_.depth) : 2 * body_.radius;
   const double size = std::fmax(len, body_.height);
   step_ = 0.05 * std::sqrt(size / body_.g);
@@ -25,15 +27,15 @@ BodyFlight::BodyFlight(const Body3d& body) : body_(body), inertia_(body.inertia(
   scale_ = {size, size, size, 1, 1, 1, 1, v, v, v, w, w, w};
 }
 
-void BodyFlight::rhs(double, const Mode&, const State& z, State& dz) const {
+void BodyFlight::rhs(double t, const Mode&, const State& z, State& dz) const {
   const Quat q = orientation(z);
   const Mat3 r = rotation(q);
   const Vec3 w = part(z, kWx);
   // Euler's equations in the body frame, I Omega' = (I Omega) x Omega, and omega' = R Omega'.
   const Vec3 om = transposed_times(r, w);
   const Vec3 l{inertia_[0] * om[0], inertia_[1] * om[1], inertia_[2] * om[2]};
-  const Vec3 t = cross(l, om);
-  const Vec3 dw = r * Vec3{t[0] / inertia_[0], t[1] / inertia_[1], t[2] / inertia_[2]};
+  const Vec3 tq = cross(l, om);  // (I Omega) x Omega
+  const Vec3 dw = r * Vec3{tq[0] / inertia_[0], tq[1] / inertia_[1], tq[2] / inertia_[2]};
   // q' = (0, omega) q / 2 with omega in the world frame.
   const Quat dq = Quat{0, w[0], w[1], w[2]} * q;
   dz[kX] = z[kVx];
@@ -43,9 +45,10 @@ void BodyFlight::rhs(double, const Mode&, const State& z, State& dz) const {
   dz[kQx] = 0.5 * dq.x;
   dz[kQy] = 0.5 * dq.y;
   dz[kQz] = 0.5 * dq.z;
-  dz[kVx] = 0;
-  dz[kVy] = 0;
-  dz[kVz] = -body_.g;
+  const std::array<double, 3> a = ground_.at(t);  // g
+  dz[kVx] = -body_.g * a[0];
+  dz[kVy] = -body_.g * a[1];
+  dz[kVz] = -body_.g * (1.0 + a[2]);
   dz[kWx] = dw[0];
   dz[kWy] = dw[1];
   dz[kWz] = dw[2];

@@ -1,13 +1,15 @@
 // SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The rigid3d body in flight (no contact): its centroid falls freely and its rotation follows
-// Euler's torque-free equations. State in the world frame: the centroid (x, y, z), the unit
+// Euler's torque-free equations. State in the ground's frame (it moves with the ground motion: the
+// body feels the ground's acceleration reversed): the centroid (x, y, z), the unit
 // quaternion (qw, qx, qy, qz), the centroid's velocity and the angular velocity (wx, wy, wz). One
 // event: the lowest base point reaching the ground (a touchdown, located on the dense output).
 // The flight mode of the rigid3d family (docs/3d.md); the contact modes build on it.
 #include <array>
 #include <optional>
 
+#include "blockdyn/excitation/ground_motion_3d.hpp"
 #include "blockdyn/integrate/hybrid_model.hpp"
 #include "blockdyn/model/rigid3d/body_shape.hpp"
 
@@ -24,7 +26,7 @@ class BodyFlight {
   using Mode = BodyFlightMode;
   using State = std::array<double, kDim>;
 
-  explicit BodyFlight(const Body3d& body);
+  explicit BodyFlight(const Body3d& body, const GroundMotion3d& ground = {});
 
   void rhs(double t, const Mode& m, const State& z, State& dz) const;
   // The lowest base point's height above the ground (>= 0 in flight).
@@ -34,9 +36,10 @@ class BodyFlight {
   Transition<Mode> transition(double t, const Mode& m, State& z, int event) const;
   std::optional<Transition<Mode>> resolve_chatter(double, const Mode&, const State&) const { return std::nullopt; }
   double step_hint(const Mode&) const { return step_; }
+  double next_breakpoint(double t) const { return ground_.next_break(t); }
   State abs_tol_scale() const { return scale_; }
 
-  // Momentum and angular momentum about the centroid, world frame (torque-free: constant).
+  // Momentum (ground frame) and angular momentum about the centroid (torque-free: constant).
   Vec3 momentum(const State& z) const;
   Vec3 angular_momentum(const State& z) const;
   double energy(const State& z) const;  // kinetic + m g z
@@ -45,6 +48,7 @@ class BodyFlight {
 
  private:
   Body3d body_;
+  GroundMotion3d ground_;
   Vec3 inertia_;
   double step_;
   State scale_;

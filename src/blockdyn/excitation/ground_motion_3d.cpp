@@ -1,0 +1,25 @@
+// SPDX-License-Identifier: Apache-2.0
+#include "blockdyn/excitation/ground_motion_3d.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+#include "blockdyn/base/number_text.hpp"
+
+namespace blockdyn {
+
+std::array<double, 3> GroundMotion3d::at(double t) const {
+  const double a = azimuth * (M_PI / 180), c = std::cos(a), s = std::sin(a);
+  const double x = h.at(t), y = h2.at(t);
+  return {c * x - s * y, s * x + c * y, v.at(t)};
+}
+
+void validate(const GroundMotion3d& g) {
+  validate(g.h, "ground.h");
+  validate(g.h2, "ground.h2");
+  validate(g.v, "ground.v");
+  if (!(std::isfinite(g.azimuth) && std::fabs(g.azimuth) <= 360))
+    throw std::invalid_argument("ground-azimuth = " + number_text(g.azimuth) + " is out of range: [-360, 360] degrees");
+}
+
+}  // namespace blockdyn
