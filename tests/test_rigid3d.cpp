@@ -10,6 +10,7 @@
 
 #include "blockdyn/integrate/hybrid_integrator.hpp"
 #include "blockdyn/model/rigid3d/body_flight.hpp"
+#include "blockdyn/model/rigid3d/body_rest.hpp"
 
 namespace {
 
@@ -252,6 +253,40 @@ TEST(Rigid3dFlight, GroundMotionInThreeComponentsActsReversedOnTheBody) {
   EXPECT_DOUBLE_EQ(a[1], 1.0);
   r.azimuth = std::nan("");
   EXPECT_THROW(blockdyn::validate(r), std::invalid_argument);
+}
+
+TEST(Rigid3dRest, OnsetByDirectionAtTheClosedFormCrossing) {
+  // a_h = A sin(2 pi f t) along the azimuth: the body leaves rest where A sin(2 pi f t) = c, c the
+  // smallest coefficient of that direction: t = asin(c / A) / (2 pi f).
+  const double amp = 0.6, f = 1.3, tp = 1.0 / f;
+  for (double az : {0.0, 30.0, 45.0, 60.0, 90.0}) {
+    for (const Body3d& b : {box(0.4, 0.7, 1.5), box(0.5, 0.5, 1.5), cylinder(0.25, 1.2)}) {
+      blockdyn::GroundMotion3d g;
+      g.azimuth = az;
+      g.h.amplitude = amp;
+      g.h.frequency = f;
+      const double c = blockdyn::rest_threshold(b, az * M_PI / 180);
+      const blockdyn::BodyRestExit e = blockdyn::first_rest_exit(b, 0.0, 0.9, g, 0.0, 10 * tp);
+      ASSERT_EQ(e.way, blockdyn::RestExitWay::Rocks) << az;
+      EXPECT_NEAR(e.t, std::asin(c / amp) / (2 * M_PI * f), 1e-12) << az;
+    }
+  }
+  // Friction below the rocking coefficient: it slides first, at asin(mu_s / A) / (2 pi f).
+  blockdyn::GroundMotion3d g;
+  g.h.amplitude = amp;
+  g.h.frequency = f;
+  const blockdyn::BodyRestExit s = blockdyn::first_rest_exit(box(0.4, 0.7, 1.5), 0.0, 0.2, g, 0.0, 10 * tp);
+  EXPECT_EQ(s.way, blockdyn::RestExitWay::Slides);
+  EXPECT_NEAR(s.t, std::asin(0.2 / amp) / (2 * M_PI * f), 1e-12);
+  // A yaw of the body is the azimuth taken back: a square turned by 45 degrees under motion along x
+  // resists as along its diagonal, sqrt(2) b / h.
+  const blockdyn::BodyRestExit d = blockdyn::first_rest_exit(box(0.5, 0.5, 1.5), M_PI / 4, 0.9, g, 0.0, 10 * tp);
+  EXPECT_NEAR(d.coefficient, std::sqrt(2.0) * 0.5 / 1.5, 1e-15);
+  // Below every threshold it rests throughout; a second horizontal component is refused.
+  g.h.amplitude = 0.1;
+  EXPECT_EQ(blockdyn::first_rest_exit(box(0.4, 0.7, 1.5), 0.0, 0.9, g, 0.0, 10 * tp).way, blockdyn::RestExitWay::None);
+  g.h2.constant = 0.01;
+  EXPECT_THROW(blockdyn::first_rest_exit(box(0.4, 0.7, 1.5), 0.0, 0.9, g, 0.0, 1.0), std::invalid_argument);
 }
 
 }  // namespace
