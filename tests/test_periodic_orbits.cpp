@@ -24,8 +24,8 @@
 #include "blockdyn/analysis/forced/linear_rocking_orbits.hpp"
 #include "blockdyn/analysis/forced/orbit_continuation.hpp"
 #include "blockdyn/model/assembly/assembly_model.hpp"
-#include "blockdyn/model/rigid/housner_block.hpp"
-#include "blockdyn/model/rigid/rigid_block.hpp"
+#include "blockdyn/model/rigid_ground/housner_block.hpp"
+#include "blockdyn/model/rigid_ground/rigid_block.hpp"
 #include "blockdyn/simulation/rigid_simulation.hpp"
 
 using namespace blockdyn;

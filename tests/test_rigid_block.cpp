@@ -6,7 +6,7 @@
 
 #include <cmath>
 
-#include "blockdyn/model/rigid/contact_problem.hpp"
+#include "blockdyn/model/rigid_ground/contact_problem.hpp"
 #include "blockdyn/simulation/rigid_simulation.hpp"
 #include "housner_reference.hpp"
 #include "test_support.hpp"

@@ -12,7 +12,7 @@
 
 #include "blockdyn/base/range_check.hpp"
 #include "blockdyn/family/family.hpp"
-#include "blockdyn/model/rigid/rigid_params.hpp"
+#include "blockdyn/model/rigid_ground/rigid_params.hpp"
 
 namespace blockdyn {
 

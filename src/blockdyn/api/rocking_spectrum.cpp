@@ -14,7 +14,7 @@
 #include "blockdyn/base/range_check.hpp"
 #include "blockdyn/family/family.hpp"
 #include "blockdyn/io/json_io.hpp"
-#include "blockdyn/model/rigid/rigid_params.hpp"
+#include "blockdyn/model/rigid_ground/rigid_params.hpp"
 #include "blockdyn/simulation/rigid_ground_model.hpp"
 
 namespace blockdyn {

@@ -13,7 +13,7 @@
 #include "blockdyn/family/family.hpp"
 #include "blockdyn/io/scenario.hpp"
 #include "blockdyn/io/toml_read.hpp"
-#include "blockdyn/model/rigid/rigid_params.hpp"
+#include "blockdyn/model/rigid_ground/rigid_params.hpp"
 
 namespace blockdyn {
 

@@ -6,7 +6,7 @@
 #include <string>
 
 #include "blockdyn/excitation/ground_motion.hpp"
-#include "blockdyn/model/rigid/rigid_params.hpp"
+#include "blockdyn/model/rigid_ground/rigid_params.hpp"
 #include "blockdyn/simulation/winkler_simulation.hpp"
 #include "blockdyn/units/physical_units.hpp"
 

@@ -4,7 +4,7 @@
 // `extra` observer of simulate_housner / simulate_rigid. Samples come from the dense output
 // (completed), impacts with theta' before and after the jump, passages of theta through 0 in
 // flight.
-#include "blockdyn/model/rigid/mechanism.hpp"
+#include "blockdyn/model/rigid_ground/mechanism.hpp"
 #include "blockdyn/simulation/observer.hpp"
 #include "blockdyn/simulation/run_probe.hpp"
 

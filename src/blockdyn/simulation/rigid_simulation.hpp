@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
-#include "blockdyn/model/rigid/housner_block.hpp"
-#include "blockdyn/model/rigid/rigid_block.hpp"
+#include "blockdyn/model/rigid_ground/housner_block.hpp"
+#include "blockdyn/model/rigid_ground/rigid_block.hpp"
 #include "blockdyn/simulation/observer.hpp"
 #include "blockdyn/simulation/winkler_simulation.hpp"
 

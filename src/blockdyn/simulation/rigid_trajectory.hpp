@@ -5,7 +5,7 @@
 // it; impacts also get a row with the state before, event "pre_impact").
 // Columns: t, x, y, w, vx, vy, vw, mode, event, a_h, a_v (g), N_A, T_A, N_B, T_B (N),
 // E_kin, E_pot, E_total, W_friction, W_ground, W_impact, energy_balance (J).
-#include "blockdyn/model/rigid/mechanism.hpp"
+#include "blockdyn/model/rigid_ground/mechanism.hpp"
 #include "blockdyn/simulation/trajectory_rows.hpp"
 
 namespace blockdyn {

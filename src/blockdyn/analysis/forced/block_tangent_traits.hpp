@@ -15,8 +15,8 @@
 
 #include "blockdyn/analysis/dynamics/tangent_traits.hpp"
 #include "blockdyn/model/assembly/assembly_model.hpp"
-#include "blockdyn/model/rigid/housner_block.hpp"
-#include "blockdyn/model/rigid/rigid_block.hpp"
+#include "blockdyn/model/rigid_ground/housner_block.hpp"
+#include "blockdyn/model/rigid_ground/rigid_block.hpp"
 
 namespace blockdyn {
 

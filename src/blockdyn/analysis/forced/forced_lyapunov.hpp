@@ -17,7 +17,7 @@
 #include "blockdyn/analysis/dynamics/tangent_lyapunov.hpp"
 #include "blockdyn/excitation/ground_motion.hpp"
 #include "blockdyn/model/assembly/assembly_params.hpp"
-#include "blockdyn/model/rigid/rigid_params.hpp"
+#include "blockdyn/model/rigid_ground/rigid_params.hpp"
 #include "blockdyn/simulation/rigid_simulation.hpp"
 
 namespace blockdyn {

@@ -11,7 +11,7 @@
 #include "blockdyn/analysis/forced/block_tangent_traits.hpp"
 #include "blockdyn/analysis/forced/linear_rocking_orbits.hpp"
 #include "blockdyn/integrate/hybrid_integrator.hpp"
-#include "blockdyn/model/rigid/housner_block.hpp"
+#include "blockdyn/model/rigid_ground/housner_block.hpp"
 
 namespace blockdyn {
 

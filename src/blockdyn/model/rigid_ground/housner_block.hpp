@@ -15,8 +15,8 @@
 #include "blockdyn/excitation/ground_motion.hpp"
 #include "blockdyn/excitation/rest_exit.hpp"
 #include "blockdyn/integrate/hybrid_model.hpp"
-#include "blockdyn/model/rigid/mechanism.hpp"
-#include "blockdyn/model/rigid/rigid_params.hpp"
+#include "blockdyn/model/rigid_ground/mechanism.hpp"
+#include "blockdyn/model/rigid_ground/rigid_params.hpp"
 
 namespace blockdyn {
 

@@ -11,8 +11,8 @@
 #include <array>
 #include <optional>
 
-#include "blockdyn/model/rigid/contact_problem.hpp"
-#include "blockdyn/model/rigid/rigid_params.hpp"
+#include "blockdyn/model/rigid_ground/contact_problem.hpp"
+#include "blockdyn/model/rigid_ground/rigid_params.hpp"
 
 namespace blockdyn {
 

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-#include "blockdyn/model/rigid/impact_law.hpp"
+#include "blockdyn/model/rigid_ground/impact_law.hpp"
 
 #include <cmath>
 

@@ -1,12 +1,12 @@
 // SPDX-License-Identifier: Apache-2.0
-#include "blockdyn/model/rigid/rigid_block.hpp"
+#include "blockdyn/model/rigid_ground/rigid_block.hpp"
 
 #include "blockdyn/base/number_text.hpp"
 
 #include <cmath>
 #include <string>
 
-#include "blockdyn/model/rigid/impact_law.hpp"
+#include "blockdyn/model/rigid_ground/impact_law.hpp"
 
 namespace blockdyn {
 

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-#include "blockdyn/model/rigid/housner_block.hpp"
+#include "blockdyn/model/rigid_ground/housner_block.hpp"
 
 #include "blockdyn/base/number_text.hpp"
 

@@ -16,9 +16,9 @@
 #include "blockdyn/excitation/rest_exit.hpp"
 #include "blockdyn/integrate/hybrid_model.hpp"
 #include "blockdyn/model/common/block_kinematics.hpp"
-#include "blockdyn/model/rigid/contact_problem.hpp"
-#include "blockdyn/model/rigid/mechanism.hpp"
-#include "blockdyn/model/rigid/rigid_params.hpp"
+#include "blockdyn/model/rigid_ground/contact_problem.hpp"
+#include "blockdyn/model/rigid_ground/mechanism.hpp"
+#include "blockdyn/model/rigid_ground/rigid_params.hpp"
 
 namespace blockdyn {
 

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-#include "blockdyn/model/rigid/rigid_params.hpp"
+#include "blockdyn/model/rigid_ground/rigid_params.hpp"
 
 #include "blockdyn/base/number_text.hpp"
 

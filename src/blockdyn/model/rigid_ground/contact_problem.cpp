@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-#include "blockdyn/model/rigid/contact_problem.hpp"
+#include "blockdyn/model/rigid_ground/contact_problem.hpp"
 
 #include <cmath>
 
