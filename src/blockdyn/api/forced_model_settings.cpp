@@ -92,30 +92,33 @@ const char* const kNotBlock = "applies to --model assembly only";
 // cost (docs/forced-chaos.md).
 const ForcedFamily& housner_forced() {
   static const ForcedFamily f{
-      {{assembly_only_options(), kNotBlock}, {{"mu-s", "mu-k", "impact"}, "applies to --model rigid only"}},
-      block_model,
-      1e-10,
-      1e-12};
+      .refused = {{assembly_only_options(), kNotBlock}, {{"mu-s", "mu-k", "impact"}, "applies to --model rigid only"}},
+      .build = block_model,
+      .lyapunov_rtol = 1e-10,
+      .lyapunov_atol = 1e-12};
   return f;
 }
 
 const ForcedFamily& rigid_forced() {
-  static const ForcedFamily f{{{assembly_only_options(), kNotBlock}}, block_model, 1e-10, 1e-12};
+  static const ForcedFamily f{.refused = {{assembly_only_options(), kNotBlock}},
+                              .build = block_model,
+                              .lyapunov_rtol = 1e-10,
+                              .lyapunov_atol = 1e-12};
   return f;
 }
 
 const ForcedFamily& assembly_forced() {
   static const ForcedFamily f{
-      {{{"width", "height", "mass", "g", "mu-s", "mu-k", "impact"},
-        "applies to --model housner|rigid only (an assembly's blocks and friction come from --preset and "
-        "--phi-s/--phi-l)"}},
-      assembly_model,
-      1e-8,
-      1e-10,
-      1e-6,
-      1e-8,
-      false,
-      true};
+      .refused = {{{"width", "height", "mass", "g", "mu-s", "mu-k", "impact"},
+                   "applies to --model housner|rigid only (an assembly's blocks and friction come from --preset and "
+                   "--phi-s/--phi-l)"}},
+      .build = assembly_model,
+      .lyapunov_rtol = 1e-8,
+      .lyapunov_atol = 1e-10,
+      .chaos_map_rtol = 1e-6,
+      .chaos_map_atol = 1e-8,
+      .initial_state = false,
+      .friction_angles = true};
   return f;
 }
 

@@ -23,7 +23,7 @@ struct ForcedModelChoice {
   bool columns_rock_only = false;
   const Family* family = nullptr;
   // Friction by angles per interface (an assembly's --phi-s/--phi-l).
-  bool friction_angles() const { return family->forced->friction_angles; }
+  bool friction_angles() const { return family && family->forced->friction_angles; }
   std::string label() const { return model + (preset.empty() ? "" : " " + preset); }  // "assembly trilith"
 };
 // Throws std::invalid_argument unless `model` names a family of the forced analyses.

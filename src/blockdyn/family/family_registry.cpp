@@ -23,16 +23,39 @@ std::vector<std::pair<std::string, std::string>> rigid_sweep_axes() { return rig
 }  // namespace
 
 const std::vector<Family>& families() {
+  // Designated: each row names the adapters it has; the others stay null.
   static const std::vector<Family> rows{
-      {"winkler", "block on a Winkler foundation (non-dimensional unless a physical block is given)",
-       scenario_option_names, prepare_block, run_winkler, nullptr, winkler_sweep, winkler_sweep_axes, nullptr,
-       winkler_lyapunov_study},
-      {"housner", "1-DOF rocking on rigid ground", scenario_option_names, prepare_block, run_housner,
-       &housner_on_rigid_ground(), rigid_sweep, rigid_sweep_axes, &housner_forced(), nullptr},
-      {"rigid", "3-DOF on rigid ground, five mechanisms", scenario_option_names, prepare_block, run_rigid,
-       &three_dof_on_rigid_ground(), rigid_sweep, rigid_sweep_axes, &rigid_forced(), nullptr},
-      {"assembly", "block assemblies (preset or TOML file) with deformable or rigid contacts", assembly_option_names,
-       prepare_assembly, nullptr, nullptr, nullptr, nullptr, &assembly_forced(), nullptr},
+      {.name = "winkler",
+       .description = "block on a Winkler foundation (non-dimensional unless a physical block is given)",
+       .options = scenario_option_names,
+       .prepare = prepare_block,
+       .run_scenario = run_winkler,
+       .sweep = winkler_sweep,
+       .sweep_axes = winkler_sweep_axes,
+       .free_lyapunov = winkler_lyapunov_study},
+      {.name = "housner",
+       .description = "1-DOF rocking on rigid ground",
+       .options = scenario_option_names,
+       .prepare = prepare_block,
+       .run_scenario = run_housner,
+       .rigid_ground = &housner_on_rigid_ground(),
+       .sweep = rigid_sweep,
+       .sweep_axes = rigid_sweep_axes,
+       .forced = &housner_forced()},
+      {.name = "rigid",
+       .description = "3-DOF on rigid ground, five mechanisms",
+       .options = scenario_option_names,
+       .prepare = prepare_block,
+       .run_scenario = run_rigid,
+       .rigid_ground = &three_dof_on_rigid_ground(),
+       .sweep = rigid_sweep,
+       .sweep_axes = rigid_sweep_axes,
+       .forced = &rigid_forced()},
+      {.name = "assembly",
+       .description = "block assemblies (preset or TOML file) with deformable or rigid contacts",
+       .options = assembly_option_names,
+       .prepare = prepare_assembly,
+       .forced = &assembly_forced()},
   };
   return rows;
 }
