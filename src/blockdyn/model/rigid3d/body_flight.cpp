@@ -3,15 +3,14 @@
 
 #include <cmath>
 
+#include "blockdyn/model/rigid3d/body_pivot.hpp"
+#include "blockdyn/model/rigid3d/body_state.hpp"
+
 namespace blockdyn {
 
 namespace {
 
-Quat orientation(const BodyFlight::State& z) {
-  return {z[BodyFlight::kQw], z[BodyFlight::kQx], z[BodyFlight::kQy], z[BodyFlight::kQz]};
-}
-
-Vec3 part(const BodyFlight::State& z, std::size_t i) { return {z[i], z[i + 1], z[i + 2]}; }
+Quat orientation(const BodyFlight::State& z) { return quat_at(z, BodyFlight::kQw); }
 
 }  // namespace
 
@@ -30,12 +29,8 @@ BodyFlight::BodyFlight(const Body3d& body, const GroundMotion3d& ground)
 void BodyFlight::rhs(double t, const Mode&, const State& z, State& dz) const {
   const Quat q = orientation(z);
   const Mat3 r = rotation(q);
-  const Vec3 w = part(z, kWx);
-  // Euler's equations in the body frame, I Omega' = (I Omega) x Omega, and omega' = R Omega'.
-  const Vec3 om = transposed_times(r, w);
-  const Vec3 l{inertia_[0] * om[0], inertia_[1] * om[1], inertia_[2] * om[2]};
-  const Vec3 tq = cross(l, om);  // (I Omega) x Omega
-  const Vec3 dw = r * Vec3{tq[0] / inertia_[0], tq[1] / inertia_[1], tq[2] / inertia_[2]};
+  const Vec3 w = vec_at(z, kWx);
+  const Vec3 dw = free_angular_acceleration(inertia_, r, w);
   // q' = (0, omega) q / 2 with omega in the world frame.
   const Quat dq = Quat{0, w[0], w[1], w[2]} * q;
   dz[kX] = z[kVx];
@@ -80,14 +75,14 @@ Vec3 BodyFlight::momentum(const State& z) const {
 
 Vec3 BodyFlight::angular_momentum(const State& z) const {
   const Mat3 r = rotation(orientation(z));
-  const Vec3 om = transposed_times(r, part(z, kWx));
+  const Vec3 om = transposed_times(r, vec_at(z, kWx));
   return r * Vec3{inertia_[0] * om[0], inertia_[1] * om[1], inertia_[2] * om[2]};
 }
 
 double BodyFlight::energy(const State& z) const {
   const Mat3 r = rotation(orientation(z));
-  const Vec3 om = transposed_times(r, part(z, kWx));
-  const Vec3 v = part(z, kVx);
+  const Vec3 om = transposed_times(r, vec_at(z, kWx));
+  const Vec3 v = vec_at(z, kVx);
   return 0.5 * body_.mass * dot(v, v) +
          0.5 * (inertia_[0] * om[0] * om[0] + inertia_[1] * om[1] * om[1] + inertia_[2] * om[2] * om[2]) +
          body_.mass * body_.g * z[kZ];

@@ -1,0 +1,138 @@
+// SPDX-License-Identifier: Apache-2.0
+// The rigid3d body's impacts (body_on_ground.hpp): a base point reaching the ground makes it the
+// new contact; the angular momentum about that contact is conserved through the impact (a point:
+// all three components; a line: the one along it), the generalisation of Housner's law. If an old
+// contact point would then move into the ground the new contact takes it in too (a corner and its
+// neighbour make an edge); a base landing flat, or impacts that accumulate, end at rest.
+#include <cmath>
+#include <vector>
+
+#include "blockdyn/model/rigid3d/body_on_ground.hpp"
+#include "blockdyn/model/rigid3d/body_pivot.hpp"
+#include "blockdyn/model/rigid3d/body_state.hpp"
+
+namespace blockdyn {
+
+namespace {
+
+using S = BodyOnGround;
+using Tr = Transition<BodyOnGroundMode>;
+
+
+// Base points this close to the ground (in body sizes) touch it at an impact: a base landing
+// flat brings its far corners down at one instant up to rounding.
+constexpr double kImpactTouch = 1e-10, kSeparation = 1e-12;
+
+bool holds(const BodyOnGroundMode& m, int corner) { return corner == m.corner_a || corner == m.corner_b; }
+
+}  // namespace
+
+void BodyOnGround::conserve_momentum_about(const Mode& m, State& z) const {
+  const Mat3 r = rotation(quat_at(z, S::kQw));
+  const Vec3 pa = m.contact == BodyContact::Line ? plus(m.pivot, scaled(m.axis, m.half_length)) : m.pivot;
+  const Vec3 arm = minus(vec_at(z, kX), pa);
+  const Vec3 h = angular_momentum_about(inertia_, body_.mass, r, arm, vec_at(z, kVx), vec_at(z, kWx));
+  const Mat3 j = inertia_about(inertia_, body_.mass, transposed_times(r, arm));
+  Vec3 w;
+  if (m.contact == BodyContact::Point) {
+    w = r * (solve_matrix(j) * transposed_times(r, h));
+  } else {
+    const Vec3 eb = transposed_times(r, m.axis);
+    w = scaled(m.axis, dot(m.axis, h) / dot(eb, j * eb));
+  }
+  set_vec_at(z, kWx, w);
+  set_vec_at(z, kVx, cross(w, arm));
+}
+
+Tr BodyOnGround::transition(double t, const Mode& m, State& z, int event) const {
+  switch (event) {
+    case kBreakpoint:
+      if (m.contact == BodyContact::Rest && !rest_holds(t))
+        return rest_exit_exact_ ? leave_rest(t, z) : Tr{m, true, int(Body3dEventKind::NotModelled)};
+      return {m, false, int(Body3dEventKind::GroundBreak)};
+    case kEvLiftOff:
+    case kEvLoadA:
+    case kEvLoadB:
+      return after_load_zero(t, m, z, event);
+    case kEvOverturn:
+      return {m, true, int(Body3dEventKind::Overturn)};
+    case kEvSlipA:
+    case kEvSlipB:
+      return {m, true, int(Body3dEventKind::SlipOnset)};
+    default:
+      return impact(t, m, z, event);
+  }
+}
+
+Tr BodyOnGround::impact(double t, const Mode& from, State& z, int) const {
+  const Mat3 r = rotation(quat_at(z, S::kQw));
+  const Vec3 x = vec_at(z, kX);
+  const double ke = energy(z) - body_.mass * body_.g * z[kZ];
+  const double w_before = std::sqrt(dot(vec_at(z, kWx), vec_at(z, kWx)));
+  Mode next;
+  std::vector<int> fresh, others;
+  if (body_.shape == BodyShape3d::Cylinder) {
+    if (from.contact == BodyContact::Flight && r[2][2] >= 1 - 1e-12) return settle(t, z);
+    const Vec3 p = from.contact == BodyContact::Flight ? lowest_point(body_, r).body
+                                                       : Vec3{-from.point_a[0], -from.point_a[1], from.point_a[2]};
+    next = rim_mode(r, x, p);
+  } else {
+    for (int i = 0; i < 4; ++i) {
+      if (z[kZ] + dot(r[2], corner(i)) > kImpactTouch * size_) continue;
+      (holds(from, i) ? others : fresh).push_back(i);
+    }
+    if (fresh.size() >= 3 || fresh.empty()) return settle(t, z);
+    next = fresh.size() == 2 ? line_mode(r, x, corner(fresh[0]), corner(fresh[1]), fresh[0], fresh[1])
+                             : point_mode(r, x, corner(fresh[0]), fresh[0]);
+  }
+  const State before = z;
+  conserve_momentum_about(next, z);
+  // An old contact that the new motion drives into the ground joins the new contact.
+  const double v_tol = kSeparation * std::sqrt(body_.g * size_);
+  auto sinking = [&]() {
+    for (int i : others)
+      if (!holds(next, i) && (z[kVz] + cross(vec_at(z, kWx), r * corner(i))[2]) < -v_tol) return i;
+    return -1;
+  };
+  if (const int i = sinking(); i >= 0) {
+    if (next.contact == BodyContact::Line) return settle(t, z = before);
+    next = line_mode(r, x, corner(fresh[0]), corner(i), fresh[0], i);
+    z = before;
+    conserve_momentum_about(next, z);
+    if (sinking() >= 0) return settle(t, z = before);
+  }
+  z[kWorkImpact] += energy(z) - body_.mass * body_.g * z[kZ] - ke;
+  complete(next, z);
+  if (pulls_away(t, next, z)) return {Mode{BodyContact::Flight}, false, int(Body3dEventKind::Impact)};
+  // Impacts accumulate in finite time (a geometric series of swings shrinking by e each): once
+  // the time they have left is below the accumulation horizon, the body is at rest.
+  if (from.contact == BodyContact::Line && next.contact == BodyContact::Line && w_before > 0) {
+    const Vec3 w = vec_at(z, kWx);
+    const double e = std::sqrt(dot(w, w)) / w_before;
+    State still = z;
+    set_vec_at(still, kWx, {0, 0, 0});
+    State d;
+    rhs(t, next, still, d);
+    const double sense = dot(w, next.axis) >= 0 ? 1.0 : -1.0;
+    const double decel = -sense * dot(vec_at(d, kWx), next.axis);
+    const double horizon = std::fmax(kAccumulationTime * std::sqrt(size_ / body_.g), 1e-12 * std::fabs(t) / (1 - e));
+    if (e < 1 && decel > 0 && 2 * std::sqrt(dot(w, w)) / (decel * (1 - e)) < horizon) return settle(t, z);
+  }
+  return {next, false, int(Body3dEventKind::Impact)};
+}
+
+BodyOnGround::State initial_state(const Body3d& b, const Body3dStart& s) {
+  const Vec3 u{std::cos(s.tilt_azimuth), std::sin(s.tilt_azimuth), 0};
+  const Quat q = axis_angle({-u[1], u[0], 0}, s.tilt) * axis_angle({0, 0, 1}, s.yaw);
+  BodyOnGround::State z{};
+  z[S::kZ] = lowest_point(b, rotation(q)).depth + s.lift;
+  z[S::kQw] = q.w;
+  z[S::kQx] = q.x;
+  z[S::kQy] = q.y;
+  z[S::kQz] = q.z;
+  set_vec_at(z, S::kVx, s.velocity);
+  set_vec_at(z, S::kWx, s.angular_velocity);
+  return z;
+}
+
+}  // namespace blockdyn

@@ -1,0 +1,200 @@
+// SPDX-License-Identifier: Apache-2.0
+#include "blockdyn/model/rigid3d/body_on_ground.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+#include "blockdyn/base/number_text.hpp"
+#include "blockdyn/model/rigid3d/body_pivot.hpp"
+#include "blockdyn/model/rigid3d/body_state.hpp"
+
+namespace blockdyn {
+
+namespace {
+
+using S = BodyOnGround;
+
+// A rim point carries no moment: one above this (in m g size) rolls the contact along the rim.
+constexpr double kRimMomentTolerance = 1e-8;
+
+// G - pivot in the body frame: from the corner, or from the line's midpoint (about which its
+// moment is split between its ends).
+Vec3 pivot_to_centroid(const BodyOnGroundMode& m) { return scaled(plus(m.point_a, m.point_b), -0.5); }
+
+}  // namespace
+
+const char* to_string(Body3dEventKind k) {
+  switch (k) {
+    case Body3dEventKind::Mode: return "mode";
+    case Body3dEventKind::Impact: return "impact";
+    case Body3dEventKind::LiftOff: return "lift_off";
+    case Body3dEventKind::Rest: return "rest";
+    case Body3dEventKind::Overturn: return "overturn";
+    case Body3dEventKind::SlipOnset: return "slip_onset";
+    case Body3dEventKind::NotModelled: return "not_modelled";
+    case Body3dEventKind::GroundBreak: return "ground_break";
+    case Body3dEventKind::Invalid: return "invalid";
+  }
+  return "?";
+}
+
+BodyOnGround::BodyOnGround(const Body3d& body, const GroundMotion3d& ground, const BodyOnGroundOptions& opt)
+    : body_(body), ground_(ground), opt_(opt), inertia_(body.inertia()) {
+  validate(body_);
+  validate(ground_);
+  if (!(opt_.mu_s >= 0 && std::isfinite(opt_.mu_s)))
+    throw std::invalid_argument("mu-s = " + number_text(opt_.mu_s) + " is out of range: finite and >= 0");
+  const double len = body_.shape == BodyShape3d::Box ? std::fmax(body_.width, body_.depth) : 2 * body_.radius;
+  size_ = std::fmax(len, body_.height);
+  step_ = 0.05 * std::sqrt(size_ / body_.g);
+  const double v = std::sqrt(body_.g * size_), w = std::sqrt(body_.g / size_), e = body_.mass * body_.g * size_;
+  scale_ = {size_, size_, size_, 1, 1, 1, 1, v, v, v, w, w, w, e, e};
+  forced_ = !ground_.is_zero();
+  rest_exit_exact_ = ground_.h2.is_zero();
+  if (forced_ && rest_exit_exact_) {
+    GroundMotion planar;
+    planar.horizontal = ground_.h;
+    planar.vertical = ground_.v;
+    const double rock = rest_threshold(body_, ground_.azimuth * (M_PI / 180) - opt_.yaw);
+    rest_exit_ = RestExit(planar, std::fmin(rock, opt_.mu_s));
+  }
+}
+
+Vec3 BodyOnGround::specific_force(double t) const {
+  if (!forced_) return {0, 0, -body_.g};
+  const std::array<double, 3> a = ground_.at(t);
+  return {-body_.g * a[0], -body_.g * a[1], -body_.g * (1 + a[2])};
+}
+
+Vec3 BodyOnGround::corner(int i) const {
+  return {(i & 1 ? 0.5 : -0.5) * body_.width, (i & 2 ? 0.5 : -0.5) * body_.depth, -body_.half_height()};
+}
+
+void BodyOnGround::rhs(double t, const Mode& m, const State& z, State& dz) const {
+  dz.fill(0.0);
+  if (m.contact == BodyContact::Rest) return;
+  const Mat3 r = rotation(quat_at(z, S::kQw));
+  const Vec3 w = vec_at(z, kWx), v = vec_at(z, kVx), f = specific_force(t);
+  const Quat dq = Quat{0, w[0], w[1], w[2]} * quat_at(z, S::kQw);
+  set_vec_at(dz, kX, v);
+  dz[kQw] = 0.5 * dq.w;
+  dz[kQx] = 0.5 * dq.x;
+  dz[kQy] = 0.5 * dq.y;
+  dz[kQz] = 0.5 * dq.z;
+  // The ground's inertial force m (f + g Z) does work on the centroid; a sticking contact does none.
+  dz[kWorkGround] = body_.mass * (f[0] * v[0] + f[1] * v[1] + (f[2] + body_.g) * v[2]);
+  if (m.contact == BodyContact::Flight) {
+    set_vec_at(dz, kVx, f);
+    set_vec_at(dz, kWx, free_angular_acceleration(inertia_, r, w));
+    return;
+  }
+  const Vec3 s = pivot_to_centroid(m);
+  const PivotMotion pm = m.contact == BodyContact::Point
+                             ? point_pivot_motion(inertia_, body_.mass, r, s, w, f)
+                             : line_pivot_motion(inertia_, body_.mass, r, s, m.axis, w, f);
+  set_vec_at(dz, kVx, pm.accel);
+  set_vec_at(dz, kWx, pm.domega);
+}
+
+void BodyOnGround::events(double t, const Mode& m, const State& z, std::array<double, kNumEvents>& g) const {
+  g.fill(1.0);
+  if (m.contact == BodyContact::Rest) return;
+  const Mat3 r = rotation(quat_at(z, S::kQw));
+  const double zg = z[kZ];
+  if (m.contact == BodyContact::Flight) {
+    g[kEvTouchdown] = zg - lowest_point(body_, r).depth;
+    return;
+  }
+  const Vec3 w = vec_at(z, kWx), f = specific_force(t), s = pivot_to_centroid(m);
+  const double weight = body_.mass * body_.g;
+  const PivotMotion pm = m.contact == BodyContact::Point
+                             ? point_pivot_motion(inertia_, body_.mass, r, s, w, f)
+                             : line_pivot_motion(inertia_, body_.mass, r, s, m.axis, w, f);
+  g[kEvLiftOff] = pm.force[2] / weight;
+  auto slip = [&](const Vec3& load) { return (opt_.mu_s * load[2] - std::hypot(load[0], load[1])) / weight; };
+  if (m.contact == BodyContact::Line && m.half_length > 0) {
+    const LineLoads ll = split_line_reaction(pm.force, pm.moment, m.axis, m.half_length);
+    g[kEvLoadA] = ll.plus[2] / weight;
+    g[kEvLoadB] = ll.minus[2] / weight;
+    g[kEvSlipA] = slip(ll.plus);
+    g[kEvSlipB] = slip(ll.minus);
+  } else {
+    // A rim point carries no moment: a motion that needs one rolls the contact along the rim.
+    if (m.contact == BodyContact::Line)
+      g[kEvLoadA] = kRimMomentTolerance - std::sqrt(dot(pm.moment, pm.moment)) / (weight * size_);
+    g[kEvSlipA] = slip(pm.force);
+  }
+  const Vec3& up = r[2];
+  if (body_.shape == BodyShape3d::Box) {
+    for (int i = 0; i < 4; ++i)
+      if (i != m.corner_a && i != m.corner_b) g[kEvTouch0 + i] = zg + dot(up, corner(i));
+  } else {
+    g[kEvTouch0] = zg + dot(up, {-m.point_a[0], -m.point_a[1], m.point_a[2]});
+  }
+  g[kEvOverturn] = up[2];
+}
+
+void BodyOnGround::complete(const Mode& m, State& z) const {
+  const Quat q = normalized(quat_at(z, S::kQw));
+  z[kQw] = q.w;
+  z[kQx] = q.x;
+  z[kQy] = q.y;
+  z[kQz] = q.z;
+  if (m.contact != BodyContact::Line && m.contact != BodyContact::Point) return;
+  // The contact point stays where it touched: the centroid and its velocity follow the rotation.
+  if (m.contact == BodyContact::Line) set_vec_at(z, kWx, scaled(m.axis, dot(m.axis, vec_at(z, kWx))));
+  set_contact_velocity(m, z);
+}
+
+void BodyOnGround::set_contact_velocity(const Mode& m, State& z) const {
+  const Mat3 r = rotation(quat_at(z, S::kQw));
+  const Vec3 pa = m.contact == BodyContact::Line ? plus(m.pivot, scaled(m.axis, m.half_length)) : m.pivot;
+  const Vec3 arm = scaled(r * m.point_a, -1.0);
+  set_vec_at(z, kX, plus(pa, arm));
+  set_vec_at(z, kVx, cross(vec_at(z, kWx), arm));
+}
+
+double BodyOnGround::next_breakpoint(double t, const Mode& m) const {
+  if (!forced_) return INFINITY;
+  if (m.contact == BodyContact::Rest && rest_exit_exact_) return rest_exit_.checkpoint(t);
+  return ground_.next_break(t);
+}
+
+bool BodyOnGround::rest_holds(double t) const {
+  if (!forced_) return true;
+  const std::array<double, 3> a = ground_.at(t);
+  const double gv = 1 + a[2];
+  if (!(gv > 0)) return false;
+  const double cy = std::cos(opt_.yaw), sy = std::sin(opt_.yaw);
+  const double ax = cy * a[0] + sy * a[1], ay = -sy * a[0] + cy * a[1], c = body_.half_height();
+  if (std::hypot(ax, ay) > opt_.mu_s * gv) return false;
+  if (body_.shape == BodyShape3d::Cylinder) return std::hypot(ax, ay) * c <= gv * body_.radius;
+  return std::fabs(ax) * c <= gv * 0.5 * body_.width && std::fabs(ay) * c <= gv * 0.5 * body_.depth;
+}
+
+double BodyOnGround::energy(const State& z) const {
+  const Mat3 r = rotation(quat_at(z, S::kQw));
+  const Vec3 om = transposed_times(r, vec_at(z, kWx)), v = vec_at(z, kVx);
+  return 0.5 * body_.mass * dot(v, v) +
+         0.5 * (inertia_[0] * om[0] * om[0] + inertia_[1] * om[1] * om[1] + inertia_[2] * om[2] * om[2]) +
+         body_.mass * body_.g * z[kZ];
+}
+
+double BodyOnGround::tilt(const State& z) const {
+  return std::acos(std::fmax(-1.0, std::fmin(1.0, rotation(quat_at(z, S::kQw))[2][2])));
+}
+
+std::array<Vec3, 2> BodyOnGround::contact_forces(double t, const Mode& m, const State& z) const {
+  const Vec3 f = specific_force(t);
+  if (m.contact == BodyContact::Flight) return {};
+  if (m.contact == BodyContact::Rest) return {scaled(f, -body_.mass), Vec3{0, 0, 0}};
+  const Mat3 r = rotation(quat_at(z, S::kQw));
+  const Vec3 s = pivot_to_centroid(m), w = vec_at(z, kWx);
+  if (m.contact == BodyContact::Point) return {point_pivot_motion(inertia_, body_.mass, r, s, w, f).force, Vec3{}};
+  const PivotMotion pm = line_pivot_motion(inertia_, body_.mass, r, s, m.axis, w, f);
+  if (m.half_length == 0) return {pm.force, Vec3{}};
+  const LineLoads ll = split_line_reaction(pm.force, pm.moment, m.axis, m.half_length);
+  return {ll.plus, ll.minus};
+}
+
+}  // namespace blockdyn

@@ -1,0 +1,144 @@
+// SPDX-License-Identifier: Apache-2.0
+#pragma once
+// The rigid3d body on rigid ground (docs/3d.md), one hybrid model over its contact modes: at
+// rest on its base; rocking about a base edge (two corners sticking) or, for a cylinder, about a
+// rim point and its tangent; pivoting on one sticking corner; in flight. Each mode's events are
+// located on the dense output: a contact point's load reaching zero (a corner lifts, the body
+// takes off), a base point touching the ground (an impact), the friction a contact needs
+// reaching mu_s (sliding starts: not modelled yet, the run stops there), the base standing
+// vertical (overturn). At an impact the angular momentum about the new contact is conserved
+// (Housner's law in 3D); a sequence of impacts that accumulates ends at rest. The exit from rest
+// is found on the ground motion itself (excitation/rest_exit.hpp) at its first crossing.
+// State in the ground's frame: as BodyFlight's, then the ground's work and the impacts' loss (J).
+#include <array>
+#include <optional>
+#include <string>
+
+#include "blockdyn/excitation/ground_motion_3d.hpp"
+#include "blockdyn/excitation/rest_exit.hpp"
+#include "blockdyn/integrate/hybrid_model.hpp"
+#include "blockdyn/model/rigid3d/body_shape.hpp"
+
+namespace blockdyn {
+
+enum class BodyContact : unsigned char { Rest, Flight, Line, Point };
+
+// Which base points touch and how: Line holds two (box corners i and j, or one rim point and
+// its tangent), Point one corner. Body-frame points; world pivot and axis (fixed while in mode).
+struct BodyOnGroundMode {
+  BodyContact contact = BodyContact::Rest;
+  int corner_a = -1, corner_b = -1;  // box corner indices (bit 0: +x, bit 1: +y); -1: a rim point
+  Vec3 point_a{}, point_b{};         // body frame: the contact points (line: its two ends)
+  Vec3 pivot{}, axis{};              // world: the pivot (a line's midpoint) and the line's unit axis
+  double half_length = 0;            // line: half the distance between its ends (rim: 0)
+};
+
+enum class Body3dEventKind : int {
+  Mode = 0,        // a mode change (a corner lifts, rest ends)
+  Impact,          // a base point hits the ground
+  LiftOff,         // the body leaves the ground
+  Rest,            // an accumulation of impacts ends at rest
+  Overturn,        // the base stands vertical
+  SlipOnset,       // a contact needs more than mu_s: sliding (not modelled yet; the run stops)
+  NotModelled,     // rolling on the rim, rest under two horizontal components (the run stops)
+  GroundBreak,     // a breakpoint of the ground motion
+  Invalid,         // the ground pulls down faster than g
+};
+const char* to_string(Body3dEventKind k);
+
+struct BodyOnGroundOptions {
+  double mu_s = 1e6;  // static friction coefficient (large: sticking throughout)
+  double yaw = 0;     // rad: the body's e1 from the world's x axis (fixes the rest exit's direction)
+};
+
+class BodyOnGround {
+ public:
+  enum : std::size_t { kX, kY, kZ, kQw, kQx, kQy, kQz, kVx, kVy, kVz, kWx, kWy, kWz, kWorkGround, kWorkImpact, kDimB };
+  enum Event : int {
+    kEvLiftOff,    // the total normal load (contact modes)
+    kEvLoadA,      // a line's end loads (box edge), or the moment a rim point cannot carry
+    kEvLoadB,
+    kEvTouch0,     // the heights of the base points not in contact (box: 4; rim: the opposite point)
+    kEvTouch3 = kEvTouch0 + 3,
+    kEvOverturn,   // R33: the base vertical
+    kEvSlipA,      // mu_s N - |T| at each contact point
+    kEvSlipB,
+    kEvTouchdown,  // flight: the lowest base point's height
+    kNumEventsB
+  };
+  static constexpr std::size_t kDim = kDimB;
+  static constexpr std::size_t kNumEvents = kNumEventsB;
+  static constexpr bool kStateJumps = true;
+  using Mode = BodyOnGroundMode;
+  using State = std::array<double, kDim>;
+
+  // The accumulation of impacts ends at rest once the time its remaining impacts take is below
+  // kAccumulationTime sqrt(size / g) (as Housner's model's).
+  static constexpr double kAccumulationTime = 1e-9;
+
+  BodyOnGround(const Body3d& body, const GroundMotion3d& ground = {}, const BodyOnGroundOptions& opt = {});
+
+  void rhs(double t, const Mode& m, const State& z, State& dz) const;
+  void events(double t, const Mode& m, const State& z, std::array<double, kNumEvents>& g) const;
+  void complete(const Mode& m, State& z) const;
+  Transition<Mode> transition(double t, const Mode& m, State& z, int event) const;
+  std::optional<Transition<Mode>> resolve_chatter(double, const Mode&, const State&) const { return std::nullopt; }
+  double step_hint(const Mode&) const { return step_; }
+  double next_breakpoint(double t, const Mode& m) const;
+  State abs_tol_scale() const { return scale_; }
+
+  // Kinetic + m g z (J), and the closed balance: energy - ground work - impact work (constant).
+  double energy(const State& z) const;
+  double balance(const State& z) const { return energy(z) - z[kWorkGround] - z[kWorkImpact]; }
+  // The ground's reaction (N) at the contact points of m (a and b), world frame.
+  std::array<Vec3, 2> contact_forces(double t, const Mode& m, const State& z) const;
+  double tilt(const State& z) const;  // rad: e3 from Z
+
+  // The mode of a body at state z touching the ground where it does (rest, a line, a corner or
+  // flight; a tilted body's lowest points decide). Throws std::invalid_argument for a body
+  // below the ground.
+  Mode mode_of(double t, const State& z) const;
+
+  const Body3d& body() const { return body_; }
+  const GroundMotion3d& ground() const { return ground_; }
+  const BodyOnGroundOptions& options() const { return opt_; }
+  double size() const { return size_; }
+  // Why the run stopped at a NotModelled or Invalid event (empty otherwise).
+  static std::string stop_reason(const Mode& from, int event);
+
+ private:
+  Vec3 specific_force(double t) const;  // gravity and the ground's acceleration reversed (m/s^2)
+  Vec3 corner(int i) const;              // body frame
+  bool rest_holds(double t) const;
+  Mode line_mode(const Mat3& r, const Vec3& x, const Vec3& pa, const Vec3& pb, int ca, int cb) const;
+  Mode point_mode(const Mat3& r, const Vec3& x, const Vec3& p, int c) const;
+  Mode rim_mode(const Mat3& r, const Vec3& x, const Vec3& p) const;
+  Transition<Mode> leave_rest(double t, const State& z) const;
+  Transition<Mode> impact(double t, const Mode& from, State& z, int event) const;
+  Transition<Mode> after_load_zero(double t, const Mode& m, State& z, int event) const;
+  Transition<Mode> settle(double t, State& z) const;
+  // Housner's law in 3D: the angular momentum about the new contact m conserved.
+  void conserve_momentum_about(const Mode& m, State& z) const;
+  void set_contact_velocity(const Mode& m, State& z) const;
+  bool pulls_away(double t, const Mode& m, const State& z) const;
+
+  Body3d body_;
+  GroundMotion3d ground_;
+  BodyOnGroundOptions opt_;
+  Vec3 inertia_;
+  double size_, step_;
+  State scale_;
+  bool forced_ = false, rest_exit_exact_ = false;
+  RestExit rest_exit_;
+};
+
+// The initial state of the rigid3d body (docs/3d.md): standing turned by yaw (rad), tilted by
+// `tilt` (rad) about the base point or edge on the side of tilt_azimuth (rad, world), resting on
+// it; or lifted by `lift` (m) with the given velocity and angular velocity (world).
+struct Body3dStart {
+  double yaw = 0, tilt = 0, tilt_azimuth = 0, lift = 0;
+  Vec3 velocity{}, angular_velocity{};
+};
+BodyOnGround::State initial_state(const Body3d& b, const Body3dStart& s);
+
+}  // namespace blockdyn

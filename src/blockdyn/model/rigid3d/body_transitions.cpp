@@ -1,0 +1,164 @@
+// SPDX-License-Identifier: Apache-2.0
+// The rigid3d body's mode changes (body_on_ground.hpp): which contact a state has, the exit from
+// rest, a contact point's load reaching zero, and impacts by the angular momentum about the new
+// contact (Housner's law in 3D), with the accumulation of impacts ended at rest.
+#include <cmath>
+#include <stdexcept>
+#include <vector>
+
+#include "blockdyn/base/number_text.hpp"
+#include "blockdyn/model/rigid3d/body_on_ground.hpp"
+#include "blockdyn/model/rigid3d/body_pivot.hpp"
+#include "blockdyn/model/rigid3d/body_state.hpp"
+
+namespace blockdyn {
+
+namespace {
+
+using S = BodyOnGround;
+using Tr = Transition<BodyOnGroundMode>;
+
+Vec3 unit(const Vec3& v) { return scaled(v, 1.0 / std::sqrt(dot(v, v))); }
+Vec3 horizontal(Vec3 v) {
+  v[2] = 0;
+  return v;
+}
+Tr stop(const BodyOnGroundMode& m, Body3dEventKind k) { return {m, true, int(k)}; }
+
+// Base points this close to the ground (in body sizes) touch it.
+constexpr double kTouchTolerance = 1e-11;
+
+}  // namespace
+
+BodyOnGroundMode BodyOnGround::line_mode(const Mat3& r, const Vec3& x, const Vec3& pa, const Vec3& pb, int ca,
+                                         int cb) const {
+  Mode m;
+  m.contact = BodyContact::Line;
+  m.corner_a = ca;
+  m.corner_b = cb;
+  m.point_a = pa;
+  m.point_b = pb;
+  const Vec3 wa = horizontal(plus(x, r * pa)), wb = horizontal(plus(x, r * pb));
+  m.pivot = scaled(plus(wa, wb), 0.5);
+  m.axis = unit(minus(wa, wb));
+  m.half_length = 0.5 * std::sqrt(dot(minus(wa, wb), minus(wa, wb)));
+  return m;
+}
+
+BodyOnGroundMode BodyOnGround::point_mode(const Mat3& r, const Vec3& x, const Vec3& p, int c) const {
+  Mode m;
+  m.contact = BodyContact::Point;
+  m.corner_a = c;
+  m.point_a = m.point_b = p;
+  m.pivot = horizontal(plus(x, r * p));
+  return m;
+}
+
+BodyOnGroundMode BodyOnGround::rim_mode(const Mat3& r, const Vec3& x, const Vec3& p) const {
+  // The rim point's tangent (e3 x p in the body frame) is the line it rocks about.
+  Mode m;
+  m.contact = BodyContact::Line;
+  m.point_a = m.point_b = p;
+  m.pivot = horizontal(plus(x, r * p));
+  m.axis = unit(horizontal(r * Vec3{-p[1], p[0], 0}));
+  return m;
+}
+
+bool BodyOnGround::pulls_away(double t, const Mode& m, const State& z) const {
+  std::array<double, kNumEvents> g;
+  events(t, m, z, g);
+  return g[kEvLiftOff] < 0;
+}
+
+BodyOnGroundMode BodyOnGround::mode_of(double t, const State& z) const {
+  (void)t;
+  const Mat3 r = rotation(quat_at(z, S::kQw));
+  const Vec3 x = vec_at(z, kX);
+  const double tol = kTouchTolerance * size_, lowest = z[kZ] - lowest_point(body_, r).depth;
+  if (lowest < -tol)
+    throw std::invalid_argument("the body is " + number_text(-lowest) + " m below the ground (initial state)");
+  Mode rest;
+  if (lowest > tol) {
+    rest.contact = BodyContact::Flight;
+    return rest;
+  }
+  if (body_.shape == BodyShape3d::Cylinder)
+    return r[2][2] >= 1 - 1e-15 ? rest : rim_mode(r, x, lowest_point(body_, r).body);
+  std::vector<int> touching;
+  for (int i = 0; i < 4; ++i)
+    if (z[kZ] + dot(r[2], corner(i)) <= tol) touching.push_back(i);
+  if (touching.size() >= 3) return rest;
+  if (touching.size() == 2) return line_mode(r, x, corner(touching[0]), corner(touching[1]), touching[0], touching[1]);
+  return point_mode(r, x, corner(touching[0]), touching[0]);
+}
+
+std::string BodyOnGround::stop_reason(const Mode& from, int event) {
+  if (from.contact == BodyContact::Rest)
+    return "rest under two horizontal ground components, or at a yaw other than --yaw: its exit is not modelled "
+           "yet";
+  if (event == kEvLoadA && from.contact == BodyContact::Line && from.half_length == 0)
+    return "the cylinder's contact starts rolling along the rim: rolling is not modelled yet";
+  if (event == kEvSlipA || event == kEvSlipB) return "a contact needs more friction than mu_s: sliding is not modelled yet";
+  return "";
+}
+
+Tr BodyOnGround::leave_rest(double t, const State& z) const {
+  const std::array<double, 3> a = forced_ ? ground_.at(t) : std::array<double, 3>{0, 0, 0};
+  const double gv = 1 + a[2];
+  Mode m;  // rest
+  if (!(gv > 0)) return stop(m, Body3dEventKind::Invalid);
+  const Mat3 r = rotation(quat_at(z, S::kQw));
+  const Vec3 x = vec_at(z, kX), ab = transposed_times(r, {a[0], a[1], 0});  // body frame
+  const double c = body_.half_height(), ah = std::hypot(ab[0], ab[1]);
+  const double rock = body_.shape == BodyShape3d::Cylinder
+                          ? ah * c / body_.radius
+                          : std::fmax(std::fabs(ab[0]) * c / (0.5 * body_.width), std::fabs(ab[1]) * c / (0.5 * body_.depth));
+  if (ah / opt_.mu_s > rock) return stop(m, Body3dEventKind::SlipOnset);
+  // The ground accelerating towards u tips the body towards -u.
+  if (body_.shape == BodyShape3d::Cylinder)
+    return {rim_mode(r, x, {-body_.radius * ab[0] / ah, -body_.radius * ab[1] / ah, -c}), false, int(Body3dEventKind::Mode)};
+  const double rx = std::fabs(ab[0]) / body_.width, ry = std::fabs(ab[1]) / body_.depth;
+  const int bx = ab[0] < 0 ? 1 : 0, by = ab[1] < 0 ? 2 : 0;
+  if (std::fabs(rx - ry) <= 1e-14 * std::fmax(rx, ry)) return {point_mode(r, x, corner(bx | by), bx | by), false, 0};
+  if (rx > ry) return {line_mode(r, x, corner(bx), corner(bx | 2), bx, bx | 2), false, 0};
+  return {line_mode(r, x, corner(by), corner(by | 1), by, by | 1), false, 0};
+}
+
+Tr BodyOnGround::settle(double t, State& z) const {
+  // At rest on the base: flat, at the yaw it has, no velocity; the kinetic energy left is lost.
+  const Mat3 r = rotation(quat_at(z, S::kQw));
+  const Vec3 om = transposed_times(r, vec_at(z, kWx)), v = vec_at(z, kVx);
+  z[kWorkImpact] -= 0.5 * body_.mass * dot(v, v) +
+                    0.5 * (inertia_[0] * om[0] * om[0] + inertia_[1] * om[1] * om[1] + inertia_[2] * om[2] * om[2]);
+  const double yaw = std::atan2(r[1][0], r[0][0]);
+  const Quat q = axis_angle({0, 0, 1}, yaw);
+  z[kQw] = q.w;
+  z[kQx] = q.x;
+  z[kQy] = q.y;
+  z[kQz] = q.z;
+  z[kZ] = body_.half_height();
+  set_vec_at(z, kVx, {0, 0, 0});
+  set_vec_at(z, kWx, {0, 0, 0});
+  Mode rest;
+  if (forced_ && (!rest_exit_exact_ || std::fabs(std::remainder(yaw - opt_.yaw, 2 * M_PI)) > 1e-9))
+    return stop(rest, Body3dEventKind::NotModelled);
+  if (rest_holds(t)) return {rest, false, int(Body3dEventKind::Rest)};
+  Tr tr = leave_rest(t, z);
+  if (!tr.stop) tr.kind = int(Body3dEventKind::Rest);
+  return tr;
+}
+
+Tr BodyOnGround::after_load_zero(double t, const Mode& m, State& z, int event) const {
+  if (event == kEvLiftOff) return {Mode{BodyContact::Flight}, false, int(Body3dEventKind::LiftOff)};
+  if (m.half_length == 0) return stop(m, Body3dEventKind::NotModelled);
+  // One end of the line lifts: the body pivots on the other, unless that one pulls away too.
+  const Mat3 r = rotation(quat_at(z, S::kQw));
+  const Vec3 x = vec_at(z, kX);
+  const bool a_lifts = event == kEvLoadA;
+  Mode next = a_lifts ? point_mode(r, x, m.point_b, m.corner_b) : point_mode(r, x, m.point_a, m.corner_a);
+  set_contact_velocity(next, z);
+  if (pulls_away(t, next, z)) return {Mode{BodyContact::Flight}, false, int(Body3dEventKind::LiftOff)};
+  return {next, false, int(Body3dEventKind::Mode)};
+}
+
+}  // namespace blockdyn

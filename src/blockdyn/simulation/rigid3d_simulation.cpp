@@ -1,0 +1,105 @@
+// SPDX-License-Identifier: Apache-2.0
+#include "blockdyn/simulation/rigid3d_simulation.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+#include "blockdyn/base/number_text.hpp"
+#include "blockdyn/integrate/hybrid_integrator.hpp"
+
+namespace blockdyn {
+
+namespace {
+
+using Model = BodyOnGround;
+
+// Watches the run: rows at the output clock, events, the energy balance at every step end.
+struct Body3dWatch {
+  const Model& model;
+  const Body3dRunOptions& o;
+  Body3dResult& res;
+  double next_row = 0;
+
+  void row(double t, const Model::Mode& m, const Model::State& z) const {
+    if (o.on_sample) o.on_sample({t, m, z});
+  }
+  void track(double t, const Model::State& z) {
+    res.max_abs_energy_error = std::fmax(res.max_abs_energy_error, std::fabs(model.balance(z) - res.initial_energy));
+    res.max_tilt = std::fmax(res.max_tilt, model.tilt(z));
+    (void)t;
+  }
+  bool on_step(const DenseSegment<Model::kDim>& seg, double t0, double t1, const Model::Mode& m) {
+    Model::State y;
+    if (o.output_interval > 0 && o.on_sample) {
+      while (next_row <= t1) {
+        if (next_row > t0) {
+          seg.eval(next_row, y);
+          model.complete(m, y);
+          row(next_row, m, y);
+        }
+        next_row += o.output_interval;
+      }
+    }
+    seg.eval(t1, y);
+    model.complete(m, y);
+    track(t1, y);
+    return true;
+  }
+  bool on_event(const EventInfo<Model::Mode, Model::kDim>& e) {
+    const auto kind = Body3dEventKind(e.kind);
+    if (kind == Body3dEventKind::Impact) ++res.impacts;
+    if (res.first_uplift_time < 0 && e.from.contact == BodyContact::Rest && e.to.contact != BodyContact::Rest)
+      res.first_uplift_time = e.t;
+    if (kind == Body3dEventKind::Overturn) res.overturn_time = e.t;
+    if (e.stop) res.stop_reason = Model::stop_reason(e.from, e.index);
+    const Body3dEventRecord rec{e.t, kind, e.from.contact, e.to.contact, e.z};
+    if (o.on_event)
+      o.on_event(rec);
+    else
+      res.events.push_back(rec);
+    track(e.t, e.z);
+    row(e.t, e.to, e.z);
+    return true;
+  }
+};
+
+}  // namespace
+
+Body3dResult simulate_body3d(const BodyOnGround& model, BodyOnGround::State z, const Body3dRunOptions& o) {
+  if (!(o.t_end > 0 && std::isfinite(o.t_end)))
+    throw std::invalid_argument("t-end = " + number_text(o.t_end) + " is out of range: (0, inf) s");
+  if (!(o.output_interval >= 0 && std::isfinite(o.output_interval)))
+    throw std::invalid_argument("output-interval = " + number_text(o.output_interval) + " is out of range: >= 0 s");
+  if (o.output_interval > 0 && o.t_end / o.output_interval > 1e8)
+    throw std::invalid_argument("output-interval = " + number_text(o.output_interval) +
+                                " gives more than 1e8 rows: at least t-end / 1e8");
+  Body3dResult res;
+  double t = 0;
+  Model::Mode mode = model.mode_of(t, z);
+  model.complete(mode, z);
+  res.initial_energy = model.balance(z);
+  Body3dWatch watch{model, o, res};
+  watch.row(0, mode, z);
+  watch.next_row = o.output_interval;
+  HybridIntegrator<Model> integ(model, o.integ);
+  // A body standing where rest fails leaves it at once (the transition the breakpoint would make).
+  Transition<Model::Mode> start{mode, false, int(Body3dEventKind::Mode)};
+  if (mode.contact == BodyContact::Rest) start = model.transition(t, mode, z, kBreakpoint);
+  if (start.stop) {
+    res.status = "invalid";
+    res.stop_reason = Model::stop_reason(mode, kBreakpoint);
+    if (Body3dEventKind(start.kind) == Body3dEventKind::SlipOnset) res.stop_reason = Model::stop_reason(mode, Model::kEvSlipA);
+  } else {
+    if (start.next.contact != mode.contact) res.first_uplift_time = 0;
+    mode = start.next;
+    res.integrator = integ.run(t, o.t_end, mode, z, watch);
+    res.steps = integ.stats().accepted;
+    res.status = res.overturn_time >= 0 ? "overturned" : res.integrator == RunStatus::ReachedEnd ? "t_end" : "invalid";
+  }
+  res.t_final = t;
+  res.z = z;
+  res.mode = mode;
+  return res;
+}
+
+}  // namespace blockdyn

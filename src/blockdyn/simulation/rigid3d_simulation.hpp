@@ -1,0 +1,54 @@
+// SPDX-License-Identifier: Apache-2.0
+#pragma once
+// One run of the rigid3d body (model/rigid3d/body_on_ground.hpp) from its initial state: the
+// contact it starts in, the event-driven integration, every event as a typed record, trajectory
+// rows at an output interval and at events, and the run's result (status, times, counts, the
+// energy balance's largest error). The `simulate --model rigid3d` command and the tests run here.
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "blockdyn/integrate/integrator_options.hpp"
+#include "blockdyn/model/rigid3d/body_on_ground.hpp"
+
+namespace blockdyn {
+
+struct Body3dEventRecord {
+  double t;
+  Body3dEventKind kind;
+  BodyContact from, to;
+  BodyOnGround::State z;  // after the event (after an impact's jump)
+};
+
+// A trajectory row: time, mode and state.
+struct Body3dSample {
+  double t;
+  BodyOnGroundMode mode;
+  BodyOnGround::State z;
+};
+
+struct Body3dRunOptions {
+  double t_end = 10;          // s
+  double output_interval = 0;  // s between trajectory rows (0: events only)
+  IntegratorOptions integ{};
+  std::function<void(const Body3dSample&)> on_sample;      // rows (null: none)
+  std::function<void(const Body3dEventRecord&)> on_event;  // as they happen (null: kept in the result)
+};
+
+struct Body3dResult {
+  std::string status;       // t_end, overturned, invalid
+  std::string stop_reason;  // why an invalid run stopped
+  RunStatus integrator = RunStatus::ReachedEnd;
+  double t_final = 0;
+  BodyOnGround::State z{};
+  BodyOnGroundMode mode{};
+  double overturn_time = -1, first_uplift_time = -1, max_tilt = 0;
+  long impacts = 0, steps = 0;
+  double initial_energy = 0, max_abs_energy_error = 0;  // of the closed balance (J)
+  std::vector<Body3dEventRecord> events;                // when on_event is null
+};
+
+// Throws std::invalid_argument for an initial state below the ground or a bad option.
+Body3dResult simulate_body3d(const BodyOnGround& model, BodyOnGround::State z, const Body3dRunOptions& o);
+
+}  // namespace blockdyn
