@@ -80,8 +80,8 @@ void add(CLI::App& app) {
   auto f = std::make_shared<SimulateFlags>();
   CLI::App* s = app.add_subcommand(
       "simulate",
-      "integrate one block (winkler, housner or rigid model) from flags or a TOML scenario, or a block "
-      "assembly (--model assembly, the options of `blockdyn assembly`)");
+      "integrate one block (winkler, housner or rigid model) from flags or a TOML scenario, a block "
+      "assembly (--model assembly, the options of `blockdyn assembly`), or a 3D box or cylinder (--model rigid3d)");
   s->add_option("scenario", f->scenario_file, "TOML scenario file (flags given as well override it)");
   std::string models;
   std::vector<std::string> names;
@@ -116,6 +116,11 @@ void add(CLI::App& app) {
   add_spec_options(*s, ground_options());
   add_physical_flags(*s, *f);
   add_assembly_options(*s, f->assembly);  // --model assembly (the options `blockdyn assembly` has)
+  // The options a family alone has, as it describes them (those another family shares are there).
+  for (const Family& fam : families())
+    if (fam.own_options)
+      for (const StudyOption& o : fam.own_options())
+        if (!s->get_option_no_throw("--" + o.name)) add_spec_options(*s, {o});
   s->callback([s, f] { run(*s, *f); });
 }
 

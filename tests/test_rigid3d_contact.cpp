@@ -85,13 +85,18 @@ TEST(Rigid3dContact, FreeRockingOnAnEdgeIsHousnersPlanarRocking) {
   for (const auto& e : ref.events)
     if (e.kind == blockdyn::RigidEventKind::Impact) ref_impacts.push_back(&e);
   const auto mine = impacts(r);
-  ASSERT_GE(ref_impacts.size(), 8u);
-  ASSERT_GE(mine.size(), 8u);
-  for (std::size_t i = 0; i < 8; ++i) {
+  // Impact for impact through the whole accumulation (140 of them), then rest at the same time:
+  // the two accumulation rules may differ by the last swings, far below 1e-9 s.
+  ASSERT_GE(ref_impacts.size(), 100u);
+  ASSERT_NEAR(double(mine.size()), double(ref_impacts.size()), 3.0);
+  for (std::size_t i = 0; i < std::min(mine.size(), ref_impacts.size()); ++i) {
     EXPECT_NEAR(mine[i].t, ref_impacts[i]->t, 1e-9) << "impact " << i;
     EXPECT_NEAR(rate(mine[i].z), std::fabs(ref_impacts[i]->vw_after), 1e-9) << "impact " << i;
     EXPECT_EQ(mine[i].to, BodyContact::Line);
   }
+  ASSERT_EQ(r.events.back().kind, Body3dEventKind::Rest);
+  EXPECT_EQ(ref.final_mode, blockdyn::Mechanism::Rest);
+  EXPECT_NEAR(r.events.back().t, ref.events.back().t, 1e-9);
   // The quarter swing from the exact first integral (housner_reference.hpp).
   blockdyn::BlockShape shape{b, h, 400, 9.81};
   EXPECT_NEAR(mine[0].t, blockdyn::test::housner_quarter_swing(shape.alpha(), shape.p(), w0), 1e-10);

@@ -88,16 +88,28 @@ def _read_csv(path):
     return cols
 
 
+def _state_columns(data):
+    """The state columns of the family whose trajectory `data` is (each family registers them)."""
+    for cols in sorted({tuple(f["state_columns"]) for f in _core.families()}, key=len, reverse=True):
+        if all(c in data for c in cols):
+            return cols
+    return STATE_COLUMNS
+
+
 class Simulation:
-    """One run: `t`, `state` (rows x, y, w, vx, vy, vw), `mode`, `event` (per row), `data` (every
-    trajectory column by name), `events` and `summary` (the JSON of `simulate --json`)."""
+    """One run: `t`, `state` (rows of the family's state columns: x, y, w, vx, vy, vw for the planar
+    families, x, y, z, qw, qx, qy, qz, vx, vy, vz, wx, wy, wz for rigid3d), `mode`, `event` (per
+    row), `data` (every trajectory column by name), `events` and `summary` (the JSON of
+    `simulate --json`)."""
 
     def __init__(self, data, summary):
         self.data = data
         self._summary = summary  # a dict, or the JSON text: parsed when first read (most runs never are)
         empty = np.zeros(0)
         self.t = data.get("t", empty)
-        self.state = (np.column_stack([data[c] for c in STATE_COLUMNS]) if data else np.zeros((0, len(STATE_COLUMNS))))
+        self.state_columns = _state_columns(data) if data else STATE_COLUMNS
+        self.state = (np.column_stack([data[c] for c in self.state_columns]) if data
+                      else np.zeros((0, len(self.state_columns))))
         self.mode = data.get("mode", empty)
         self.event = data.get("event", empty)
 

@@ -326,6 +326,14 @@ void add_records_and_catalogues(py::module_& m) {
           d["sweep"] = f.sweep != nullptr;
           d["forced"] = f.forced != nullptr;
           d["free_lyapunov"] = f.free_lyapunov != nullptr;
+          py::list cols;
+          for (std::string c, all = f.state_columns; !all.empty();) {
+            const auto comma = all.find(',');
+            c = all.substr(0, comma);
+            all = comma == std::string::npos ? "" : all.substr(comma + 1);
+            cols.append(c);
+          }
+          d["state_columns"] = cols;
           l.append(d);
         }
         return l;

@@ -197,3 +197,16 @@ def test_families_are_the_registry():
     assert by["assembly"]["forced"] and not by["assembly"]["scenario"] and not by["assembly"]["sweep"]
     with pytest.raises(ValueError, match="not one of: winkler"):
         blockdyn.lyapunov(model="cylinder", t_end=1)
+
+
+def test_rigid3d_run_from_python_has_its_own_state_columns():
+    """The 3D family registers its state (centroid, quaternion, velocity, angular velocity): a run
+    from Python carries it as NumPy columns, and its quaternion stays unit."""
+    r = blockdyn.simulate(model="rigid3d", width=0.4, depth=0.3, height=1.2, tilt=0.1, tilt_azimuth=30,
+                          angular_velocity=[0, 0, 0.3], t_end=1.0)
+    assert r.state_columns == ("x", "y", "z", "qw", "qx", "qy", "qz", "vx", "vy", "vz", "wx", "wy", "wz")
+    assert r.state.shape[1] == 13 and r.state.shape[0] == len(r.t)
+    q = r.state[:, 3:7]
+    assert np.max(np.abs(np.sum(q * q, axis=1) - 1.0)) < 1e-14
+    assert r.summary["model"] == "rigid3d" and r.summary["status"] == "t_end"
+    assert abs(r.data["tilt"][0] - 0.1) < 1e-14

@@ -25,6 +25,7 @@ struct StudyReport;
 struct StudyRequest;
 struct RigidGroundModel;
 struct Family;
+struct StudyOption;
 
 // The forced analyses' model of a family (spectrum, survival, response curves, cycles, impact
 // maps, Lyapunov exponents, chaos maps).
@@ -46,6 +47,10 @@ struct Family {
   const char* description;                                   // for --help
   const std::vector<std::string>& (*options)();              // the options `simulate` reads
   std::unique_ptr<PreparedRun> (*prepare)(const Settings&);  // throws std::invalid_argument
+  // The options only this family has, with their help: `simulate` registers them (null: none).
+  const std::vector<StudyOption>& (*own_options)() = nullptr;
+  // The trajectory columns that make up its state, comma-separated (Python's Simulation.state).
+  const char* state_columns = "x,y,w,vx,vy,vw";
   // A block described by a scenario file ([physical], [ground], ...); null for the others.
   SimulateReport (*run_scenario)(const Scenario&, const SimulateOutputs&) = nullptr;
   // A block on rigid ground (rocking spectra, fragility, its sweeps); null for the others.

@@ -7,6 +7,7 @@
 #include "blockdyn/analysis/sweep/rigid_sweep.hpp"
 #include "blockdyn/api/assembly_settings.hpp"
 #include "blockdyn/api/forced_model_settings.hpp"
+#include "blockdyn/api/rigid3d_run.hpp"
 #include "blockdyn/api/scenario_settings.hpp"
 #include "blockdyn/api/simulate_run.hpp"
 #include "blockdyn/api/study_command.hpp"
@@ -56,6 +57,12 @@ const std::vector<Family>& families() {
        .options = assembly_option_names,
        .prepare = prepare_assembly,
        .forced = &assembly_forced()},
+      {.name = "rigid3d",
+       .description = "3D box or cylinder on rigid ground: rocks on edges, corners and the rim, impacts, flies",
+       .options = rigid3d_option_names,
+       .prepare = prepare_rigid3d,
+       .own_options = rigid3d_options,
+       .state_columns = "x,y,z,qw,qx,qy,qz,vx,vy,vz,wx,wy,wz"},
   };
   return rows;
 }

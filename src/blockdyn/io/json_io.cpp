@@ -13,7 +13,7 @@ json to_json(const WinklerParams& p) {
   return {{"r", p.r}, {"mu", p.mu}, {"k", p.k}, {"alpha", p.alpha()}, {"inertia", p.inertia()}};
 }
 
-static json component_json(const GroundComponent& c) {
+json to_json(const GroundComponent& c) {
   json j = {{"constant", c.constant}, {"amplitude", c.amplitude}, {"frequency", c.frequency},   {"phase", c.phase},
             {"t_start", c.t_start},   {"duration", c.duration},   {"pulse", to_string(c.pulse)}};
   if (c.record) {
@@ -27,7 +27,7 @@ static json component_json(const GroundComponent& c) {
 }
 
 json to_json(const GroundMotion& g) {
-  return {{"horizontal", component_json(g.horizontal)}, {"vertical", component_json(g.vertical)}};
+  return {{"horizontal", to_json(g.horizontal)}, {"vertical", to_json(g.vertical)}};
 }
 
 json to_json(const IntegratorOptions& o) {

@@ -15,6 +15,7 @@
 namespace blockdyn {
 
 nlohmann::ordered_json to_json(const WinklerParams& p);
+nlohmann::ordered_json to_json(const GroundComponent& c);
 nlohmann::ordered_json to_json(const GroundMotion& g);
 nlohmann::ordered_json to_json(const IntegratorOptions& o);
 nlohmann::ordered_json state_json(const WinklerState& z);                       // x, y, w, vx, vy, vw

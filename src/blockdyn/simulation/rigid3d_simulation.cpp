@@ -20,8 +20,8 @@ struct Body3dWatch {
   Body3dResult& res;
   double next_row = 0;
 
-  void row(double t, const Model::Mode& m, const Model::State& z) const {
-    if (o.on_sample) o.on_sample({t, m, z});
+  void row(double t, const Model::Mode& m, const Model::State& z, const char* event = nullptr) const {
+    if (o.on_sample) o.on_sample({t, m, z, event});
   }
   void track(double t, const Model::State& z) {
     res.max_abs_energy_error = std::fmax(res.max_abs_energy_error, std::fabs(model.balance(z) - res.initial_energy));
@@ -58,7 +58,7 @@ struct Body3dWatch {
     else
       res.events.push_back(rec);
     track(e.t, e.z);
-    row(e.t, e.to, e.z);
+    row(e.t, e.to, e.z, to_string(kind));
     return true;
   }
 };
@@ -78,8 +78,13 @@ Body3dResult simulate_body3d(const BodyOnGround& model, BodyOnGround::State z, c
   Model::Mode mode = model.mode_of(t, z);
   model.complete(mode, z);
   res.initial_energy = model.balance(z);
+  if (mode.contact == BodyContact::Rest && !model.rest_exit_known())
+    throw std::invalid_argument(
+        "ground-h2: the body starts at rest, and its exit from rest under two horizontal ground components is not "
+        "modelled yet (give one horizontal component at --ground-azimuth, or start it tilted or in flight)");
   Body3dWatch watch{model, o, res};
   watch.row(0, mode, z);
+  watch.track(0, z);
   watch.next_row = o.output_interval;
   HybridIntegrator<Model> integ(model, o.integ);
   // A body standing where rest fails leaves it at once (the transition the breakpoint would make).
@@ -88,7 +93,8 @@ Body3dResult simulate_body3d(const BodyOnGround& model, BodyOnGround::State z, c
   if (start.stop) {
     res.status = "invalid";
     res.stop_reason = Model::stop_reason(mode, kBreakpoint);
-    if (Body3dEventKind(start.kind) == Body3dEventKind::SlipOnset) res.stop_reason = Model::stop_reason(mode, Model::kEvSlipA);
+    if (Body3dEventKind(start.kind) == Body3dEventKind::SlipOnset)
+      res.stop_reason = Model::stop_reason(mode, Model::kEvSlipA);
   } else {
     if (start.next.contact != mode.contact) res.first_uplift_time = 0;
     mode = start.next;

@@ -20,15 +20,16 @@ struct Body3dEventRecord {
   BodyOnGround::State z;  // after the event (after an impact's jump)
 };
 
-// A trajectory row: time, mode and state.
+// A trajectory row: time, mode and state; at an event its kind (after the event's transition).
 struct Body3dSample {
   double t;
   BodyOnGroundMode mode;
   BodyOnGround::State z;
+  const char* event = nullptr;
 };
 
 struct Body3dRunOptions {
-  double t_end = 10;          // s
+  double t_end = 10;           // s
   double output_interval = 0;  // s between trajectory rows (0: events only)
   IntegratorOptions integ{};
   std::function<void(const Body3dSample&)> on_sample;      // rows (null: none)

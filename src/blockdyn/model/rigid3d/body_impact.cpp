@@ -18,7 +18,6 @@ namespace {
 using S = BodyOnGround;
 using Tr = Transition<BodyOnGroundMode>;
 
-
 // Base points this close to the ground (in body sizes) touch it at an impact: a base landing
 // flat brings its far corners down at one instant up to rounding.
 constexpr double kImpactTouch = 1e-10, kSeparation = 1e-12;
@@ -58,7 +57,7 @@ Tr BodyOnGround::transition(double t, const Mode& m, State& z, int event) const 
       return {m, true, int(Body3dEventKind::Overturn)};
     case kEvSlipA:
     case kEvSlipB:
-      return {m, true, int(Body3dEventKind::SlipOnset)};
+      return after_slip_onset(t, m, z, event);
     default:
       return impact(t, m, z, event);
   }

@@ -25,15 +25,24 @@ Vec3 pivot_to_centroid(const BodyOnGroundMode& m) { return scaled(plus(m.point_a
 
 const char* to_string(Body3dEventKind k) {
   switch (k) {
-    case Body3dEventKind::Mode: return "mode";
-    case Body3dEventKind::Impact: return "impact";
-    case Body3dEventKind::LiftOff: return "lift_off";
-    case Body3dEventKind::Rest: return "rest";
-    case Body3dEventKind::Overturn: return "overturn";
-    case Body3dEventKind::SlipOnset: return "slip_onset";
-    case Body3dEventKind::NotModelled: return "not_modelled";
-    case Body3dEventKind::GroundBreak: return "ground_break";
-    case Body3dEventKind::Invalid: return "invalid";
+    case Body3dEventKind::Mode:
+      return "mode";
+    case Body3dEventKind::Impact:
+      return "impact";
+    case Body3dEventKind::LiftOff:
+      return "lift_off";
+    case Body3dEventKind::Rest:
+      return "rest";
+    case Body3dEventKind::Overturn:
+      return "overturn";
+    case Body3dEventKind::SlipOnset:
+      return "slip_onset";
+    case Body3dEventKind::NotModelled:
+      return "not_modelled";
+    case Body3dEventKind::GroundBreak:
+      return "ground_break";
+    case Body3dEventKind::Invalid:
+      return "invalid";
   }
   return "?";
 }
@@ -56,7 +65,8 @@ BodyOnGround::BodyOnGround(const Body3d& body, const GroundMotion3d& ground, con
     planar.horizontal = ground_.h;
     planar.vertical = ground_.v;
     const double rock = rest_threshold(body_, ground_.azimuth * (M_PI / 180) - opt_.yaw);
-    rest_exit_ = RestExit(planar, std::fmin(rock, opt_.mu_s));
+    rest_coefficient_ = std::fmin(rock, opt_.mu_s);
+    rest_exit_ = RestExit(planar, rest_coefficient_);
   }
 }
 
@@ -89,9 +99,8 @@ void BodyOnGround::rhs(double t, const Mode& m, const State& z, State& dz) const
     return;
   }
   const Vec3 s = pivot_to_centroid(m);
-  const PivotMotion pm = m.contact == BodyContact::Point
-                             ? point_pivot_motion(inertia_, body_.mass, r, s, w, f)
-                             : line_pivot_motion(inertia_, body_.mass, r, s, m.axis, w, f);
+  const PivotMotion pm = m.contact == BodyContact::Point ? point_pivot_motion(inertia_, body_.mass, r, s, w, f)
+                                                         : line_pivot_motion(inertia_, body_.mass, r, s, m.axis, w, f);
   set_vec_at(dz, kVx, pm.accel);
   set_vec_at(dz, kWx, pm.domega);
 }
@@ -100,16 +109,14 @@ void BodyOnGround::events(double t, const Mode& m, const State& z, std::array<do
   g.fill(1.0);
   if (m.contact == BodyContact::Rest) return;
   const Mat3 r = rotation(quat_at(z, S::kQw));
-  const double zg = z[kZ];
   if (m.contact == BodyContact::Flight) {
-    g[kEvTouchdown] = zg - lowest_point(body_, r).depth;
+    g[kEvTouchdown] = z[kZ] - lowest_point(body_, r).depth;
     return;
   }
   const Vec3 w = vec_at(z, kWx), f = specific_force(t), s = pivot_to_centroid(m);
   const double weight = body_.mass * body_.g;
-  const PivotMotion pm = m.contact == BodyContact::Point
-                             ? point_pivot_motion(inertia_, body_.mass, r, s, w, f)
-                             : line_pivot_motion(inertia_, body_.mass, r, s, m.axis, w, f);
+  const PivotMotion pm = m.contact == BodyContact::Point ? point_pivot_motion(inertia_, body_.mass, r, s, w, f)
+                                                         : line_pivot_motion(inertia_, body_.mass, r, s, m.axis, w, f);
   g[kEvLiftOff] = pm.force[2] / weight;
   auto slip = [&](const Vec3& load) { return (opt_.mu_s * load[2] - std::hypot(load[0], load[1])) / weight; };
   if (m.contact == BodyContact::Line && m.half_length > 0) {
@@ -124,12 +131,14 @@ void BodyOnGround::events(double t, const Mode& m, const State& z, std::array<do
       g[kEvLoadA] = kRimMomentTolerance - std::sqrt(dot(pm.moment, pm.moment)) / (weight * size_);
     g[kEvSlipA] = slip(pm.force);
   }
+  // Heights above the contact point (on the ground): no cancellation against the centroid's
+  // height, so swings far below its rounding stay resolved (the tail of an accumulation).
   const Vec3& up = r[2];
   if (body_.shape == BodyShape3d::Box) {
     for (int i = 0; i < 4; ++i)
-      if (i != m.corner_a && i != m.corner_b) g[kEvTouch0 + i] = zg + dot(up, corner(i));
+      if (i != m.corner_a && i != m.corner_b) g[kEvTouch0 + i] = dot(up, minus(corner(i), m.point_a));
   } else {
-    g[kEvTouch0] = zg + dot(up, {-m.point_a[0], -m.point_a[1], m.point_a[2]});
+    g[kEvTouch0] = dot(up, {-2 * m.point_a[0], -2 * m.point_a[1], 0});
   }
   g[kEvOverturn] = up[2];
 }
@@ -162,6 +171,11 @@ double BodyOnGround::next_breakpoint(double t, const Mode& m) const {
 
 bool BodyOnGround::rest_holds(double t) const {
   if (!forced_) return true;
+  if (rest_exit_exact_) {
+    // The search's own condition (excitation/rest_exit.hpp), so that where it says rest fails it does.
+    const double gv = 1 + ground_.v.at(t);
+    return gv > 0 && std::fabs(ground_.h.at(t)) <= rest_coefficient_ * gv;
+  }
   const std::array<double, 3> a = ground_.at(t);
   const double gv = 1 + a[2];
   if (!(gv > 0)) return false;

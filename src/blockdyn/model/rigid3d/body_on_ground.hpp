@@ -5,7 +5,8 @@
 // rim point and its tangent; pivoting on one sticking corner; in flight. Each mode's events are
 // located on the dense output: a contact point's load reaching zero (a corner lifts, the body
 // takes off), a base point touching the ground (an impact), the friction a contact needs
-// reaching mu_s (sliding starts: not modelled yet, the run stops there), the base standing
+// reaching mu_s (sliding starts: not modelled yet, the run stops there, except at an edge's end
+// that carries at most 1 % of the load, which lifts: the pivot moves to the other end), the base standing
 // vertical (overturn). At an impact the angular momentum about the new contact is conserved
 // (Housner's law in 3D); a sequence of impacts that accumulates ends at rest. The exit from rest
 // is found on the ground motion itself (excitation/rest_exit.hpp) at its first crossing.
@@ -34,15 +35,15 @@ struct BodyOnGroundMode {
 };
 
 enum class Body3dEventKind : int {
-  Mode = 0,        // a mode change (a corner lifts, rest ends)
-  Impact,          // a base point hits the ground
-  LiftOff,         // the body leaves the ground
-  Rest,            // an accumulation of impacts ends at rest
-  Overturn,        // the base stands vertical
-  SlipOnset,       // a contact needs more than mu_s: sliding (not modelled yet; the run stops)
-  NotModelled,     // rolling on the rim, rest under two horizontal components (the run stops)
-  GroundBreak,     // a breakpoint of the ground motion
-  Invalid,         // the ground pulls down faster than g
+  Mode = 0,     // a mode change (a corner lifts, rest ends)
+  Impact,       // a base point hits the ground
+  LiftOff,      // the body leaves the ground
+  Rest,         // an accumulation of impacts ends at rest
+  Overturn,     // the base stands vertical
+  SlipOnset,    // a contact needs more than mu_s: sliding (not modelled yet; the run stops)
+  NotModelled,  // rolling on the rim, rest under two horizontal components (the run stops)
+  GroundBreak,  // a breakpoint of the ground motion
+  Invalid,      // the ground pulls down faster than g
 };
 const char* to_string(Body3dEventKind k);
 
@@ -55,13 +56,13 @@ class BodyOnGround {
  public:
   enum : std::size_t { kX, kY, kZ, kQw, kQx, kQy, kQz, kVx, kVy, kVz, kWx, kWy, kWz, kWorkGround, kWorkImpact, kDimB };
   enum Event : int {
-    kEvLiftOff,    // the total normal load (contact modes)
-    kEvLoadA,      // a line's end loads (box edge), or the moment a rim point cannot carry
+    kEvLiftOff,  // the total normal load (contact modes)
+    kEvLoadA,    // a line's end loads (box edge), or the moment a rim point cannot carry
     kEvLoadB,
-    kEvTouch0,     // the heights of the base points not in contact (box: 4; rim: the opposite point)
+    kEvTouch0,  // the heights of the base points not in contact (box: 4; rim: the opposite point)
     kEvTouch3 = kEvTouch0 + 3,
-    kEvOverturn,   // R33: the base vertical
-    kEvSlipA,      // mu_s N - |T| at each contact point
+    kEvOverturn,  // R33: the base vertical
+    kEvSlipA,     // mu_s N - |T| at each contact point
     kEvSlipB,
     kEvTouchdown,  // flight: the lowest base point's height
     kNumEventsB
@@ -103,12 +104,14 @@ class BodyOnGround {
   const GroundMotion3d& ground() const { return ground_; }
   const BodyOnGroundOptions& options() const { return opt_; }
   double size() const { return size_; }
+  // Whether the exit from rest is found exactly: no ground motion, or one horizontal component.
+  bool rest_exit_known() const { return !forced_ || rest_exit_exact_; }
   // Why the run stopped at a NotModelled or Invalid event (empty otherwise).
   static std::string stop_reason(const Mode& from, int event);
 
  private:
   Vec3 specific_force(double t) const;  // gravity and the ground's acceleration reversed (m/s^2)
-  Vec3 corner(int i) const;              // body frame
+  Vec3 corner(int i) const;             // body frame
   bool rest_holds(double t) const;
   Mode line_mode(const Mat3& r, const Vec3& x, const Vec3& pa, const Vec3& pb, int ca, int cb) const;
   Mode point_mode(const Mat3& r, const Vec3& x, const Vec3& p, int c) const;
@@ -116,6 +119,7 @@ class BodyOnGround {
   Transition<Mode> leave_rest(double t, const State& z) const;
   Transition<Mode> impact(double t, const Mode& from, State& z, int event) const;
   Transition<Mode> after_load_zero(double t, const Mode& m, State& z, int event) const;
+  Transition<Mode> after_slip_onset(double t, const Mode& m, State& z, int event) const;
   Transition<Mode> settle(double t, State& z) const;
   // Housner's law in 3D: the angular momentum about the new contact m conserved.
   void conserve_momentum_about(const Mode& m, State& z) const;
@@ -129,6 +133,7 @@ class BodyOnGround {
   double size_, step_;
   State scale_;
   bool forced_ = false, rest_exit_exact_ = false;
+  double rest_coefficient_ = 0;  // one horizontal component: the smaller of rocking's and mu_s
   RestExit rest_exit_;
 };
 

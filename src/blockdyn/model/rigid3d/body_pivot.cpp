@@ -80,9 +80,18 @@ Vec3 angular_momentum_about(const Vec3& inertia, double mass, const Mat3& r, con
 }
 
 LineLoads split_line_reaction(const Vec3& force, const Vec3& moment, const Vec3& axis, double half_length) {
-  // F+ + F- = F and L e x (F+ - F-) = M: the difference normal to e is (M x e) / L.
+  // F+ + F- = F and L e x (F+ - F-) = M fix the difference normal to e: (M x e) / L. The force
+  // along e is shared in proportion to the ends' normal loads (the same friction ratio at both:
+  // an end that is about to lift needs none), equally when either load is not positive.
   const Vec3 d = half_length > 0 ? scaled(cross(moment, axis), 1.0 / half_length) : Vec3{0, 0, 0};
-  return {scaled(plus(force, d), 0.5), scaled(minus(force, d), 0.5)};
+  const double fe = dot(force, axis);
+  const Vec3 normal_part = minus(force, scaled(axis, fe));
+  LineLoads l{scaled(plus(normal_part, d), 0.5), scaled(minus(normal_part, d), 0.5)};
+  const double np = l.plus[2], nm = l.minus[2];
+  const double share = np > 0 && nm > 0 ? np / (np + nm) : 0.5;
+  l.plus = plus(l.plus, scaled(axis, share * fe));
+  l.minus = plus(l.minus, scaled(axis, (1 - share) * fe));
+  return l;
 }
 
 }  // namespace blockdyn

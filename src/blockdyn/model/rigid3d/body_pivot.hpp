@@ -38,7 +38,7 @@ Vec3 angular_momentum_about(const Vec3& inertia, double mass, const Mat3& r, con
 
 // The reaction of a line contact shared by its two end points at pivot +- half_length * axis:
 // the total force and the moment about the pivot (perpendicular to the axis) fix everything but
-// the split of the force along the axis, which is taken equal (the least-norm split).
+// the split of the force along the axis, which follows the ends' normal loads.
 struct LineLoads {
   Vec3 plus, minus;  // at pivot + half_length axis, pivot - half_length axis
 };

@@ -27,6 +27,8 @@ Tr stop(const BodyOnGroundMode& m, Body3dEventKind k) { return {m, true, int(k)}
 
 // Base points this close to the ground (in body sizes) touch it.
 constexpr double kTouchTolerance = 1e-11;
+// An edge's end carrying at most this share of the load lifts rather than slides (after_slip_onset).
+constexpr double kReleasedLoad = 1e-2;
 
 }  // namespace
 
@@ -98,7 +100,8 @@ std::string BodyOnGround::stop_reason(const Mode& from, int event) {
            "yet";
   if (event == kEvLoadA && from.contact == BodyContact::Line && from.half_length == 0)
     return "the cylinder's contact starts rolling along the rim: rolling is not modelled yet";
-  if (event == kEvSlipA || event == kEvSlipB) return "a contact needs more friction than mu_s: sliding is not modelled yet";
+  if (event == kEvSlipA || event == kEvSlipB)
+    return "a contact needs more friction than mu_s: sliding is not modelled yet";
   return "";
 }
 
@@ -110,13 +113,14 @@ Tr BodyOnGround::leave_rest(double t, const State& z) const {
   const Mat3 r = rotation(quat_at(z, S::kQw));
   const Vec3 x = vec_at(z, kX), ab = transposed_times(r, {a[0], a[1], 0});  // body frame
   const double c = body_.half_height(), ah = std::hypot(ab[0], ab[1]);
-  const double rock = body_.shape == BodyShape3d::Cylinder
-                          ? ah * c / body_.radius
-                          : std::fmax(std::fabs(ab[0]) * c / (0.5 * body_.width), std::fabs(ab[1]) * c / (0.5 * body_.depth));
+  const double rock = body_.shape == BodyShape3d::Cylinder ? ah * c / body_.radius
+                                                           : std::fmax(std::fabs(ab[0]) * c / (0.5 * body_.width),
+                                                                       std::fabs(ab[1]) * c / (0.5 * body_.depth));
   if (ah / opt_.mu_s > rock) return stop(m, Body3dEventKind::SlipOnset);
   // The ground accelerating towards u tips the body towards -u.
   if (body_.shape == BodyShape3d::Cylinder)
-    return {rim_mode(r, x, {-body_.radius * ab[0] / ah, -body_.radius * ab[1] / ah, -c}), false, int(Body3dEventKind::Mode)};
+    return {rim_mode(r, x, {-body_.radius * ab[0] / ah, -body_.radius * ab[1] / ah, -c}), false,
+            int(Body3dEventKind::Mode)};
   const double rx = std::fabs(ab[0]) / body_.width, ry = std::fabs(ab[1]) / body_.depth;
   const int bx = ab[0] < 0 ? 1 : 0, by = ab[1] < 0 ? 2 : 0;
   if (std::fabs(rx - ry) <= 1e-14 * std::fmax(rx, ry)) return {point_mode(r, x, corner(bx | by), bx | by), false, 0};
@@ -146,6 +150,19 @@ Tr BodyOnGround::settle(double t, State& z) const {
   Tr tr = leave_rest(t, z);
   if (!tr.stop) tr.kind = int(Body3dEventKind::Rest);
   return tr;
+}
+
+Tr BodyOnGround::after_slip_onset(double t, const Mode& m, State& z, int event) const {
+  // An edge's end that needs more friction than it has while it carries almost none of the load
+  // is let go: the body pivots on the other end (the end would slide for the instant before it
+  // lifts; exact as mu_s grows, where the two events meet). Any other slip stops the run.
+  if (m.contact == BodyContact::Line && m.half_length > 0) {
+    const std::array<Vec3, 2> f = contact_forces(t, m, z);
+    const double total = f[0][2] + f[1][2], end = event == kEvSlipA ? f[0][2] : f[1][2];
+    if (total > 0 && end <= kReleasedLoad * total)
+      return after_load_zero(t, m, z, event == kEvSlipA ? kEvLoadA : kEvLoadB);
+  }
+  return {m, true, int(Body3dEventKind::SlipOnset)};
 }
 
 Tr BodyOnGround::after_load_zero(double t, const Mode& m, State& z, int event) const {

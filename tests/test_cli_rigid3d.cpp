@@ -1,0 +1,98 @@
+// SPDX-License-Identifier: Apache-2.0
+// `blockdyn simulate --model rigid3d` (issue 40): the JSON summary's keys, the trajectory's
+// columns, an overturn under a pulse, reproducibility and the usage errors.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <sstream>
+
+#include "cli_test.hpp"
+
+namespace {
+
+std::vector<std::string> box() {
+  return {"simulate", "--model", "rigid3d", "--width", "0.4", "--depth", "0.3", "--height", "1.2", "--mass", "250"};
+}
+
+std::vector<std::string> joined(std::vector<std::string> a, const std::vector<std::string>& b) {
+  a.insert(a.end(), b.begin(), b.end());
+  return a;
+}
+
+TEST(CliRigid3d, JsonContractOfAFreeRockingBox) {
+  TmpDir d("rigid3d_json");
+  const json j = cli_json(joined(box(), {"--tilt", "0.12", "--t-end", "2", "--json"}), d.path);
+  ASSERT_FALSE(j.is_null());
+  EXPECT_EQ(j["schema"], "blockdyn.simulate.summary/1");
+  EXPECT_EQ(j["model"], "rigid3d");
+  EXPECT_EQ(j["status"], "t_end");
+  EXPECT_TRUE(j["overturn_time"].is_null());
+  EXPECT_DOUBLE_EQ(j["t_final"].get<double>(), 2.0);
+  EXPECT_NEAR(j["max_tilt"].get<double>(), 0.12, 1e-12);
+  EXPECT_EQ(j["body"]["shape"], "box");
+  EXPECT_DOUBLE_EQ(j["body"]["depth"].get<double>(), 0.3);
+  for (const char* k : {"initial", "final", "work_ground", "work_impact"}) EXPECT_TRUE(j["energy"].contains(k)) << k;
+  EXPECT_LT(j["max_abs_energy_error"].get<double>(), 1e-9 * 250 * 9.81 * 1.2);
+  long impacts = 0;
+  for (const auto& e : j["events"])
+    if (e["kind"] == "impact") {
+      ++impacts;
+      EXPECT_EQ(e["to"], "edge");
+    }
+  EXPECT_GE(impacts, 3);
+  EXPECT_EQ(j["impacts"], impacts);
+  EXPECT_TRUE(j["run"].contains("version"));
+}
+
+TEST(CliRigid3d, TrajectoryColumnsAndFirstRow) {
+  TmpDir d("rigid3d_csv");
+  const auto r = run_cli(joined(box(), {"--tilt", "0.1", "--tilt-azimuth", "90", "--t-end", "1",
+                                                         "--trajectory", "t.csv", "--quiet"}),
+                         d.path);
+  ASSERT_EQ(r.code, 0) << r.err;
+  std::istringstream in(slurp(d.path + "/t.csv"));
+  std::string header, first;
+  std::getline(in, header);
+  std::getline(in, first);
+  EXPECT_EQ(header.rfind("t,x,y,z,qw,qx,qy,qz,tilt,tilt_azimuth,vx,vy,vz,wx,wy,wz,mode,", 0), 0u) << header;
+  std::vector<std::string> cells;
+  std::istringstream row(first);
+  for (std::string c; std::getline(row, c, ',');) cells.push_back(c);
+  ASSERT_GE(cells.size(), 17u);
+  EXPECT_NEAR(std::stod(cells[8]), 0.1, 1e-14);   // tilt
+  EXPECT_NEAR(std::stod(cells[9]), 90.0, 1e-9);   // leaning towards +y
+  EXPECT_EQ(cells[16], "edge");
+}
+
+TEST(CliRigid3d, APulseOverturnsASlenderBoxAndTheRunRepeatsBitForBit) {
+  TmpDir d("rigid3d_pulse");
+  const std::vector<std::string> args{"simulate", "--model", "rigid3d", "--width", "0.3", "--depth", "0.3",
+                                      "--height", "1.2", "--ground-h-amplitude", "0.8", "--ground-h-pulse",
+                                      "one-sine", "--ground-h-duration", "1", "--ground-azimuth", "25",
+                                      "--mu-s", "100", "--t-end", "5", "--json"};
+  const auto a = run_cli(args, d.path), b = run_cli(args, d.path);
+  ASSERT_EQ(a.code, 0) << a.err;
+  EXPECT_EQ(a.out, b.out);
+  const json j = json::parse(a.out);
+  EXPECT_EQ(j["status"], "overturned");
+  EXPECT_GT(j["overturn_time"].get<double>(), 0.5);
+  EXPECT_GT(j["first_uplift_time"].get<double>(), 0.0);
+}
+
+TEST(CliRigid3d, UsageErrorsNameTheOption) {
+  TmpDir d("rigid3d_usage");
+  const std::vector<std::string> m{"simulate", "--model", "rigid3d"};
+  expect_usage_errors({{joined(m, {"--shape", "sphere"}), "--shape"},
+                       {joined(m, {"--radius", "0.3"}), "--radius"},
+                       {joined(m, {"--velocity", "1,0,0"}), "--velocity"},
+                       {joined(m, {"--lift", "0.1", "--velocity", "1,0"}), "--velocity"},
+                       {joined(m, {"--tilt", "2"}), "tilt"},
+                       {joined(m, {"--width", "-1"}), "width"},
+                       {joined(m, {"--mu-k", "0.3"}), "--mu-k"},
+                       {joined(m, {"--mass", "1", "--density", "2000"}), "--density"},
+                       {joined(m, {"--ground-h2-amplitude", "0.3", "--ground-h2-frequency", "1"}),
+                        "ground-h2"}},
+                      d.path);
+}
+
+}  // namespace
