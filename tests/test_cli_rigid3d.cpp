@@ -46,9 +46,9 @@ TEST(CliRigid3d, JsonContractOfAFreeRockingBox) {
 
 TEST(CliRigid3d, TrajectoryColumnsAndFirstRow) {
   TmpDir d("rigid3d_csv");
-  const auto r = run_cli(joined(box(), {"--tilt", "0.1", "--tilt-azimuth", "90", "--t-end", "1",
-                                                         "--trajectory", "t.csv", "--quiet"}),
-                         d.path);
+  const auto r = run_cli(
+      joined(box(), {"--tilt", "0.1", "--tilt-azimuth", "90", "--t-end", "1", "--trajectory", "t.csv", "--quiet"}),
+      d.path);
   ASSERT_EQ(r.code, 0) << r.err;
   std::istringstream in(slurp(d.path + "/t.csv"));
   std::string header, first;
@@ -59,17 +59,24 @@ TEST(CliRigid3d, TrajectoryColumnsAndFirstRow) {
   std::istringstream row(first);
   for (std::string c; std::getline(row, c, ',');) cells.push_back(c);
   ASSERT_GE(cells.size(), 17u);
-  EXPECT_NEAR(std::stod(cells[8]), 0.1, 1e-14);   // tilt
-  EXPECT_NEAR(std::stod(cells[9]), 90.0, 1e-9);   // leaning towards +y
+  EXPECT_NEAR(std::stod(cells[8]), 0.1, 1e-14);  // tilt
+  EXPECT_NEAR(std::stod(cells[9]), 90.0, 1e-9);  // leaning towards +y
   EXPECT_EQ(cells[16], "edge");
 }
 
 TEST(CliRigid3d, APulseOverturnsASlenderBoxAndTheRunRepeatsBitForBit) {
   TmpDir d("rigid3d_pulse");
-  const std::vector<std::string> args{"simulate", "--model", "rigid3d", "--width", "0.3", "--depth", "0.3",
-                                      "--height", "1.2", "--ground-h-amplitude", "0.8", "--ground-h-pulse",
-                                      "one-sine", "--ground-h-duration", "1", "--ground-azimuth", "25",
-                                      "--mu-s", "100", "--t-end", "5", "--json"};
+  const std::vector<std::string> args{"simulate", "--model",
+                                      "rigid3d",  "--width",
+                                      "0.3",      "--depth",
+                                      "0.3",      "--height",
+                                      "1.2",      "--ground-h-amplitude",
+                                      "0.8",      "--ground-h-pulse",
+                                      "one-sine", "--ground-h-duration",
+                                      "1",        "--ground-azimuth",
+                                      "25",       "--mu-s",
+                                      "100",      "--t-end",
+                                      "5",        "--json"};
   const auto a = run_cli(args, d.path), b = run_cli(args, d.path);
   ASSERT_EQ(a.code, 0) << a.err;
   EXPECT_EQ(a.out, b.out);
@@ -90,8 +97,7 @@ TEST(CliRigid3d, UsageErrorsNameTheOption) {
                        {joined(m, {"--width", "-1"}), "width"},
                        {joined(m, {"--mu-k", "0.3"}), "--mu-k"},
                        {joined(m, {"--mass", "1", "--density", "2000"}), "--density"},
-                       {joined(m, {"--ground-h2-amplitude", "0.3", "--ground-h2-frequency", "1"}),
-                        "ground-h2"}},
+                       {joined(m, {"--ground-h2-amplitude", "0.3", "--ground-h2-pulse", "wave"}), "--ground-h2-pulse"}},
                       d.path);
 }
 

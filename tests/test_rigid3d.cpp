@@ -279,14 +279,48 @@ TEST(Rigid3dRest, OnsetByDirectionAtTheClosedFormCrossing) {
   EXPECT_EQ(s.way, blockdyn::RestExitWay::Slides);
   EXPECT_NEAR(s.t, std::asin(0.2 / amp) / (2 * M_PI * f), 1e-12);
   // A yaw of the body is the azimuth taken back: a square turned by 45 degrees under motion along x
-  // resists as along its diagonal, sqrt(2) b / h.
+  // resists as along its diagonal, sqrt(2) b / h, and leaves on a corner (two conditions at once).
   const blockdyn::BodyRestExit d = blockdyn::first_rest_exit(box(0.5, 0.5, 1.5), M_PI / 4, 0.9, g, 0.0, 10 * tp);
-  EXPECT_NEAR(d.coefficient, std::sqrt(2.0) * 0.5 / 1.5, 1e-15);
-  // Below every threshold it rests throughout; a second horizontal component is refused.
+  EXPECT_NEAR(d.t, std::asin(std::sqrt(2.0) * 0.5 / 1.5 / amp) / (2 * M_PI * f), 1e-12);
+  const blockdyn::RestFailure df = blockdyn::BodyRestSearch(box(0.5, 0.5, 1.5), 0.9, g).failure(d.t, M_PI / 4);
+  EXPECT_TRUE(df.x_side != 0 && df.y_side != 0);
+  // Below every threshold it rests throughout.
   g.h.amplitude = 0.1;
   EXPECT_EQ(blockdyn::first_rest_exit(box(0.4, 0.7, 1.5), 0.0, 0.9, g, 0.0, 10 * tp).way, blockdyn::RestExitWay::None);
-  g.h2.constant = 0.01;
-  EXPECT_THROW(blockdyn::first_rest_exit(box(0.4, 0.7, 1.5), 0.0, 0.9, g, 0.0, 1.0), std::invalid_argument);
+}
+
+TEST(Rigid3dRest, OnsetUnderTwoHorizontalComponentsAtTheClosedFormCrossing) {
+  // h = A sin(2 pi f t) along the azimuth and a constant B across it: the box leaves by the first
+  // of its axis conditions, the cylinder where sqrt(A^2 sin^2 + B^2) = 2a/h (the norm condition),
+  // sliding where it equals mu_s.
+  const double amp = 0.7, f = 1.1, B = 0.2, tp = 1.0 / f;
+  for (double az : {0.0, 20.0, 90.0}) {
+    blockdyn::GroundMotion3d g;
+    g.azimuth = az;
+    g.h.amplitude = amp;
+    g.h.frequency = f;
+    g.h2.constant = B;
+    auto crossing = [&](double c) { return std::asin(std::sqrt(c * c - B * B) / amp) / (2 * M_PI * f); };
+    const Body3d cyl = cylinder(0.25, 1.2);
+    const blockdyn::BodyRestExit e = blockdyn::first_rest_exit(cyl, 0.3, 0.9, g, 0.0, 10 * tp);
+    EXPECT_EQ(e.way, blockdyn::RestExitWay::Rocks);
+    EXPECT_NEAR(e.t, crossing(2 * 0.25 / 1.2), 1e-12) << az;
+    const blockdyn::BodyRestExit s = blockdyn::first_rest_exit(cyl, 0.0, 0.3, g, 0.0, 10 * tp);
+    EXPECT_EQ(s.way, blockdyn::RestExitWay::Slides);
+    EXPECT_NEAR(s.t, crossing(0.3), 1e-12) << az;
+  }
+  // The box at yaw 0 with the motion along x (azimuth 0): x fails at asin((b/h) / A); the
+  // constant B < d/h across keeps the y conditions.
+  blockdyn::GroundMotion3d g;
+  g.h.amplitude = amp;
+  g.h.frequency = f;
+  g.h2.constant = B;
+  const Body3d bx = box(0.45, 0.5, 1.5);
+  const blockdyn::BodyRestExit e = blockdyn::first_rest_exit(bx, 0.0, 0.9, g, 0.0, 10 * tp);
+  EXPECT_NEAR(e.t, std::asin(0.3 / amp) / (2 * M_PI * f), 1e-12);
+  const blockdyn::RestFailure fx = blockdyn::BodyRestSearch(bx, 0.9, g).failure(e.t, 0.0);
+  EXPECT_EQ(fx.x_side, 1);
+  EXPECT_EQ(fx.y_side, 0);
 }
 
 }  // namespace

@@ -52,8 +52,8 @@ Body3d body_from(const Settings& s) {
   if (shape != "box" && shape != "cylinder")
     throw std::invalid_argument("--shape = '" + shape + "' is not one of: box, cylinder");
   b.shape = shape == "box" ? BodyShape3d::Box : BodyShape3d::Cylinder;
-  for (const char* n : b.shape == BodyShape3d::Box ? std::vector<const char*>{"radius"}
-                                                     : std::vector<const char*>{"width", "depth"})
+  for (const char* n :
+       b.shape == BodyShape3d::Box ? std::vector<const char*>{"radius"} : std::vector<const char*>{"width", "depth"})
     if (s.has(n)) throw std::invalid_argument(std::string("--") + n + " does not belong to --shape " + shape);
   b.height = s.number("height", 1.2);
   b.width = s.number("width", 0.4);
@@ -101,7 +101,6 @@ Rigid3dSetup rigid3d_from(const Settings& s) {
   validate(r.ground);
   r.model.mu_s = s.number("mu-s", 0.7);
   require_in_range("mu-s", r.model.mu_s, 0, 1e6);
-  r.model.yaw = r.start.yaw;
   r.run.t_end = s.number("t-end", 10);
   r.run.output_interval = s.number("output-interval", 0.01);
   apply_integrator_settings(s, r.run.integ);
@@ -115,10 +114,14 @@ Rigid3dSetup rigid3d_from(const Settings& s) {
 
 const char* mode_name(const Body3d& b, const BodyOnGroundMode& m) {
   switch (m.contact) {
-    case BodyContact::Rest: return "rest";
-    case BodyContact::Flight: return "flight";
-    case BodyContact::Point: return "corner";
-    case BodyContact::Line: return b.shape == BodyShape3d::Box ? "edge" : "rim";
+    case BodyContact::Rest:
+      return "rest";
+    case BodyContact::Flight:
+      return "flight";
+    case BodyContact::Point:
+      return "corner";
+    case BodyContact::Line:
+      return b.shape == BodyShape3d::Box ? "edge" : "rim";
   }
   return "?";
 }
@@ -263,7 +266,10 @@ class PreparedRigid3d final : public PreparedRun {
     rep.figure.plot_script = "plot_rigid3d.py";
     rep.figure.plot_args = {"--title", title, "--weight", number_text(s_.body.mass * s_.body.g)};
     rep.figure.animate_script = "animate_rigid3d.py";
-    rep.figure.animate_args = {"--title", title, "--shape", s_.body.shape == BodyShape3d::Box ? "box" : "cylinder",
+    rep.figure.animate_args = {"--title",
+                               title,
+                               "--shape",
+                               s_.body.shape == BodyShape3d::Box ? "box" : "cylinder",
                                "--size",
                                number_text(s_.body.width) + "," + number_text(s_.body.depth) + "," +
                                    number_text(s_.body.height) + "," + number_text(s_.body.radius)};
@@ -296,8 +302,8 @@ const std::vector<StudyOption>& rigid3d_options() {
 
 const std::vector<std::string>& rigid3d_option_names() {
   static const std::vector<std::string> names = [] {
-    std::vector<std::string> n{"model", "width", "height", "radius", "mass", "density", "g", "tilt", "mu-s",
-                               "t-end", "rtol", "atol", "method", "output-interval"};
+    std::vector<std::string> n{"model", "width", "height", "radius", "mass", "density", "g",
+                               "tilt",  "mu-s",  "t-end",  "rtol",   "atol", "method",  "output-interval"};
     for (const StudyOption& o : rigid3d_options()) n.push_back(o.name);
     for (const std::string& g : ground_option_names()) n.push_back(g);
     return n;
@@ -306,10 +312,12 @@ const std::vector<std::string>& rigid3d_option_names() {
 }
 
 const std::vector<std::string>& rigid3d_columns() {
-  static const std::vector<std::string> c{
-      "t",  "x",  "y",  "z",    "qw",        "qx",        "qy",     "qz",     "tilt",      "tilt_azimuth",
-      "vx", "vy", "vz", "wx",   "wy",        "wz",        "mode",   "contact_x", "contact_y", "normal_force",
-      "kinetic", "potential", "work_ground", "work_impact", "energy_error", "event"};
+  static const std::vector<std::string> c{"t",       "x",         "y",           "z",           "qw",
+                                          "qx",      "qy",        "qz",          "tilt",        "tilt_azimuth",
+                                          "vx",      "vy",        "vz",          "wx",          "wy",
+                                          "wz",      "mode",      "contact_x",   "contact_y",   "normal_force",
+                                          "kinetic", "potential", "work_ground", "work_impact", "energy_error",
+                                          "event"};
   return c;
 }
 

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "blockdyn/excitation/rest_exit.hpp"
 
+#include "blockdyn/excitation/first_failure.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -28,46 +30,6 @@ struct RestCondition {
                       : c * g.vertical.curvature_bound() + g.horizontal.curvature_bound();
   }
 };
-
-// The first failure of f in [a, b) (an interval free of breakpoints), or infinity.
-double first_failure_on_piece(const RestCondition& f, double a, double b) {
-  const double M = f.curvature();
-  double t = a;
-  // Each iteration either moves at least a few ulps or ends; the count bounds a pathological input.
-  for (int it = 0; it < 100000; ++it) {
-    if (f.fails(t)) return t;
-    const double v = f.value(t), d = f.rate(t);
-    // Smallest s > 0 at which v + d s - M s^2 / 2 (a lower bound of f) may reach zero.
-    double s;
-    if (M > 0.0) {
-      const double q = std::sqrt(d * d + 2.0 * M * v);
-      s = d <= 0.0 ? 2.0 * v / (q - d) : (d + q) / M;
-    } else {
-      s = d < 0.0 ? v / -d : INFINITY;
-    }
-    if (!(s == s)) s = 0.0;  // NaN (non-finite input): probe pointwise below
-    const double tiny = 64.0 * std::numeric_limits<double>::epsilon() * std::fmax(std::fabs(t), 1e-6);
-    if (s > tiny) {
-      if (!(t + s < b)) return INFINITY;
-      t += s;
-      continue;
-    }
-    // Within rounding of a crossing (or a tangency): probe just ahead.
-    const double tp = t + tiny;
-    if (!(tp < b)) return INFINITY;
-    if (f.fails(tp)) {
-      double lo = t, hi = tp;  // holds at lo, fails at hi: bisect to adjacent doubles
-      while (true) {
-        const double mid = lo + 0.5 * (hi - lo);
-        if (!(mid > lo) || !(mid < hi)) break;
-        (f.fails(mid) ? hi : lo) = mid;
-      }
-      return hi;
-    }
-    t = tp;
-  }
-  return t;  // not reached for a finite input; a safe answer: stop here and let the model decide
-}
 
 }  // namespace
 

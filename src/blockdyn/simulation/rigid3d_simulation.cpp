@@ -78,10 +78,6 @@ Body3dResult simulate_body3d(const BodyOnGround& model, BodyOnGround::State z, c
   Model::Mode mode = model.mode_of(t, z);
   model.complete(mode, z);
   res.initial_energy = model.balance(z);
-  if (mode.contact == BodyContact::Rest && !model.rest_exit_known())
-    throw std::invalid_argument(
-        "ground-h2: the body starts at rest, and its exit from rest under two horizontal ground components is not "
-        "modelled yet (give one horizontal component at --ground-azimuth, or start it tilted or in flight)");
   Body3dWatch watch{model, o, res};
   watch.row(0, mode, z);
   watch.track(0, z);

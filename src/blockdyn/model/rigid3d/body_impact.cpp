@@ -46,8 +46,7 @@ void BodyOnGround::conserve_momentum_about(const Mode& m, State& z) const {
 Tr BodyOnGround::transition(double t, const Mode& m, State& z, int event) const {
   switch (event) {
     case kBreakpoint:
-      if (m.contact == BodyContact::Rest && !rest_holds(t))
-        return rest_exit_exact_ ? leave_rest(t, z) : Tr{m, true, int(Body3dEventKind::NotModelled)};
+      if (m.contact == BodyContact::Rest && !rest_holds(t, m.yaw)) return leave_rest(t, z);
       return {m, false, int(Body3dEventKind::GroundBreak)};
     case kEvLiftOff:
     case kEvLoadA:

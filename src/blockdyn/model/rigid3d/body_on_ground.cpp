@@ -59,15 +59,7 @@ BodyOnGround::BodyOnGround(const Body3d& body, const GroundMotion3d& ground, con
   const double v = std::sqrt(body_.g * size_), w = std::sqrt(body_.g / size_), e = body_.mass * body_.g * size_;
   scale_ = {size_, size_, size_, 1, 1, 1, 1, v, v, v, w, w, w, e, e};
   forced_ = !ground_.is_zero();
-  rest_exit_exact_ = ground_.h2.is_zero();
-  if (forced_ && rest_exit_exact_) {
-    GroundMotion planar;
-    planar.horizontal = ground_.h;
-    planar.vertical = ground_.v;
-    const double rock = rest_threshold(body_, ground_.azimuth * (M_PI / 180) - opt_.yaw);
-    rest_coefficient_ = std::fmin(rock, opt_.mu_s);
-    rest_exit_ = RestExit(planar, rest_coefficient_);
-  }
+  rest_search_ = BodyRestSearch(body_, opt_.mu_s, ground_);
 }
 
 Vec3 BodyOnGround::specific_force(double t) const {
@@ -165,25 +157,13 @@ void BodyOnGround::set_contact_velocity(const Mode& m, State& z) const {
 
 double BodyOnGround::next_breakpoint(double t, const Mode& m) const {
   if (!forced_) return INFINITY;
-  if (m.contact == BodyContact::Rest && rest_exit_exact_) return rest_exit_.checkpoint(t);
+  if (m.contact == BodyContact::Rest) return rest_search_.checkpoint(t, m.yaw);
   return ground_.next_break(t);
 }
 
-bool BodyOnGround::rest_holds(double t) const {
-  if (!forced_) return true;
-  if (rest_exit_exact_) {
-    // The search's own condition (excitation/rest_exit.hpp), so that where it says rest fails it does.
-    const double gv = 1 + ground_.v.at(t);
-    return gv > 0 && std::fabs(ground_.h.at(t)) <= rest_coefficient_ * gv;
-  }
-  const std::array<double, 3> a = ground_.at(t);
-  const double gv = 1 + a[2];
-  if (!(gv > 0)) return false;
-  const double cy = std::cos(opt_.yaw), sy = std::sin(opt_.yaw);
-  const double ax = cy * a[0] + sy * a[1], ay = -sy * a[0] + cy * a[1], c = body_.half_height();
-  if (std::hypot(ax, ay) > opt_.mu_s * gv) return false;
-  if (body_.shape == BodyShape3d::Cylinder) return std::hypot(ax, ay) * c <= gv * body_.radius;
-  return std::fabs(ax) * c <= gv * 0.5 * body_.width && std::fabs(ay) * c <= gv * 0.5 * body_.depth;
+bool BodyOnGround::rest_holds(double t, double yaw) const {
+  // The search's own conditions: where it says rest fails, it does.
+  return !forced_ || rest_search_.failure(t, yaw).way == RestExitWay::None;
 }
 
 double BodyOnGround::energy(const State& z) const {

@@ -16,8 +16,8 @@
 #include <string>
 
 #include "blockdyn/excitation/ground_motion_3d.hpp"
-#include "blockdyn/excitation/rest_exit.hpp"
 #include "blockdyn/integrate/hybrid_model.hpp"
+#include "blockdyn/model/rigid3d/body_rest.hpp"
 #include "blockdyn/model/rigid3d/body_shape.hpp"
 
 namespace blockdyn {
@@ -32,6 +32,7 @@ struct BodyOnGroundMode {
   Vec3 point_a{}, point_b{};         // body frame: the contact points (line: its two ends)
   Vec3 pivot{}, axis{};              // world: the pivot (a line's midpoint) and the line's unit axis
   double half_length = 0;            // line: half the distance between its ends (rim: 0)
+  double yaw = 0;                    // rest: the body's e1 from the world's x axis (rad)
 };
 
 enum class Body3dEventKind : int {
@@ -49,7 +50,6 @@ const char* to_string(Body3dEventKind k);
 
 struct BodyOnGroundOptions {
   double mu_s = 1e6;  // static friction coefficient (large: sticking throughout)
-  double yaw = 0;     // rad: the body's e1 from the world's x axis (fixes the rest exit's direction)
 };
 
 class BodyOnGround {
@@ -104,15 +104,13 @@ class BodyOnGround {
   const GroundMotion3d& ground() const { return ground_; }
   const BodyOnGroundOptions& options() const { return opt_; }
   double size() const { return size_; }
-  // Whether the exit from rest is found exactly: no ground motion, or one horizontal component.
-  bool rest_exit_known() const { return !forced_ || rest_exit_exact_; }
   // Why the run stopped at a NotModelled or Invalid event (empty otherwise).
   static std::string stop_reason(const Mode& from, int event);
 
  private:
   Vec3 specific_force(double t) const;  // gravity and the ground's acceleration reversed (m/s^2)
   Vec3 corner(int i) const;             // body frame
-  bool rest_holds(double t) const;
+  bool rest_holds(double t, double yaw) const;
   Mode line_mode(const Mat3& r, const Vec3& x, const Vec3& pa, const Vec3& pb, int ca, int cb) const;
   Mode point_mode(const Mat3& r, const Vec3& x, const Vec3& p, int c) const;
   Mode rim_mode(const Mat3& r, const Vec3& x, const Vec3& p) const;
@@ -132,9 +130,8 @@ class BodyOnGround {
   Vec3 inertia_;
   double size_, step_;
   State scale_;
-  bool forced_ = false, rest_exit_exact_ = false;
-  double rest_coefficient_ = 0;  // one horizontal component: the smaller of rocking's and mu_s
-  RestExit rest_exit_;
+  bool forced_ = false;
+  BodyRestSearch rest_search_;
 };
 
 // The initial state of the rigid3d body (docs/3d.md): standing turned by yaw (rad), tilted by

@@ -80,6 +80,7 @@ BodyOnGroundMode BodyOnGround::mode_of(double t, const State& z) const {
   if (lowest < -tol)
     throw std::invalid_argument("the body is " + number_text(-lowest) + " m below the ground (initial state)");
   Mode rest;
+  rest.yaw = std::atan2(r[1][0], r[0][0]);
   if (lowest > tol) {
     rest.contact = BodyContact::Flight;
     return rest;
@@ -95,9 +96,6 @@ BodyOnGroundMode BodyOnGround::mode_of(double t, const State& z) const {
 }
 
 std::string BodyOnGround::stop_reason(const Mode& from, int event) {
-  if (from.contact == BodyContact::Rest)
-    return "rest under two horizontal ground components, or at a yaw other than --yaw: its exit is not modelled "
-           "yet";
   if (event == kEvLoadA && from.contact == BodyContact::Line && from.half_length == 0)
     return "the cylinder's contact starts rolling along the rim: rolling is not modelled yet";
   if (event == kEvSlipA || event == kEvSlipB)
@@ -106,25 +104,22 @@ std::string BodyOnGround::stop_reason(const Mode& from, int event) {
 }
 
 Tr BodyOnGround::leave_rest(double t, const State& z) const {
-  const std::array<double, 3> a = forced_ ? ground_.at(t) : std::array<double, 3>{0, 0, 0};
-  const double gv = 1 + a[2];
-  Mode m;  // rest
-  if (!(gv > 0)) return stop(m, Body3dEventKind::Invalid);
   const Mat3 r = rotation(quat_at(z, S::kQw));
-  const Vec3 x = vec_at(z, kX), ab = transposed_times(r, {a[0], a[1], 0});  // body frame
-  const double c = body_.half_height(), ah = std::hypot(ab[0], ab[1]);
-  const double rock = body_.shape == BodyShape3d::Cylinder ? ah * c / body_.radius
-                                                           : std::fmax(std::fabs(ab[0]) * c / (0.5 * body_.width),
-                                                                       std::fabs(ab[1]) * c / (0.5 * body_.depth));
-  if (ah / opt_.mu_s > rock) return stop(m, Body3dEventKind::SlipOnset);
+  Mode m;  // rest
+  m.yaw = std::atan2(r[1][0], r[0][0]);
+  const RestFailure f = rest_search_.failure(t, m.yaw);
+  if (f.way == RestExitWay::Lifts) return stop(m, Body3dEventKind::Invalid);
+  if (f.way == RestExitWay::Slides) return stop(m, Body3dEventKind::SlipOnset);
+  if (f.way == RestExitWay::None) return {m, false, int(Body3dEventKind::GroundBreak)};
   // The ground accelerating towards u tips the body towards -u.
+  const Vec3 x = vec_at(z, kX), ab = transposed_times(r, f.towards);  // body frame
+  const double c = body_.half_height(), ah = std::hypot(ab[0], ab[1]);
   if (body_.shape == BodyShape3d::Cylinder)
     return {rim_mode(r, x, {-body_.radius * ab[0] / ah, -body_.radius * ab[1] / ah, -c}), false,
             int(Body3dEventKind::Mode)};
-  const double rx = std::fabs(ab[0]) / body_.width, ry = std::fabs(ab[1]) / body_.depth;
-  const int bx = ab[0] < 0 ? 1 : 0, by = ab[1] < 0 ? 2 : 0;
-  if (std::fabs(rx - ry) <= 1e-14 * std::fmax(rx, ry)) return {point_mode(r, x, corner(bx | by), bx | by), false, 0};
-  if (rx > ry) return {line_mode(r, x, corner(bx), corner(bx | 2), bx, bx | 2), false, 0};
+  const int bx = f.x_side > 0 ? 0 : 1, by = f.y_side > 0 ? 0 : 2;
+  if (f.x_side != 0 && f.y_side != 0) return {point_mode(r, x, corner(bx | by), bx | by), false, 0};
+  if (f.x_side != 0) return {line_mode(r, x, corner(bx), corner(bx | 2), bx, bx | 2), false, 0};
   return {line_mode(r, x, corner(by), corner(by | 1), by, by | 1), false, 0};
 }
 
@@ -144,9 +139,8 @@ Tr BodyOnGround::settle(double t, State& z) const {
   set_vec_at(z, kVx, {0, 0, 0});
   set_vec_at(z, kWx, {0, 0, 0});
   Mode rest;
-  if (forced_ && (!rest_exit_exact_ || std::fabs(std::remainder(yaw - opt_.yaw, 2 * M_PI)) > 1e-9))
-    return stop(rest, Body3dEventKind::NotModelled);
-  if (rest_holds(t)) return {rest, false, int(Body3dEventKind::Rest)};
+  rest.yaw = yaw;
+  if (rest_holds(t, yaw)) return {rest, false, int(Body3dEventKind::Rest)};
   Tr tr = leave_rest(t, z);
   if (!tr.stop) tr.kind = int(Body3dEventKind::Rest);
   return tr;
