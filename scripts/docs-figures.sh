@@ -75,6 +75,13 @@ run $B sweep --k 1e3:1e8:200 --r 0.2 --ic ic1 --w0-over-alpha 0.25 --stop-at-fir
 # docs/rigid-ground.md
 run $B simulate --model rigid --width 0.6 --height 1.8 --mass 150 --mu-s 0.35 --mu-k 0.3 \
   --ground-h-record tests/fixtures/synthetic_60s.AT2 --ground-h-scale 2 --t-end 40 --plot "$F/rigid_record_history.png"
+# docs/3d.md
+run $B simulate --model rigid3d --width 0.4 --depth 0.3 --height 1.2 --mass 250 --yaw 20 --tilt 0.15 \
+  --tilt-azimuth 50 --angular-velocity 0,0,0.5 --mu-s 5 --t-end 3 --output-interval 0.005 \
+  --plot "$F/rigid3d_wobble.png" --animate "$F/rigid3d_wobble.gif" --animate-frames 80
+run $B simulate --model rigid3d --width 0.4 --depth 0.4 --height 1.2 --mass 250 --mu-s 100 --t-end 30 \
+  --ground-h-record tests/fixtures/synthetic_60s.AT2 --ground-h-scale 1.5 \
+  --ground-h2-record tests/fixtures/synthetic_60s.AT2 --ground-h2-scale 0.7 --plot "$F/rigid3d_bidirectional.png"
 # README.md, docs/index.md, docs/getting-started.md: the demo's statue (scripts/demo.sh)
 run $B motion generate --model rezaeian --arias 3.888 --d5-95 12 --t-mid 10 --f-mid 2.5 --f-slope -0.05 --t-end 40 \
   --seed 2026 --out out/demo_record --overwrite --quiet

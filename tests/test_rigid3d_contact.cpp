@@ -219,3 +219,30 @@ TEST(Rigid3dContact, PivotingOnACornerKeepsTheClosedEnergyBalance) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST(Rigid3dContact, TwoRecordComponentsRunThroughCornerSequencesWithTheBalanceClosed) {
+  // A square column under one record along 30 degrees (x 2) and across it (x 1): rocking on edges,
+  // pivoting on corners and corner impacts in quick succession (once a zero-time loop of two
+  // corners taking turns); the run must end at t_end with the energy balance closed.
+  const auto rec = std::make_shared<const blockdyn::Accelerogram>(
+      blockdyn::load_accelerogram(std::string(BLOCKDYN_SOURCE_DIR) + "/tests/fixtures/synthetic_60s.AT2", "record"));
+  blockdyn::GroundMotion3d g;
+  g.azimuth = 30;
+  g.h.record = g.h2.record = rec;
+  g.h.scale = 2.0;
+  const Body3d b = box(0.4, 0.4, 1.2);
+  blockdyn::BodyOnGroundOptions o;
+  o.mu_s = 100;
+  const BodyOnGround m(b, g, o);
+  const Body3dResult r = run(m, {}, 30.0);
+  EXPECT_EQ(r.status, "t_end") << r.stop_reason;
+  EXPECT_GT(r.impacts, 500);
+  EXPECT_LT(r.max_abs_energy_error, 1e-9 * b.mass * b.g * b.height);
+  bool corner = false;
+  for (const auto& e : r.events) corner = corner || e.to == BodyContact::Point;
+  EXPECT_TRUE(corner);
+}
+
+}  // namespace

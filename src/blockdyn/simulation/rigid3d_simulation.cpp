@@ -97,6 +97,8 @@ Body3dResult simulate_body3d(const BodyOnGround& model, BodyOnGround::State z, c
     res.integrator = integ.run(t, o.t_end, mode, z, watch);
     res.steps = integ.stats().accepted;
     res.status = res.overturn_time >= 0 ? "overturned" : res.integrator == RunStatus::ReachedEnd ? "t_end" : "invalid";
+    if (res.status == "invalid" && res.stop_reason.empty())
+      res.stop_reason = std::string("the integration stopped: ") + to_string(res.integrator);
   }
   res.t_final = t;
   res.z = z;

@@ -20,7 +20,10 @@ using Tr = Transition<BodyOnGroundMode>;
 
 // Base points this close to the ground (in body sizes) touch it at an impact: a base landing
 // flat brings its far corners down at one instant up to rounding.
-constexpr double kImpactTouch = 1e-10, kSeparation = 1e-12;
+constexpr double kImpactTouch = 1e-10;
+// An old contact point leaving slower than this (relative to the impact's |omega| size) stays in
+// contact: the new contact takes it in, rather than the two points taking turns at one instant.
+constexpr double kSeparation = 1e-9;
 
 bool holds(const BodyOnGroundMode& m, int corner) { return corner == m.corner_a || corner == m.corner_b; }
 
@@ -44,6 +47,17 @@ void BodyOnGround::conserve_momentum_about(const Mode& m, State& z) const {
 }
 
 Tr BodyOnGround::transition(double t, const Mode& m, State& z, int event) const {
+  Tr tr = mode_change(t, m, z, event);
+  const bool impact_event = (event >= kEvTouch0 && event <= kEvTouch3) || event == kEvTouchdown;
+  if (!impact_event) {
+    // The count of impacts at an instant carries through the mode changes between them.
+    tr.next.impact_t = m.impact_t;
+    tr.next.rapid_impacts = m.rapid_impacts;
+  }
+  return tr;
+}
+
+Tr BodyOnGround::mode_change(double t, const Mode& m, State& z, int event) const {
   switch (event) {
     case kBreakpoint:
       if (m.contact == BodyContact::Rest && !rest_holds(t, m.yaw)) return leave_rest(t, z);
@@ -62,7 +76,17 @@ Tr BodyOnGround::transition(double t, const Mode& m, State& z, int event) const 
   }
 }
 
-Tr BodyOnGround::impact(double t, const Mode& from, State& z, int) const {
+Tr BodyOnGround::impact(double t, const Mode& from, State& z, int event) const {
+  const bool rapid = from.impact_t >= 0 && t - from.impact_t <= kInstant * std::fmax(1.0, std::fabs(t));
+  const int rapid_impacts = rapid ? from.rapid_impacts + 1 : 0;
+  if (rapid_impacts > kMaxRapid) return {from, true, int(Body3dEventKind::NotModelled)};
+  Tr tr = contact_after_impact(t, from, z, event);
+  tr.next.impact_t = t;
+  tr.next.rapid_impacts = rapid_impacts;
+  return tr;
+}
+
+Tr BodyOnGround::contact_after_impact(double t, const Mode& from, State& z, int) const {
   const Mat3 r = rotation(quat_at(z, S::kQw));
   const Vec3 x = vec_at(z, kX);
   const double ke = energy(z) - body_.mass * body_.g * z[kZ];
@@ -86,10 +110,10 @@ Tr BodyOnGround::impact(double t, const Mode& from, State& z, int) const {
   const State before = z;
   conserve_momentum_about(next, z);
   // An old contact that the new motion drives into the ground joins the new contact.
-  const double v_tol = kSeparation * std::sqrt(body_.g * size_);
+  const double v_tol = kSeparation * w_before * size_;
   auto sinking = [&]() {
     for (int i : others)
-      if (!holds(next, i) && (z[kVz] + cross(vec_at(z, kWx), r * corner(i))[2]) < -v_tol) return i;
+      if (!holds(next, i) && (z[kVz] + cross(vec_at(z, kWx), r * corner(i))[2]) < v_tol) return i;
     return -1;
   };
   if (const int i = sinking(); i >= 0) {

@@ -33,6 +33,8 @@ struct BodyOnGroundMode {
   Vec3 pivot{}, axis{};              // world: the pivot (a line's midpoint) and the line's unit axis
   double half_length = 0;            // line: half the distance between its ends (rim: 0)
   double yaw = 0;                    // rest: the body's e1 from the world's x axis (rad)
+  double impact_t = -1;              // the last impact's time, and how many came within
+  int rapid_impacts = 0;             // kInstant of the one before (an accumulation at an instant)
 };
 
 enum class Body3dEventKind : int {
@@ -76,6 +78,11 @@ class BodyOnGround {
   // The accumulation of impacts ends at rest once the time its remaining impacts take is below
   // kAccumulationTime sqrt(size / g) (as Housner's model's).
   static constexpr double kAccumulationTime = 1e-9;
+  // Impacts this close in time (relative to t, at least 1 s: a few hundred ulps) count as one
+  // instant; more than kMaxRapid of them in a row stop the run (a corner sequence that does not
+  // end) instead of looping. An accumulation's impacts stay farther apart (kAccumulationTime).
+  static constexpr double kInstant = 1e-13;
+  static constexpr int kMaxRapid = 64;
 
   BodyOnGround(const Body3d& body, const GroundMotion3d& ground = {}, const BodyOnGroundOptions& opt = {});
 
@@ -115,7 +122,9 @@ class BodyOnGround {
   Mode point_mode(const Mat3& r, const Vec3& x, const Vec3& p, int c) const;
   Mode rim_mode(const Mat3& r, const Vec3& x, const Vec3& p) const;
   Transition<Mode> leave_rest(double t, const State& z) const;
+  Transition<Mode> mode_change(double t, const Mode& m, State& z, int event) const;
   Transition<Mode> impact(double t, const Mode& from, State& z, int event) const;
+  Transition<Mode> contact_after_impact(double t, const Mode& from, State& z, int event) const;
   Transition<Mode> after_load_zero(double t, const Mode& m, State& z, int event) const;
   Transition<Mode> after_slip_onset(double t, const Mode& m, State& z, int event) const;
   Transition<Mode> settle(double t, State& z) const;

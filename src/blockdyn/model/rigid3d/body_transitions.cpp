@@ -153,8 +153,22 @@ Tr BodyOnGround::after_slip_onset(double t, const Mode& m, State& z, int event) 
   if (m.contact == BodyContact::Line && m.half_length > 0) {
     const std::array<Vec3, 2> f = contact_forces(t, m, z);
     const double total = f[0][2] + f[1][2], end = event == kEvSlipA ? f[0][2] : f[1][2];
-    if (total > 0 && end <= kReleasedLoad * total)
-      return after_load_zero(t, m, z, event == kEvSlipA ? kEvLoadA : kEvLoadB);
+    if (total > 0 && end <= kReleasedLoad * total) {
+      // Only if that end then rises: pivoting on the other end must not drive it into the ground.
+      State zp = z;
+      const Tr tr = after_load_zero(t, m, zp, event == kEvSlipA ? kEvLoadA : kEvLoadB);
+      if (tr.next.contact != BodyContact::Point) return tr;
+      State d;
+      rhs(t, tr.next, zp, d);
+      const Mat3 r = rotation(quat_at(zp, S::kQw));
+      const Vec3 arm = r * minus(event == kEvSlipA ? m.point_a : m.point_b, tr.next.point_a);
+      const Vec3 w = vec_at(zp, kWx);
+      const double rise = plus(cross(vec_at(d, kWx), arm), cross(w, cross(w, arm)))[2];
+      if (rise >= 0) {
+        z = zp;
+        return tr;
+      }
+    }
   }
   return {m, true, int(Body3dEventKind::SlipOnset)};
 }
