@@ -167,6 +167,27 @@ json event_json(const BodyOnGround& m, const Body3dEventRecord& e) {
           {"tilt_azimuth", tilt_azimuth_deg(e.z)}};
 }
 
+std::string body_phrase(const Body3d& b) {
+  if (b.shape == BodyShape3d::Box)
+    return "box " + number_text(b.width, 4) + " x " + number_text(b.depth, 4) + " x " + number_text(b.height, 4) + " m";
+  return "cylinder r " + number_text(b.radius, 4) + " m, h " + number_text(b.height, 4) + " m";
+}
+
+// " under <h> at 30 deg, <h2> across, <v> vertical" or " in free motion", for figure titles.
+std::string motion_phrase(const GroundMotion3d& g) {
+  if (g.is_zero()) return " in free motion";
+  auto one = [](const GroundComponent& c) {
+    GroundMotion m;
+    m.horizontal = c;
+    return describe(m, "Hz", "s");
+  };
+  std::string p = " under";
+  if (!g.h.is_zero()) p += " " + one(g.h) + " at " + number_text(g.azimuth, 4) + " deg";
+  if (!g.h2.is_zero()) p += std::string(g.h.is_zero() ? "" : ",") + " " + one(g.h2) + " across";
+  if (!g.v.is_zero()) p += std::string(p == " under" ? "" : ",") + " " + one(g.v) + " vertical";
+  return p;
+}
+
 json optional_time(double t) { return t >= 0 ? json(t) : json(nullptr); }
 
 json summary_json(const Rigid3dSetup& s, const BodyOnGround& m, const Body3dResult& r) {
@@ -261,7 +282,7 @@ class PreparedRigid3d final : public PreparedRun {
     rep.timing = clock.elapsed();
     rep.summary = summary_json(s_, model_, r);
     rep.text = summary_text(r);
-    const std::string title = std::string(s_.body.shape == BodyShape3d::Box ? "box" : "cylinder") + ": " + r.status +
+    const std::string title = body_phrase(s_.body) + motion_phrase(s_.ground) + ": " + r.status +
                               " at t = " + number_text(r.t_final, 6) + " s";
     rep.figure.plot_script = "plot_rigid3d.py";
     rep.figure.plot_args = {"--title", title, "--weight", number_text(s_.body.mass * s_.body.g)};

@@ -229,7 +229,11 @@ class HybridIntegrator {
   std::optional<RunStatus> hold_chatter(double t, Mode& mode, State& z, Observer& obs) {
     const auto held = model_.resolve_chatter(t, mode, z);
     if (!held) return RunStatus::Chatter;
-    EventInfo<Mode, N> hold{t, z, z, mode, held->next, -1, held->kind, false};
+    EventInfo<Mode, N> hold{t, z, z, mode, held->next, -1, held->kind, held->stop};
+    if (held->stop) {  // the model ends the run here instead (a chatter it cannot resolve)
+      obs.on_event(hold);
+      return RunStatus::ModelStop;
+    }
     mode = held->next;
     model_.complete(mode, z);
     hold.z = z;

@@ -51,7 +51,7 @@ struct Body3dWatch {
     if (res.first_uplift_time < 0 && e.from.contact == BodyContact::Rest && e.to.contact != BodyContact::Rest)
       res.first_uplift_time = e.t;
     if (kind == Body3dEventKind::Overturn) res.overturn_time = e.t;
-    if (e.stop) res.stop_reason = Model::stop_reason(e.from, e.index);
+    if (e.stop) res.stop_reason = Model::stop_reason(e.from, e.index, kind);
     const Body3dEventRecord rec{e.t, kind, e.from.contact, e.to.contact, e.z};
     if (o.on_event)
       o.on_event(rec);
@@ -88,9 +88,7 @@ Body3dResult simulate_body3d(const BodyOnGround& model, BodyOnGround::State z, c
   if (mode.contact == BodyContact::Rest) start = model.transition(t, mode, z, kBreakpoint);
   if (start.stop) {
     res.status = "invalid";
-    res.stop_reason = Model::stop_reason(mode, kBreakpoint);
-    if (Body3dEventKind(start.kind) == Body3dEventKind::SlipOnset)
-      res.stop_reason = Model::stop_reason(mode, Model::kEvSlipA);
+    res.stop_reason = Model::stop_reason(mode, kBreakpoint, Body3dEventKind(start.kind));
   } else {
     if (start.next.contact != mode.contact) res.first_uplift_time = 0;
     mode = start.next;

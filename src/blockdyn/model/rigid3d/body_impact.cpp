@@ -20,7 +20,7 @@ using Tr = Transition<BodyOnGroundMode>;
 
 // Base points this close to the ground (in body sizes) touch it at an impact: a base landing
 // flat brings its far corners down at one instant up to rounding.
-constexpr double kImpactTouch = 1e-10;
+constexpr double kImpactTouch = 1e-12;
 // An old contact point leaving slower than this (relative to the impact's |omega| size) stays in
 // contact: the new contact takes it in, rather than the two points taking turns at one instant.
 constexpr double kSeparation = 1e-9;
@@ -70,7 +70,7 @@ Tr BodyOnGround::mode_change(double t, const Mode& m, State& z, int event) const
       return {m, true, int(Body3dEventKind::Overturn)};
     case kEvSlipA:
     case kEvSlipB:
-      return after_slip_onset(t, m, z, event);
+      return {m, true, int(Body3dEventKind::SlipOnset)};
     default:
       return impact(t, m, z, event);
   }

@@ -16,6 +16,14 @@ using S = BodyOnGround;
 
 // A rim point carries no moment: one above this (in m g size) rolls the contact along the rim.
 constexpr double kRimMomentTolerance = 1e-8;
+// A contact point carrying less than this share of the load (a line's total, or the weight) is
+// not checked for sliding: it is about to lift (its load-zero event follows).
+constexpr double kUncheckedLoad = 1e-2;
+// A corner that has just lifted off a line leaves the ground at third order (its velocity and
+// acceleration are zero there): for a moment (kReleasedWindow of sqrt(size / g)) its touch is
+// looked for below this height (in body sizes), so that rounding at the instant it lifts is not
+// taken for an impact.
+constexpr double kReleasedAllowance = 1e-12, kReleasedWindow = 1e-4;
 
 // G - pivot in the body frame: from the corner, or from the line's midpoint (about which its
 // moment is split between its ends).
@@ -56,6 +64,7 @@ BodyOnGround::BodyOnGround(const Body3d& body, const GroundMotion3d& ground, con
   const double len = body_.shape == BodyShape3d::Box ? std::fmax(body_.width, body_.depth) : 2 * body_.radius;
   size_ = std::fmax(len, body_.height);
   step_ = 0.05 * std::sqrt(size_ / body_.g);
+  window_ = kReleasedWindow * std::sqrt(size_ / body_.g);
   const double v = std::sqrt(body_.g * size_), w = std::sqrt(body_.g / size_), e = body_.mass * body_.g * size_;
   scale_ = {size_, size_, size_, 1, 1, 1, 1, v, v, v, w, w, w, e, e};
   forced_ = !ground_.is_zero();
@@ -110,25 +119,31 @@ void BodyOnGround::events(double t, const Mode& m, const State& z, std::array<do
   const PivotMotion pm = m.contact == BodyContact::Point ? point_pivot_motion(inertia_, body_.mass, r, s, w, f)
                                                          : line_pivot_motion(inertia_, body_.mass, r, s, m.axis, w, f);
   g[kEvLiftOff] = pm.force[2] / weight;
-  auto slip = [&](const Vec3& load) { return (opt_.mu_s * load[2] - std::hypot(load[0], load[1])) / weight; };
+  // A point about to lift (load below kUncheckedLoad of the reference) is not checked for sliding.
+  auto slip = [&](const Vec3& load, double reference) {
+    if (load[2] < kUncheckedLoad * reference) return 1.0;
+    return (opt_.mu_s * load[2] - std::hypot(load[0], load[1])) / weight;
+  };
   if (m.contact == BodyContact::Line && m.half_length > 0) {
     const LineLoads ll = split_line_reaction(pm.force, pm.moment, m.axis, m.half_length);
     g[kEvLoadA] = ll.plus[2] / weight;
     g[kEvLoadB] = ll.minus[2] / weight;
-    g[kEvSlipA] = slip(ll.plus);
-    g[kEvSlipB] = slip(ll.minus);
+    g[kEvSlipA] = slip(ll.plus, pm.force[2]);
+    g[kEvSlipB] = slip(ll.minus, pm.force[2]);
   } else {
     // A rim point carries no moment: a motion that needs one rolls the contact along the rim.
     if (m.contact == BodyContact::Line)
       g[kEvLoadA] = kRimMomentTolerance - std::sqrt(dot(pm.moment, pm.moment)) / (weight * size_);
-    g[kEvSlipA] = slip(pm.force);
+    g[kEvSlipA] = slip(pm.force, weight);
   }
   // Heights above the contact point (on the ground): no cancellation against the centroid's
   // height, so swings far below its rounding stay resolved (the tail of an accumulation).
   const Vec3& up = r[2];
   if (body_.shape == BodyShape3d::Box) {
     for (int i = 0; i < 4; ++i)
-      if (i != m.corner_a && i != m.corner_b) g[kEvTouch0 + i] = dot(up, minus(corner(i), m.point_a));
+      if (i != m.corner_a && i != m.corner_b)
+        g[kEvTouch0 + i] = dot(up, minus(corner(i), m.point_a)) +
+                           (i == m.released && t - m.released_t < window_ ? kReleasedAllowance * size_ : 0.0);
   } else {
     g[kEvTouch0] = dot(up, {-2 * m.point_a[0], -2 * m.point_a[1], 0});
   }

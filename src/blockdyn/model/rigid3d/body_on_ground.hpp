@@ -5,8 +5,9 @@
 // rim point and its tangent; pivoting on one sticking corner; in flight. Each mode's events are
 // located on the dense output: a contact point's load reaching zero (a corner lifts, the body
 // takes off), a base point touching the ground (an impact), the friction a contact needs
-// reaching mu_s (sliding starts: not modelled yet, the run stops there, except at an edge's end
-// that carries at most 1 % of the load, which lifts: the pivot moves to the other end), the base standing
+// reaching mu_s (sliding starts: not modelled yet, the run stops there; a point carrying less
+// than 1 % of the load is not checked: it is about to lift, and the friction so small a load
+// could give is not what keeps it), the base standing
 // vertical (overturn). At an impact the angular momentum about the new contact is conserved
 // (Housner's law in 3D); a sequence of impacts that accumulates ends at rest. The exit from rest
 // is found on the ground motion itself (excitation/rest_exit.hpp) at its first crossing.
@@ -33,6 +34,8 @@ struct BodyOnGroundMode {
   Vec3 pivot{}, axis{};              // world: the pivot (a line's midpoint) and the line's unit axis
   double half_length = 0;            // line: half the distance between its ends (rim: 0)
   double yaw = 0;                    // rest: the body's e1 from the world's x axis (rad)
+  int released = -1;                 // point: the corner that just lifted off the line, and when
+  double released_t = 0;             // (its touch is first looked for a rounding's height below)
   double impact_t = -1;              // the last impact's time, and how many came within
   int rapid_impacts = 0;             // kInstant of the one before (an accumulation at an instant)
 };
@@ -90,7 +93,11 @@ class BodyOnGround {
   void events(double t, const Mode& m, const State& z, std::array<double, kNumEvents>& g) const;
   void complete(const Mode& m, State& z) const;
   Transition<Mode> transition(double t, const Mode& m, State& z, int event) const;
-  std::optional<Transition<Mode>> resolve_chatter(double, const Mode&, const State&) const { return std::nullopt; }
+  // Mode changes repeating at one instant (an edge and a corner taking turns: the contact would
+  // slide, or needs the contact problem of both at once): the run stops, with the reason.
+  std::optional<Transition<Mode>> resolve_chatter(double, const Mode& m, const State&) const {
+    return Transition<Mode>{m, true, int(Body3dEventKind::NotModelled)};
+  }
   double step_hint(const Mode&) const { return step_; }
   double next_breakpoint(double t, const Mode& m) const;
   State abs_tol_scale() const { return scale_; }
@@ -112,7 +119,7 @@ class BodyOnGround {
   const BodyOnGroundOptions& options() const { return opt_; }
   double size() const { return size_; }
   // Why the run stopped at a NotModelled or Invalid event (empty otherwise).
-  static std::string stop_reason(const Mode& from, int event);
+  static std::string stop_reason(const Mode& from, int event, Body3dEventKind kind);
 
  private:
   Vec3 specific_force(double t) const;  // gravity and the ground's acceleration reversed (m/s^2)
@@ -126,7 +133,6 @@ class BodyOnGround {
   Transition<Mode> impact(double t, const Mode& from, State& z, int event) const;
   Transition<Mode> contact_after_impact(double t, const Mode& from, State& z, int event) const;
   Transition<Mode> after_load_zero(double t, const Mode& m, State& z, int event) const;
-  Transition<Mode> after_slip_onset(double t, const Mode& m, State& z, int event) const;
   Transition<Mode> settle(double t, State& z) const;
   // Housner's law in 3D: the angular momentum about the new contact m conserved.
   void conserve_momentum_about(const Mode& m, State& z) const;
@@ -137,7 +143,7 @@ class BodyOnGround {
   GroundMotion3d ground_;
   BodyOnGroundOptions opt_;
   Vec3 inertia_;
-  double size_, step_;
+  double size_, step_, window_;
   State scale_;
   bool forced_ = false;
   BodyRestSearch rest_search_;

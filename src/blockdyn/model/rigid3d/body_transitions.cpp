@@ -27,8 +27,6 @@ Tr stop(const BodyOnGroundMode& m, Body3dEventKind k) { return {m, true, int(k)}
 
 // Base points this close to the ground (in body sizes) touch it.
 constexpr double kTouchTolerance = 1e-11;
-// An edge's end carrying at most this share of the load lifts rather than slides (after_slip_onset).
-constexpr double kReleasedLoad = 1e-2;
 
 }  // namespace
 
@@ -40,7 +38,9 @@ BodyOnGroundMode BodyOnGround::line_mode(const Mat3& r, const Vec3& x, const Vec
   m.corner_b = cb;
   m.point_a = pa;
   m.point_b = pb;
-  const Vec3 wa = horizontal(plus(x, r * pa)), wb = horizontal(plus(x, r * pb));
+  // The contact points where they are (on the ground to within the touch tolerance): moving
+  // them onto it would move the body, and its potential energy, at the event.
+  const Vec3 wa = plus(x, r * pa), wb = plus(x, r * pb);
   m.pivot = scaled(plus(wa, wb), 0.5);
   m.axis = unit(minus(wa, wb));
   m.half_length = 0.5 * std::sqrt(dot(minus(wa, wb), minus(wa, wb)));
@@ -52,7 +52,7 @@ BodyOnGroundMode BodyOnGround::point_mode(const Mat3& r, const Vec3& x, const Ve
   m.contact = BodyContact::Point;
   m.corner_a = c;
   m.point_a = m.point_b = p;
-  m.pivot = horizontal(plus(x, r * p));
+  m.pivot = plus(x, r * p);
   return m;
 }
 
@@ -61,7 +61,7 @@ BodyOnGroundMode BodyOnGround::rim_mode(const Mat3& r, const Vec3& x, const Vec3
   Mode m;
   m.contact = BodyContact::Line;
   m.point_a = m.point_b = p;
-  m.pivot = horizontal(plus(x, r * p));
+  m.pivot = plus(x, r * p);
   m.axis = unit(horizontal(r * Vec3{-p[1], p[0], 0}));
   return m;
 }
@@ -95,12 +95,17 @@ BodyOnGroundMode BodyOnGround::mode_of(double t, const State& z) const {
   return point_mode(r, x, corner(touching[0]), touching[0]);
 }
 
-std::string BodyOnGround::stop_reason(const Mode& from, int event) {
+std::string BodyOnGround::stop_reason(const Mode& from, int event, Body3dEventKind kind) {
+  if (kind == Body3dEventKind::Invalid)
+    return "the ground accelerates downwards faster than g: the body resting on it would leave it";
+  if (kind == Body3dEventKind::SlipOnset) return "a contact needs more friction than mu_s: sliding is not modelled yet";
+  if (kind != Body3dEventKind::NotModelled) return "";
   if (event == kEvLoadA && from.contact == BodyContact::Line && from.half_length == 0)
     return "the cylinder's contact starts rolling along the rim: rolling is not modelled yet";
-  if (event == kEvSlipA || event == kEvSlipB)
-    return "a contact needs more friction than mu_s: sliding is not modelled yet";
-  return "";
+  if (event < 0)
+    return "the contact alternates between an edge and a corner at one instant: it would slide (not modelled "
+           "yet)";
+  return "impacts accumulate at one instant (a sequence of corner impacts that does not end)";
 }
 
 Tr BodyOnGround::leave_rest(double t, const State& z) const {
@@ -135,7 +140,8 @@ Tr BodyOnGround::settle(double t, State& z) const {
   z[kQx] = q.x;
   z[kQy] = q.y;
   z[kQz] = q.z;
-  z[kZ] = body_.half_height();
+  // The centroid stays where it is: on the ground to within the rounding the contacts gathered
+  // (moving it would change the potential energy at the event).
   set_vec_at(z, kVx, {0, 0, 0});
   set_vec_at(z, kWx, {0, 0, 0});
   Mode rest;
@@ -146,33 +152,6 @@ Tr BodyOnGround::settle(double t, State& z) const {
   return tr;
 }
 
-Tr BodyOnGround::after_slip_onset(double t, const Mode& m, State& z, int event) const {
-  // An edge's end that needs more friction than it has while it carries almost none of the load
-  // is let go: the body pivots on the other end (the end would slide for the instant before it
-  // lifts; exact as mu_s grows, where the two events meet). Any other slip stops the run.
-  if (m.contact == BodyContact::Line && m.half_length > 0) {
-    const std::array<Vec3, 2> f = contact_forces(t, m, z);
-    const double total = f[0][2] + f[1][2], end = event == kEvSlipA ? f[0][2] : f[1][2];
-    if (total > 0 && end <= kReleasedLoad * total) {
-      // Only if that end then rises: pivoting on the other end must not drive it into the ground.
-      State zp = z;
-      const Tr tr = after_load_zero(t, m, zp, event == kEvSlipA ? kEvLoadA : kEvLoadB);
-      if (tr.next.contact != BodyContact::Point) return tr;
-      State d;
-      rhs(t, tr.next, zp, d);
-      const Mat3 r = rotation(quat_at(zp, S::kQw));
-      const Vec3 arm = r * minus(event == kEvSlipA ? m.point_a : m.point_b, tr.next.point_a);
-      const Vec3 w = vec_at(zp, kWx);
-      const double rise = plus(cross(vec_at(d, kWx), arm), cross(w, cross(w, arm)))[2];
-      if (rise >= 0) {
-        z = zp;
-        return tr;
-      }
-    }
-  }
-  return {m, true, int(Body3dEventKind::SlipOnset)};
-}
-
 Tr BodyOnGround::after_load_zero(double t, const Mode& m, State& z, int event) const {
   if (event == kEvLiftOff) return {Mode{BodyContact::Flight}, false, int(Body3dEventKind::LiftOff)};
   if (m.half_length == 0) return stop(m, Body3dEventKind::NotModelled);
@@ -181,6 +160,8 @@ Tr BodyOnGround::after_load_zero(double t, const Mode& m, State& z, int event) c
   const Vec3 x = vec_at(z, kX);
   const bool a_lifts = event == kEvLoadA;
   Mode next = a_lifts ? point_mode(r, x, m.point_b, m.corner_b) : point_mode(r, x, m.point_a, m.corner_a);
+  next.released = a_lifts ? m.corner_a : m.corner_b;
+  next.released_t = t;
   set_contact_velocity(next, z);
   if (pulls_away(t, next, z)) return {Mode{BodyContact::Flight}, false, int(Body3dEventKind::LiftOff)};
   return {next, false, int(Body3dEventKind::Mode)};
