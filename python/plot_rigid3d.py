@@ -2,11 +2,11 @@
 # SPDX-License-Identifier: Apache-2.0
 """Time histories of a 3D run (`blockdyn simulate --model rigid3d`).
 
-usage: plot_rigid3d.py TRAJECTORY.csv OUT.png [--weight W] [--title T]
+usage: plot_rigid3d.py TRAJECTORY.csv OUT.png [--weight W] [--height H] [--title T]
 
 Panels: the tilt (the angle of the body's axis from the vertical) with the contact mode as
 coloured bands and impacts marked; the direction the body leans to (tilt azimuth); the
-centroid's track seen from above; the normal force over the weight; the closed energy balance's
+centroid's, the top's and the contact's tracks seen from above; the normal force over the weight; the closed energy balance's
 error. An SVG is written beside the PNG.
 """
 
@@ -18,6 +18,7 @@ MODE_COLOURS = {"rest": "0.92", "edge": "#fff2c2", "rim": "#fff2c2", "corner": "
 def main():
     ap = figure_parser()
     ap.add_argument("--weight", type=float, default=0.0, help="m g [N]: the normal force is drawn over it")
+    ap.add_argument("--height", type=float, default=0.0, help="the body's height [m]: its top's path is drawn")
     a = ap.parse_args()
     rows = read_rows(a.csv)
     if not rows:
@@ -50,10 +51,19 @@ def main():
     ax[1].set_ylim(-185, 185)
 
     # Millimetres: a track of a few tenths of a millimetre would put an offset label over the title.
-    top.plot(1e3 * num("x"), 1e3 * num("y"), lw=0.8, color="C4")
+    q = [num(k) for k in ("qw", "qx", "qy", "qz")]
+    half = a.height / 2
+    # The top's centre, G + R (0, 0, h/2): R's third column.
+    top_x = num("x") + half * 2 * (q[1] * q[3] + q[0] * q[2])
+    top_y = num("y") + half * 2 * (q[2] * q[3] - q[0] * q[1])
+    top.plot(1e3 * num("x"), 1e3 * num("y"), lw=0.8, color="C4", label="centroid")
+    if a.height > 0:
+        top.plot(1e3 * top_x, 1e3 * top_y, lw=0.6, color="C5", label="top")
+    top.plot(1e3 * num("contact_x"), 1e3 * num("contact_y"), ".", ms=2, color="k", label="contact")
+    top.legend(fontsize=6, loc="upper left", bbox_to_anchor=(1.02, 1.0), borderaxespad=0.0)
     top.set_aspect("equal", adjustable="datalim")
     top.ticklabel_format(useOffset=False)
-    top.set_xlabel("centroid x [mm]")
+    top.set_xlabel("x [mm]")
     top.set_ylabel("y [mm]")
     top.set_title("seen from above", fontsize=9)
 

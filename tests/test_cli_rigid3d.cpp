@@ -29,6 +29,9 @@ TEST(CliRigid3d, JsonContractOfAFreeRockingBox) {
   EXPECT_TRUE(j["overturn_time"].is_null());
   EXPECT_DOUBLE_EQ(j["t_final"].get<double>(), 2.0);
   EXPECT_NEAR(j["max_tilt"].get<double>(), 0.12, 1e-12);
+  EXPECT_NEAR(j["max_tilt_azimuth"].get<double>(), 0.0, 1e-9);  // leaning towards +x, as released
+  EXPECT_TRUE(j["overturn_azimuth"].is_null());
+  EXPECT_EQ(j["max_slide"].get<double>(), 0.0);
   EXPECT_EQ(j["body"]["shape"], "box");
   EXPECT_DOUBLE_EQ(j["body"]["depth"].get<double>(), 0.3);
   for (const char* k : {"initial", "final", "work_ground", "work_impact"}) EXPECT_TRUE(j["energy"].contains(k)) << k;
@@ -83,6 +86,10 @@ TEST(CliRigid3d, APulseOverturnsASlenderBoxAndTheRunRepeatsBitForBit) {
   const json j = json::parse(a.out);
   EXPECT_EQ(j["status"], "overturned");
   EXPECT_GT(j["overturn_time"].get<double>(), 0.5);
+  // Pushed along 25 degrees, the square leaves rest about an edge, turns onto a corner and falls
+  // along the line of the motion (measured: 25.4 degrees off the axis, towards 205 degrees).
+  const double az = j["overturn_azimuth"].get<double>();
+  EXPECT_LT(std::fabs(std::remainder(az - 25.0, 180.0)), 2.0) << az;
   EXPECT_GT(j["first_uplift_time"].get<double>(), 0.0);
 }
 

@@ -20,24 +20,9 @@ using blockdyn::BodyShape3d;
 using blockdyn::Quat;
 using blockdyn::Vec3;
 
-Body3d box(double b, double d, double h) {
-  Body3d x;
-  x.shape = BodyShape3d::Box;
-  x.width = b;
-  x.depth = d;
-  x.height = h;
-  x.mass = 250;
-  return x;
-}
+Body3d box(double b, double d, double h) { return blockdyn::box_body(b, d, h, 250); }
 
-Body3d cylinder(double a, double h) {
-  Body3d x;
-  x.shape = BodyShape3d::Cylinder;
-  x.radius = a;
-  x.height = h;
-  x.mass = 80;
-  return x;
-}
+Body3d cylinder(double a, double h) { return blockdyn::cylinder_body(a, h, 80); }
 
 Quat random_orientation(std::mt19937_64& rng) {
   std::normal_distribution<double> n;

@@ -21,23 +21,9 @@ using blockdyn::BodyContact;
 using blockdyn::BodyOnGround;
 using blockdyn::BodyShape3d;
 
-Body3d box(double b, double d, double h) {
-  Body3d x;
-  x.width = b;
-  x.depth = d;
-  x.height = h;
-  x.mass = 400;
-  return x;
-}
+Body3d box(double b, double d, double h) { return blockdyn::box_body(b, d, h, 400); }
 
-Body3d cylinder(double a, double h) {
-  Body3d x;
-  x.shape = BodyShape3d::Cylinder;
-  x.radius = a;
-  x.height = h;
-  x.mass = 120;
-  return x;
-}
+Body3d cylinder(double a, double h) { return blockdyn::cylinder_body(a, h, 120); }
 
 Body3dResult run(const BodyOnGround& m, const blockdyn::Body3dStart& s, double t_end) {
   blockdyn::Body3dRunOptions o;

@@ -126,11 +126,6 @@ const char* mode_name(const Body3d& b, const BodyOnGroundMode& m) {
   return "?";
 }
 
-double tilt_azimuth_deg(const BodyOnGround::State& z) {
-  const Mat3 r = rotation({z[BodyOnGround::kQw], z[BodyOnGround::kQx], z[BodyOnGround::kQy], z[BodyOnGround::kQz]});
-  return std::atan2(r[1][2], r[0][2]) / kDeg;
-}
-
 // One trajectory row (rigid3d_columns()).
 void fill_row(RowBuffer& row, const BodyOnGround& m, double e0, const Body3dSample& smp) {
   const BodyOnGround::State& z = smp.z;
@@ -213,6 +208,10 @@ json summary_json(const Rigid3dSetup& s, const BodyOnGround& m, const Body3dResu
           {"first_uplift_time", optional_time(r.first_uplift_time)},
           {"impacts", r.impacts},
           {"max_tilt", r.max_tilt},
+          {"max_tilt_azimuth", r.max_tilt_azimuth},
+          {"overturn_azimuth", r.overturn_time >= 0 ? json(r.overturn_azimuth) : json(nullptr)},
+          // The contacts stick until sliding would start, where the run stops (not modelled yet).
+          {"max_slide", 0.0},
           {"final_mode", mode_name(b, r.mode)},
           {"final_state", std::vector<double>(z.begin(), z.begin() + BodyOnGround::kWorkGround)},
           {"max_abs_energy_error", r.max_abs_energy_error},
@@ -285,7 +284,8 @@ class PreparedRigid3d final : public PreparedRun {
     const std::string title = body_phrase(s_.body) + motion_phrase(s_.ground) + ": " + r.status +
                               " at t = " + number_text(r.t_final, 6) + " s";
     rep.figure.plot_script = "plot_rigid3d.py";
-    rep.figure.plot_args = {"--title", title, "--weight", number_text(s_.body.mass * s_.body.g)};
+    rep.figure.plot_args = {
+        "--title", title, "--weight", number_text(s_.body.mass * s_.body.g), "--height", number_text(s_.body.height)};
     rep.figure.animate_script = "animate_rigid3d.py";
     rep.figure.animate_args = {"--title",
                                title,

@@ -25,7 +25,11 @@ struct Body3dWatch {
   }
   void track(double t, const Model::State& z) {
     res.max_abs_energy_error = std::fmax(res.max_abs_energy_error, std::fabs(model.balance(z) - res.initial_energy));
-    res.max_tilt = std::fmax(res.max_tilt, model.tilt(z));
+    const double tilt = model.tilt(z);
+    if (tilt > res.max_tilt) {
+      res.max_tilt = tilt;
+      res.max_tilt_azimuth = tilt_azimuth_deg(z);
+    }
     (void)t;
   }
   bool on_step(const DenseSegment<Model::kDim>& seg, double t0, double t1, const Model::Mode& m) {
@@ -50,7 +54,10 @@ struct Body3dWatch {
     if (kind == Body3dEventKind::Impact) ++res.impacts;
     if (res.first_uplift_time < 0 && e.from.contact == BodyContact::Rest && e.to.contact != BodyContact::Rest)
       res.first_uplift_time = e.t;
-    if (kind == Body3dEventKind::Overturn) res.overturn_time = e.t;
+    if (kind == Body3dEventKind::Overturn) {
+      res.overturn_time = e.t;
+      res.overturn_azimuth = tilt_azimuth_deg(e.z);
+    }
     if (e.stop) res.stop_reason = Model::stop_reason(e.from, e.index, kind);
     const Body3dEventRecord rec{e.t, kind, e.from.contact, e.to.contact, e.z};
     if (o.on_event)
@@ -64,6 +71,11 @@ struct Body3dWatch {
 };
 
 }  // namespace
+
+double tilt_azimuth_deg(const BodyOnGround::State& z) {
+  const Mat3 r = rotation({z[BodyOnGround::kQw], z[BodyOnGround::kQx], z[BodyOnGround::kQy], z[BodyOnGround::kQz]});
+  return std::atan2(r[1][2], r[0][2]) * (180 / M_PI);
+}
 
 Body3dResult simulate_body3d(const BodyOnGround& model, BodyOnGround::State z, const Body3dRunOptions& o) {
   if (!(o.t_end > 0 && std::isfinite(o.t_end)))

@@ -44,10 +44,14 @@ struct Body3dResult {
   BodyOnGround::State z{};
   BodyOnGroundMode mode{};
   double overturn_time = -1, first_uplift_time = -1, max_tilt = 0;
+  double max_tilt_azimuth = 0, overturn_azimuth = 0;  // deg: where the body leans, from x towards y
   long impacts = 0, steps = 0;
   double initial_energy = 0, max_abs_energy_error = 0;  // of the closed balance (J)
   std::vector<Body3dEventRecord> events;                // when on_event is null
 };
+
+// The direction the body leans to (deg from the world's x axis towards y): the azimuth of e3.
+double tilt_azimuth_deg(const BodyOnGround::State& z);
 
 // Throws std::invalid_argument for an initial state below the ground or a bad option.
 Body3dResult simulate_body3d(const BodyOnGround& model, BodyOnGround::State z, const Body3dRunOptions& o);

@@ -19,7 +19,10 @@ struct BodyFlightMode {};
 
 class BodyFlight {
  public:
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wshadow"  // the Winkler state's names, hidden on purpose (body_on_ground.hpp)
   enum : std::size_t { kX, kY, kZ, kQw, kQx, kQy, kQz, kVx, kVy, kVz, kWx, kWy, kWz, kDimF };
+#pragma GCC diagnostic pop
   static constexpr std::size_t kDim = kDimF;
   static constexpr std::size_t kNumEvents = 1;
   static constexpr int kTouchdown = 1;  // the transition's kind at the event

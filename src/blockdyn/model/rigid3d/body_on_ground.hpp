@@ -59,7 +59,12 @@ struct BodyOnGroundOptions {
 
 class BodyOnGround {
  public:
+  // Class-scoped on purpose, reusing names of the Winkler state indices (namespace scope):
+  // clang's -Wshadow reports the hiding, which is what is meant here.
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wshadow"
   enum : std::size_t { kX, kY, kZ, kQw, kQx, kQy, kQz, kVx, kVy, kVz, kWx, kWy, kWz, kWorkGround, kWorkImpact, kDimB };
+#pragma GCC diagnostic pop
   enum Event : int {
     kEvLiftOff,  // the total normal load (contact modes)
     kEvLoadA,    // a line's end loads (box edge), or the moment a rim point cannot carry

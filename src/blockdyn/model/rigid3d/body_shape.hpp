@@ -28,6 +28,24 @@ struct Body3d {
 // Throws std::invalid_argument naming the field, its value and its range.
 void validate(const Body3d& b);
 
+// A box b x d x h (m) or a cylinder of radius a and height h, of the given mass (kg).
+inline Body3d box_body(double b, double d, double h, double mass) {
+  Body3d x;
+  x.width = b;
+  x.depth = d;
+  x.height = h;
+  x.mass = mass;
+  return x;
+}
+inline Body3d cylinder_body(double a, double h, double mass) {
+  Body3d x;
+  x.shape = BodyShape3d::Cylinder;
+  x.radius = a;
+  x.height = h;
+  x.mass = mass;
+  return x;
+}
+
 // The base point lowest in the world with the body at orientation r (body frame), and its height
 // below the centroid (>= 0). Box: a corner (the lowest of four); cylinder: the rim point in the
 // direction of steepest descent of the base plane (at zero tilt, the rim point of azimuth 0).
