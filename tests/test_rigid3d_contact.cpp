@@ -232,3 +232,30 @@ TEST(Rigid3dContact, TwoRecordComponentsRunThroughCornerSequencesWithTheBalanceC
 }
 
 }  // namespace
+
+namespace {
+
+TEST(Rigid3dContact, AFlatDropIsOnePlasticImpactAndATumbleInFlightIsAnOverturn) {
+  const Body3d b = box(0.4, 0.3, 1.2);
+  const BodyOnGround m(b);
+  blockdyn::Body3dStart s;
+  s.lift = 0.05;
+  const Body3dResult drop = run(m, s, 1.0);
+  EXPECT_EQ(drop.status, "t_end");
+  EXPECT_EQ(drop.impacts, 1);
+  EXPECT_EQ(drop.mode.contact, BodyContact::Rest);
+  // All the kinetic energy at landing, m g lift, is lost in the impact.
+  EXPECT_NEAR(drop.z[BodyOnGround::kWorkImpact], -b.mass * b.g * 0.05, 1e-9 * b.mass * b.g * b.height);
+  EXPECT_NEAR(drop.events.front().t, std::sqrt(2 * 0.05 / b.g), 1e-12);
+  // Spun fast about x in flight, the base turns up before it lands: an overturn (its other faces'
+  // contacts are not modelled), never a landing on the base from below.
+  s.lift = 0.5;
+  s.angular_velocity = {20.0, 0.0, 0.0};
+  const Body3dResult tumble = run(m, s, 1.0);
+  EXPECT_EQ(tumble.status, "overturned");
+  EXPECT_EQ(tumble.impacts, 0);
+  EXPECT_NEAR(tumble.overturn_time, 0.5 * M_PI / 20.0,
+              1e-12);  // tilt = w t in torque-free flight about a principal axis
+}
+
+}  // namespace

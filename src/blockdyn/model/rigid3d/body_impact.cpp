@@ -46,6 +46,13 @@ void BodyOnGround::conserve_momentum_about(const Mode& m, State& z) const {
   set_vec_at(z, kVx, cross(w, arm));
 }
 
+Tr BodyOnGround::landed_flat(double t, State& z) const {
+  // The base lands flat: a plastic impact on the whole base, then rest (or the exit from it).
+  Tr tr = settle(t, z);
+  if (!tr.stop && tr.kind == int(Body3dEventKind::Rest)) tr.kind = int(Body3dEventKind::Impact);
+  return tr;
+}
+
 Tr BodyOnGround::transition(double t, const Mode& m, State& z, int event) const {
   Tr tr = mode_change(t, m, z, event);
   const bool impact_event = (event >= kEvTouch0 && event <= kEvTouch3) || event == kEvTouchdown;
@@ -94,7 +101,7 @@ Tr BodyOnGround::contact_after_impact(double t, const Mode& from, State& z, int)
   Mode next;
   std::vector<int> fresh, others;
   if (body_.shape == BodyShape3d::Cylinder) {
-    if (from.contact == BodyContact::Flight && r[2][2] >= 1 - 1e-12) return settle(t, z);
+    if (from.contact == BodyContact::Flight && r[2][2] >= 1 - 1e-12) return landed_flat(t, z);
     const Vec3 p = from.contact == BodyContact::Flight ? lowest_point(body_, r).body
                                                        : Vec3{-from.point_a[0], -from.point_a[1], from.point_a[2]};
     next = rim_mode(r, x, p);
@@ -103,7 +110,7 @@ Tr BodyOnGround::contact_after_impact(double t, const Mode& from, State& z, int)
       if (z[kZ] + dot(r[2], corner(i)) > kImpactTouch * size_) continue;
       (holds(from, i) ? others : fresh).push_back(i);
     }
-    if (fresh.size() >= 3 || fresh.empty()) return settle(t, z);
+    if (fresh.size() >= 3 || fresh.empty()) return landed_flat(t, z);
     next = fresh.size() == 2 ? line_mode(r, x, corner(fresh[0]), corner(fresh[1]), fresh[0], fresh[1])
                              : point_mode(r, x, corner(fresh[0]), fresh[0]);
   }

@@ -112,6 +112,9 @@ void BodyOnGround::events(double t, const Mode& m, const State& z, std::array<do
   const Mat3 r = rotation(quat_at(z, S::kQw));
   if (m.contact == BodyContact::Flight) {
     g[kEvTouchdown] = z[kZ] - lowest_point(body_, r).depth;
+    // Turned over in flight (the base facing up): its other faces' contacts are not modelled, the
+    // run ends as an overturn.
+    g[kEvOverturn] = r[2][2];
     return;
   }
   const Vec3 w = vec_at(z, kWx), f = specific_force(t), s = pivot_to_centroid(m);

@@ -139,6 +139,7 @@ class BodyOnGround {
   Transition<Mode> contact_after_impact(double t, const Mode& from, State& z, int event) const;
   Transition<Mode> after_load_zero(double t, const Mode& m, State& z, int event) const;
   Transition<Mode> settle(double t, State& z) const;
+  Transition<Mode> landed_flat(double t, State& z) const;
   // Housner's law in 3D: the angular momentum about the new contact m conserved.
   void conserve_momentum_about(const Mode& m, State& z) const;
   void set_contact_velocity(const Mode& m, State& z) const;
