@@ -101,6 +101,7 @@ Rigid3dSetup rigid3d_from(const Settings& s) {
   validate(r.ground);
   r.model.mu_s = s.number("mu-s", 0.7);
   require_in_range("mu-s", r.model.mu_s, 0, 1e6);
+  r.model.rest_yaw = r.start.yaw;
   r.run.t_end = s.number("t-end", 10);
   r.run.output_interval = s.number("output-interval", 0.01);
   apply_integrator_settings(s, r.run.integ);

@@ -44,13 +44,17 @@ struct Body3dWatch {
         next_row += o.output_interval;
       }
     }
-    seg.eval(t1, y);
-    model.complete(m, y);
-    track(t1, y);
+    if (o.track_energy) {
+      seg.eval(t1, y);
+      model.complete(m, y);
+      track(t1, y);
+    }
     return true;
   }
   bool on_event(const EventInfo<Model::Mode, Model::kDim>& e) {
     const auto kind = Body3dEventKind(e.kind);
+    // A breakpoint of the ground motion (every sample of a record) is no event of the body's.
+    if (kind == Body3dEventKind::GroundBreak && !e.stop) return true;
     if (kind == Body3dEventKind::Impact) ++res.impacts;
     if (res.first_uplift_time < 0 && e.from.contact == BodyContact::Rest && e.to.contact != BodyContact::Rest)
       res.first_uplift_time = e.t;

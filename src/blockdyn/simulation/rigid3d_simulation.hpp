@@ -32,6 +32,7 @@ struct Body3dRunOptions {
   double t_end = 10;           // s
   double output_interval = 0;  // s between trajectory rows (0: events only)
   IntegratorOptions integ{};
+  bool track_energy = true;  // the balance (and the largest tilt) at every step end; false: at events only
   std::function<void(const Body3dSample&)> on_sample;      // rows (null: none)
   std::function<void(const Body3dEventRecord&)> on_event;  // as they happen (null: kept in the result)
 };

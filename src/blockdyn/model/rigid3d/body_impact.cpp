@@ -132,7 +132,19 @@ Tr BodyOnGround::contact_after_impact(double t, const Mode& from, State& z, int)
   }
   z[kWorkImpact] += energy(z) - body_.mass * body_.g * z[kZ] - ke;
   complete(next, z);
-  if (pulls_away(t, next, z)) return {Mode{BodyContact::Flight}, false, int(Body3dEventKind::Impact)};
+  if (pulls_away(t, next, z)) {
+    // Sticking would pull on the ground; but if in flight the contact point (at rest after the
+    // impact) accelerates into the ground, neither holds: Painleve's paradox of a rigid contact
+    // with large friction (it would slide). The run stops there rather than loop.
+    Mode flight{BodyContact::Flight};
+    State d;
+    rhs(t, flight, z, d);
+    const Vec3 arm = minus(next.pivot, vec_at(z, kX));
+    const Vec3 w = vec_at(z, kWx);
+    const double a_contact = (plus(vec_at(d, kVx), plus(cross(vec_at(d, kWx), arm), cross(w, cross(w, arm)))))[2];
+    if (a_contact < 0) return {from, true, int(Body3dEventKind::Painleve)};
+    return {flight, false, int(Body3dEventKind::Impact)};
+  }
   // Impacts accumulate in finite time (a geometric series of swings shrinking by e each): once
   // the time they have left is below the accumulation horizon, the body is at rest.
   if (from.contact == BodyContact::Line && next.contact == BodyContact::Line && w_before > 0) {

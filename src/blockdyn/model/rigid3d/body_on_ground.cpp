@@ -51,6 +51,8 @@ const char* to_string(Body3dEventKind k) {
       return "ground_break";
     case Body3dEventKind::Invalid:
       return "invalid";
+    case Body3dEventKind::Painleve:
+      return "painleve";
   }
   return "?";
 }
@@ -68,7 +70,7 @@ BodyOnGround::BodyOnGround(const Body3d& body, const GroundMotion3d& ground, con
   const double v = std::sqrt(body_.g * size_), w = std::sqrt(body_.g / size_), e = body_.mass * body_.g * size_;
   scale_ = {size_, size_, size_, 1, 1, 1, 1, v, v, v, w, w, w, e, e};
   forced_ = !ground_.is_zero();
-  rest_search_ = BodyRestSearch(body_, opt_.mu_s, ground_);
+  rest_search_ = BodyRestSearch(body_, opt_.mu_s, ground_, opt_.rest_yaw);
 }
 
 Vec3 BodyOnGround::specific_force(double t) const {

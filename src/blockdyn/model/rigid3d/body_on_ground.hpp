@@ -47,14 +47,17 @@ enum class Body3dEventKind : int {
   Rest,         // an accumulation of impacts ends at rest
   Overturn,     // the base stands vertical
   SlipOnset,    // a contact needs more than mu_s: sliding (not modelled yet; the run stops)
-  NotModelled,  // rolling on the rim, rest under two horizontal components (the run stops)
+  NotModelled,  // rolling on the rim, a chatter it cannot resolve (the run stops)
   GroundBreak,  // a breakpoint of the ground motion
   Invalid,      // the ground pulls down faster than g
+  Painleve,     // at a new contact neither sticking nor lifting is consistent (the run stops)
 };
 const char* to_string(Body3dEventKind k);
 
 struct BodyOnGroundOptions {
-  double mu_s = 1e6;  // static friction coefficient (large: sticking throughout)
+  double mu_s = 1e6;    // static friction coefficient (large: sticking throughout)
+  double rest_yaw = 0;  // rad: the yaw the body rests at (its exit from rest under a record is
+                        // prepared for it; at another yaw it is searched from scratch)
 };
 
 class BodyOnGround {

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "blockdyn/model/rigid3d/body_rest.hpp"
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <stdexcept>
 
@@ -19,15 +21,15 @@ struct Body3dRestCondition {
   // What failing means: lifting (the ground falls faster than g), sliding, rocking about the rim,
   // or rocking with the ground beyond the threshold towards +e1, +e2, -e1, -e2.
   enum Role { Lifts, Slides, RocksRim, RocksPosX, RocksPosY, RocksNegX, RocksNegY };
-  const GroundMotion3d& g;
-  Kind kind;
-  Role role;
+  const GroundMotion3d* g = nullptr;
+  Kind kind = Vertical;
+  Role role = Lifts;
   double c = 0;
   double ux = 0, uy = 0;  // linear: u in the (dh, dh2) frame
   double value(double t) const {
-    const double gv = 1.0 + g.v.at(t);
+    const double gv = 1.0 + g->v.at(t);
     if (kind == Vertical) return gv;
-    const double h = g.h.at(t), h2 = g.h2.at(t);
+    const double h = g->h.at(t), h2 = g->h2.at(t);
     return c * gv - (kind == Linear ? ux * h + uy * h2 : std::hypot(h, h2));
   }
   bool fails(double t) const {
@@ -35,13 +37,13 @@ struct Body3dRestCondition {
     return kind == Vertical ? !(v > 0.0) : !(v >= 0.0);
   }
   double rate(double t) const {
-    const double rv = g.v.rate(t);
+    const double rv = g->v.rate(t);
     if (kind == Vertical) return rv;
-    const double rh = g.h.rate(t), rh2 = g.h2.rate(t);
+    const double rh = g->h.rate(t), rh2 = g->h2.rate(t);
     return c * rv - (kind == Linear ? ux * rh + uy * rh2 : std::hypot(rh, rh2));
   }
   double curvature() const {
-    const double mv = g.v.curvature_bound(), mh = g.h.curvature_bound(), mh2 = g.h2.curvature_bound();
+    const double mv = g->v.curvature_bound(), mh = g->h.curvature_bound(), mh2 = g->h2.curvature_bound();
     if (kind == Vertical) return mv;
     return c * mv + (kind == Linear ? std::fabs(ux) * mh + std::fabs(uy) * mh2 : std::hypot(mh, mh2));
   }
@@ -51,19 +53,19 @@ struct Body3dRestCondition {
 template <class F>
 void for_each_condition(const Body3d& b, double mu_s, const GroundMotion3d& g, double yaw, F&& f) {
   using C = Body3dRestCondition;
-  f(C{g, C::Vertical, C::Lifts});
-  f(C{g, C::Norm, C::Slides, mu_s});
+  f(C{&g, C::Vertical, C::Lifts});
+  f(C{&g, C::Norm, C::Slides, mu_s});
   if (b.shape == BodyShape3d::Cylinder) {
-    f(C{g, C::Norm, C::RocksRim, 2 * b.radius / b.height});
+    f(C{&g, C::Norm, C::RocksRim, 2 * b.radius / b.height});
     return;
   }
   // e1 and e2 in the (dh, dh2) frame of the ground motion's components.
   const double rel = yaw - g.azimuth * (M_PI / 180), cr = std::cos(rel), sr = std::sin(rel);
   const double kx = b.width / b.height, ky = b.depth / b.height;
-  f(C{g, C::Linear, C::RocksPosX, kx, cr, sr});
-  f(C{g, C::Linear, C::RocksPosY, ky, -sr, cr});
-  f(C{g, C::Linear, C::RocksNegX, kx, -cr, -sr});
-  f(C{g, C::Linear, C::RocksNegY, ky, sr, -cr});
+  f(C{&g, C::Linear, C::RocksPosX, kx, cr, sr});
+  f(C{&g, C::Linear, C::RocksPosY, ky, -sr, cr});
+  f(C{&g, C::Linear, C::RocksNegX, kx, -cr, -sr});
+  f(C{&g, C::Linear, C::RocksNegY, ky, sr, -cr});
 }
 
 // Axis conditions this close to failing (relative to their coefficient) when another fails fail
@@ -72,7 +74,26 @@ constexpr double kSimultaneous = 1e-12;
 
 }  // namespace
 
-BodyRestSearch::BodyRestSearch(const Body3d& b, double mu_s, const GroundMotion3d& g) : body_(b), mu_s_(mu_s), g_(g) {}
+BodyRestSearch::BodyRestSearch(const Body3d& b, double mu_s, const GroundMotion3d& g, double yaw_hint)
+    : body_(b), mu_s_(mu_s), g_(g), yaw_hint_(yaw_hint) {
+  listed_ = !g_.is_zero() && g_.h.piecewise_linear() && g_.h2.piecewise_linear() && g_.v.piecewise_linear();
+  if (!listed_) return;
+  auto holds = [&](double t) { return failure(t, yaw_hint_).way == RestExitWay::None; };
+  // Records are continuous at their samples; the input jumps only at window ends.
+  auto window_end = [&](double t) {
+    for (const GroundComponent* k : {&g_.h, &g_.h2, &g_.v})
+      if (!k->is_zero() && (t == k->t_start || t == k->t_stop())) return true;
+    return false;
+  };
+  double prev = 0.0;
+  for (double tb = g_.next_break(0.0); std::isfinite(tb); tb = g_.next_break(tb)) {
+    if (!holds(tb) || (window_end(tb) && !holds(std::nextafter(tb, -INFINITY)))) {
+      fail_.push_back(tb);
+      before_.push_back(prev);
+    }
+    prev = tb;
+  }
+}
 
 RestFailure BodyRestSearch::failure(double t, double yaw) const {
   using C = Body3dRestCondition;
@@ -124,13 +145,15 @@ RestFailure BodyRestSearch::failure(double t, double yaw) const {
 
 double BodyRestSearch::first_failure(double yaw, double t0, double t1) const {
   if (g_.is_zero()) return INFINITY;
+  // The conditions once (their directions need the yaw's sine and cosine), then piece by piece.
+  std::array<Body3dRestCondition, 7> conditions{};
+  std::size_t n = 0;
+  for_each_condition(body_, mu_s_, g_, yaw, [&](const Body3dRestCondition& c) { conditions[n++] = c; });
   double t = t0;
   while (t < t1) {
     const double b = std::fmin(g_.next_break(t), t1);
     double first = INFINITY;
-    for_each_condition(body_, mu_s_, g_, yaw, [&](const Body3dRestCondition& c) {
-      first = std::fmin(first, first_failure_on_piece(c, t, b));
-    });
+    for (std::size_t i = 0; i < n; ++i) first = std::fmin(first, first_failure_on_piece(conditions[i], t, b));
     if (first < b) return first;
     if (b >= t1) break;
     t = b;  // at the breakpoint itself (a jump of the input) the next piece's first value decides
@@ -140,6 +163,14 @@ double BodyRestSearch::first_failure(double yaw, double t0, double t1) const {
 
 double BodyRestSearch::checkpoint(double t, double yaw) const {
   if (g_.is_zero()) return INFINITY;
+  if (listed_ && std::fabs(yaw - yaw_hint_) <= 1e-12) {
+    // Rest holds on every piece before the one that ends at the next failing breakpoint (and
+    // from t = 0 to the first breakpoint and after the last: linear there too).
+    const auto it = std::upper_bound(fail_.begin(), fail_.end(), t);
+    if (it == fail_.end()) return first_failure(yaw, t, INFINITY);
+    const double tb = *it, from = std::fmax(t, before_[std::size_t(it - fail_.begin())]);
+    return std::fmin(first_failure(yaw, from, tb), tb);
+  }
   const double scale = std::fmin(std::fmin(g_.h.time_scale(), g_.h2.time_scale()), g_.v.time_scale());
   const double t1 = t + kRestLookahead * scale;  // infinite for records and constants: to the end
   return std::fmin(first_failure(yaw, t, t1), t1);

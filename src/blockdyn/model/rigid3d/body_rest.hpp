@@ -12,6 +12,7 @@
 // A norm condition's lower bound uses |a_H'| for its rate (the bound stays valid; the search
 // then converges linearly where a_H' is not along a_H).
 #include <limits>
+#include <vector>
 
 #include "blockdyn/excitation/ground_motion_3d.hpp"
 #include "blockdyn/model/rigid3d/body_shape.hpp"
@@ -30,7 +31,11 @@ struct RestFailure {
 class BodyRestSearch {
  public:
   BodyRestSearch() = default;
-  BodyRestSearch(const Body3d& b, double mu_s, const GroundMotion3d& g);
+  // For a piecewise-linear motion (records, constants) every condition is concave between
+  // breakpoints, so rest fails inside a piece only if it fails at an end: the failing
+  // breakpoints for a body at `yaw_hint` are listed once, and a query at that yaw searches only
+  // the piece before the next of them (as the planar RestExit does).
+  BodyRestSearch(const Body3d& b, double mu_s, const GroundMotion3d& g, double yaw_hint = 0);
   // At t for the body turned by yaw (rad).
   RestFailure failure(double t, double yaw) const;
   // The first failure in [t0, t1), or infinity.
@@ -44,6 +49,9 @@ class BodyRestSearch {
   Body3d body_;
   double mu_s_ = 0;
   GroundMotion3d g_;
+  bool listed_ = false;  // piecewise linear: the failing breakpoints at yaw_hint_ are listed
+  double yaw_hint_ = 0;
+  std::vector<double> fail_, before_;  // failing breakpoints and the breakpoint before each
 };
 
 struct BodyRestExit {

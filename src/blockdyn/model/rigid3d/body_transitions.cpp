@@ -99,6 +99,9 @@ std::string BodyOnGround::stop_reason(const Mode& from, int event, Body3dEventKi
   if (kind == Body3dEventKind::Invalid)
     return "the ground accelerates downwards faster than g: the body resting on it would leave it";
   if (kind == Body3dEventKind::SlipOnset) return "a contact needs more friction than mu_s: sliding is not modelled yet";
+  if (kind == Body3dEventKind::Painleve)
+    return "Painleve: at the new contact sticking would pull on the ground and lifting would sink into it (the "
+           "contact would slide: not modelled yet)";
   if (kind != Body3dEventKind::NotModelled) return "";
   if (event == kEvLoadA && from.contact == BodyContact::Line && from.half_length == 0)
     return "the cylinder's contact starts rolling along the rim: rolling is not modelled yet";
