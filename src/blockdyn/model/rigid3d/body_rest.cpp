@@ -167,7 +167,7 @@ double BodyRestSearch::checkpoint(double t, double yaw) const {
     // Rest holds on every piece before the one that ends at the next failing breakpoint (and
     // from t = 0 to the first breakpoint and after the last: linear there too).
     const auto it = std::upper_bound(fail_.begin(), fail_.end(), t);
-    if (it == fail_.end()) return first_failure(yaw, t, INFINITY);
+    if (it == fail_.end()) return INFINITY;  // every later breakpoint holds, so every later piece
     const double tb = *it, from = std::fmax(t, before_[std::size_t(it - fail_.begin())]);
     return std::fmin(first_failure(yaw, from, tb), tb);
   }
