@@ -7,7 +7,11 @@
 // and it converges to the crossing (quadratically where the rate is exact). The rate may be any
 // lower bound of the true one that keeps the inequality valid (a norm's rate, say).
 #include <cmath>
+#include <initializer_list>
 #include <limits>
+#include <vector>
+
+#include "blockdyn/excitation/ground_motion.hpp"
 
 namespace blockdyn {
 
@@ -52,6 +56,29 @@ double first_failure_on_piece(const Condition& f, double a, double b) {
     t = tp;
   }
   return t;  // not reached for a finite input; a safe answer: stop here and let the model decide
+}
+
+// For a piecewise-linear input (records, constants), whose conditions are concave between
+// breakpoints: the breakpoints at which `holds(t)` fails, or fails just before (the input jumps
+// only at the components' window ends), each with the breakpoint before it. `next_break(t)` is the
+// input's first breakpoint after t.
+template <class NextBreak, class Holds>
+void list_failing_breakpoints(NextBreak&& next_break, Holds&& holds,
+                              std::initializer_list<const GroundComponent*> components, std::vector<double>& fail,
+                              std::vector<double>& before) {
+  auto window_end = [&](double t) {
+    for (const GroundComponent* k : components)
+      if (!k->is_zero() && (t == k->t_start || t == k->t_stop())) return true;
+    return false;
+  };
+  double prev = 0.0;
+  for (double tb = next_break(0.0); std::isfinite(tb); tb = next_break(tb)) {
+    if (!holds(tb) || (window_end(tb) && !holds(std::nextafter(tb, -INFINITY)))) {
+      fail.push_back(tb);
+      before.push_back(prev);
+    }
+    prev = tb;
+  }
 }
 
 }  // namespace blockdyn

@@ -63,20 +63,8 @@ RestExit::RestExit(const GroundMotion& g, double c_pos, double c_neg)
     const double gv = 1.0 + g.av(t), a = g.ah(t);
     return gv > 0.0 && c_pos * gv - a >= 0.0 && c_neg * gv + a >= 0.0;
   };
-  // Records are continuous at their samples; the input jumps only at window ends.
-  auto window_end = [&](double t) {
-    for (const GroundComponent* k : {&g.horizontal, &g.vertical})
-      if (!k->is_zero() && (t == k->t_start || t == k->t_stop())) return true;
-    return false;
-  };
-  double prev = 0.0;
-  for (double tb = g.next_break(0.0); std::isfinite(tb); tb = g.next_break(tb)) {
-    if (!holds(tb) || (window_end(tb) && !holds(std::nextafter(tb, -INFINITY)))) {
-      fail_.push_back(tb);
-      before_.push_back(prev);
-    }
-    prev = tb;
-  }
+  list_failing_breakpoints([&](double t) { return g.next_break(t); }, holds, {&g.horizontal, &g.vertical}, fail_,
+                           before_);
 }
 
 double RestExit::checkpoint(double t) const {

@@ -79,20 +79,7 @@ BodyRestSearch::BodyRestSearch(const Body3d& b, double mu_s, const GroundMotion3
   listed_ = !g_.is_zero() && g_.h.piecewise_linear() && g_.h2.piecewise_linear() && g_.v.piecewise_linear();
   if (!listed_) return;
   auto holds = [&](double t) { return failure(t, yaw_hint_).way == RestExitWay::None; };
-  // Records are continuous at their samples; the input jumps only at window ends.
-  auto window_end = [&](double t) {
-    for (const GroundComponent* k : {&g_.h, &g_.h2, &g_.v})
-      if (!k->is_zero() && (t == k->t_start || t == k->t_stop())) return true;
-    return false;
-  };
-  double prev = 0.0;
-  for (double tb = g_.next_break(0.0); std::isfinite(tb); tb = g_.next_break(tb)) {
-    if (!holds(tb) || (window_end(tb) && !holds(std::nextafter(tb, -INFINITY)))) {
-      fail_.push_back(tb);
-      before_.push_back(prev);
-    }
-    prev = tb;
-  }
+  list_failing_breakpoints([&](double t) { return g_.next_break(t); }, holds, {&g_.h, &g_.h2, &g_.v}, fail_, before_);
 }
 
 RestFailure BodyRestSearch::failure(double t, double yaw) const {
