@@ -25,6 +25,13 @@ Body3d box(double b, double d, double h) { return blockdyn::box_body(b, d, h, 40
 
 Body3d cylinder(double a, double h) { return blockdyn::cylinder_body(a, h, 120); }
 
+// The 60 s synthetic record of tests/fixtures, read once.
+std::shared_ptr<const blockdyn::Accelerogram> fixture_record() {
+  static const auto rec = std::make_shared<const blockdyn::Accelerogram>(
+      blockdyn::load_accelerogram(std::string(BLOCKDYN_SOURCE_DIR) + "/tests/fixtures/synthetic_60s.AT2", "record"));
+  return rec;
+}
+
 Body3dResult run(const BodyOnGround& m, const blockdyn::Body3dStart& s, double t_end) {
   blockdyn::Body3dRunOptions o;
   o.t_end = t_end;
@@ -212,8 +219,7 @@ TEST(Rigid3dContact, TwoRecordComponentsRunThroughCornerSequencesWithTheBalanceC
   // A square column under one record along 30 degrees (x 2) and across it (x 1): rocking on edges,
   // pivoting on corners and corner impacts in quick succession (once a zero-time loop of two
   // corners taking turns); the run must end at t_end with the energy balance closed.
-  const auto rec = std::make_shared<const blockdyn::Accelerogram>(
-      blockdyn::load_accelerogram(std::string(BLOCKDYN_SOURCE_DIR) + "/tests/fixtures/synthetic_60s.AT2", "record"));
+  const auto rec = fixture_record();
   blockdyn::GroundMotion3d g;
   g.azimuth = 30;
   g.h.record = g.h2.record = rec;
@@ -265,8 +271,7 @@ namespace {
 TEST(Rigid3dContact, ARecordsListedRestExitsEqualTheFullSearch) {
   // The failing samples of a record listed once (the body at its hinted yaw) against the search
   // sample by sample (another hint): the same checkpoints, from every start at rest.
-  const auto rec = std::make_shared<const blockdyn::Accelerogram>(
-      blockdyn::load_accelerogram(std::string(BLOCKDYN_SOURCE_DIR) + "/tests/fixtures/synthetic_60s.AT2", "record"));
+  const auto rec = fixture_record();
   blockdyn::GroundMotion3d g;
   g.azimuth = 30;
   g.h.record = g.h2.record = rec;
@@ -288,8 +293,7 @@ TEST(Rigid3dContact, ARecordsListedRestExitsEqualTheFullSearch) {
 TEST(Rigid3dContact, PainleveAtACornerLandingStopsTheRunWithItsReason) {
   // A slender square column under twice the fixture along x falls and lands on a corner where
   // sticking would pull and lifting would sink: the run stops there (once it looped).
-  const auto rec = std::make_shared<const blockdyn::Accelerogram>(
-      blockdyn::load_accelerogram(std::string(BLOCKDYN_SOURCE_DIR) + "/tests/fixtures/synthetic_60s.AT2", "record"));
+  const auto rec = fixture_record();
   blockdyn::GroundMotion3d g;
   g.h.record = rec;
   g.h.scale = 2.0;

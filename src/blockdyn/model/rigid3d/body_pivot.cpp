@@ -5,8 +5,6 @@ namespace blockdyn {
 
 namespace {
 
-Vec3 times(const Mat3& a, const Vec3& v) { return a * v; }
-
 // The centroid's acceleration and the reaction once the angular acceleration is known.
 void complete_motion(PivotMotion& m, double mass, const Vec3& arm, const Vec3& omega, const Vec3& f) {
   m.accel = plus(cross(m.domega, arm), cross(omega, cross(omega, arm)));
@@ -47,7 +45,7 @@ PivotMotion point_pivot_motion(const Vec3& inertia, double mass, const Mat3& r, 
   // About the fixed point P: J Omega' + Omega x J Omega = s x (m R^T f), J the inertia about P.
   const Mat3 j = inertia_about(inertia, mass, s_body);
   const Vec3 om = transposed_times(r, omega);
-  const Vec3 torque = minus(cross(s_body, scaled(transposed_times(r, f), mass)), cross(om, times(j, om)));
+  const Vec3 torque = minus(cross(s_body, scaled(transposed_times(r, f), mass)), cross(om, j * om));
   PivotMotion m;
   m.domega = r * (solve_matrix(j) * torque);
   complete_motion(m, mass, r * s_body, omega, f);
@@ -61,13 +59,13 @@ PivotMotion line_pivot_motion(const Vec3& inertia, double mass, const Mat3& r, c
   const Mat3 j = inertia_about(inertia, mass, s_body);
   const Vec3 e_body = transposed_times(r, axis);
   const Vec3 arm = r * s_body;
-  const double je = dot(e_body, times(j, e_body));
+  const double je = dot(e_body, j * e_body);
   PivotMotion m;
   m.domega = scaled(axis, dot(axis, cross(arm, scaled(f, mass))) / je);
   complete_motion(m, mass, arm, omega, f);
   // The moment the line carries: dH_P/dt minus the applied force's moment about P.
   const Vec3 om = transposed_times(r, omega), dom = transposed_times(r, m.domega);
-  const Vec3 dh = r * plus(times(j, dom), cross(om, times(j, om)));
+  const Vec3 dh = r * plus(j * dom, cross(om, j * om));
   m.moment = minus(dh, cross(arm, scaled(f, mass)));
   return m;
 }
