@@ -32,6 +32,7 @@
 #include "blockdyn/integrate/hybrid_model.hpp"
 #include "blockdyn/integrate/integrator_options.hpp"
 #include "blockdyn/integrate/root_bracket.hpp"
+#include "blockdyn/integrate/run_observer.hpp"
 
 namespace blockdyn {
 
@@ -45,6 +46,7 @@ class HybridIntegrator {
   using Mode = typename Model::Mode;
   using State = Vec<N>;
   using Events = std::array<double, NE>;
+  using ObserverRef = RunObserver<Mode, N>;
 
   HybridIntegrator(const Model& model, IntegratorOptions opt)
       : model_(model), opt_(opt), high_order_(resolved_method(opt) == Method::Dop853) {
@@ -57,103 +59,20 @@ class HybridIntegrator {
 
   const StepperStats& stats() const { return stats_; }
 
+  // Runs from (t, mode, z) to t_end or an event that stops; t, mode and z are left where it ended.
   template <class Observer>
   RunStatus run(double& t, double t_end, Mode& mode, State& z, Observer& obs) {
-    model_.complete(mode, z);
-    // Within a step that ends at a breakpoint the input is evaluated on the step's side of it.
-    double t_clamp = std::numeric_limits<double>::infinity();
-    auto f = [&](double tt, const State& y, State& dy) { model_.rhs(std::fmin(tt, t_clamp), mode, y, dy); };
-    t_clamp_ = &t_clamp;
-    State k1, k7, y_new;
-    f(t, z, k1);
-    ++stats_.rhs_evals;
-    double h = initial_step(mode);
-    start_rates(t, mode, z, k1, h);
-    armed_.fill(true);
-    double err_old = 1e-4;
-    int zero_time_events = 0;
-    // Zero-duration events at one instant, across chatter resolutions: a resolution that does not
-    // resolve would otherwise loop there for ever.
-    int events_at_instant = 0;
-    DenseSegment<N> seg;
-    double t_break = next_breakpoint_of(model_, t, mode);
-    while (t < t_end) {
-      if (stats_.accepted + stats_.rejected >= opt_.max_steps) return RunStatus::MaxSteps;
-      const bool last = h >= t_end - t && t_end <= t_break;
-      const bool to_break = !last && h >= t_break - t;
-      const double h_wanted = h;
-      if (last) h = t_end - t;
-      if (to_break) h = t_break - t;
-      t_clamp = to_break ? std::nextafter(t_break, -INFINITY) : std::numeric_limits<double>::infinity();
-      const double err = attempt(f, t, h, z, k1, y_new, k7);
-      if (!(err <= 1.0)) {
-        if (const auto failure = shrink_rejected_step(err, t, h)) return *failure;
-        continue;
-      }
-      ++stats_.accepted;
-      restarting_ = false;
-      if (high_order_ && dop853_.stiffness() > 6.1) ++stats_.stiff_steps;
-      // The dense output costs DOP853 three more stages: computed only when the scan or an
-      // observer evaluates inside the step (else seg holds the cubic Hermite interpolant of the
-      // step ends, which observers may refine: DenseSegment::ensure_full()).
-      bool dense_done = false;
-      auto ensure_dense = [&] {
-        if (!dense_done) dense(f, t, h, z, y_new, k1, k7, seg);
-        dense_done = true;
-      };
-      if (!high_order_)
-        ensure_dense();
-      else
-        hermite_segment(t, h, z, y_new, k1, k7, seg);
-      const double t_next = last ? t_end : (to_break ? t_break : t + h);
-      State y_end = y_new;
-      model_.complete(mode, y_end);
-      values_and_rates(std::fmin(t_next, t_clamp), mode, y_end, k7, -(t_next - t), g_end_, gd_end_, gd_err_end_);
-      const auto hit = scan_events(seg, t, t_next, mode, ensure_dense);
-      if (observers_need_dense(obs)) ensure_dense();
-      // A step shortened to land on t_end or a breakpoint says little about the step size the
-      // solution allows: keep the size asked for before the shortening.
-      double h_new = next_step_size(err, h, err_old);
-      if (to_break || last) h_new = std::fmax(h_new, std::fmin(h_wanted, opt_.h_max));
-      if (!hit) {
-        if (!observe_step(obs, seg, t, t_next, mode, y_end, dense_done ? nullptr : &ensure_dense))
-          return RunStatus::ObserverStop;
-        t = t_next;
-        z = y_end;
-        k1 = k7;
-        keep_end_values();
-        h = cut_at_kink(t, mode, z, k1, h_new);
-        zero_time_events = 0;
-        events_at_instant = 0;
-        rearm_risen();
-        if (to_break) {
-          // The input may jump or kink here: let the model re-select its mode, restart.
-          t_clamp = std::numeric_limits<double>::infinity();
-          if (const auto end = restart_at_breakpoint(f, t, mode, z, k1, h, t_break, obs)) return *end;
-        }
-        continue;
-      }
-      // An event inside the step: keep the trajectory up to it, apply the transition, restart.
-      double te = hit->t;
-      State ze = z;
-      if (te > t && !step_to_event(f, t, t_next, hit->index, mode, z, k1, te, ze, seg, obs))
-        return RunStatus::ObserverStop;
-      zero_time_events = (te == t) ? zero_time_events + 1 : 0;
-      events_at_instant = (te == t) ? events_at_instant + 1 : 0;
-      if (events_at_instant > kMaxEventsAtInstant * opt_.chatter_limit) return RunStatus::Chatter;
-      model_.complete(mode, ze);
-      t_clamp = std::numeric_limits<double>::infinity();
-      t = te;
-      z = ze;
-      if (const auto end = apply_transition(t, hit->index, mode, z, obs)) return *end;
-      if (zero_time_events >= opt_.chatter_limit) {
-        if (const auto end = hold_chatter(t, mode, z, obs)) return *end;
-        zero_time_events = 0;
-      }
-      h = restart_after_event(f, t, mode, z, k1, h_new, t_break);
+    if constexpr (std::same_as<Observer, ObserverRef>) {
+      return run_observed(t, t_end, mode, z, obs);
+    } else {
+      ObserverRef ref(obs);
+      return run_observed(t, t_end, mode, z, ref);
     }
-    return RunStatus::ReachedEnd;
   }
+
+  // The run loop itself, compiled once per model (defined below the class, so not inline: a
+  // model's `extern template` declaration keeps other files from compiling it again).
+  RunStatus run_observed(double& t, double t_end, Mode& mode, State& z, ObserverRef& obs);
 
  private:
   // The event values and rates at the accepted step's end become those at the next step's start.
@@ -180,9 +99,9 @@ class HybridIntegrator {
 
   // Observers get an accepted step without an event (its end state given; ensure: how they get the
   // full dense output if the step has only its Hermite interpolant). False: one asked to stop.
-  template <class Observer, class Ensure>
-  bool observe_step(Observer& obs, DenseSegment<N>& seg, double t, double t_next, const Mode& mode, const State& y_end,
-                    Ensure* ensure) {
+  template <class Ensure>
+  bool observe_step(ObserverRef& obs, DenseSegment<N>& seg, double t, double t_next, const Mode& mode,
+                    const State& y_end, Ensure* ensure) {
     if (ensure) seg.set_refine([](void* e) { (*static_cast<Ensure*>(e))(); }, ensure);
     seg.end_state = &y_end;
     const bool go = obs.on_step(seg, t, t_next, mode);
@@ -193,9 +112,9 @@ class HybridIntegrator {
 
   // At an input breakpoint reached by a step: the model re-selects its mode (the input may jump
   // or kink), and the integration restarts from there.
-  template <class F, class Observer>
+  template <class F>
   std::optional<RunStatus> restart_at_breakpoint(F& f, double t, Mode& mode, State& z, State& k1, double& h,
-                                                 double& t_break, Observer& obs) {
+                                                 double& t_break, ObserverRef& obs) {
     if (const auto end = apply_transition(t, kBreakpoint, mode, z, obs)) return end;
     f(t, z, k1);
     ++stats_.rhs_evals;
@@ -209,9 +128,9 @@ class HybridIntegrator {
   // (forces switch on or off), so its interpolant is least accurate exactly there. One fresh step
   // from t to te stays on the smooth side and gives the event state ze the accuracy of an
   // ordinary step end; observers get the piece up to te (false: one asked to stop).
-  template <class F, class Observer>
+  template <class F>
   bool step_to_event(F& f, double t, double t_next, int index, const Mode& mode, const State& z, const State& k1,
-                     double& te, State& ze, DenseSegment<N>& seg, Observer& obs) {
+                     double& te, State& ze, DenseSegment<N>& seg, ObserverRef& obs) {
     State k7e;
     const double err_e = attempt(f, t, te - t, z, k1, ze, k7e);
     if (std::isfinite(err_e)) {
@@ -225,8 +144,7 @@ class HybridIntegrator {
 
   // Zero-duration events repeating at one instant: the model holds a mode (sticking, resting)
   // if it can; observers see the hold; the event functions are armed from the held mode.
-  template <class Observer>
-  std::optional<RunStatus> hold_chatter(double t, Mode& mode, State& z, Observer& obs) {
+  std::optional<RunStatus> hold_chatter(double t, Mode& mode, State& z, ObserverRef& obs) {
     const auto held = model_.resolve_chatter(t, mode, z);
     if (!held) return RunStatus::Chatter;
     EventInfo<Mode, N> hold{t, z, z, mode, held->next, -1, held->kind, held->stop};
@@ -257,8 +175,7 @@ class HybridIntegrator {
   // change the state; observers see it with the state before and after. Every event function is
   // armed again (one at zero fires at once unless it rises first). Returns the run's end status
   // when the model or an observer stops it.
-  template <class Observer>
-  std::optional<RunStatus> apply_transition(double t, int index, Mode& mode, State& z, Observer& obs) {
+  std::optional<RunStatus> apply_transition(double t, int index, Mode& mode, State& z, ObserverRef& obs) {
     const State z_before = z;
     const Transition<Mode> tr = model_.transition(t, mode, z, index);
     EventInfo<Mode, N> info{t, z, z_before, mode, tr.next, index, tr.kind, tr.stop};
@@ -318,17 +235,6 @@ class HybridIntegrator {
     values_and_rates(t, mode, z, k1, h, g_start_, gd_start_, gd_err_start_);
     remainder_known_ = false;
     restarting_ = true;
-  }
-
-  // Observers say whether they evaluate the dense output inside a step (`needs_dense()`,
-  // optional: without it they do).
-  template <class Observer>
-  static bool observers_need_dense(const Observer& obs) {
-    if constexpr (requires {
-                    { obs.needs_dense() } -> std::convertible_to<bool>;
-                  })
-      return obs.needs_dense();
-    return true;
   }
 
   // The cubic Hermite interpolant of the step's end values and rates (the first four terms of
@@ -717,5 +623,103 @@ class HybridIntegrator {
   int steps_since_samples_ = 0;
   const double* t_clamp_ = nullptr;  // the run's input-side clamp (see run())
 };
+
+template <HybridModel Model>
+RunStatus HybridIntegrator<Model>::run_observed(double& t, double t_end, Mode& mode, State& z, ObserverRef& obs) {
+  model_.complete(mode, z);
+  // Within a step that ends at a breakpoint the input is evaluated on the step's side of it.
+  double t_clamp = std::numeric_limits<double>::infinity();
+  auto f = [&](double tt, const State& y, State& dy) { model_.rhs(std::fmin(tt, t_clamp), mode, y, dy); };
+  t_clamp_ = &t_clamp;
+  State k1, k7, y_new;
+  f(t, z, k1);
+  ++stats_.rhs_evals;
+  double h = initial_step(mode);
+  start_rates(t, mode, z, k1, h);
+  armed_.fill(true);
+  double err_old = 1e-4;
+  int zero_time_events = 0;
+  // Zero-duration events at one instant, across chatter resolutions: a resolution that does not
+  // resolve would otherwise loop there for ever.
+  int events_at_instant = 0;
+  DenseSegment<N> seg;
+  double t_break = next_breakpoint_of(model_, t, mode);
+  while (t < t_end) {
+    if (stats_.accepted + stats_.rejected >= opt_.max_steps) return RunStatus::MaxSteps;
+    const bool last = h >= t_end - t && t_end <= t_break;
+    const bool to_break = !last && h >= t_break - t;
+    const double h_wanted = h;
+    if (last) h = t_end - t;
+    if (to_break) h = t_break - t;
+    t_clamp = to_break ? std::nextafter(t_break, -INFINITY) : std::numeric_limits<double>::infinity();
+    const double err = attempt(f, t, h, z, k1, y_new, k7);
+    if (!(err <= 1.0)) {
+      if (const auto failure = shrink_rejected_step(err, t, h)) return *failure;
+      continue;
+    }
+    ++stats_.accepted;
+    restarting_ = false;
+    if (high_order_ && dop853_.stiffness() > 6.1) ++stats_.stiff_steps;
+    // The dense output costs DOP853 three more stages: computed only when the scan or an
+    // observer evaluates inside the step (else seg holds the cubic Hermite interpolant of the
+    // step ends, which observers may refine: DenseSegment::ensure_full()).
+    bool dense_done = false;
+    auto ensure_dense = [&] {
+      if (!dense_done) dense(f, t, h, z, y_new, k1, k7, seg);
+      dense_done = true;
+    };
+    if (!high_order_)
+      ensure_dense();
+    else
+      hermite_segment(t, h, z, y_new, k1, k7, seg);
+    const double t_next = last ? t_end : (to_break ? t_break : t + h);
+    State y_end = y_new;
+    model_.complete(mode, y_end);
+    values_and_rates(std::fmin(t_next, t_clamp), mode, y_end, k7, -(t_next - t), g_end_, gd_end_, gd_err_end_);
+    const auto hit = scan_events(seg, t, t_next, mode, ensure_dense);
+    if (obs.needs_dense()) ensure_dense();
+    // A step shortened to land on t_end or a breakpoint says little about the step size the
+    // solution allows: keep the size asked for before the shortening.
+    double h_new = next_step_size(err, h, err_old);
+    if (to_break || last) h_new = std::fmax(h_new, std::fmin(h_wanted, opt_.h_max));
+    if (!hit) {
+      if (!observe_step(obs, seg, t, t_next, mode, y_end, dense_done ? nullptr : &ensure_dense))
+        return RunStatus::ObserverStop;
+      t = t_next;
+      z = y_end;
+      k1 = k7;
+      keep_end_values();
+      h = cut_at_kink(t, mode, z, k1, h_new);
+      zero_time_events = 0;
+      events_at_instant = 0;
+      rearm_risen();
+      if (to_break) {
+        // The input may jump or kink here: let the model re-select its mode, restart.
+        t_clamp = std::numeric_limits<double>::infinity();
+        if (const auto end = restart_at_breakpoint(f, t, mode, z, k1, h, t_break, obs)) return *end;
+      }
+      continue;
+    }
+    // An event inside the step: keep the trajectory up to it, apply the transition, restart.
+    double te = hit->t;
+    State ze = z;
+    if (te > t && !step_to_event(f, t, t_next, hit->index, mode, z, k1, te, ze, seg, obs))
+      return RunStatus::ObserverStop;
+    zero_time_events = (te == t) ? zero_time_events + 1 : 0;
+    events_at_instant = (te == t) ? events_at_instant + 1 : 0;
+    if (events_at_instant > kMaxEventsAtInstant * opt_.chatter_limit) return RunStatus::Chatter;
+    model_.complete(mode, ze);
+    t_clamp = std::numeric_limits<double>::infinity();
+    t = te;
+    z = ze;
+    if (const auto end = apply_transition(t, hit->index, mode, z, obs)) return *end;
+    if (zero_time_events >= opt_.chatter_limit) {
+      if (const auto end = hold_chatter(t, mode, z, obs)) return *end;
+      zero_time_events = 0;
+    }
+    h = restart_after_event(f, t, mode, z, k1, h_new, t_break);
+  }
+  return RunStatus::ReachedEnd;
+}
 
 }  // namespace blockdyn
