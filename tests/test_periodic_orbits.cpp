@@ -148,7 +148,8 @@ TEST(PeriodicOrbits, SymmetricOrbitsConvergeToTheLinearisedClosedForm) {
 TEST(PeriodicOrbits, MonodromyMultipliersMatchTheShootingJacobian) {
   for (double beta : {1.2, 2.2, 2.6}) {
     const RockingForcing f = forcing(0.15, beta, 2.0, 0.9);
-    const auto orbits = find_periodic_orbits(f, OrbitType{1, 1, true}, orbit_guesses(f, OrbitType{1, 1, true}));
+    const auto orbits = find_periodic_orbits(f, OrbitType{1, 1, true},
+                                             orbit_guesses(f, OrbitType{1, 1, true}, ShootingOptions{}.integrator));
     ASSERT_FALSE(orbits.empty());
     for (const auto& o : orbits) {
       // The determinant is e^4 (two impacts, each det e^2; the flow preserves area).
@@ -167,7 +168,8 @@ TEST(PeriodicOrbits, MonodromyMultipliersMatchTheShootingJacobian) {
 // every impact, renormalised every period) equals log max |multiplier| / period.
 TEST(TangentLyapunov, StableOrbitExponentIsTheFloquetRate) {
   const RockingForcing f = forcing(0.15, 2.2, 2.0, 0.9);
-  const auto orbits = find_periodic_orbits(f, OrbitType{1, 1, true}, orbit_guesses(f, OrbitType{1, 1, true}));
+  const auto orbits = find_periodic_orbits(f, OrbitType{1, 1, true},
+                                           orbit_guesses(f, OrbitType{1, 1, true}, ShootingOptions{}.integrator));
   const PeriodicOrbit* st = nullptr;
   for (const auto& o : orbits)
     if (o.stable) st = &o;
@@ -203,7 +205,8 @@ TEST(TangentLyapunov, StableOrbitExponentIsTheFloquetRate) {
 TEST(PeriodicOrbits, ContinuationFindsTheFoldAndSymmetryBreakingOfTheClosedForm) {
   const double alpha = 0.04, omega = 2.0, e = 0.9;
   const RockingForcing f = forcing(alpha, 1.2, omega, e);
-  const auto orbits = find_periodic_orbits(f, OrbitType{1, 1, true}, orbit_guesses(f, OrbitType{1, 1, true}));
+  const auto orbits = find_periodic_orbits(f, OrbitType{1, 1, true},
+                                           orbit_guesses(f, OrbitType{1, 1, true}, ShootingOptions{}.integrator));
   ASSERT_EQ(orbits.size(), 2u);
   const PeriodicOrbit& upper = orbits.back();
   ASSERT_TRUE(upper.stable);

@@ -176,8 +176,9 @@ StudyReport orbits_report(const OrbitSetup& st, const OrbitsAtPoint& at, const S
   if (request.asked("table"))
     rep.series.push_back({"table", table_of([&](std::ostream& os) { write_orbits_csv(os, st.rf, orbits); })});
   if (request.figure)
-    rep.series.push_back(
-        {"trajectories", table_of([&](std::ostream& os) { write_orbit_trajectories_csv(os, st.rf, orbits); })});
+    rep.series.push_back({"trajectories", table_of([&](std::ostream& os) {
+                            write_orbit_trajectories_csv(os, st.rf, orbits, st.so.integrator);
+                          })});
   char title[256];
   std::snprintf(title, sizeof title, "%s, K_s=%.4g g, omega=%.4g", st.title.c_str(), st.rf.ks, st.rf.omega);
   rep.plot_script = "plot_periodic_orbits.py";

@@ -5,7 +5,7 @@
 #include <stdexcept>
 
 #include "blockdyn/base/number_text.hpp"
-#include "blockdyn/integrate/hybrid_integrator.hpp"
+#include "blockdyn/simulation/simulation.hpp"
 
 namespace blockdyn {
 
@@ -14,7 +14,9 @@ namespace {
 using Model = BodyOnGround;
 
 // Watches the run: rows at the output clock, events, the energy balance at every step end.
-struct Body3dWatch {
+class Body3dWatch final : public Observer<Model> {
+ public:
+  Body3dWatch(const Model& m, const Body3dRunOptions& opt, Body3dResult& r) : model(m), o(opt), res(r) {}
   const Model& model;
   const Body3dRunOptions& o;
   Body3dResult& res;
@@ -32,7 +34,7 @@ struct Body3dWatch {
     }
     (void)t;
   }
-  bool on_step(const DenseSegment<Model::kDim>& seg, double t0, double t1, const Model::Mode& m) {
+  bool on_segment(const Model&, const Segment& seg, double t0, double t1, const Model::Mode& m) override {
     Model::State y;
     if (o.output_interval > 0 && o.on_sample) {
       while (next_row <= t1) {
@@ -51,7 +53,7 @@ struct Body3dWatch {
     }
     return true;
   }
-  bool on_event(const EventInfo<Model::Mode, Model::kDim>& e) {
+  bool on_event(const Model&, const Event& e) override {
     const auto kind = Body3dEventKind(e.kind);
     // A breakpoint of the ground motion (every sample of a record) is no event of the body's.
     if (kind == Body3dEventKind::GroundBreak && !e.stop) return true;
@@ -98,7 +100,6 @@ Body3dResult simulate_body3d(const BodyOnGround& model, BodyOnGround::State z, c
   watch.row(0, mode, z);
   watch.track(0, z);
   watch.next_row = o.output_interval;
-  HybridIntegrator<Model> integ(model, o.integ);
   // A body standing where rest fails leaves it at once (the transition the breakpoint would make).
   Transition<Model::Mode> start{mode, false, int(Body3dEventKind::Mode)};
   if (mode.contact == BodyContact::Rest) start = model.transition(t, mode, z, kBreakpoint);
@@ -108,8 +109,12 @@ Body3dResult simulate_body3d(const BodyOnGround& model, BodyOnGround::State z, c
   } else {
     if (start.next.contact != mode.contact) res.first_uplift_time = 0;
     mode = start.next;
-    res.integrator = integ.run(t, o.t_end, mode, z, watch);
-    res.steps = integ.stats().accepted;
+    Simulation<Model> sim(model, o.integ, t, mode, z);
+    res.integrator = sim.advance(o.t_end, watch);
+    res.steps = sim.stats().accepted;
+    t = sim.t();
+    mode = sim.mode();
+    z = sim.state();
     res.status = res.overturn_time >= 0 ? "overturned" : res.integrator == RunStatus::ReachedEnd ? "t_end" : "invalid";
     if (res.status == "invalid" && res.stop_reason.empty())
       res.stop_reason = std::string("the integration stopped: ") + to_string(res.integrator);

@@ -5,7 +5,7 @@
 // time-stepping windows: where the event-driven scheme cannot go on (impacts that accumulate
 // without settling, a contact problem with no consistent mode: friction chatter), the run hands
 // over to Moreau-Jean time-stepping (model/assembly/moreau_jean.hpp) from the same state, and
-// takes the events back once the contacts have kept their states for kQuietSteps steps. Both
+// takes the events back once the contacts have kept their states for a while (moreau_jean_stepping.hpp). Both
 // strategies feed the same observers: a time-stepping step is a segment (the cubic Hermite
 // interpolant of its end states: exact at the step ends, as the scheme is), its contact changes
 // are events at the step's end. The windows are reported (events `time_stepping` and
@@ -25,9 +25,6 @@ struct TimeSteppingWindows {
   // How the steps' contact problems were solved (moreau_jean.hpp).
   long direct = 0, lemke = 0, gauss_seidel = 0, sweeps = 0, active_set_iterations = 0;
 };
-
-// Time-stepping steps without a contact change before the events take over again.
-inline constexpr int kQuietSteps = 50;
 
 template <int MaxBlocks>
 RunOutcome<RigidAssemblyModel<MaxBlocks>> run_rigid_assembly(const RigidAssemblyModel<MaxBlocks>& m,

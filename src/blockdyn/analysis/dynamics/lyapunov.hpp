@@ -38,7 +38,7 @@
 #include <string>
 #include <vector>
 
-#include "blockdyn/integrate/hybrid_integrator.hpp"
+#include "blockdyn/simulation/simulation.hpp"
 
 namespace blockdyn {
 
@@ -249,17 +249,17 @@ class LyapunovEstimator {
   using PMode = typename Pair::Mode;
   using PState = typename Pair::State;
 
-  struct Quiet {  // remembers which copy a stopping event belonged to
+  struct Quiet final : Observer<Pair> {  // remembers which copy a stopping event belonged to
     int stopped_copy = -1;
-    bool on_step(const DenseSegment<Pair::kDim>&, double, double, const PMode&) { return true; }
-    bool on_event(const EventInfo<PMode, Pair::kDim>& e) {
+    bool on_event(const Pair&, const EventInfo<PMode, Pair::kDim>& e) override {
       if (e.stop) stopped_copy = e.index < NE ? 0 : 1;
       return true;
     }
   };
 
   // Stops once both copies crossed the section (or the crossings stopped corresponding).
-  struct Crossings {
+  struct Crossings final : Observer<Pair> {
+    Crossings(const A* a, double gap) : ad(a), max_gap(gap) {}
     const A* ad;
     double max_gap;
     int stopped_copy = -1;
@@ -273,12 +273,12 @@ class LyapunovEstimator {
       mismatch = false;
       stopped_copy = -1;
     }
-    bool on_step(const DenseSegment<Pair::kDim>&, double, double t1, const PMode&) {
+    bool on_segment(const Pair&, const DenseSegment<Pair::kDim>&, double, double t1, const PMode&) override {
       for (int c = 0; c < 2; ++c)
         if (count[c] == 1 && count[1 - c] == 0 && t1 - t[c] > max_gap) mismatch = true;
       return !mismatch;
     }
-    bool on_event(const EventInfo<PMode, Pair::kDim>& e) {
+    bool on_event(const Pair&, const EventInfo<PMode, Pair::kDim>& e) override {
       const int c = e.index < NE ? 0 : 1;
       if (e.stop) {
         stopped_copy = c;
@@ -308,15 +308,15 @@ class LyapunovEstimator {
 
   void run_time(Mode mr, State zr, Mode mp, State zp, double d_start, LyapunovResult& res) const {
     const Pair pair(model_);
-    HybridIntegrator<Pair> integ(pair, opt_.integrator);
     double t = opt_.t_start;
     PMode md{mr, mp};
     PState z = Pair::join(zr, zp);
+    Simulation<Pair> sim(pair, opt_.integrator, t, md, z);
     Quiet q;
     double t_target = std::fmin(t + opt_.interval, opt_.t_end);
     int deferred = 0;
     while (t < opt_.t_end) {
-      const RunStatus st = integ.run(t, t_target, md, z, q);
+      const RunStatus st = sim.advance_from(t, md, z, t_target, q);
       res.t_final = t;
       if (st != RunStatus::ReachedEnd) return stop(res, q.stopped_copy, st);
       if (!ad_.compatible(md.a, md.b) && t < opt_.t_end) {
@@ -343,14 +343,14 @@ class LyapunovEstimator {
 
   void run_section(Mode mr, State zr, Mode mp, State zp, double d_start, LyapunovResult& res) const {
     const Pair pair(model_);
-    HybridIntegrator<Pair> integ(pair, opt_.integrator);
     double t = opt_.t_start;
     PMode md{mr, mp};
     PState z = Pair::join(zr, zp);
-    Crossings cr{&ad_, opt_.max_gap};
+    Simulation<Pair> sim(pair, opt_.integrator, t, md, z);
+    Crossings cr(&ad_, opt_.max_gap);
     while (t < opt_.t_end) {
       cr.reset();
-      const RunStatus st = integ.run(t, opt_.t_end, md, z, cr);
+      const RunStatus st = sim.advance_from(t, md, z, opt_.t_end, cr);
       res.t_final = t;
       if (st == RunStatus::ReachedEnd) return;
       if (st != RunStatus::ObserverStop || cr.stopped_copy >= 0) return stop(res, cr.stopped_copy, st);

@@ -24,6 +24,7 @@
 
 #include "blockdyn/analysis/dynamics/lyapunov.hpp"
 #include "blockdyn/analysis/dynamics/variational_model.hpp"
+#include "blockdyn/simulation/simulation.hpp"
 
 namespace blockdyn {
 
@@ -86,15 +87,16 @@ namespace detail {
 // The orbit's observer: passes events to the watch, counts them, remembers a stopping event's
 // kind and, when asked (until_moving), stops at the first mode that moves.
 template <class VM, class Traits, class Watch>
-struct TangentObserver {
-  using Mode = typename VM::Mode;
+class TangentObserver final : public Observer<VM> {
+ public:
+  BLOCKDYN_OBSERVER_TYPES(VM);
+  TangentObserver(Watch& watch, bool until_first_motion) : w(watch), until_moving(until_first_motion) {}
   Watch& w;
   bool until_moving;
   bool moved = false;
   int stop_kind = 0;
   long events = 0;
-  bool on_step(const DenseSegment<VM::kDim>&, double, double, const Mode&) { return true; }
-  bool on_event(const EventInfo<Mode, VM::kDim>& e) {
+  bool on_event(const VM&, const Event& e) override {
     w.on_event(e);
     ++events;
     if (e.stop) {
@@ -126,10 +128,16 @@ bool tangent_transient(const M& m, typename M::Mode& md, typename VM::State& Z, 
                        const TangentLyapunovOptions& o, Watch& watch, TangentLyapunovResult& res) {
   using Obs = TangentObserver<VM, Traits, Watch>;
   const VM transient(m);
-  HybridIntegrator<VM> integ(transient, o.integrator);
-  Obs ob{watch, false, false, 0, 0};
+  Simulation<VM> sim(transient, o.integrator, t, md, Z);
+  auto leave = [&](RunStatus st) {
+    t = sim.t();
+    md = sim.mode();
+    Z = sim.state();
+    return st;
+  };
+  Obs ob(watch, false);
   if (o.t_measure > t) {
-    const RunStatus st = integ.run(t, o.t_measure, md, Z, ob);
+    const RunStatus st = leave(sim.advance(o.t_measure, ob));
     if (st != RunStatus::ReachedEnd) {
       mark_stopped(res, st, ob, t);
       res.exponent = NAN;
@@ -137,8 +145,8 @@ bool tangent_transient(const M& m, typename M::Mode& md, typename VM::State& Z, 
     }
   }
   if (!Traits::moving(md)) {
-    Obs mv{watch, true, false, 0, 0};
-    const RunStatus st = integ.run(t, o.t_end, md, Z, mv);
+    Obs mv(watch, true);
+    const RunStatus st = leave(sim.advance(o.t_end, mv));
     if (st == RunStatus::ReachedEnd) {
       res.status = TangentStatus::NeverMoved;
       res.t_final = t;
@@ -197,14 +205,16 @@ TangentLyapunovResult tangent_lyapunov(const M& m, typename M::Mode md, Vec<M::k
   }
   res.t_tangent = t;
   res.history.reserve(std::size_t(std::fmin(1e6, (o.t_end - t) / o.interval + 2)));
-  HybridIntegrator<VM> integ(vm, o.integrator);
-  detail::TangentObserver<VM, Traits, Watch> ob{watch, false, false, 0, 0};
+  Simulation<VM> sim(vm, o.integrator, t, md, Z);
+  detail::TangentObserver<VM, Traits, Watch> ob(watch, false);
   while (t < o.t_end) {
     const double target = std::fmin(t + o.interval, o.t_end);
-    const RunStatus st = integ.run(t, target, md, Z, ob);
+    const RunStatus st = sim.advance(target, ob);
+    t = sim.t();
+    typename VM::State& state = sim.state();
     res.events = ob.events;
     res.stats = vm.stats();
-    typename VM::Base v = VM::tangent(Z, 0);
+    typename VM::Base v = VM::tangent(state, 0);
     const double d = vm.norm(v);
     if (d == 0.0) {
       res.status = TangentStatus::Superstable;
@@ -232,7 +242,7 @@ TangentLyapunovResult tangent_lyapunov(const M& m, typename M::Mode md, Vec<M::k
     // Components outside the metric (accumulated works, a neutral translation) never feed back;
     // left alone they would be amplified by every renormalisation of a contracting tangent.
     for (std::size_t i = 0; i < VM::N; ++i) v[i] = metric[i] ? v[i] / d : 0.0;
-    VM::set_tangent(Z, 0, v);
+    VM::set_tangent(state, 0, v);
   }
   res.t_final = t;
   return res;
@@ -266,17 +276,14 @@ TangentMap<M, K, Traits> tangent_map(const M& m, typename M::Mode md, const Vec<
   typename VM::State Z{};
   VM::set_base(Z, z);
   for (int k = 0; k < K; ++k) VM::set_tangent(Z, k, dirs[k]);
-  struct Quiet {
-    bool on_step(const DenseSegment<VM::kDim>&, double, double, const typename M::Mode&) { return true; }
-    bool on_event(const EventInfo<typename M::Mode, VM::kDim>&) { return true; }
-  } q;
+  Observer<VM> quiet;
   TangentMap<M, K, Traits> out;
-  HybridIntegrator<VM> integ(vm, opt);
-  out.t = t0;
-  out.status = integ.run(out.t, t1, md, Z, q);
-  out.mode = md;
-  out.z = VM::base(Z);
-  for (int k = 0; k < K; ++k) out.v[k] = VM::tangent(Z, k);
+  Simulation<VM> sim(vm, opt, t0, md, Z);
+  out.status = sim.advance(t1, quiet);
+  out.t = sim.t();
+  out.mode = sim.mode();
+  out.z = VM::base(sim.state());
+  for (int k = 0; k < K; ++k) out.v[k] = VM::tangent(sim.state(), k);
   out.stats = vm.stats();
   return out;
 }

@@ -8,6 +8,7 @@
 #include "blockdyn/analysis/dynamics/lyapunov.hpp"
 #include "blockdyn/analysis/forced/block_tangent_traits.hpp"
 #include "blockdyn/model/assembly/assembly_model.hpp"
+#include "blockdyn/simulation/simulation.hpp"
 
 namespace blockdyn {
 
@@ -77,19 +78,12 @@ void run_twin(const M& m, typename M::Mode md, Vec<M::kDim> z, double t0, const 
   m.complete(md, zc);
   typename Pair::Mode pm{md, md};
   auto Z = Pair::join(z, zc);
-  struct Quiet {
-    bool stopped = false;
-    bool on_step(const DenseSegment<Pair::kDim>&, double, double, const typename Pair::Mode&) { return true; }
-    bool on_event(const EventInfo<typename Pair::Mode, Pair::kDim>& e) {
-      stopped = stopped || e.stop;
-      return true;
-    }
-  } q;
-  HybridIntegrator<Pair> hi(pair, o.integrator);
+  Observer<Pair> quiet;
   double t = t0;
+  Simulation<Pair> sim(pair, o.integrator, t, pm, Z);
   out.twin.push_back({t, separation(m, z, zc)});
   while (t < o.t_end) {
-    const RunStatus st = hi.run(t, std::fmin(t + o.interval, o.t_end), pm, Z, q);
+    const RunStatus st = sim.advance_from(t, pm, Z, std::fmin(t + o.interval, o.t_end), quiet);
     Vec<M::kDim> a, b;
     Pair::split(Z, a, b);
     out.twin.push_back({t, separation(m, a, b)});
@@ -111,20 +105,20 @@ ForcedLyapunovOutcome run_forced(const M& m, typename M::Mode md, Vec<M::kDim> z
   Watch<M> w{&read, &out, &t_stop};
   // The transient (and the wait for motion) on the orbit alone.
   double t = 0.0;
-  struct Transient {
+  struct Transient final : Observer<M> {
+    Transient(Watch<M>& watch, double from, bool stop_moving) : w(watch), t_from(from), stop_when_moving(stop_moving) {}
     Watch<M>& w;
     double t_from;
     bool stop_when_moving;
-    bool on_step(const DenseSegment<M::kDim>&, double, double, const typename M::Mode&) { return true; }
-    bool on_event(const EventInfo<typename M::Mode, M::kDim>& e) {
+    bool on_event(const M&, const EventInfo<typename M::Mode, M::kDim>& e) override {
       w.on_event(e);
       return !(stop_when_moving && e.t >= t_from && TangentTraits<M>::moving(e.to));
     }
   };
-  HybridIntegrator<M> hi(m, o.integrator);
+  Simulation<M> sim(m, o.integrator, t, md, z);
   if (o.t_transient > 0) {
-    Transient tr{w, 0.0, false};
-    const RunStatus st = hi.run(t, o.t_transient, md, z, tr);
+    Transient tr(w, 0.0, false);
+    const RunStatus st = sim.advance_from(t, md, z, o.t_transient, tr);
     if (st != RunStatus::ReachedEnd) {
       out.tangent.status = st == RunStatus::ModelStop ? TangentStatus::Stopped : TangentStatus::Failed;
       out.tangent.run_status = st;
@@ -134,8 +128,8 @@ ForcedLyapunovOutcome run_forced(const M& m, typename M::Mode md, Vec<M::kDim> z
     }
   }
   if (!TangentTraits<M>::moving(md)) {
-    Transient tr{w, t, true};
-    const RunStatus st = hi.run(t, o.t_end, md, z, tr);
+    Transient tr(w, t, true);
+    const RunStatus st = sim.advance_from(t, md, z, o.t_end, tr);
     if (st == RunStatus::ReachedEnd) {
       out.tangent.status = TangentStatus::NeverMoved;
       out.tangent.t_final = t;

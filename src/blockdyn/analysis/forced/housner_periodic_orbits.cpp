@@ -10,8 +10,8 @@
 #include "blockdyn/analysis/dynamics/tangent_lyapunov.hpp"
 #include "blockdyn/analysis/forced/block_tangent_traits.hpp"
 #include "blockdyn/analysis/forced/linear_rocking_orbits.hpp"
-#include "blockdyn/integrate/hybrid_integrator.hpp"
 #include "blockdyn/model/rigid_ground/housner_block.hpp"
+#include "blockdyn/simulation/simulation.hpp"
 
 namespace blockdyn {
 
@@ -43,13 +43,14 @@ HousnerBlock make_block(const RockingForcing& f) {
   return HousnerBlock(f.shape, f.e(), g);
 }
 
-struct PassObserver {
+struct PassObserver final : Observer<HousnerBlock> {
+  PassObserver(int n, double start, std::vector<OrbitImpact>* out) : wanted(n), t0(start), impacts(out) {}
   int wanted;
   double t0;
   std::vector<OrbitImpact>* impacts;
   double max_abs = 0;
   std::string failure;
-  bool on_step(const DenseSegment<HousnerBlock::kDim>& seg, double a, double b, const HousnerMode&) {
+  bool on_segment(const HousnerBlock&, const Segment& seg, double a, double b, const HousnerMode&) override {
     HousnerBlock::State y;
     for (int k = 1; k <= 8; ++k) {
       seg.eval(a + (b - a) * k / 8.0, y);
@@ -57,7 +58,7 @@ struct PassObserver {
     }
     return true;
   }
-  bool on_event(const EventInfo<HousnerMode, HousnerBlock::kDim>& e) {
+  bool on_event(const HousnerBlock&, const Event& e) override {
     if (e.stop) {
       failure = e.kind == int(RigidEventKind::Overturn) ? "overturn" : "outside the model";
       return false;
@@ -95,11 +96,10 @@ ImpactMapPass impact_map_pass(const RockingForcing& f, const OrbitType& type, do
   HousnerBlock::State z{0.0, u * ap, 0.0, 0.0};
   HousnerMode md{Mechanism::Rock, 1, false};
   const int wanted = type.symmetric ? type.m : 2 * type.m;
-  PassObserver obs{wanted, t0, &out.impacts, 0.0, {}};
-  HybridIntegrator<HousnerBlock> hi(model, integ);
-  double t = t0;
+  PassObserver obs(wanted, t0, &out.impacts);
+  Simulation<HousnerBlock> sim(model, integ, t0, md, z);
   const double t_limit = t0 + (type.n + 2) * kTwoPi / Om;
-  const RunStatus st = hi.run(t, t_limit, md, z, obs);
+  const RunStatus st = sim.advance(t_limit, obs);
   out.max_abs_rotation = obs.max_abs;
   if (int(out.impacts.size()) < wanted) {
     out.failure = !obs.failure.empty()          ? obs.failure
@@ -148,13 +148,11 @@ void orbit_monodromy(const RockingForcing& f, const OrbitType& type, PeriodicOrb
   HousnerMode md{Mechanism::Rock, 1, false};
   // Base point half-way to the first impact (the stroboscopic map is smooth there).
   const double t_mid = t0 + 0.5 * orbit.impacts.front().t;
-  struct Quiet {
-    bool on_step(const DenseSegment<HousnerBlock::kDim>&, double, double, const HousnerMode&) { return true; }
-    bool on_event(const EventInfo<HousnerMode, HousnerBlock::kDim>&) { return true; }
-  } q;
-  HybridIntegrator<HousnerBlock> hi(model, integ);
-  double t = t0;
-  if (hi.run(t, t_mid, md, z, q) != RunStatus::ReachedEnd) return;
+  Observer<HousnerBlock> quiet;
+  Simulation<HousnerBlock> sim(model, integ, t0, md, z);
+  if (sim.advance(t_mid, quiet) != RunStatus::ReachedEnd) return;
+  md = sim.mode();
+  z = sim.state();
   std::array<HousnerBlock::State, 2> dirs{};
   dirs[0][HousnerBlock::kTheta] = 1.0;
   dirs[1][HousnerBlock::kOmega] = p;
@@ -257,7 +255,7 @@ PeriodicOrbit find_periodic_orbit(const RockingForcing& f, const OrbitType& type
 }
 
 std::vector<std::array<double, 2>> orbit_guesses(const RockingForcing& f, const OrbitType& type,
-                                                 double settle_periods) {
+                                                 const IntegratorOptions& integ, double settle_periods) {
   validate(f);
   validate(type);
   std::vector<std::array<double, 2>> g;
@@ -278,11 +276,11 @@ std::vector<std::array<double, 2>> orbit_guesses(const RockingForcing& f, const 
       z[HousnerBlock::kOmega] = 0.5 * ap;
       md = model.initial_mode(t0, z);
     }
-    struct Last {
+    struct Last final : Observer<HousnerBlock> {
+      explicit Last(double from) : t_from(from) {}
       double t_from;
       double t = -1, rate = 0;
-      bool on_step(const DenseSegment<HousnerBlock::kDim>&, double, double, const HousnerMode&) { return true; }
-      bool on_event(const EventInfo<HousnerMode, HousnerBlock::kDim>& e) {
+      bool on_event(const HousnerBlock&, const Event& e) override {
         if (e.stop) return false;
         if (e.index == HousnerBlock::kEvImpact && e.t >= t_from && e.z[HousnerBlock::kOmega] > 0) {
           t = e.t;
@@ -291,10 +289,9 @@ std::vector<std::array<double, 2>> orbit_guesses(const RockingForcing& f, const 
         }
         return true;
       }
-    } last{t0 + settle_periods * T, -1, 0};
-    HybridIntegrator<HousnerBlock> hi(model, IntegratorOptions{1e-10, 1e-12});
-    double t = t0;
-    hi.run(t, t0 + (settle_periods + 2.0 * type.n + 2) * T, md, z, last);
+    } last(t0 + settle_periods * T);
+    Simulation<HousnerBlock> sim(model, integ, t0, md, z);
+    sim.advance(t0 + (settle_periods + 2.0 * type.n + 2) * T, last);
     if (last.t >= 0) g.push_back({wrap_angle(Om * last.t), last.rate / ap});
   }
   return g;

@@ -99,9 +99,9 @@ void orbit_monodromy(const RockingForcing& f, const OrbitType& type, PeriodicOrb
 
 // Starting guesses: symmetric (1, n): the two orbits of the linearised model (closed form);
 // otherwise the impact reached after `settle_periods` forcing periods of a run from rest (or
-// from theta' = u at phase 0 if the block does not uplift).
+// from theta' = u at phase 0 if the block does not uplift), integrated with `integ`.
 std::vector<std::array<double, 2>> orbit_guesses(const RockingForcing& f, const OrbitType& type,
-                                                 double settle_periods = 60);
+                                                 const IntegratorOptions& integ, double settle_periods = 60);
 
 // Every distinct converged orbit from the guesses (duplicates within 1e-6 removed), sorted by u.
 std::vector<PeriodicOrbit> find_periodic_orbits(const RockingForcing& f, const OrbitType& type,

@@ -6,8 +6,8 @@
 
 #include "blockdyn/analysis/forced/linear_rocking_orbits.hpp"
 #include "blockdyn/analysis/sweep/parallel_map.hpp"
-#include "blockdyn/integrate/hybrid_integrator.hpp"
 #include "blockdyn/model/rigid_ground/housner_block.hpp"
+#include "blockdyn/simulation/simulation.hpp"
 
 namespace blockdyn {
 
@@ -37,7 +37,7 @@ std::vector<OrbitRegionPoint> orbit_region_map(const RockingForcing& base, const
           RockingForcing f = base;
           f.ks = pt.ks = axis(o.ks_min, o.ks_max, o.ks_points, ki);
           f.omega = pt.omega = axis(o.omega_min, o.omega_max, o.omega_points, int(wi));
-          std::vector<std::array<double, 2>> guesses = orbit_guesses(f, type);
+          std::vector<std::array<double, 2>> guesses = orbit_guesses(f, type, o.shooting.integrator);
           guesses.insert(guesses.end(), carried.begin(), carried.end());
           const auto found = find_periodic_orbits(f, type, guesses, o.shooting);
           carried.clear();
@@ -69,7 +69,8 @@ std::vector<OrbitRegionPoint> orbit_region_map(const RockingForcing& base, const
   return pts;
 }
 
-OrbitSamples orbit_trajectory(const RockingForcing& f, const PeriodicOrbit& orbit, int samples) {
+OrbitSamples orbit_trajectory(const RockingForcing& f, const PeriodicOrbit& orbit, const IntegratorOptions& integ,
+                              int samples) {
   OrbitSamples out;
   if (!orbit.converged || samples < 2) return out;
   GroundMotion g;
@@ -79,12 +80,13 @@ OrbitSamples orbit_trajectory(const RockingForcing& f, const PeriodicOrbit& orbi
   const double t0 = orbit.phase / f.Omega();
   HousnerBlock::State z{0.0, orbit.velocity * f.alpha() * f.p(), 0.0, 0.0};
   HousnerMode md{Mechanism::Rock, 1, false};
-  struct Sampler {
+  struct Sampler final : Observer<HousnerBlock> {
+    Sampler(double start, double step, int count, OrbitSamples* o) : t0(start), dt(step), n(count), out(o) {}
     double t0, dt;
     int n;
     OrbitSamples* out;
     int next = 0;
-    bool on_step(const DenseSegment<HousnerBlock::kDim>& seg, double a, double b, const HousnerMode&) {
+    bool on_segment(const HousnerBlock&, const Segment& seg, double a, double b, const HousnerMode&) override {
       HousnerBlock::State y;
       while (next < n && t0 + next * dt <= b) {
         const double t = t0 + next * dt;
@@ -98,11 +100,9 @@ OrbitSamples orbit_trajectory(const RockingForcing& f, const PeriodicOrbit& orbi
       }
       return true;
     }
-    bool on_event(const EventInfo<HousnerMode, HousnerBlock::kDim>&) { return true; }
-  } s{t0, orbit.period / (samples - 1), samples, &out};
-  HybridIntegrator<HousnerBlock> hi(m, IntegratorOptions{1e-10, 1e-12});
-  double t = t0;
-  hi.run(t, t0 + orbit.period * (1 + 1e-12), md, z, s);
+  } s(t0, orbit.period / (samples - 1), samples, &out);
+  Simulation<HousnerBlock> sim(m, integ, t0, md, z);
+  sim.advance(t0 + orbit.period * (1 + 1e-12), s);
   return out;
 }
 

@@ -40,6 +40,7 @@ std::vector<OrbitRegionPoint> orbit_region_map(const RockingForcing& base, const
 struct OrbitSamples {
   std::vector<double> t, theta, rate;
 };
-OrbitSamples orbit_trajectory(const RockingForcing& f, const PeriodicOrbit& orbit, int samples = 400);
+OrbitSamples orbit_trajectory(const RockingForcing& f, const PeriodicOrbit& orbit, const IntegratorOptions& integ,
+                              int samples = 400);
 
 }  // namespace blockdyn

@@ -69,7 +69,7 @@ OrbitsAtPoint orbits_at_point(const RockingForcing& f, const OrbitType& type, co
   if (guess)
     guesses.push_back(*guess);
   else
-    guesses = orbit_guesses(f, type);
+    guesses = orbit_guesses(f, type, so.integrator);
   OrbitsAtPoint r;
   r.orbits = find_periodic_orbits(f, type, guesses, so);
   const double alpha = f.alpha();
@@ -105,10 +105,11 @@ void write_orbits_csv(std::ostream& os, const RockingForcing& f, const std::vect
   }
 }
 
-void write_orbit_trajectories_csv(std::ostream& os, const RockingForcing& f, const std::vector<PeriodicOrbit>& orbits) {
+void write_orbit_trajectories_csv(std::ostream& os, const RockingForcing& f, const std::vector<PeriodicOrbit>& orbits,
+                                  const IntegratorOptions& integ) {
   os << "orbit,stable,t,theta,rate\n";
   for (std::size_t k = 0; k < orbits.size(); ++k) {
-    const OrbitSamples sm = orbit_trajectory(f, orbits[k]);
+    const OrbitSamples sm = orbit_trajectory(f, orbits[k], integ);
     for (std::size_t i = 0; i < sm.t.size(); ++i)
       put(os, "%zu,%d,%.17g,%.17g,%.17g\n", k, int(orbits[k].stable), sm.t[i], sm.theta[i], sm.rate[i]);
   }

@@ -32,7 +32,8 @@ OrbitsAtPoint orbits_at_point(const RockingForcing& f, const OrbitType& type, co
                               const std::optional<std::array<double, 2>>& guess);
 // CSV: one row per orbit; and the orbits' trajectories over one period (orbit, stable, t, theta, rate).
 void write_orbits_csv(std::ostream& os, const RockingForcing& f, const std::vector<PeriodicOrbit>& orbits);
-void write_orbit_trajectories_csv(std::ostream& os, const RockingForcing& f, const std::vector<PeriodicOrbit>& orbits);
+void write_orbit_trajectories_csv(std::ostream& os, const RockingForcing& f, const std::vector<PeriodicOrbit>& orbits,
+                                  const IntegratorOptions& integ);
 
 struct BranchRow {
   int branch;
