@@ -202,8 +202,8 @@ json summary_json(const Rigid3dSetup& s, const BodyOnGround& m, const Body3dResu
   body["inertia"] = {in[0], in[1], in[2]};
   const BodyOnGround::State& z = r.z;
   return {{"model", "rigid3d"},
-          {"status", r.status},
-          {"stop_reason", r.stop_reason},
+          {"status", to_string(r.status)},
+          {"stop_reason", r.note},
           {"t_final", r.t_final},
           {"overturn_time", optional_time(r.overturn_time)},
           {"first_uplift_time", optional_time(r.first_uplift_time)},
@@ -239,7 +239,7 @@ json summary_json(const Rigid3dSetup& s, const BodyOnGround& m, const Body3dResu
           {"t_end", s.run.t_end},
           {"output_interval", s.run.output_interval},
           {"integrator", to_json(s.run.integ)},
-          {"steps", r.steps},
+          {"steps", r.stats.accepted},
           {"events", json::array()},
           {"run", run_info()}};
 }
@@ -249,8 +249,8 @@ std::string summary_text(const Body3dResult& r) {
   std::snprintf(buf, sizeof buf,
                 "rigid3d: %s at t = %.6g s%s%s\n  impacts %ld, max tilt %.6g rad, first uplift %s, energy balance "
                 "error %.3g J\n",
-                r.status.c_str(), r.t_final, r.stop_reason.empty() ? "" : ": ", r.stop_reason.c_str(), r.impacts,
-                r.max_tilt, r.first_uplift_time >= 0 ? (number_text(r.first_uplift_time, 6) + " s").c_str() : "none",
+                to_string(r.status), r.t_final, r.note.empty() ? "" : ": ", r.note.c_str(), r.impacts, r.max_tilt,
+                r.first_uplift_time >= 0 ? (number_text(r.first_uplift_time, 6) + " s").c_str() : "none",
                 r.max_abs_energy_error);
   return buf;
 }
@@ -273,16 +273,18 @@ class PreparedRigid3d final : public PreparedRun {
         row.write_to(*out.trajectory);
       };
     }
-    o.on_event = [&](const Body3dEventRecord& e) {
+    auto forward = [&](const Body3dEventRecord& e) {
       if (out.on_event) out.on_event(event_json(model_, e));
     };
+    EventCallback<Body3dEventRecord, decltype(forward)> sink(forward);
+    o.events = &sink;
     const RunClock clock;
     const Body3dResult r = simulate_body3d(model_, z0, o);
     SimulateReport rep;
     rep.timing = clock.elapsed();
     rep.summary = summary_json(s_, model_, r);
     rep.text = summary_text(r);
-    const std::string title = body_phrase(s_.body) + motion_phrase(s_.ground) + ": " + r.status +
+    const std::string title = body_phrase(s_.body) + motion_phrase(s_.ground) + ": " + to_string(r.status) +
                               " at t = " + number_text(r.t_final, 6) + " s";
     rep.figure.plot_script = "plot_rigid3d.py";
     rep.figure.plot_args = {

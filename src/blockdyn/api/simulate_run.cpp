@@ -37,34 +37,12 @@ void require_rows(double interval, double span, double max_rows) {
   require_sample_count("output-interval", interval, span, max_rows);
 }
 
-// Streams the Winkler run's events and forwards everything to the trajectory (if any).
-class WinklerEventTee final : public WinklerSink {
+// Hands each event record of a run to the caller's callback as JSON.
+template <class Record>
+class JsonEvents final : public EventSink<Record> {
  public:
-  WinklerEventTee(WinklerSink* next, const std::function<void(const nlohmann::ordered_json&)>& on_event)
-      : next_(next), on_event_(on_event) {}
-  void on_start(const WinklerBlock& m, double t, const WinklerMode& md, const WinklerState& z) override {
-    if (next_) next_->on_start(m, t, md, z);
-  }
-  void on_segment(const WinklerBlock& m, const DenseSegment<kStateDim>& s, double t0, double t1,
-                  const WinklerMode& md) override {
-    if (next_) next_->on_segment(m, s, t0, t1, md);
-  }
-  void on_event(const WinklerBlock& m, const WinklerEventRecord& e) override {
-    if (on_event_) on_event_(to_json(e));
-    if (next_) next_->on_event(m, e);
-  }
-  bool keep_going() const override { return !next_ || next_->keep_going(); }
-  bool needs_dense() const override { return next_ && next_->needs_dense(); }
-
- private:
-  WinklerSink* next_;
-  const std::function<void(const nlohmann::ordered_json&)>& on_event_;
-};
-
-class RigidEventTee final : public RigidEventSink {
- public:
-  explicit RigidEventTee(const std::function<void(const nlohmann::ordered_json&)>& f) : f_(f) {}
-  void on_event(const RigidEventRecord& e) override { f_(to_json(e)); }
+  explicit JsonEvents(const std::function<void(const nlohmann::ordered_json&)>& f) : f_(f) {}
+  void on_event(const Record& e) override { f_(to_json(e)); }
 
  private:
   const std::function<void(const nlohmann::ordered_json&)>& f_;
@@ -133,8 +111,9 @@ SimulateReport run_winkler(const Scenario& given, const SimulateOutputs& out) {
     rows.emplace(*out.trajectory, sc.output_interval, scales);
   }
   sc.options.record_events = false;  // counted in the result, streamed to on_event
-  WinklerEventTee tee(rows ? &*rows : nullptr, out.on_event);
-  WinklerResult r = simulate(sc.params, sc.ground, z0, sc.options, (rows || out.on_event) ? &tee : nullptr);
+  JsonEvents<WinklerEventRecord> events(out.on_event);
+  WinklerResult r =
+      simulate(sc.params, sc.ground, z0, sc.options, rows ? &*rows : nullptr, out.on_event ? &events : nullptr);
   for (int i = 1; i < out.timing_repeat; ++i)
     r.timing = fastest(r.timing, simulate(sc.params, sc.ground, z0, sc.options).timing);
   SimulateReport rep;
@@ -187,9 +166,8 @@ SimulateReport run_rigid_family(const Scenario& sc, const SimulateOutputs& out, 
     require_rows(sc.output_interval, o.t_end - o.t_start, out.max_output_rows);
     rows.emplace(*out.trajectory, sc.output_interval);
   }
-  std::optional<RigidEventTee> events;
-  if (out.on_event) events.emplace(out.on_event);
-  RigidResult r = sim(p, sc.ground, init, o, rows ? &*rows : nullptr, events ? &*events : nullptr);
+  JsonEvents<RigidEventRecord> events(out.on_event);
+  RigidResult r = sim(p, sc.ground, init, o, rows ? &*rows : nullptr, out.on_event ? &events : nullptr);
   for (int i = 1; i < out.timing_repeat; ++i)
     r.timing = fastest(r.timing, sim(p, sc.ground, init, o, nullptr, nullptr).timing);
   SimulateReport rep;
@@ -263,8 +241,8 @@ std::string assembly_text(const AssemblyResult& r) {
                   r.blocks[b].name.c_str(), r.blocks[b].max_abs_rotation, r.blocks[b].max_abs_sliding);
     s += buf;
   }
-  std::snprintf(buf, sizeof buf, "events: %ld, steps: %ld, rhs evaluations: %ld\n", r.events_total, r.steps,
-                r.rhs_evals);
+  std::snprintf(buf, sizeof buf, "events: %ld, steps: %ld, rhs evaluations: %ld\n", r.events_total, r.stats.accepted,
+                r.stats.rhs_evals);
   s += buf;
   std::snprintf(buf, sizeof buf,
                 "energy: E0 = %.9g J, max |balance error| = %.3g J, friction work = %.6g J, damping work = %.6g J\n",
@@ -281,7 +259,8 @@ class PreparedAssembly final : public PreparedRun {
     AssemblyRunOptions o = s_.run;
     if (out.trajectory) require_rows(o.output_interval, o.t_end, out.max_output_rows);
     o.record_events = false;  // counted in the result, streamed to on_event
-    if (out.on_event) o.on_event = [&out](const AssemblyEventRecord& e) { out.on_event(to_json(e)); };
+    JsonEvents<AssemblyEventRecord> events(out.on_event);
+    if (out.on_event) o.events = &events;
     const Assembly& a = s_.assembly;
     const RunClock clock;
     const AssemblyResult r = simulate_assembly(a, s_.ground, o, out.trajectory);

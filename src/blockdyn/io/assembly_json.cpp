@@ -136,9 +136,9 @@ json assembly_result_json(const Assembly& a, const GroundMotion& g, const Assemb
                            {"gauss_seidel_sweeps", r.gauss_seidel_sweeps}};
   }
   j["max_abs_energy_change"] = r.max_abs_energy_change;
-  j["steps"] = r.steps;
-  j["rejected_steps"] = r.rejected_steps;
-  j["rhs_evals"] = r.rhs_evals;
+  j["steps"] = r.stats.accepted;
+  j["rejected_steps"] = r.stats.rejected;
+  j["rhs_evals"] = r.stats.rhs_evals;
   json counts = json::object();
   for (int k = 0; k < int(r.event_counts.size()); ++k)
     if (r.event_counts[k] && k != kAssemblyBearingCollapse) {

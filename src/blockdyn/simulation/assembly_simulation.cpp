@@ -122,7 +122,7 @@ class AssemblyRecorder final : public Observer<M> {
                   std::to_string(rec.interface);
     }
     if (rec.block >= 0) rec.pose = {e.z[M::ix(rec.block)], e.z[M::ix(rec.block) + 1], e.z[M::ix(rec.block) + 2]};
-    if (o_.on_event) o_.on_event(rec);
+    if (o_.events) o_.events->on_event(rec);
     if (o_.record_events && long(r_.events.size()) < o_.max_events) r_.events.push_back(rec);
     return true;
   }
@@ -379,9 +379,7 @@ AssemblyResult run(const Assembly& a, const GroundMotion& g, const AssemblyRunOp
   r.work_switch = out.z[M::kWSwitch];
   r.max_abs_energy_error = balance.max_abs_error();
   r.max_abs_energy_change = balance.max_abs_change();
-  r.steps = out.stats.accepted;
-  r.rejected_steps = out.stats.rejected;
-  r.rhs_evals = out.stats.rhs_evals;
+  r.stats = out.stats;
   if (r.collapse_mode)
     r.motion = "collapse";
   else if (r.event_counts[kAssemblyContactOpens] > 0 || r.event_counts[kAssemblySlipStarts] > 0 ||

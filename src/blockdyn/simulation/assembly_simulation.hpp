@@ -20,15 +20,14 @@
 #include "blockdyn/model/assembly/assembly_params.hpp"
 #include "blockdyn/simulation/run_options.hpp"
 #include "blockdyn/simulation/run_probe.hpp"
+#include "blockdyn/simulation/run_result.hpp"
 #include "blockdyn/simulation/sim_status.hpp"
 #include "blockdyn/simulation/trajectory_table.hpp"
 
 namespace blockdyn {
 
-struct AssemblyEventRecord {
-  double t = 0;
-  AssemblyEventKind kind{};  // its name: assembly_event_name()
-  int block = -1;            // the block concerned (contacts: the upper block of the interface)
+struct AssemblyEventRecord : EventRecordCore<AssemblyEventKind> {  // the kind's name: assembly_event_name()
+  int block = -1;  // the block concerned (contacts: the upper block of the interface)
   int interface = -1, end = -1;
   int collapse_mode = 0;
   std::array<double, 3> pose{};  // x, y, theta of `block` after the event
@@ -53,9 +52,9 @@ struct AssemblyRunOptions : RunOptions {
   long max_events = 1'000'000;                   // kept in the list; further events are counted only
   double step = 1e-4;                            // rigid law: Moreau-Jean time step (s)
   AssemblyScheme scheme = AssemblyScheme::Auto;  // rigid law only
-  // Called with every event as it happens, whatever record_events and max_events say: a caller
+  // Receives every event as it happens, whatever record_events and max_events say: a caller
   // that streams the events (the command line's JSON spool) holds O(1) memory on a run of any length.
-  std::function<void(const AssemblyEventRecord&)> on_event;
+  EventSink<AssemblyEventRecord>* events = nullptr;
 };
 void validate(const AssemblyRunOptions& o);
 // The scheme a rigid assembly is run with: the options' (Auto resolved by the block count),
@@ -81,26 +80,20 @@ struct AssemblyEnergy {
   double kinetic = 0, gravity = 0, normal_spring = 0, tangential_spring = 0, total = 0;
 };
 
-struct AssemblyResult {
-  SimStatus status = SimStatus::TEnd;  // TEnd | Collapsed | Invalid
-  std::string motion = "rest";         // rest | stable | collapse
+struct AssemblyResult : RunResult {  // status: TEnd | Collapsed | Invalid
+  std::string motion = "rest";       // rest | stable | collapse
   std::optional<int> collapse_mode;
   std::optional<double> t_failure;
   int failed_block = -1, failed_interface = -1;
-  RunStatus run_status = RunStatus::ReachedEnd;  // the integrator's
-  std::string note;
-  double t_final = 0;
   std::vector<AssemblyBlockSummary> blocks;
   std::vector<AssemblyInterfaceSummary> interfaces;
   AssemblyEnergy energy_initial, energy_final;
   double work_ground = 0, work_normal = 0, work_friction = 0, work_switch = 0;
-  double max_abs_energy_error = 0, max_abs_energy_change = 0;
   std::array<long, 16> event_counts{};  // by AssemblyEventKind
   long events_total = 0;
   std::vector<AssemblyEventRecord> events;
-  long steps = 0, rejected_steps = 0, rhs_evals = 0;
   std::vector<double> damping;  // calibrated damping per interface (N s/m per point)
-  long impacts = 0;             // rigid law: contact ends closing with an approach velocity
+  // impacts (rigid law): contact ends closing with an approach velocity
   // Rigid law: how the time steps' contact problems were solved (direct active-set solves, Lemke's
   // method where the active set did not settle, Gauss-Seidel as the last resort and its sweeps).
   long direct_solves = 0, lemke_solves = 0, gauss_seidel_solves = 0, gauss_seidel_sweeps = 0;

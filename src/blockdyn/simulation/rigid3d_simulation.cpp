@@ -64,10 +64,10 @@ class Body3dWatch final : public Observer<Model> {
       res.overturn_time = e.t;
       res.overturn_azimuth = tilt_azimuth_deg(e.z);
     }
-    if (e.stop) res.stop_reason = Model::stop_reason(e.from, e.index, kind);
-    const Body3dEventRecord rec{e.t, kind, e.from.contact, e.to.contact, e.z};
-    if (o.on_event)
-      o.on_event(rec);
+    if (e.stop) res.note = Model::stop_reason(e.from, e.index, kind);
+    const Body3dEventRecord rec{{e.t, kind}, e.from.contact, e.to.contact, e.z};
+    if (o.events)
+      o.events->on_event(rec);
     else
       res.events.push_back(rec);
     track(e.t, e.z);
@@ -104,20 +104,22 @@ Body3dResult simulate_body3d(const BodyOnGround& model, BodyOnGround::State z, c
   Transition<Model::Mode> start{mode, false, int(Body3dEventKind::Mode)};
   if (mode.contact == BodyContact::Rest) start = model.transition(t, mode, z, kBreakpoint);
   if (start.stop) {
-    res.status = "invalid";
-    res.stop_reason = Model::stop_reason(mode, kBreakpoint, Body3dEventKind(start.kind));
+    res.status = SimStatus::Invalid;
+    res.note = Model::stop_reason(mode, kBreakpoint, Body3dEventKind(start.kind));
   } else {
     if (start.next.contact != mode.contact) res.first_uplift_time = 0;
     mode = start.next;
     Simulation<Model> sim(model, o.integ, t, mode, z);
-    res.integrator = sim.advance(o.t_end, watch);
-    res.steps = sim.stats().accepted;
+    res.run_status = sim.advance(o.t_end, watch);
+    res.stats = sim.stats();
     t = sim.t();
     mode = sim.mode();
     z = sim.state();
-    res.status = res.overturn_time >= 0 ? "overturned" : res.integrator == RunStatus::ReachedEnd ? "t_end" : "invalid";
-    if (res.status == "invalid" && res.stop_reason.empty())
-      res.stop_reason = std::string("the integration stopped: ") + to_string(res.integrator);
+    res.status = res.overturn_time >= 0                    ? SimStatus::Overturned
+                 : res.run_status == RunStatus::ReachedEnd ? SimStatus::TEnd
+                                                           : SimStatus::Invalid;
+    if (res.status == SimStatus::Invalid && res.note.empty())
+      res.note = std::string("the integration stopped: ") + to_string(res.run_status);
   }
   res.t_final = t;
   res.z = z;

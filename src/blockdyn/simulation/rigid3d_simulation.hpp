@@ -10,12 +10,11 @@
 
 #include "blockdyn/integrate/integrator_options.hpp"
 #include "blockdyn/model/rigid3d/body_on_ground.hpp"
+#include "blockdyn/simulation/run_result.hpp"
 
 namespace blockdyn {
 
-struct Body3dEventRecord {
-  double t;
-  Body3dEventKind kind;
+struct Body3dEventRecord : EventRecordCore<Body3dEventKind> {
   BodyContact from, to;
   BodyOnGround::State z;  // after the event (after an impact's jump)
 };
@@ -33,22 +32,18 @@ struct Body3dRunOptions {
   double output_interval = 0;  // s between trajectory rows (0: events only)
   IntegratorOptions integ{};
   bool track_energy = true;  // the balance (and the largest tilt) at every step end; false: at events only
-  std::function<void(const Body3dSample&)> on_sample;      // rows (null: none)
-  std::function<void(const Body3dEventRecord&)> on_event;  // as they happen (null: kept in the result)
+  std::function<void(const Body3dSample&)> on_sample;  // rows (null: none)
+  EventSink<Body3dEventRecord>* events = nullptr;      // as they happen (null: kept in the result)
 };
 
-struct Body3dResult {
-  std::string status;       // t_end, overturned, invalid
-  std::string stop_reason;  // why an invalid run stopped
-  RunStatus integrator = RunStatus::ReachedEnd;
-  double t_final = 0;
+// status: t_end, overturned or invalid (note: why an invalid run stopped).
+struct Body3dResult : RunResult {
   BodyOnGround::State z{};
   BodyOnGroundMode mode{};
   double overturn_time = -1, first_uplift_time = -1, max_tilt = 0;
   double max_tilt_azimuth = 0, overturn_azimuth = 0;  // deg: where the body leans, from x towards y
-  long impacts = 0, steps = 0;
-  double initial_energy = 0, max_abs_energy_error = 0;  // of the closed balance (J)
-  std::vector<Body3dEventRecord> events;                // when on_event is null
+  double initial_energy = 0;                          // of the closed balance (J)
+  std::vector<Body3dEventRecord> events;              // when no sink is given
 };
 
 // The direction the body leans to (deg from the world's x axis towards y): the azimuth of e3.

@@ -26,9 +26,7 @@ struct RigidInitial {
 // The rigid block's run: the shared options as they are.
 using RigidRunOptions = RunOptions;
 
-struct RigidEventRecord {
-  double t = 0;
-  RigidEventKind kind = RigidEventKind::Mode;
+struct RigidEventRecord : EventRecordCore<RigidEventKind> {
   Mechanism from = Mechanism::Rest, to = Mechanism::Rest;
   int corner = 0;                      // impact: +1 A (left), -1 B (right)
   int pivot = 0, slip = 0;             // the new mode's corner in contact (rock, slide-rock) and slip sign
@@ -41,30 +39,20 @@ inline constexpr int kNumRigidEventKinds = int(RigidEventKind::AmbiguousOnset) +
 
 // Receives each event record as it is made (e.g. to stream a JSON event list), whether or not
 // the result keeps the list (RigidRunOptions::record_events).
-class RigidEventSink {
- public:
-  virtual ~RigidEventSink() = default;
-  virtual void on_event(const RigidEventRecord&) = 0;
-};
+using RigidEventSink = EventSink<RigidEventRecord>;
 
-struct RigidResult {
+struct RigidResult : RunResult {
   std::string model;  // housner | rigid
-  SimStatus status = SimStatus::TEnd;
-  RunStatus run_status = RunStatus::ReachedEnd;
-  double t_start = 0, t_final = 0;
+  double t_start = 0;
   Mechanism initial_mode = Mechanism::Rest, final_mode = Mechanism::Rest;
   std::array<double, 6> initial_state{}, final_state{};
   double max_abs_rotation = 0, t_max_abs_rotation = 0;
   std::optional<double> overturn_time, first_motion_time, first_uplift_time, first_beyond_alpha_time;
-  long impacts = 0, mode_changes = 0;
+  long mode_changes = 0;
   std::array<long, kNumRigidEventKinds> event_counts{};
   std::vector<RigidEventRecord> events;
   double energy_initial = 0, kinetic_final = 0, potential_final = 0;
   double work_friction = 0, work_ground = 0, work_impact = 0;
-  double max_abs_energy_error = 0, max_abs_energy_change = 0;
-  StepperStats stats;
-  RunTiming timing;  // of the integration alone
-  std::string note;  // why the run stopped early (Painleve, outside the model)
 };
 
 // Throws std::invalid_argument for invalid parameters, options or initial states.

@@ -13,7 +13,8 @@ namespace {
 // list and counts; forwards the trajectory and the events to the user's sink.
 class WinklerRecorder final : public Observer<WinklerBlock> {
  public:
-  WinklerRecorder(const WinklerRunOptions& o, WinklerResult& r, WinklerSink* s) : opt_(o), res_(r), sink_(s) {
+  WinklerRecorder(const WinklerRunOptions& o, WinklerResult& r, WinklerSink* s, EventSink<WinklerEventRecord>* events)
+      : opt_(o), res_(r), sink_(s), events_(events) {
     if (o.record_events) res_.events.reserve(256);
   }
 
@@ -27,7 +28,7 @@ class WinklerRecorder final : public Observer<WinklerBlock> {
     if (kind == WinklerEventKind::GroundBreak) return true;
     if (kind == WinklerEventKind::WZero) ++res_.upright_passages;
     ++res_.event_counts[int(kind)];
-    WinklerEventRecord rec{e.t, kind, e.from, e.to, e.z, res_.upright_passages};
+    WinklerEventRecord rec{{e.t, kind}, e.from, e.to, e.z, res_.upright_passages};
     if (kind == WinklerEventKind::Takeoff && !res_.first_flight_time) {
       res_.first_flight_time = e.t;
       res_.upright_passages_at_first_flight = res_.upright_passages;
@@ -37,6 +38,7 @@ class WinklerRecorder final : public Observer<WinklerBlock> {
       res_.upright_passages_at_overturn = res_.upright_passages;
     }
     if (opt_.record_events) res_.events.push_back(rec);
+    if (events_) events_->on_event(rec);
     if (sink_) sink_->on_event(m, rec);
     if (opt_.stop_at_first_flight && kind == WinklerEventKind::Takeoff) return stop();
     if (opt_.stop_at_upright_passages > 0 && res_.upright_passages >= opt_.stop_at_upright_passages) return stop();
@@ -55,13 +57,14 @@ class WinklerRecorder final : public Observer<WinklerBlock> {
   const WinklerRunOptions& opt_;
   WinklerResult& res_;
   WinklerSink* sink_;
+  EventSink<WinklerEventRecord>* events_;
   bool early_ = false;
 };
 
 }  // namespace
 
 WinklerResult simulate(const WinklerParams& p, const GroundMotion& g, const WinklerState& z0,
-                       const WinklerRunOptions& opt, WinklerSink* sink) {
+                       const WinklerRunOptions& opt, WinklerSink* sink, EventSink<WinklerEventRecord>* events) {
   validate(p);
   validate(g);
   validate(opt);
@@ -82,7 +85,7 @@ WinklerResult simulate(const WinklerParams& p, const GroundMotion& g, const Wink
     res.upright_passages_at_first_flight = res.upright_passages;
   }
   if (sink) sink->on_start(model, t, mode, z);
-  WinklerRecorder rec(opt, res, sink);
+  WinklerRecorder rec(opt, res, sink, events);
   EnergyBalance<WinklerBlock> balance;
   FanOut<WinklerBlock> obs;
   obs.add(&rec);

@@ -14,6 +14,7 @@
 #include "blockdyn/simulation/run.hpp"
 #include "blockdyn/simulation/run_clock.hpp"
 #include "blockdyn/simulation/run_options.hpp"
+#include "blockdyn/simulation/run_result.hpp"
 #include "blockdyn/simulation/sim_status.hpp"
 
 namespace blockdyn {
@@ -24,9 +25,7 @@ struct WinklerRunOptions : RunOptions {
   long stop_at_upright_passages = 0;  // stop once ihor reaches this value (0: never)
 };
 
-struct WinklerEventRecord {
-  double t = 0;
-  WinklerEventKind kind{};
+struct WinklerEventRecord : EventRecordCore<WinklerEventKind> {
   WinklerMode from, to;
   WinklerState z{};
   long upright_passages = 0;  // after the event
@@ -34,10 +33,7 @@ struct WinklerEventRecord {
 
 constexpr int kNumEventKinds = int(WinklerEventKind::GrazingHold) + 1;
 
-struct WinklerResult {
-  SimStatus status = SimStatus::TEnd;
-  RunStatus run_status = RunStatus::ReachedEnd;
-  double t_final = 0;
+struct WinklerResult : RunResult {
   WinklerState initial_state{}, final_state{};
   WinklerMode initial_mode, final_mode;
   long upright_passages = 0;
@@ -45,11 +41,7 @@ struct WinklerResult {
   long upright_passages_at_first_flight = 0;
   std::optional<double> overturn_time;
   long upright_passages_at_overturn = 0;
-  Energy initial_energy, final_energy;
-  double max_abs_energy_error = 0;   // max |E - E0 - W_friction - W_nonpotential - W_ground|
-  double max_abs_energy_change = 0;  // max |E - E0|
-  StepperStats stats;
-  RunTiming timing;  // of the integration alone
+  Energy initial_energy, final_energy;  // the balance's W: W_friction + W_nonpotential + W_ground
   std::vector<WinklerEventRecord> events;
   std::array<long, kNumEventKinds> event_counts{};
 
@@ -72,8 +64,11 @@ class WinklerSink {
   virtual bool needs_dense() const { return true; }
 };
 
-// Throws std::invalid_argument if the parameters, options or initial state are invalid.
+// Throws std::invalid_argument if the parameters, options or initial state are invalid. `sink`
+// watches the trajectory and the events; `events` receives each event record as it is made
+// (e.g. to stream a JSON event list), whether or not the result keeps the list.
 WinklerResult simulate(const WinklerParams& p, const GroundMotion& g, const WinklerState& z0,
-                       const WinklerRunOptions& opt, WinklerSink* sink = nullptr);
+                       const WinklerRunOptions& opt, WinklerSink* sink = nullptr,
+                       EventSink<WinklerEventRecord>* events = nullptr);
 
 }  // namespace blockdyn
