@@ -5,7 +5,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 command -v clang-format >/dev/null || { echo "clang-format not installed: skipped"; exit 77; }
-mapfile -t files < <(git ls-files '*.cpp' '*.hpp' '*.h' '*.cc' 2>/dev/null || find src apps tests bench python -name '*.[ch]pp')
+mapfile -t files < <(git ls-files '*.cpp' '*.hpp' '*.ipp' '*.h' '*.cc' 2>/dev/null || find src apps tests bench python -name '*.[ch]pp')
 if [ "${1:-}" = "--fix" ]; then
   clang-format -i "${files[@]}"
   exit 0

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 # SPDX-License-Identifier: Apache-2.0
-"""Reference spectral ordinates for tests/test_intensity_measures.cpp, computed independently of
+"""Reference spectral ordinates for tests/excitation/test_intensity_measures.cpp, computed independently of
 blockdyn: the oscillator's closed form over each linear segment of tests/fixtures/random_300.csv in
 40-digit arithmetic (mpmath), every zero of the velocity inside a segment found on a grid of a
 sixteenth of the damped period and refined by bisection, then the free vibration after

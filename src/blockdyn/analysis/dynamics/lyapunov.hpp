@@ -31,7 +31,7 @@
 //
 // A model is used through an adapter providing the metric and the rescaling (which must leave a
 // state consistent with its mode): BlockLyapunovAdapter in lyapunov_block.hpp, toy adapters in
-// tests/test_lyapunov.cpp.
+// tests/analysis/dynamics/test_lyapunov.cpp.
 #include <cmath>
 #include <optional>
 #include <stdexcept>

@@ -154,7 +154,7 @@ class RigidAssemblyModel {
   bool select_mode(double t, Mode& m, const State& z) const;
   // The impact at (t, z): new velocities in z, work booked; the mode's closed set updated.
   bool impact(double t, Mode& m, State& z) const;
-  struct ImpactWork;  // the velocity-level problem of one impact (rigid_assembly_model.cpp)
+  struct ImpactWork;  // the velocity-level problem of one impact (rigid_assembly_impact.ipp)
   // Solves the impact set as it stands; false if the system is singular.
   bool solve_impact(ImpactWork& w) const;
   // Applies the most violated change to the set; false when none is violated (settled).

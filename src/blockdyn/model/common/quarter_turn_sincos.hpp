@@ -3,7 +3,7 @@
 // sin and cos of an angle of at most a quarter turn, the range of a block's tilt (the Winkler
 // block stops at |w| = atan(r) < pi/2), inlined: the right-hand side needs both at every stage,
 // and libm's general sincos (a call, range checks, table lookups) was a tenth of a response
-// map's time. Within one ulp of libm (tests/test_geometry.cpp); timings in docs/performance.md.
+// map's time. Within one ulp of libm (tests/model/winkler/test_geometry.cpp); timings in docs/performance.md.
 //
 // |x| < 2^-27: sin x = x, cos x = 1 (the next terms are below half an ulp).
 // |x| < 1/8: the Taylor series to x^9 and x^10 (first omitted terms below 0.1 ulp).
