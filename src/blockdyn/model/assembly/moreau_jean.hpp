@@ -47,7 +47,7 @@
 #include "blockdyn/model/assembly/assembly_params.hpp"
 #include "blockdyn/model/assembly/contact_point.hpp"
 #include "blockdyn/model/assembly/interface_faces.hpp"
-#include "blockdyn/numerics/lemke.hpp"
+#include "blockdyn/numerics/planar_contact.hpp"
 
 namespace blockdyn {
 
@@ -77,6 +77,9 @@ class MoreauJean {
   };
 
   MoreauJean(const Assembly& a, const GroundMotion& g, const MoreauJeanOptions& o);
+  // Its contact problem points into its own arrays: not copied or moved.
+  MoreauJean(const MoreauJean&) = delete;
+  MoreauJean& operator=(const MoreauJean&) = delete;
 
   int blocks() const { return nb_; }
   int interfaces() const { return ni_; }
@@ -106,12 +109,14 @@ class MoreauJean {
   std::array<double, 2> ground_acceleration(double t) const;
 
  private:
-  enum Class : std::uint8_t { kSeparate, kStick, kSlipPos, kSlipNeg };
   BodyPose pose(const std::vector<double>& q, const std::vector<double>& v, int b) const;
   std::pair<Face, Face> faces(const std::vector<double>& q, int iface) const;  // lower, upper
-  // The contact problem of the nc active ends (W_, bn_, bt_, mu_*): impulses into pn_, pt_ and
-  // the classes into cls_. False when no method solves it.
+  // The contact problem of the nc active ends (W_, bn_, bt_, mu_*), solved by the solver (its
+  // impulses and classes); an end that slips with its static coefficient gets its kinetic one.
+  // False when no method solves it.
   bool solve(int nc, double v_scale);
+  // One Coulomb problem: the active set, Lemke's guess for it, Gauss-Seidel as the last resort.
+  bool solve_coulomb(double v_scale);
   // The steps of step(): the free velocities and the faces at the midpoint; the active ends with
   // their Jacobian rows and right-hand sides (returns their count); the Delassus matrix; the new
   // velocities, impulses, end states and works.
@@ -119,23 +124,15 @@ class MoreauJean {
   int assemble_ends(const std::vector<double>& v);
   void delassus(int nc);
   void conclude(int nc, const std::vector<double>& v, const std::array<double, 2>& a);
-  bool solve_coulomb(int nc, double v_scale);
-  enum DirectOutcome { kSolved, kFailed };
-  DirectOutcome solve_direct(int nc, double v_scale);
-  // Its steps: the guess's linear system, its impulses, the conditions it violates.
-  int assemble_guess(int nc);
-  void solve_guess(int nc, int m, double diag_max);
-  int check_guess(int nc, double tol, double diag_max, int& first, bool& accurate);
-  bool solve_gauss_seidel(int nc, double v_scale);
-  bool solve_lemke(int nc);
-  // The other end of active end i's face if it is sticking too (-1: none).
-  int sticking_partner(int nc, int i) const;
-  // The tangential speed above which active end i slips.
-  double slip_threshold(int nc, int i) const;
-  void share_sticking_friction(int nc);
-  double W(int i, int j) const { return W_[std::size_t(i) * std::size_t(m_cap_) + std::size_t(j)]; }
   // Velocity change of the blocks from the impulses (sparse: each end touches two blocks).
-  void velocity_change(int nc, std::vector<double>& dv) const;
+  void velocity_change(int nc, const double* pn, const double* pt, double* dv) const;
+  // The ends' relative velocities and the blocks' velocity change for the solver, from the blocks.
+  struct StepVelocities final : ContactVelocities {
+    explicit StepVelocities(MoreauJean* s) : self(s) {}
+    void relative(const double* pn, const double* pt, double* un, double* ut) override;
+    void bodies(const double* pn, const double* pt, double* dv) override;
+    MoreauJean* self;
+  };
   Assembly asm_;
   GroundMotion ground_;
   bool forced_;
@@ -155,19 +152,15 @@ class MoreauJean {
   Face upper_face_at(int i, const BodyPose& upper) const { return face_at(upper, local_faces_[i].upper); }
   // Per active end: the blocks (upper, lower; -1 the ground), the Jacobian rows (normal x, y,
   // theta, then tangent) on each, and the same rows scaled by the inverse masses.
-  std::vector<int> ub_, lb_, active_;
+  std::vector<int> ub_, lb_, active_, face_;
   std::vector<std::array<double, 6>> ju_, jl_, mju_, mjl_;
-  std::vector<double> qm_, vfree_, vnew_, dv_, W_, bn_, bt_, mu_, mu_k_, pn_, pt_, un_shift_;
-  std::vector<double> A_, rhs_;  // the active-set iteration's linear system
-  std::vector<int> col_n_, col_t_, pivots_;
-  std::vector<Class> cls_, next_;
-  std::vector<int> flips_;                     // solve_direct: class changes of each end
-  std::vector<double> lcp_m_, lcp_q_, lcp_z_;  // the step's problem as one LCP (solve_lemke)
-  Lemke lemke_;
-  std::vector<int> face_end_, face_of_;  // solve_lemke's faces: first active end; face of each end
+  std::vector<double> qm_, vfree_, vnew_, dv_, W_, bn_, bt_, mu_, mu_k_, pn_warm_, pt_warm_, un_shift_;
+  PlanarContactProblem problem_;  // the step's contact problem (numerics/planar_contact.hpp)
+  PlanarContactSolver solver_;
+  StepVelocities velocities_{this};
   std::vector<End> ends_;
   int sweeps_ = 0;
-  bool classes_solved_ = true;  // cls_ holds the last solution's classes (not after Gauss-Seidel)
+  bool classes_solved_ = true;  // the solver holds the last solution's classes (not after Gauss-Seidel)
   double touch_ = 0, slip_velocity_ = 0, compliance_ = 0;
   double reach_ = 0;  // the largest block's half diagonal (m)
   SolveStats stats_;
