@@ -17,6 +17,9 @@ set(BLOCKDYN_PUBLIC_ENTRY_HEADERS
   excitation/response_spectrum.hpp
   excitation/stochastic_motion.hpp
   analysis/forced/fragility_fit.hpp
+  analysis/forced/fragility_study.hpp
+  analysis/masonry/limit_analysis.hpp
+  simulation/rigid_ground_model.hpp
   io/json_io.hpp
   io/scenario.hpp
   io/csv_table.hpp

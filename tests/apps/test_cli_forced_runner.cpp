@@ -8,8 +8,11 @@
 #include <nlohmann/json.hpp>
 
 #include <chrono>
+#include <memory>
 #include <thread>
 
+#include "blockdyn/analysis/forced/fragility_study.hpp"
+#include "blockdyn/simulation/rigid_ground_model.hpp"
 #include "test_sweep_util.hpp"
 
 using nlohmann::json;
@@ -337,4 +340,45 @@ TEST(ForcedRunner, FragilityOfAnAssemblyCountsCollapses) {
   EXPECT_EQ(j["levels"][1]["n_overturned"], 6);
   EXPECT_EQ(j["fit"]["status"], "no_fit");
   EXPECT_TRUE(j["fit"]["median"].is_null());
+}
+
+// The typed C++ study (analysis/forced/fragility_study.hpp) gives the command's numbers: the same
+// runs, fit and band from the same records, levels and options.
+TEST(ForcedRunner, TypedFragilityStudyEqualsTheCommand) {
+  TmpDir d("forced-fragility-typed");
+  make_suite(d.path);
+  const CliResult ref = run_cli(runner_with(fragility_args("ref.csv"), {"--json", "--quiet"}), d.path);
+  ASSERT_EQ(ref.code, 0) << ref.err;
+  const json j = json::parse(ref.out);
+  std::vector<std::string> names;
+  std::vector<std::shared_ptr<const blockdyn::Accelerogram>> records;
+  for (const auto& f : j["definition"]["records"]) {
+    names.push_back(f.get<std::string>());
+    records.push_back(std::make_shared<const blockdyn::Accelerogram>(
+        blockdyn::load_accelerogram(d.path + "/" + names.back(), "records")));
+  }
+  blockdyn::RigidBlockParams p;
+  p.shape.width = 0.4;
+  p.shape.height = 1.7;
+  const blockdyn::ForcedModel m = blockdyn::forced_block_model(p, blockdyn::housner_on_rigid_ground());
+  const auto suite = blockdyn::fragility_suite(names, records, blockdyn::IntensityMeasure::pga(), 9.81, m.alpha);
+  blockdyn::FragilityOptions o;
+  o.levels = j["definition"]["levels"].get<std::vector<double>>();
+  o.t_after = 2;
+  o.bootstrap = 50;
+  o.threads = 2;
+  const blockdyn::FragilityResult r = blockdyn::run_fragility(m, suite, o);
+  ASSERT_EQ(r.runs.size(), j["runs"].size());
+  for (std::size_t i = 0; i < r.runs.size(); ++i) {
+    EXPECT_EQ(r.runs[i].overturned, j["runs"][i]["overturned"].get<bool>()) << i;
+    EXPECT_EQ(r.runs[i].max_abs_rotation, j["runs"][i]["max_abs_rotation"].get<double>()) << i;
+    EXPECT_EQ(r.runs[i].scale, j["runs"][i]["scale"].get<double>()) << i;
+  }
+  ASSERT_TRUE(r.fit.ok);
+  EXPECT_EQ(r.fit.median, j["fit"]["median"].get<double>());
+  EXPECT_EQ(r.fit.beta, j["fit"]["beta"].get<double>());
+  EXPECT_EQ(r.band.median_lo, j["fit"]["ci90"]["median"][0].get<double>());
+  EXPECT_EQ(r.band.beta_hi, j["fit"]["ci90"]["beta"][1].get<double>());
+  ASSERT_EQ(r.curve.size(), j["curve"].size());
+  EXPECT_EQ(r.curve[40].p, j["curve"][40]["p"].get<double>());
 }

@@ -1,15 +1,13 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "blockdyn/api/fragility.hpp"
 
-#include <glob.h>
-
 #include <algorithm>
 #include <cmath>
 #include <memory>
 #include <optional>
 #include <stdexcept>
 
-#include "blockdyn/analysis/forced/fragility_fit.hpp"
+#include "blockdyn/analysis/forced/fragility_study.hpp"
 #include "blockdyn/analysis/sweep/grid_table.hpp"
 #include "blockdyn/analysis/sweep/sweep_axis.hpp"
 #include "blockdyn/api/harmonic_run.hpp"
@@ -17,6 +15,7 @@
 #include "blockdyn/base/range_check.hpp"
 #include "blockdyn/excitation/intensity_measures.hpp"
 #include "blockdyn/excitation/response_spectrum.hpp"
+#include "blockdyn/io/file_glob.hpp"
 #include "blockdyn/io/json_io.hpp"
 
 namespace blockdyn {
@@ -42,30 +41,25 @@ std::vector<StudyOption> fragility_options() {
   return o;
 }
 
-std::vector<std::string> expand_glob(const std::string& pattern) {
-  glob_t g{};
-  const int rc = ::glob(pattern.c_str(), 0, nullptr, &g);
-  std::vector<std::string> files;
-  if (rc == 0)
-    for (std::size_t i = 0; i < g.gl_pathc; ++i) files.emplace_back(g.gl_pathv[i]);
-  ::globfree(&g);
-  if (files.empty()) throw std::invalid_argument("records = '" + pattern + "' matches no file");
-  if (files.size() > 100000) throw std::invalid_argument("records: at most 100000 files");
-  return files;
-}
-
-struct Suite {
-  std::vector<std::string> files;
-  std::vector<std::shared_ptr<const Accelerogram>> records;
-  std::vector<double> im;  // of each record as recorded (scale 1)
-};
-
-// The record's IM at scale 1 (IMs scale linearly with the record).
-double im_of(const Accelerogram& r, const std::string& im, double period, double damping, double g, double alpha) {
-  if (im == "pga") return r.peak();
-  if (im == "pga-over-uplift") return r.peak() / std::tan(alpha);
-  if (im == "pgv") return intensity_measures(r, g).pgv;
-  return spectral_ordinate(r, period, damping, g).sa;
+// "pga", "pgv", "sa:T" or "pga-over-uplift".
+IntensityMeasure parse_intensity_measure(const std::string& field, const std::string& text, double damping) {
+  IntensityMeasure im;
+  im.text = text;
+  im.damping = damping;
+  if (text == "pga") {
+    im.kind = IntensityMeasure::Kind::Pga;
+  } else if (text == "pgv") {
+    im.kind = IntensityMeasure::Kind::Pgv;
+  } else if (text == "pga-over-uplift") {
+    im.kind = IntensityMeasure::Kind::PgaOverUplift;
+  } else if (text.rfind("sa:", 0) == 0) {
+    im.kind = IntensityMeasure::Kind::Sa;
+    im.period = parse_number_list(field, text.substr(3)).at(0);
+    require_in_range(field + " (sa:T, T)", im.period, 0, 1e4, false);
+  } else {
+    throw std::invalid_argument(field + " = '" + text + "' is not one of: pga, pgv, sa:T, pga-over-uplift");
+  }
+  return im;
 }
 
 json fit_json(const FragilityFit& f, const FragilityBand& b, int bootstrap) {
@@ -79,19 +73,13 @@ json fit_json(const FragilityFit& f, const FragilityBand& b, int bootstrap) {
   return j;
 }
 
-// The fitted curve and the bootstrap's pointwise 90 % band on 80 levels across the stripes.
-json curve_json(const FragilityFit& f, const FragilityBand& b, double lo, double hi) {
+json curve_json(const std::vector<FragilityCurvePoint>& curve) {
   json c = json::array();
-  if (!f.ok) return c;
-  for (int i = 0; i < 80; ++i) {
-    const double x = lo * std::pow(hi / lo, double(i) / 79.0);
-    std::vector<double> ps;
-    for (const auto& [m, beta] : b.fits) ps.push_back(normal_cdf(std::log(x / m) / beta));
-    std::sort(ps.begin(), ps.end());
-    json row = {{"im", x}, {"p", normal_cdf(std::log(x / f.median) / f.beta)}};
-    if (!ps.empty()) {
-      row["p05"] = ps[std::size_t(0.05 * double(ps.size() - 1))];
-      row["p95"] = ps[std::size_t(std::ceil(0.95 * double(ps.size() - 1)))];
+  for (const FragilityCurvePoint& pt : curve) {
+    json row = {{"im", pt.im}, {"p", pt.p}};
+    if (pt.p05) {
+      row["p05"] = *pt.p05;
+      row["p95"] = *pt.p95;
     }
     c.push_back(row);
   }
@@ -111,44 +99,46 @@ std::string studied_object(const json& model) {
   return family;
 }
 
+// The runs as the runner's table holds them (row index: level fastest, then record).
+std::vector<FragilityRunOutcome> runs_of(const Table& t, std::size_t n_levels) {
+  const std::size_t cl = t.column("level"), cr = t.column("record_im"), cs = t.column("scale"),
+                    co = t.column("overturned"), cm = t.column("max_abs_rotation"), cf = t.column("t_failure");
+  std::vector<FragilityRunOutcome> runs;
+  for (const TableRow& r : t.rows) {
+    FragilityRunOutcome o;
+    o.record = r.index / n_levels;
+    o.level = cell_double(r.cells[cl]);
+    o.record_im = cell_double(r.cells[cr]);
+    o.scale = cell_double(r.cells[cs]);
+    o.overturned = r.cells[co] == "1";
+    o.max_abs_rotation = cell_double(r.cells[cm]);
+    if (!r.cells[cf].empty()) o.t_failure = cell_double(r.cells[cf]);
+    runs.push_back(o);
+  }
+  return runs;
+}
+
 // The report of the finished runs: the stripes, the fit and its band, the curve, the figure.
-StudyReport fragility_report(const Table& t, const Suite& suite, const std::vector<double>& levels,
-                             const json& definition, const std::string& im, long bootstrap, long seed) {
+StudyReport fragility_report(const Table& t, const FragilitySuite& suite, const FragilityOptions& o,
+                             const json& definition, const std::string& im) {
+  const FragilityResult res = fragility_result(runs_of(t, o.levels.size()), suite, o);
   StudyReport rep;
   json& j = rep.summary;
   j["run"] = run_info();
   j["definition"] = definition;
-  const std::size_t cl = t.column("level"), cs = t.column("scale"), co = t.column("overturned"),
-                    cm = t.column("max_abs_rotation");
   json runs = json::array();
-  std::vector<FragilityRun> all;
-  std::vector<std::vector<FragilityRun>> groups(suite.files.size());
-  std::vector<std::size_t> n(levels.size()), n_over(levels.size());
-  for (const TableRow& r : t.rows) {
-    const double level = cell_double(r.cells[cl]);
-    const bool over = r.cells[co] == "1";
-    runs.push_back({{"record", suite.files[r.index / levels.size()]},
-                    {"level", level},
+  for (const FragilityRunOutcome& r : res.runs)
+    runs.push_back({{"record", suite.names[r.record]},
+                    {"level", r.level},
                     {"im", im},
-                    {"scale", cell_double(r.cells[cs])},
-                    {"overturned", over},
-                    {"max_abs_rotation", cell_double(r.cells[cm])}});
-    all.push_back({level, over});
-    groups[r.index / levels.size()].push_back({level, over});
-    ++n[r.index % levels.size()];
-    n_over[r.index % levels.size()] += over;
-  }
+                    {"scale", r.scale},
+                    {"overturned", r.overturned},
+                    {"max_abs_rotation", r.max_abs_rotation}});
   json lv = json::array();
-  for (std::size_t i = 0; i < levels.size(); ++i)
-    lv.push_back({{"im", levels[i]}, {"n", n[i]}, {"n_overturned", n_over[i]}});
-  const FragilityFit fit = fit_fragility(all);
-  const FragilityBand band =
-      fit.ok && bootstrap > 0 ? bootstrap_fragility(groups, int(bootstrap), std::uint64_t(seed)) : FragilityBand{};
+  for (const FragilityLevel& l : res.levels) lv.push_back({{"im", l.im}, {"n", l.n}, {"n_overturned", l.n_overturned}});
   j["levels"] = lv;
-  j["fit"] = fit_json(fit, band, int(bootstrap));
-  const double lo = *std::min_element(levels.begin(), levels.end()),
-               hi = *std::max_element(levels.begin(), levels.end());
-  j["curve"] = curve_json(fit, band, lo * 0.5, hi * 1.5);
+  j["fit"] = fit_json(res.fit, res.band, int(o.bootstrap));
+  j["curve"] = curve_json(res.curve);
   j["runs"] = runs;
   rep.plot_script = "plot_fragility.py";
   std::string curve;
@@ -164,88 +154,76 @@ StudyReport fragility_report(const Table& t, const Suite& suite, const std::vect
                    "--curve",
                    curve.empty() ? "-" : curve,
                    "--title",
-                   studied_object(definition.at("model")) + " under " + std::to_string(suite.files.size()) +
-                       " records, each scaled to " + std::to_string(levels.size()) + " levels of " + im};
-  if (fit.ok)
-    append_text(rep.text, "fragility: %zu runs, median %s = %.4g, beta = %.3g", all.size(), im.c_str(), fit.median,
-                fit.beta);
+                   studied_object(definition.at("model")) + " under " + std::to_string(suite.names.size()) +
+                       " records, each scaled to " + std::to_string(o.levels.size()) + " levels of " + im};
+  if (res.fit.ok)
+    append_text(rep.text, "fragility: %zu runs, median %s = %.4g, beta = %.3g", res.runs.size(), im.c_str(),
+                res.fit.median, res.fit.beta);
   else
-    append_text(rep.text, "fragility: %zu runs, no fit (%s)", all.size(), fit.why.c_str());
+    append_text(rep.text, "fragility: %zu runs, no fit (%s)", res.runs.size(), res.fit.why.c_str());
   return rep;
 }
 
 GridStudy fragility_grid(const Settings& given, const std::string& output) {
   const StudyOptions so(given, fragility_options());
-  const std::string im = so.text("im");
-  double period = 0;
-  if (im.rfind("sa:", 0) == 0) {
-    period = parse_number_list("im", im.substr(3)).at(0);
-    require_in_range("im (sa:T, T)", period, 0, 1e4, false);
-  } else if (im != "pga" && im != "pgv" && im != "pga-over-uplift") {
-    throw std::invalid_argument("im = '" + im + "' is not one of: pga, pgv, sa:T, pga-over-uplift");
-  }
+  IntensityMeasure imm = parse_intensity_measure("im", so.text("im"), 0.05);
   const double damping = so.number("damping");
   require_in_range("damping", damping, 0, 1, true, false);
+  imm.damping = damping;
+  FragilityOptions fo;
   if (!so.given("levels")) throw std::invalid_argument("levels: give the intensity levels A:B:N or A,B,C");
-  const std::vector<double> levels = parse_axis("levels", so.text("levels"), AxisSpacing::Linear).values;
-  for (double l : levels) require_in_range("levels", l, 0, 1e6, false);
+  fo.levels = parse_axis("levels", so.text("levels"), AxisSpacing::Linear).values;
+  for (double l : fo.levels) require_in_range("levels", l, 0, 1e6, false);
   if (!so.given("records")) throw std::invalid_argument("records: give a glob of record files");
-  const long bootstrap = so.integer("bootstrap"), seed = so.integer("seed");
-  if (bootstrap < 0 || bootstrap > 100000) throw std::invalid_argument("bootstrap: must be in [0, 100000]");
+  fo.bootstrap = so.integer("bootstrap");
+  const long seed = so.integer("seed");
+  if (fo.bootstrap < 0 || fo.bootstrap > 100000) throw std::invalid_argument("bootstrap: must be in [0, 100000]");
   if (seed < 0) throw std::invalid_argument("seed: must be >= 0");
-  const double t_after = so.number("t-after");
-  require_in_range("t-after", t_after, 0, 1e4);
-  const std::optional<double> t_fixed = so.given("t-end") ? std::optional<double>(so.number("t-end")) : std::nullopt;
-  if (t_fixed) require_in_range("t-end", *t_fixed, 0, 1e5, false);
+  fo.seed = std::uint64_t(seed);
+  fo.t_after = so.number("t-after");
+  require_in_range("t-after", fo.t_after, 0, 1e4);
+  if (so.given("t-end")) fo.t_end = so.number("t-end");
+  if (fo.t_end) require_in_range("t-end", *fo.t_end, 0, 1e5, false);
   const auto fm = std::make_shared<const ForcedModel>(forced_model_of(so));
   const double g = given.number("g", 9.81);
-  auto suite = std::make_shared<Suite>();
-  suite->files = expand_glob(so.text("records"));
-  for (const std::string& f : suite->files) {
-    suite->records.push_back(std::make_shared<const Accelerogram>(load_accelerogram(f, "records")));
-    suite->im.push_back(im_of(*suite->records.back(), im, period, damping, g, fm->alpha));
-    if (!(suite->im.back() > 0))
-      throw std::invalid_argument("records: '" + f + "' has " + im + " = 0: it cannot be scaled to a level");
-  }
+  const std::vector<std::string> files = expand_glob("records", so.text("records"), 100000);
+  std::vector<std::shared_ptr<const Accelerogram>> records;
+  for (const std::string& f : files)
+    records.push_back(std::make_shared<const Accelerogram>(load_accelerogram(f, "records")));
+  const auto suite = std::make_shared<const FragilitySuite>(fragility_suite(files, records, imm, g, fm->alpha));
   json digests = json::array();
   for (const auto& r : suite->records) digests.push_back(r->digest());
+  const std::string im = imm.text;
   const json definition = {{"model", fm->description},
-                           {"records", suite->files},
+                           {"records", suite->names},
                            {"record_digests", digests},
                            {"im", im},
-                           {"levels", levels},
-                           {"t_end", t_fixed ? json(*t_fixed) : json(nullptr)},
-                           {"t_after", t_after},
+                           {"levels", fo.levels},
+                           {"t_end", fo.t_end ? json(*fo.t_end) : json(nullptr)},
+                           {"t_after", fo.t_after},
                            {"damping", damping},
                            {"index", "level fastest, then record"}};
   GridStudy gs;
   gs.table = std::make_shared<const GridTable>(
       "fragility",
       std::vector<std::string>{"record", "level", "record_im", "scale", "overturned", "max_abs_rotation", "t_failure"},
-      levels.size() * suite->files.size(),
-      [suite, levels, fm, t_fixed, t_after](std::size_t i, RowBuilder& row) {
-        const std::size_t k = i / levels.size();
-        const double level = levels[i % levels.size()], scale = level / suite->im[k];
-        GroundMotion gm;
-        gm.horizontal.record = suite->records[k];
-        gm.horizontal.scale = scale;
-        const SurvivalOutcome out = fm->run(gm, t_fixed ? *t_fixed : suite->records[k]->t_last() + t_after);
-        row.add(csv_escape(suite->files[k]));
-        row.add(level);
-        row.add(suite->im[k]);
-        row.add(scale);
-        row.add(std::string(out.collapse_mode ? "1" : "0"));
-        row.add(out.max_abs_rotation);
-        if (out.t_failure)
-          row.add(*out.t_failure);
+      fo.levels.size() * suite->names.size(),
+      [suite, fo, fm](std::size_t i, RowBuilder& row) {
+        const FragilityRunOutcome r = fragility_run(*fm, *suite, fo, i);
+        row.add(csv_escape(suite->names[r.record]));
+        row.add(r.level);
+        row.add(r.record_im);
+        row.add(r.scale);
+        row.add(std::string(r.overturned ? "1" : "0"));
+        row.add(r.max_abs_rotation);
+        if (r.t_failure)
+          row.add(*r.t_failure);
         else
           row.empty();
       },
       definition, fm->tolerances, output);
   gs.threads = so.threads();
-  gs.finish = [suite, levels, definition, im, bootstrap, seed](const Table& t) {
-    return fragility_report(t, *suite, levels, definition, im, bootstrap, seed);
-  };
+  gs.finish = [suite, fo, definition, im](const Table& t) { return fragility_report(t, *suite, fo, definition, im); };
   return gs;
 }
 

@@ -1,0 +1,94 @@
+// SPDX-License-Identifier: Apache-2.0
+#pragma once
+// A fragility study as a typed C++ call: every record of a suite scaled to every intensity level,
+// one run of a forced model each (overturned or not), the fractions per level and the lognormal
+// curve fitted by maximum likelihood with a bootstrap band over the records (fragility_fit.hpp).
+//   FragilitySuite suite = fragility_suite(names, records, IntensityMeasure::pga(), g, alpha);
+//   FragilityResult r = run_fragility(model, suite, {.levels = {0.1, 0.2, 0.3}});
+// `blockdyn fragility` runs the same runs (fragility_run) on the sweep runner (threads, MPI,
+// resume) and reduces them with fragility_result.
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "blockdyn/analysis/forced/forced_model.hpp"
+#include "blockdyn/analysis/forced/fragility_fit.hpp"
+#include "blockdyn/excitation/accelerogram.hpp"
+
+namespace blockdyn {
+
+// What scales a record: its pga (g), pgv (m/s), Sa at a period (g) or its pga over the block's
+// uplift acceleration g tan(alpha). Each scales linearly with the record.
+struct IntensityMeasure {
+  enum class Kind { Pga, Pgv, Sa, PgaOverUplift };
+  Kind kind = Kind::Pga;
+  double period = 0;      // Sa: T (s)
+  double damping = 0.05;  // Sa: damping ratio
+  std::string text;       // as given: "pga", "pgv", "sa:0.5", "pga-over-uplift"
+
+  static IntensityMeasure pga() { return {Kind::Pga, 0, 0.05, "pga"}; }
+};
+// The record's measure at scale 1 (alpha: the block's slenderness, for pga-over-uplift).
+double intensity_of(const Accelerogram& r, const IntensityMeasure& im, double g, double alpha);
+
+struct FragilitySuite {
+  std::vector<std::string> names;
+  std::vector<std::shared_ptr<const Accelerogram>> records;
+  std::vector<double> im;  // of each record at scale 1
+};
+// The suite with each record's measure; throws std::invalid_argument naming `field` and the
+// record for a record whose measure is zero (it cannot be scaled to a level).
+FragilitySuite fragility_suite(const std::vector<std::string>& names,
+                               const std::vector<std::shared_ptr<const Accelerogram>>& records,
+                               const IntensityMeasure& im, double g, double alpha,
+                               const std::string& field = "records");
+
+struct FragilityOptions {
+  std::vector<double> levels;   // intensity levels (> 0)
+  std::optional<double> t_end;  // every run's duration (s); else each record's end + t_after
+  double t_after = 5;
+  long bootstrap = 200;  // resamples of the records for the 90 % band (0: none)
+  std::uint64_t seed = 1;
+  int threads = 1;  // run_fragility's worker threads (0: all cores)
+};
+// Throws std::invalid_argument naming the option, its value and the allowed range.
+void validate(const FragilityOptions& o);
+
+// One run of the study, index i: level i % L of record i / L (level fastest).
+struct FragilityRunOutcome {
+  std::size_t record = 0;
+  double level = 0, record_im = 0, scale = 0;
+  bool overturned = false;
+  double max_abs_rotation = 0;
+  std::optional<double> t_failure;
+};
+FragilityRunOutcome fragility_run(const ForcedModel& m, const FragilitySuite& s, const FragilityOptions& o,
+                                  std::size_t i);
+
+struct FragilityLevel {
+  double im = 0;
+  std::size_t n = 0, n_overturned = 0;
+};
+// The fitted curve on 80 levels from lo / 2 to 1.5 hi (lo, hi: the study's levels), with the
+// bootstrap's pointwise 90 % band where there is one.
+struct FragilityCurvePoint {
+  double im = 0, p = 0;
+  std::optional<double> p05, p95;
+};
+struct FragilityResult {
+  std::vector<FragilityRunOutcome> runs;  // in the order of their index
+  std::vector<FragilityLevel> levels;
+  FragilityFit fit;
+  FragilityBand band;
+  std::vector<FragilityCurvePoint> curve;
+};
+// The study's result from its runs (any order of computation; `runs` indexed as fragility_run).
+FragilityResult fragility_result(std::vector<FragilityRunOutcome> runs, const FragilitySuite& s,
+                                 const FragilityOptions& o);
+// Every run in memory (o.threads), then fragility_result: the same numbers as the command.
+FragilityResult run_fragility(const ForcedModel& m, const FragilitySuite& s, const FragilityOptions& o);
+
+}  // namespace blockdyn
