@@ -13,6 +13,7 @@
 #include "blockdyn/io/atomic_file.hpp"
 #include "cli_common.hpp"
 #include "cli_registry.hpp"
+#include "figure_script.hpp"
 #include "grid_run.hpp"
 
 namespace blockdyn::cli {
@@ -81,14 +82,14 @@ void run(const GridStudyCommand& c, const CLI::App& s, const GridStudyFlags& f) 
   const StudyReport r = study.finish(res.outcome.table);
   const std::string& plot = f.figures.at("plot");
   bool figures = !plot.empty();
-  for (const auto& [flag, args] : r.more_figures)
-    if (const auto it = f.figures.find(flag); it != f.figures.end() && !it->second.empty()) figures = true;
+  for (const auto& more : r.more_figures)
+    if (const auto it = f.figures.find(more.first); it != f.figures.end() && !it->second.empty()) figures = true;
   if (figures) {
     const FigureTable table(out.csv(), res.outcome.table);
-    if (!plot.empty()) run_figure(r.plot_script, r.plot_args, table.path(), plot);
-    for (const auto& [flag, args] : r.more_figures)
+    if (!plot.empty()) run_figure(plot_script(r.figure), figure_arguments(r.figure), table.path(), plot);
+    for (const auto& [flag, figure] : r.more_figures)
       if (const auto it = f.figures.find(flag); it != f.figures.end() && !it->second.empty())
-        run_figure(r.plot_script, args, table.path(), it->second);
+        run_figure(plot_script(figure), figure_arguments(figure), table.path(), it->second);
   }
   if (!f.json_out.empty()) emit_json(r.summary, f.json_out);
   if (f.json) emit_json(r.summary, "-");

@@ -15,6 +15,7 @@
 #include "blockdyn/io/progress.hpp"
 #include "cli_common.hpp"
 #include "cli_registry.hpp"
+#include "figure_script.hpp"
 #include "study_table_output.hpp"
 
 namespace blockdyn::cli {
@@ -68,10 +69,10 @@ void write_series_and_figure(const StudyCommand& c, const StudyOutputFlags& f, c
   }
   if (!f.plot.empty()) {
     std::vector<std::string> args;
-    for (const std::string& a : r.plot_args)
+    for (const std::string& a : figure_arguments(r.figure))
       args.push_back(a == "@plot" ? f.plot : a.rfind("@csv:", 0) == 0 ? series_target(c, f, a.substr(5)).path : a);
     try {
-      run_python(r.plot_script, args);
+      run_python(plot_script(r.figure), args);
     } catch (...) {
       remove_temporaries();
       throw;
@@ -95,9 +96,10 @@ void write_table_and_figure(const StudyOutputFlags& f, const std::string& stem, 
   };
   if (!f.plot.empty()) {
     std::vector<std::string> args{path, f.plot};
-    args.insert(args.end(), r.plot_args.begin(), r.plot_args.end());
+    const std::vector<std::string> more = figure_arguments(r.figure);
+    args.insert(args.end(), more.begin(), more.end());
     try {
-      run_python(r.plot_script, args);
+      run_python(plot_script(r.figure), args);
     } catch (...) {
       remove_temporary();
       throw;

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "simulate_output.hpp"
+#include "figure_script.hpp"
 
 #include <cstdio>
 #include <optional>
@@ -58,10 +59,10 @@ void run_and_write(const std::unique_ptr<PreparedRun>& run, const SimulateOutput
   if (spool) out.on_event = [&spool](const nlohmann::ordered_json& e) { spool->add(e); };
   out.timing_repeat = f.timing_repeat;
   const SimulateReport rep = run->run(out);
-  std::vector<std::string> animate_args = rep.figure.animate_args;
+  std::vector<std::string> animate_args = figure_arguments(rep.figure.animation);
   animate_args.insert(animate_args.end(), {"--frames", std::to_string(f.animate_frames)});
-  target.figures_and_clean(
-      {{rep.figure.plot_script, plot, rep.figure.plot_args}, {rep.figure.animate_script, f.animate, animate_args}});
+  target.figures_and_clean({{plot_script(rep.figure.plot), plot, figure_arguments(rep.figure.plot)},
+                            {animation_script(rep.figure.animation), f.animate, animate_args}});
   if (spool) {
     nlohmann::ordered_json j = rep.summary;
     if (f.timing) j["timing"] = to_json(rep.timing);

@@ -97,7 +97,7 @@ TEST(Settings, ScenarioRunEqualsTheDirectRun) {
   EXPECT_EQ(table.data()[7].name, "mode");
   EXPECT_TRUE(table.data()[7].is_text);
   EXPECT_EQ(table.data()[3].numbers.back(), r.final_state[2]);  // w at the end
-  EXPECT_EQ(rep.figure.plot_script, "plot_rigid.py");
+  EXPECT_EQ(rep.figure.plot.kind, "rigid");
 }
 
 TEST(Settings, TooLongATrajectoryIsRefusedBeforeRunning) {

@@ -124,10 +124,10 @@ StudyReport chaos_map_study(const Settings& given, const StudyRequest& request) 
     write_chaos_csv(os, pts);
     rep.series.push_back({"points", table_from_csv(os.str())});
   }
-  rep.plot_script = "plot_chaos_map.py";
-  rep.plot_args = {"@csv:points", "@plot",
-                   "--title",     forced_model_label(s) + ": largest Lyapunov exponent",
-                   "--threshold", std::to_string(o.threshold)};
+  rep.figure = FigureSpec{"chaos_map",
+                          {"@csv:points", "@plot"},
+                          {{"title", {forced_model_label(s) + ": largest Lyapunov exponent"}},
+                           {"threshold", {std::to_string(o.threshold)}}}};
   append_text(rep.text, "%zu points:", pts.size());
   for (const std::string& m : chaos_motions()) append_text(rep.text, " %ld %s", j["counts"][m].get<long>(), m.c_str());
   rep.text += "\n";
@@ -264,8 +264,7 @@ StudyReport forced_lyapunov_study(const StudyOptions& o, const StudyRequest& req
   char title[256];
   std::snprintf(title, sizeof title, "%s, tangent + saltation: LE = %.4g 1/s (%.4g p)", o.text("model").c_str(),
                 tl.exponent, tl.exponent / fm.p);
-  rep.plot_script = "plot_lyapunov.py";
-  rep.plot_args = {"@csv:history", "@plot", title};
+  rep.figure = FigureSpec{"lyapunov", {"@csv:history", "@plot", title}, {}};
   append_text(rep.text,
               "largest Lyapunov exponent: %.6g 1/s = %.6g p (%s, tangent + saltation, t = %.6g, %ld renormalisations, "
               "%ld impacts)\n",
@@ -313,8 +312,7 @@ StudyReport winkler_lyapunov_study(const StudyOptions& o, const StudyRequest& re
   char title[256];
   std::snprintf(title, sizeof title, "r=%g k=%g mu=%g %s, %s method: LE = %.3f", p.r, p.k, p.mu, orbit.ic.c_str(),
                 to_string(opt.method), r.exponent);
-  rep.plot_script = "plot_lyapunov.py";
-  rep.plot_args = {"@csv:history", "@plot", title};
+  rep.figure = FigureSpec{"lyapunov", {"@csv:history", "@plot", title}, {}};
   json& j = rep.summary;
   j = orbit_summary_head(orbit);
   j["options"] = {{"method", to_string(opt.method)},

@@ -122,7 +122,7 @@ StudyReport equilibria_study(const Settings& given, const StudyRequest& request)
   for (const auto& e : eqs)
     append_text(rep.text, "%18.12f %18.12f %10s %10s %14.6g %8d\n", e.w, e.h + 0.5, to_string(e.stability),
                 to_string(e.branch), e.arm_slope, e.corners_below);
-  rep.plot_script = "plot_equilibria.py";
+  rep.figure = FigureSpec{"equilibria", {}, {}};
   return rep;
 }
 
@@ -185,7 +185,7 @@ StudyReport bifurcation_study(const Settings& given, const StudyRequest& request
   append_text(rep.text, "k_uns = %.10f  (one-corner closed form %.10f, fold at w = %.10f)\n", c.k_uns,
               k_uns_one_corner(r), fold_tilt_one_corner(r));
   append_text(rep.text, "k_os - k_uns = %.10f\n", c.k_os - c.k_uns);
-  rep.plot_script = "plot_bifurcation.py";
+  rep.figure = FigureSpec{"bifurcation", {}, {}};
   return rep;
 }
 
@@ -251,7 +251,7 @@ StudyReport curves_study(const Settings& given, const StudyRequest&) {
   j["max_rel_dev_k_os_vs_linearized"] = dev_lin;
   j["max_rel_dev_k_uns_vs_one_corner_closed_form"] = dev_uns;
   rep.sidecar = j;
-  rep.plot_script = "plot_bifurcation_curves.py";
+  rep.figure = FigureSpec{"bifurcation_curves", {}, {}};
   return rep;
 }
 

@@ -107,8 +107,7 @@ StudyReport flight_time(const Settings& given, const StudyRequest&) {
   r.summary["grid_k_from_which_all_fly_while_ihor_below_2"] = json_or_null(k_always);
   append_text(r.text, "%zu runs (%s, r = %g, mu = %g, t_end = %g): %d flew, %d failed; lowest k with flight: %s\n",
               runs.size(), ic.name().c_str(), p.r, p.mu, run.t_end, flown, failed, null_or(k_first).c_str());
-  r.plot_script = "plot_flight.py";
-  r.plot_args = {"time"};
+  r.figure = FigureSpec{"flight", {"time"}, {}};
   return r;
 }
 
@@ -291,8 +290,7 @@ StudyReport flight_boundary(const Settings& given, const StudyRequest&) {
   r.summary = meta;
   r.summary["points"] = points;
   r.text = boundary_text(rs, rows, b.ns, b.crits);
-  r.plot_script = "plot_flight.py";
-  r.plot_args = {"boundary"};
+  r.figure = FigureSpec{"flight", {"boundary"}, {}};
   return r;
 }
 
@@ -362,8 +360,7 @@ StudyReport kmin_study(const Settings& given, const StudyRequest&) {
     for (const auto& c : row) append_text(r.text, "%-20.8g", std::strtod(c.c_str(), nullptr));
     r.text += "\n";
   }
-  r.plot_script = "plot_flight.py";
-  r.plot_args = {"kmin"};
+  r.figure = FigureSpec{"flight", {"kmin"}, {}};
   return r;
 }
 
@@ -414,8 +411,7 @@ StudyReport flight_map(const Settings& given, const StudyRequest&) {
   r.summary["numerical_failures"] = failed;
   append_text(r.text, "%zu cells (%s, mu = %g, t_end = %g): %d flew, %d failed\n", cells.size(), ic.name().c_str(), mu,
               run.t_end, flown, failed);
-  r.plot_script = "plot_flight.py";
-  r.plot_args = {"map"};
+  r.figure = FigureSpec{"flight", {"map"}, {}};
   return r;
 }
 

@@ -140,22 +140,19 @@ StudyReport fragility_report(const Table& t, const FragilitySuite& suite, const 
   j["fit"] = fit_json(res.fit, res.band, int(o.bootstrap));
   j["curve"] = curve_json(res.curve);
   j["runs"] = runs;
-  rep.plot_script = "plot_fragility.py";
   std::string curve;
   for (const json& c : j["curve"])
     curve += format_double(c["im"].get<double>()) + ":" + format_double(c["p"].get<double>()) + ":" +
              (c.contains("p05") ? format_double(c["p05"].get<double>()) + ":" + format_double(c["p95"].get<double>())
                                 : std::string("nan:nan")) +
              ",";
-  rep.plot_args = {"@csv:table",
-                   "@plot",
-                   "--im",
-                   im,
-                   "--curve",
-                   curve.empty() ? "-" : curve,
-                   "--title",
-                   studied_object(definition.at("model")) + " under " + std::to_string(suite.names.size()) +
-                       " records, each scaled to " + std::to_string(o.levels.size()) + " levels of " + im};
+  rep.figure = FigureSpec{"fragility",
+                          {"@csv:table", "@plot"},
+                          {{"im", {im}},
+                           {"curve", {curve.empty() ? "-" : curve}},
+                           {"title",
+                            {studied_object(definition.at("model")) + " under " + std::to_string(suite.names.size()) +
+                             " records, each scaled to " + std::to_string(o.levels.size()) + " levels of " + im}}}};
   if (res.fit.ok)
     append_text(rep.text, "fragility: %zu runs, median %s = %.4g, beta = %.3g", res.runs.size(), im.c_str(),
                 res.fit.median, res.fit.beta);

@@ -118,9 +118,12 @@ StudyReport cycles_study(const Settings& given, const StudyRequest& request) {
         {"strobe", table_of([&](std::ostream& os) { write_samples_csv(os, tr, true, "cycle", label_at); })});
   if (request.wants("trace"))
     rep.series.push_back({"trace", table_of([&](std::ostream& os) { write_samples_csv(os, tr, false); })});
-  rep.plot_script = "plot_cycles.py";
-  rep.plot_args = {"@csv:strobe",           "@plot",    "--trace",           "@csv:trace", "--block",
-                   std::to_string(h.block), "--period", short_num(h.period), "--title",    h.title};
+  rep.figure = FigureSpec{"cycles",
+                          {"@csv:strobe", "@plot"},
+                          {{"trace", {"@csv:trace"}},
+                           {"block", {std::to_string(h.block)}},
+                           {"period", {short_num(h.period)}},
+                           {"title", {h.title}}}};
   append_text(rep.text, "%zu strobe samples, %zu impacts, %s\n", tr.strobes(), impacts,
               rep.summary["status"].get<std::string>().c_str());
   for (const CycleSegment& sg : cyc.segments)
@@ -194,14 +197,14 @@ StudyReport impact_map_study(const Settings& given, const StudyRequest& request)
   if (request.wants("trace"))
     rep.series.push_back(
         {"trace", table_of([&](std::ostream& os) { write_samples_csv(os, tr, false, "", {}, t_from); })});
-  rep.plot_script = "plot_impact_map.py";
-  rep.plot_args = {"@csv:impacts",    "@plot",
-                   "--poincare",      "@csv:poincare",
-                   "--trace",         "@csv:trace",
-                   "--block",         std::to_string(h.block),
-                   "--section-phase", short_num(section_phase),
-                   "--period",        short_num(h.period),
-                   "--title",         h.title};
+  rep.figure = FigureSpec{"impact_map",
+                          {"@csv:impacts", "@plot"},
+                          {{"poincare", {"@csv:poincare"}},
+                           {"trace", {"@csv:trace"}},
+                           {"block", {std::to_string(h.block)}},
+                           {"section-phase", {short_num(section_phase)}},
+                           {"period", {short_num(h.period)}},
+                           {"title", {h.title}}}};
   append_text(rep.text, "%zu impacts, %zu Poincare samples (phase %g), %s\n", map.size(), sections, section_phase,
               j["status"].get<std::string>().c_str());
   return rep;

@@ -136,9 +136,8 @@ StudyReport response_study(const Settings& given, const StudyRequest& request) {
   char title[256];
   std::snprintf(title, sizeof title, "r=%g k=%g mu=%g %s: %s", p.r, p.k, p.mu, orbit.ic.c_str(),
                 to_string(run.report.type));
-  rep.plot_script = "plot_response.py";
-  rep.plot_args = {"@csv:swings", "@csv:phase", "@plot", title};
-  if (axis == "log") rep.plot_args.insert(rep.plot_args.begin(), "--log-energy");
+  rep.figure = FigureSpec{"response", {"@csv:swings", "@csv:phase", "@plot", title}, {}};
+  if (axis == "log") rep.figure.options.push_back({"log-energy", {}});
   json& j = rep.summary;
   j = orbit_summary_head(orbit);
   const ResponseCriteria& c = opt.criteria;
@@ -194,8 +193,7 @@ StudyReport poincare_study(const Settings& given, const StudyRequest&) {
   char title[256];
   std::snprintf(title, sizeof title, "Poincare map w=0: r=%g k=%g mu=%g %s, t<=%g", orbit.p.r, orbit.p.k, orbit.p.mu,
                 orbit.ic.c_str(), r.t_final);
-  rep.plot_script = "plot_poincare.py";
-  rep.plot_args = {"@csv:crossings", "@plot", title};
+  rep.figure = FigureSpec{"poincare", {"@csv:crossings", "@plot", title}, {}};
   double max_w = 0, e_lo = INFINITY, e_hi = -INFINITY;
   for (const auto& q : pts) {
     max_w = std::max(max_w, std::fabs(q.w));
@@ -276,8 +274,7 @@ StudyReport surface_study(const Settings& given, const StudyRequest& request) {
   char title[256];
   std::snprintf(title, sizeof title, "r=%g k=%g mu=%g %s, E=%.6g, w0=%.4g y0=%.6g y0'=%.6g", p.r, p.k, p.mu,
                 orbit.ic.c_str(), E, orbit.z0[kW], orbit.z0[kH] + 0.5, orbit.z0[kVY]);
-  rep.plot_script = "plot_energy_surface.py";
-  rep.plot_args = {"@csv:heave", "@csv:rock", "@csv:phase", "@plot", title};
+  rep.figure = FigureSpec{"energy_surface", {"@csv:heave", "@csv:rock", "@csv:phase", "@plot", title}, {}};
   json& j = rep.summary;
   j = orbit_summary_head(orbit);
   j["options"] = {{"t_end", t_end}, {"phase_dt", phase_dt}, {"n", n}};

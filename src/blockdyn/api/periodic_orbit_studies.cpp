@@ -159,9 +159,9 @@ StudyReport region_report(const StudyOptions& o, const OrbitSetup& st, const Stu
   merge(rep.summary, r.summary);
   if (request.wants("table"))
     rep.series.push_back({"table", table_of([&](std::ostream& os) { write_region_csv(os, st.rf, r.points); })});
-  rep.plot_script = "plot_periodic_orbits.py";
-  rep.plot_args = {"@csv:table", "@plot",  "--kind",   "region",
-                   "--title",    st.title, "--linear", linear_overlay(st, false)};
+  rep.figure = FigureSpec{"periodic_orbits",
+                          {"@csv:table", "@plot"},
+                          {{"kind", {"region"}}, {"title", {st.title}}, {"linear", {linear_overlay(st, false)}}}};
   append_text(rep.text, "%zu points: %ld with orbits, %ld with a stable orbit\n", r.points.size(), r.with_orbits,
               r.with_stable_orbits);
   return rep;
@@ -181,8 +181,8 @@ StudyReport orbits_report(const OrbitSetup& st, const OrbitsAtPoint& at, const S
                           })});
   char title[256];
   std::snprintf(title, sizeof title, "%s, K_s=%.4g g, omega=%.4g", st.title.c_str(), st.rf.ks, st.rf.omega);
-  rep.plot_script = "plot_periodic_orbits.py";
-  rep.plot_args = {"@csv:trajectories", "@plot", "--kind", "orbits", "--title", title};
+  rep.figure =
+      FigureSpec{"periodic_orbits", {"@csv:trajectories", "@plot"}, {{"kind", {"orbits"}}, {"title", {title}}}};
   const double alpha = st.rf.alpha();
   append_text(rep.text, "%zu orbit(s) of type (%d,%d)%s at K_s = %g g (beta = %g), omega = %g:\n", orbits.size(),
               st.type.m, st.type.n, st.type.symmetric ? " symmetric" : "", st.rf.ks, st.rf.ks / alpha, st.rf.omega);
@@ -239,9 +239,12 @@ StudyReport continuation_report(const StudyOptions& o, const OrbitSetup& st, con
   merge(rep.summary, b.summary);
   if (request.wants("table"))
     rep.series.push_back({"table", table_of([&](std::ostream& os) { write_branches_csv(os, st.rf, b.rows); })});
-  rep.plot_script = "plot_periodic_orbits.py";
-  rep.plot_args = {"@csv:table", "@plot",   "--kind", "branches", "--parameter",
-                   co.parameter, "--title", st.title, "--linear", linear_overlay(st, true)};
+  rep.figure = FigureSpec{"periodic_orbits",
+                          {"@csv:table", "@plot"},
+                          {{"kind", {"branches"}},
+                           {"parameter", {co.parameter}},
+                           {"title", {st.title}},
+                           {"linear", {linear_overlay(st, true)}}}};
   rep.text = branches_text(b.summary["branches"], b.count, at.orbits.size());
   return rep;
 }

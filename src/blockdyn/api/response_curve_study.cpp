@@ -178,8 +178,8 @@ GridStudy response_curve_grid(const Settings& given, const std::string& output) 
     j["options"] = options;
     j["tolerances"] = m.tolerances;
     j["points"] = response_curve_points(t, assembly);
-    rep.plot_script = "plot_response_curve.py";
-    rep.plot_args = {"@csv:table", "@plot", "--title", title, "--x", versus_phi ? "phi_l" : "omega"};
+    rep.figure = FigureSpec{
+        "response_curve", {"@csv:table", "@plot"}, {{"title", {title}}, {"x", {versus_phi ? "phi_l" : "omega"}}}};
     append_text(rep.text, "%zu points", t.rows.size());
     return rep;
   };

@@ -286,17 +286,18 @@ class PreparedRigid3d final : public PreparedRun {
     rep.text = summary_text(r);
     const std::string title = body_phrase(s_.body) + motion_phrase(s_.ground) + ": " + to_string(r.status) +
                               " at t = " + number_text(r.t_final, 6) + " s";
-    rep.figure.plot_script = "plot_rigid3d.py";
-    rep.figure.plot_args = {
-        "--title", title, "--weight", number_text(s_.body.mass * s_.body.g), "--height", number_text(s_.body.height)};
-    rep.figure.animate_script = "animate_rigid3d.py";
-    rep.figure.animate_args = {"--title",
-                               title,
-                               "--shape",
-                               s_.body.shape == BodyShape3d::Box ? "box" : "cylinder",
-                               "--size",
-                               number_text(s_.body.width) + "," + number_text(s_.body.depth) + "," +
-                                   number_text(s_.body.height) + "," + number_text(s_.body.radius)};
+    rep.figure.plot = FigureSpec{"rigid3d",
+                                 {},
+                                 {{"title", {title}},
+                                  {"weight", {number_text(s_.body.mass * s_.body.g)}},
+                                  {"height", {number_text(s_.body.height)}}}};
+    rep.figure.animation = FigureSpec{"rigid3d",
+                                      {},
+                                      {{"title", {title}},
+                                       {"shape", {s_.body.shape == BodyShape3d::Box ? "box" : "cylinder"}},
+                                       {"size",
+                                        {number_text(s_.body.width) + "," + number_text(s_.body.depth) + "," +
+                                         number_text(s_.body.height) + "," + number_text(s_.body.radius)}}}};
     return rep;
   }
 

@@ -185,16 +185,14 @@ GridStudy rocking_grid(const Settings& given, const std::string& output) {
     if (ax.scales.size() > 1) j["overturning_scales"] = r["overturning_scales"];
     std::size_t n_over = 0;
     for (const json& x : j["rows"]) n_over += x["overturned"].get<bool>();
-    rep.plot_script = "plot_rocking_spectrum.py";
     std::string record = definition.at("record").get<std::string>();
     record = record.substr(record.find_last_of('/') + 1);  // npos + 1 = 0: the whole name
-    rep.plot_args = {"@csv:table",
-                     "@plot",
-                     "--alpha",
-                     format_double(alpha),
-                     "--title",
-                     definition.at("model").get<std::string>() + " blocks of alpha = " + number_text(alpha, 4) +
-                         " rad under " + record};
+    rep.figure = FigureSpec{"rocking_spectrum",
+                            {"@csv:table", "@plot"},
+                            {{"alpha", {format_double(alpha)}},
+                             {"title",
+                              {definition.at("model").get<std::string>() +
+                               " blocks of alpha = " + number_text(alpha, 4) + " rad under " + record}}}};
     append_text(rep.text, "rocking spectrum: %zu points, %zu overturned", j["rows"].size(), n_over);
     return rep;
   };

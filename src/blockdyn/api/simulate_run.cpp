@@ -127,9 +127,9 @@ SimulateReport run_winkler(const Scenario& given, const SimulateOutputs& out) {
   std::snprintf(tail, sizeof tail, ": %s at t = %.6g", to_string(r.status), r.t_final);
   const std::string title =
       head + motion_phrase(sc.ground, sc.physical ? "Hz" : "/t_ref", sc.physical ? "s" : "t_ref") + tail;
-  rep.figure.plot_script = "plot_trajectory.py";
-  rep.figure.plot_args = {"--alpha", arg(sc.params.alpha()), "--title", title};
-  rep.figure.animate_args = {"--model", "winkler", "--width", arg(sc.params.r), "--height", "1", "--title", title};
+  rep.figure.plot = FigureSpec{"trajectory", {}, {{"alpha", {arg(sc.params.alpha())}}, {"title", {title}}}};
+  rep.figure.animation = FigureSpec{
+      "block", {}, {{"model", {"winkler"}}, {"width", {arg(sc.params.r)}}, {"height", {"1"}}, {"title", {title}}}};
   return rep;
 }
 
@@ -175,13 +175,18 @@ SimulateReport run_rigid_family(const Scenario& sc, const SimulateOutputs& out, 
   rep.text = rigid_text(r, p.shape.alpha());
   rep.timing = r.timing;
   const std::string title = block_title(m, p) + motion_phrase(sc.ground);
-  rep.figure.plot_script = "plot_rigid.py";
-  rep.figure.plot_args = {"--alpha",  arg(p.shape.alpha()), "--model", sc.model,
-                          "--status", to_string(r.status),  "--title", title};
-  rep.figure.animate_args = {"--model",  sc.model,
-                             "--width",  arg(p.shape.width),
-                             "--height", arg(p.shape.height),
-                             "--title",  title + ": " + to_string(r.status)};
+  rep.figure.plot = FigureSpec{"rigid",
+                               {},
+                               {{"alpha", {arg(p.shape.alpha())}},
+                                {"model", {sc.model}},
+                                {"status", {to_string(r.status)}},
+                                {"title", {title}}}};
+  rep.figure.animation = FigureSpec{"block",
+                                    {},
+                                    {{"model", {sc.model}},
+                                     {"width", {arg(p.shape.width)}},
+                                     {"height", {arg(p.shape.height)}},
+                                     {"title", {title + ": " + to_string(r.status)}}}};
   return rep;
 }
 
@@ -279,9 +284,8 @@ class PreparedAssembly final : public PreparedRun {
       std::snprintf(buf, sizeof buf, "%s%.17g,%.17g", sizes.empty() ? "" : ",", b.width, b.height);
       sizes += buf;
     }
-    rep.figure.plot_script = "plot_assembly.py";
-    rep.figure.plot_args = {"--title", title};
-    rep.figure.animate_args = {"--title", title, "--sizes", sizes};
+    rep.figure.plot = FigureSpec{"assembly", {}, {{"title", {title}}}};
+    rep.figure.animation = FigureSpec{"assembly", {}, {{"title", {title}}, {"sizes", {sizes}}}};
     std::string polygons;
     bool any_polygon = false;
     for (const AssemblyBlock& b : a.blocks) {
@@ -296,10 +300,8 @@ class PreparedAssembly final : public PreparedRun {
       polygons += one;
     }
     if (any_polygon) {
-      rep.figure.animate_args.push_back("--polygons");
-      rep.figure.animate_args.push_back(polygons);
+      rep.figure.animation.options.push_back({"polygons", {polygons}});
     }
-    rep.figure.animate_script = "animate_assembly.py";
     return rep;
   }
 

@@ -17,6 +17,8 @@
 #include "blockdyn/simulation/run_clock.hpp"
 #include "blockdyn/simulation/trajectory_table.hpp"
 
+#include "blockdyn/api/figure_spec.hpp"
+
 namespace blockdyn {
 
 struct SimulateOutputs {
@@ -27,10 +29,10 @@ struct SimulateOutputs {
   int timing_repeat = 1;  // repeat the integration (no outputs) and keep the least CPU time
 };
 
-// What a figure of the run needs (the plot and animation scripts' arguments).
+// The run's figures: its plot (drawn from the trajectory's CSV and the figure's path, then the
+// spec's inputs) and its animation.
 struct SimulateFigure {
-  std::string plot_script, animate_script = "animate_block.py";
-  std::vector<std::string> plot_args, animate_args;
+  FigureSpec plot, animation;
 };
 
 struct SimulateReport {

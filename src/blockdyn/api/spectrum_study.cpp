@@ -148,11 +148,12 @@ GridStudy spectrum_grid(const Settings& given, const std::string& output) {
     const SpectrumPoints sp = spectrum_points(t, pulse, fm->alpha, fm->p);
     j["rows"] = sp.json;
     j["runs"] = sp.runs;
-    rep.plot_script = "plot_spectrum.py";
-    rep.plot_args = {"@csv:table", "@plot", "--title", title};
-    rep.more_figures.push_back({"plot-map",
-                                {"@csv:table", "@plot", "--title", title, "--map", format_double(o.amplitude_min),
-                                 format_double(o.amplitude_max)}});
+    rep.figure = FigureSpec{"spectrum", {"@csv:table", "@plot"}, {{"title", {title}}}};
+    rep.more_figures.push_back(
+        {"plot-map",
+         FigureSpec{"spectrum",
+                    {"@csv:table", "@plot"},
+                    {{"title", {title}}, {"map", {format_double(o.amplitude_min), format_double(o.amplitude_max)}}}}});
     rep.text = spectrum_text(sp);
     return rep;
   };

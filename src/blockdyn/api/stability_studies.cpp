@@ -68,8 +68,7 @@ StudyReport search_report(StudyTable t, const json& meta, const json& points, co
   r.sidecar = meta;
   r.summary = meta;
   r.summary["points"] = points;
-  r.plot_script = "plot_stability.py";
-  r.plot_args = {panel};
+  r.figure = FigureSpec{"stability", {panel}, {}};
   return r;
 }
 
@@ -162,8 +161,7 @@ StudyReport overturn_study(const Settings& given, const StudyRequest&) {
   append_text(r.text, "%zu runs (%s, r = %g, mu = %g, t_end = %g): %d overturned, %d failed; lowest k without: %s\n",
               runs.size(), ic.name().c_str(), p.r, p.mu, run.t_end, over, failed,
               std::isnan(k_first_stable) ? "none" : cell_text(k_first_stable).c_str());
-  r.plot_script = "plot_stability.py";
-  r.plot_args = {"overturn"};
+  r.figure = FigureSpec{"stability", {"overturn"}, {}};
   return r;
 }
 

@@ -13,6 +13,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "blockdyn/api/figure_spec.hpp"
+
 #include "blockdyn/analysis/winkler/study_options.hpp"
 #include "blockdyn/api/option_spec.hpp"
 #include "blockdyn/api/settings.hpp"
@@ -49,12 +51,11 @@ struct StudyReport {
   nlohmann::ordered_json sidecar;  // the JSON beside the CSV
   nlohmann::ordered_json summary;  // the JSON summary
   std::string text;                // the summary for a person (printed unless JSON goes to stdout)
-  std::string plot_script;         // python/plot_*.py: <csv> <figure> plot_args...
-  // Series studies: the script's whole argument list, with "@plot" for the figure's path and
-  // "@csv:<name>" for a table's.
-  std::vector<std::string> plot_args;
-  // Further figures by the script: (the output option naming the figure, the argument template).
-  std::vector<std::pair<std::string, std::vector<std::string>>> more_figures{};
+  // The figure (table studies: drawn from the table's CSV and the figure's path, then its inputs;
+  // series studies: its inputs name the series ("@csv:<name>") and the figure ("@plot")).
+  FigureSpec figure;
+  // Further figures: (the output that names the figure, the figure).
+  std::vector<std::pair<std::string, FigureSpec>> more_figures{};
 };
 
 struct StudyRequest {

@@ -93,13 +93,12 @@ StudyReport survival_report(const Table& t, const ForcedModel& fm, const Surviva
   const SurvivalPoints sp = survival_points(t, refine > 0);
   j["counts"] = sp.counts_json();
   j["points"] = sp.points;
-  rep.plot_script = "plot_survival.py";
-  rep.plot_args = {"@csv:table", "@plot", "--title", title};
+  rep.figure = FigureSpec{"survival", {"@csv:table", "@plot"}, {{"title", {title}}}};
   if (refine > 0)
-    rep.plot_args.insert(
-        rep.plot_args.end(),
-        {"--refined", format_double(o.omega_points > 1 ? (o.omega_max - o.omega_min) / (o.omega_points - 1) : 1.0),
-         format_double(o.beta_points > 1 ? (o.beta_max - o.beta_min) / (o.beta_points - 1) : 1.0)});
+    rep.figure.options.push_back(
+        {"refined",
+         {format_double(o.omega_points > 1 ? (o.omega_max - o.omega_min) / (o.omega_points - 1) : 1.0),
+          format_double(o.beta_points > 1 ? (o.beta_max - o.beta_min) / (o.beta_points - 1) : 1.0)}});
   const auto& c = sp.counts;
   append_text(rep.text, "%zu points: %ld rest, %ld stable, %ld collapse, %ld invalid", t.rows.size(), c[0], c[1], c[2],
               c[3]);
