@@ -73,38 +73,6 @@ const GridStudyCommand& grid_study_command(const std::string& name) {
                               "' is not one of: spectrum, survival, response-curve, rocking-spectrum, fragility");
 }
 
-Table compute_table(const PointTable& t, int threads, PointPlan* plan,
-                    const std::function<void(std::size_t, std::size_t)>& progress) {
-  std::map<std::size_t, std::string> rows;
-  AllPoints all(t.size());
-  PointPlan& p = plan ? *plan : all;
-  std::size_t done = 0;
-  const FinishedRow finished = [&rows](std::size_t i) -> const std::string* {
-    const auto it = rows.find(i);
-    return it == rows.end() ? nullptr : &it->second;
-  };
-  for (std::vector<std::size_t> stage = p.next_stage(finished); !stage.empty(); stage = p.next_stage(finished)) {
-    std::vector<std::size_t> todo;
-    for (std::size_t i : stage)
-      if (!rows.count(i)) todo.push_back(i);
-    const std::size_t total = done + todo.size();
-    compute_rows(t, todo, threads, [&](std::size_t i, const SweepRow& r) {
-      rows[i] = r.text;
-      if (progress) progress(++done, total);
-    });
-  }
-  Table out;
-  const std::string& header = t.header();
-  out.columns = split_csv_line(header.substr(0, header.size() - 1));
-  for (const auto& [i, text] : rows) {
-    TableRow r;
-    r.cells = split_csv_line(text.substr(0, text.size() - 1));
-    r.index = i;
-    out.rows.push_back(std::move(r));
-  }
-  return out;
-}
-
 StudyReport run_grid_study(const std::string& name, const Settings& s,
                            const std::function<void(std::size_t, std::size_t)>& progress) {
   const GridStudyCommand& c = grid_study_command(name);

@@ -11,6 +11,7 @@
 
 #include "blockdyn/analysis/sweep/grid_table.hpp"
 #include "blockdyn/analysis/sweep/point_plan.hpp"
+#include "blockdyn/analysis/sweep/table_in_memory.hpp"
 #include "blockdyn/api/study_command.hpp"
 
 namespace blockdyn {
@@ -38,9 +39,6 @@ struct GridStudyCommand {
 const std::vector<GridStudyCommand>& grid_study_commands();
 const GridStudyCommand& grid_study_command(const std::string& name);
 
-// The table computed in memory on `threads` threads, stage after stage: the rows the runner writes.
-Table compute_table(const PointTable& t, int threads, PointPlan* plan,
-                    const std::function<void(std::size_t done, std::size_t total)>& progress = {});
 // A grid study from options by name, in memory; the table as the report's table.
 StudyReport run_grid_study(const std::string& name, const Settings& s,
                            const std::function<void(std::size_t, std::size_t)>& progress = {});
