@@ -45,10 +45,10 @@ void add_spec_options(CLI::App& app, const std::vector<StudyOption>& specs) {
     std::string names = "--" + o.name;
     for (const std::string& a : o.aliases) names += ",--" + a;
     if (o.is_flag) {
-      app.add_flag(names, o.help);
+      app.add_flag(names)->description(cli_text(o.help));
       continue;
     }
-    CLI::Option* opt = app.add_option(names, o.help);
+    CLI::Option* opt = app.add_option(names)->description(cli_text(o.help));
     if (!o.default_value.empty()) opt->default_str(o.default_value);
     // A list: "a,b,c", several values after the flag, or the flag repeated (as CLI11's vectors took).
     if (o.is_list)

@@ -16,6 +16,10 @@
 
 namespace blockdyn::cli {
 
+// The library's text (messages, help) as the command line spells it: each option named in
+// backticks becomes --name (spell_options, api/option_spec.hpp).
+inline std::string cli_text(std::string_view text) { return spell_options(text, "--", false); }
+
 // Thrown for invalid user input: main prints "error: <what>" and exits with status 2.
 struct UsageError : std::invalid_argument {
   using std::invalid_argument::invalid_argument;

@@ -221,9 +221,9 @@ CliOutcome run_cli(const std::vector<std::string>& args) {
     // Every usage error exits 2 (CLI11's own codes are not part of the contract).
     out = {2, e.what()};
   } catch (const std::invalid_argument& e) {
-    out = {2, e.what()};
+    out = {2, cli_text(e.what())};
   } catch (const std::exception& e) {
-    out = {1, e.what()};
+    out = {1, cli_text(e.what())};
   }
   return out;
 }

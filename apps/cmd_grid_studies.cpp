@@ -98,11 +98,11 @@ void run(const GridStudyCommand& c, const CLI::App& s, const GridStudyFlags& f) 
 
 void add(CLI::App& app, const GridStudyCommand& c) {
   auto f = std::make_shared<GridStudyFlags>();
-  CLI::App* s = app.add_subcommand(c.name, c.description);
+  CLI::App* s = app.add_subcommand(c.name, cli_text(c.description));
   add_spec_options(*s, c.options);
-  s->add_option("--" + c.csv_flag, f->csv, c.csv_help);
-  for (const StudyOption& fig : c.figures) s->add_option("--" + fig.name, f->figures[fig.name], fig.help);
-  add_grid_report_flags(*s, f->g, f->json, f->json_out, f->progress, f->quiet, c.quiet_help);
+  s->add_option("--" + c.csv_flag, f->csv, cli_text(c.csv_help));
+  for (const StudyOption& fig : c.figures) s->add_option("--" + fig.name, f->figures[fig.name], cli_text(fig.help));
+  add_grid_report_flags(*s, f->g, f->json, f->json_out, f->progress, f->quiet, cli_text(c.quiet_help));
   s->callback([&c, s, f] { run(c, *s, *f); });
 }
 

@@ -156,7 +156,7 @@ void run_command(const StudyCommand& c, const CLI::App& app, const StudyOutputFl
 }
 
 void add_study(CLI::App& app, const StudyCommand& c) {
-  CLI::App* s = app.add_subcommand(c.name, c.description);
+  CLI::App* s = app.add_subcommand(c.name, cli_text(c.description));
   add_spec_options(*s, c.options);
   auto f = std::make_shared<StudyOutputFlags>();
   if (c.outputs == StudyOutputs::Table) {
@@ -167,7 +167,8 @@ void add_study(CLI::App& app, const StudyCommand& c) {
     if (c.series_outputs.empty())
       s->add_option("--" + c.csv_flag, f->csv,
                     c.csv_flag == "csv-prefix" ? "write the series as PREFIX_<name>.csv" : "write the series CSV here");
-    for (const SeriesOutput& so : c.series_outputs) s->add_option("--" + so.flag, f->series_paths[so.name], so.help);
+    for (const SeriesOutput& so : c.series_outputs)
+      s->add_option("--" + so.flag, f->series_paths[so.name], cli_text(so.help));
     s->add_option("--plot", f->plot, "write the figure here (PNG + SVG)");
     s->add_flag("--json", f->json_stdout, "print the JSON summary on stdout");
     s->add_option("--json-out", f->json_out, "also write the JSON summary to this file");

@@ -120,7 +120,7 @@ void run(const CLI::App& s, const RunnerFlags& f) {
   const Settings given = settings_of(s, kRunnerFlags);
   if (f.list_axes) {
     for (const auto& [name, what] : sweep_family(given).sweep_axes())
-      std::printf("%-20s %s\n", name.c_str(), what.c_str());
+      std::printf("%-20s %s\n", name.c_str(), cli_text(what).c_str());
     return;
   }
   const SweepDefinition d = sweep_definition(given);

@@ -14,6 +14,7 @@
 #include <thread>
 
 #include "blockdyn/analysis/sweep/parallel_map.hpp"
+#include "blockdyn/api/option_spec.hpp"
 #include "cli_common.hpp"
 
 #ifdef BLOCKDYN_HAVE_MPI
@@ -72,7 +73,8 @@ SweepRow decode(const std::string& s) {
   return SweepRow{s.substr(nl + 1, n), s.substr(nl + 1 + n)};
 }
 
-[[noreturn]] void abort_all(const std::string& what) {
+[[noreturn]] void abort_all(const std::string& what_raw) {
+  const std::string what = spell_options(what_raw, "--", false);
   std::fprintf(stderr, "error: %s\n", what.c_str());
   std::fflush(stderr);
   MPI_Abort(MPI_COMM_WORLD, 1);
@@ -190,10 +192,10 @@ MpiSweepResult run_sweep_mpi(const PointTable& ev, SweepRunOptions o, PointPlan*
       session = std::make_unique<SweepSession>(ev, o);
     } catch (const std::invalid_argument& e) {
       status = 2;
-      message = e.what();
+      message = spell_options(e.what(), "--", false);
     } catch (const std::exception& e) {
       status = 1;
-      message = e.what();
+      message = spell_options(e.what(), "--", false);
     }
   }
   MPI_Bcast(&status, 1, MPI_INT, 0, MPI_COMM_WORLD);

@@ -25,6 +25,7 @@
 #include "blockdyn/api/map_study.hpp"
 #include "blockdyn/api/motion_generate.hpp"
 #include "blockdyn/api/motion_info.hpp"
+#include "blockdyn/api/option_spec.hpp"
 #include "blockdyn/api/simulate_run.hpp"
 #include "blockdyn/api/study_command.hpp"
 #include "blockdyn/api/sweep_settings.hpp"
@@ -35,6 +36,13 @@
 
 namespace py = pybind11;
 using namespace blockdyn;
+
+namespace {
+
+// Option names in the library's text, as Python's keywords.
+std::string python_text(std::string_view text) { return blockdyn::spell_options(text, "", true); }
+
+}  // namespace
 
 namespace {
 
@@ -345,8 +353,9 @@ void add_records_and_catalogues(py::module_& m) {
         py::dict d;
         for (const StudyCommand& c : study_commands()) {
           py::dict opts;
-          for (const StudyOption& o : c.options) opts[py::str(o.name)] = py::make_tuple(o.default_value, o.help);
-          d[py::str(c.name)] = py::make_tuple(c.description, opts);
+          for (const StudyOption& o : c.options)
+            opts[py::str(o.name)] = py::make_tuple(o.default_value, python_text(o.help));
+          d[py::str(c.name)] = py::make_tuple(python_text(c.description), opts);
         }
         return d;
       },
@@ -368,6 +377,20 @@ void add_records_and_catalogues(py::module_& m) {
 
 PYBIND11_MODULE(_core, m) {
   m.doc() = "blockdyn's library for Python (use the functions of the blockdyn package)";
+  // The library's messages name options in backticks: Python spells them as keywords (t_end).
+  py::register_exception_translator([](std::exception_ptr p) {
+    try {
+      if (p) std::rethrow_exception(p);
+    } catch (const std::invalid_argument& e) {
+      PyErr_SetString(PyExc_ValueError, python_text(e.what()).c_str());
+    } catch (const std::out_of_range& e) {
+      PyErr_SetString(PyExc_IndexError, python_text(e.what()).c_str());
+    } catch (const std::range_error& e) {
+      PyErr_SetString(PyExc_ValueError, python_text(e.what()).c_str());
+    } catch (const std::runtime_error& e) {
+      PyErr_SetString(PyExc_RuntimeError, python_text(e.what()).c_str());
+    }
+  });
   m.attr("__version__") = blockdyn::kVersion;
   m.attr("git_describe") = blockdyn::kGitDescribe;
   add_runs(m);

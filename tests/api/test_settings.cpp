@@ -37,7 +37,9 @@ TEST(Settings, NamesAreCanonicalAndValuesParsedOnUse) {
     s.number("w0");
     FAIL() << "a number with a unit suffix was read";
   } catch (const std::invalid_argument& e) {
-    EXPECT_EQ(std::string(e.what()), "--w0 = '0.1rad' is not a number");
+    // The library names the option in backticks; each front end spells it (spell_options).
+    EXPECT_EQ(std::string(e.what()), "`w0` = '0.1rad' is not a number");
+    EXPECT_EQ(spell_options(e.what(), "--", false), "--w0 = '0.1rad' is not a number");
   }
   EXPECT_THROW(s.require_known({"t-end", "ground-h-amplitude"}, "test"), std::invalid_argument);
 }
@@ -48,14 +50,24 @@ TEST(Settings, OptionsOfAnotherFamilyAreRefused) {
   s.add("width", "0.3");
   s.add("height", "1.5");
   s.add("mu-s", "0.5");
-  EXPECT_NE(error_of(s).find("--mu-s belongs to --model rigid"), std::string::npos) << error_of(s);
+  EXPECT_NE(error_of(s).find("`mu-s` belongs to `model` rigid"), std::string::npos) << error_of(s);
   Settings w;
   w.add("r", "0.2");
   w.add("restitution", "0.5");
-  EXPECT_NE(error_of(w).find("--restitution belongs to --model housner|rigid"), std::string::npos);
+  EXPECT_NE(error_of(w).find("`restitution` belongs to `model` housner|rigid"), std::string::npos);
   Settings m;
   m.add("model", "stone");
-  EXPECT_NE(error_of(m).find("--model = 'stone' is not one of"), std::string::npos);
+  EXPECT_NE(error_of(m).find("`model` = 'stone' is not one of"), std::string::npos) << error_of(m);
+}
+
+// How the front ends spell the options a message names: the command line's flags, Python's
+// keywords; text in backticks that is no option name is left alone.
+TEST(Settings, OptionNamesSpelledByEachFrontEnd) {
+  const std::string m = "`mu-s` belongs to `model` rigid; see `t-end` and `blockdyn cycles`";
+  EXPECT_EQ(spell_options(m, "--", false), "--mu-s belongs to --model rigid; see --t-end and `blockdyn cycles`");
+  EXPECT_EQ(spell_options(m, "", true), "mu_s belongs to model rigid; see t_end and `blockdyn cycles`");
+  EXPECT_EQ(spell_options("no options here", "--", false), "no options here");
+  EXPECT_EQ(spell_options("a lone ` and ``", "--", false), "a lone ` and ``");
 }
 
 // The registry's run from Settings is the library's run from the parameters, and the trajectory

@@ -72,11 +72,11 @@ def test_simulate_many_on_threads_equals_serial_calls():
 
 
 def test_unknown_and_misplaced_options_are_refused():
-    with pytest.raises(ValueError, match="no-such-option"):
+    with pytest.raises(ValueError, match="no_such_option"):
         blockdyn.simulate(model="housner", width=0.3, height=1.5, no_such_option=1)
-    with pytest.raises(ValueError, match="--mu-s belongs to --model rigid"):
+    with pytest.raises(ValueError, match="mu_s belongs to model rigid"):
         blockdyn.simulate(model="housner", width=0.3, height=1.5, mu_s=0.5)
-    with pytest.raises(ValueError, match="t-end"):
+    with pytest.raises(ValueError, match="t_end"):
         blockdyn.simulate(model="housner", width=0.3, height=1.5, t_end="soon")
 
 
@@ -107,7 +107,7 @@ def test_assembly_from_memory_equals_the_command_line(tmp_path):
             assert list(a.data[name]) == col
         else:
             np.testing.assert_array_equal(a.data[name], np.array([float(c) for c in col]))
-    with pytest.raises(ValueError, match="--tilt: not an option of --model housner"):
+    with pytest.raises(ValueError, match="tilt: not an option of model housner"):
         blockdyn.simulate(model="housner", width=0.3, height=1.5, tilt=0.1)
 
 

@@ -73,9 +73,9 @@ def test_equilibria_from_memory_with_and_without_the_landscape():
 def test_errors_name_the_option():
     with pytest.raises(ValueError, match="r = -1 is out of range"):
         blockdyn.flight_time(r=-1)
-    with pytest.raises(ValueError, match="--points = 'x' is not an integer"):
+    with pytest.raises(ValueError, match="points = 'x' is not an integer"):
         blockdyn.overturn(points="x")
-    with pytest.raises(ValueError, match="--csv: not an option of equilibria"):
+    with pytest.raises(ValueError, match="csv: not an option of equilibria"):
         blockdyn.equilibria(csv="a.csv")
     with pytest.raises(ValueError, match="not one of"):
         blockdyn.study("no-such-study")

@@ -26,7 +26,7 @@ Values values_of(const Settings& s) {
   Values v;
   v.file = s.text("file", s.text("scenario"));
   v.preset = s.text("preset");
-  v.contact = contact_kind_from("--contact", s.text("contact", to_string(ContactKind::Deformable)));
+  v.contact = contact_kind_from("`contact`", s.text("contact", to_string(ContactKind::Deformable)));
   v.phi_s = s.number("phi-s", 90);
   v.phi_l = s.number("phi-l", 90);
   v.phi_s_kinetic = s.number("phi-s-kinetic");
@@ -44,8 +44,8 @@ Values values_of(const Settings& s) {
 
 void check_values(const Settings& s, const Values& v) {
   if (v.file.empty() == v.preset.empty())
-    throw std::invalid_argument(v.file.empty() ? "give --preset block|trilith|column|arch or an assembly FILE.toml"
-                                               : "give either --preset or an assembly file, not both");
+    throw std::invalid_argument(v.file.empty() ? "give `preset` block|trilith|column|arch or an assembly FILE.toml"
+                                               : "give either `preset` or an assembly file, not both");
   require_in_range("phi-s", v.phi_s, 0, 90);
   require_in_range("phi-l", v.phi_l, 0, 90);
   // The kinetic angles lie between 0 and the static ones (the file's, or the options').
@@ -59,20 +59,21 @@ void check_values(const Settings& s, const Values& v) {
   require_in_range("restitution", v.restitution, v.law().plastic_impacts ? 0.0 : 1e-3, 1);
   const std::string scheme = s.text("scheme", "event-driven");
   if (scheme != "event-driven" && scheme != "time-stepping")
-    throw std::invalid_argument("--scheme = '" + scheme + "' is not one of: event-driven, time-stepping");
-  if (!v.law().schemes && s.has("scheme")) throw std::invalid_argument("--scheme belongs to --contact rigid");
+    throw std::invalid_argument("`scheme` = '" + scheme + "' is not one of: event-driven, time-stepping");
+  if (!v.law().schemes && s.has("scheme")) throw std::invalid_argument("`scheme` belongs to `contact` rigid");
   for (const char* n : {"normal-stiffness", "tangential-stiffness"})
     if (!v.law().springs && s.has(n))
-      throw std::invalid_argument(std::string("--") + n + " belongs to --contact deformable");
+      throw std::invalid_argument(std::string("`") + n + "` belongs to `contact` deformable");
   if (v.law().schemes && scheme == "time-stepping")
     for (const char* n : {"rtol", "atol", "method"})
       if (s.has(n))
-        throw std::invalid_argument(std::string("--") + n +
-                                    " belongs to --scheme event-driven (time-stepping has --step)");
-  if (!v.law().schemes && s.has("step")) throw std::invalid_argument("--step belongs to --contact rigid");
+        throw std::invalid_argument(std::string("`") + n +
+                                    "`"
+                                    " belongs to `scheme` event-driven (time-stepping has `step`)");
+  if (!v.law().schemes && s.has("step")) throw std::invalid_argument("`step` belongs to `contact` rigid");
   if (s.flag("columns-rock-only") && scheme == "event-driven" && s.has("scheme"))
     throw std::invalid_argument(
-        "--columns-rock-only (seed 001's 5-DOF restriction) is integrated by --scheme time-stepping only");
+        "`columns-rock-only` (seed 001's 5-DOF restriction) is integrated by `scheme` time-stepping only");
   require_in_range("collapse-rotation", v.collapse_rotation, 0, 10, false);
   require_in_range("min-bearing", v.min_bearing, 0, 1e3);
   require_in_range("g", v.g, 0, 1e3, false);
@@ -93,7 +94,8 @@ void set_kinetic(ContactLaw& l, const std::optional<double>& phi_kinetic, const 
 
 Assembly from_file(const Settings& s, const Values& v) {
   for (const std::string& n : preset_geometry_option_names())
-    if (s.has(n)) throw std::invalid_argument("--" + n + " belongs to --preset (an assembly file gives its blocks)");
+    if (s.has(n))
+      throw std::invalid_argument(std::string("`") + n + "` belongs to `preset` (an assembly file gives its blocks)");
   Assembly a = read_assembly_file(v.file);
   // Options given override the file's contact laws.
   for (AssemblyInterface& i : a.interfaces) {
@@ -121,7 +123,7 @@ Assembly from_preset(const Settings& s, const Values& v) {
   set_kinetic(o.block_law, v.phi_l_kinetic, "phi-l-kinetic");
   o.contact = v.contact;
   if (v.preset == "arch" && s.has("tilt"))
-    throw std::invalid_argument("--tilt belongs to --preset block|trilith|column");
+    throw std::invalid_argument("`tilt` belongs to `preset` block|trilith|column");
   Assembly a = make_preset(v.preset, o);
   a.g = v.g;
   return a;
@@ -165,7 +167,7 @@ PresetOptions preset_geometry_from(const Settings& s, const std::string& preset)
     names += (names.empty() ? "" : ", ") + p;
     known = known || p == preset;
   }
-  if (!known) throw std::invalid_argument("--preset = '" + preset + "' is not one of: " + names);
+  if (!known) throw std::invalid_argument("`preset` = '" + preset + "' is not one of: " + names);
   for (const auto& [name, presets] : preset_only_options()) {
     if (!s.has(name)) continue;
     std::string owners;
@@ -174,7 +176,7 @@ PresetOptions preset_geometry_from(const Settings& s, const std::string& preset)
       owners += (owners.empty() ? "" : "|") + p;
       ok = ok || p == preset;
     }
-    if (!ok) throw std::invalid_argument("--" + name + " belongs to --preset " + owners);
+    if (!ok) throw std::invalid_argument(std::string("`") + name + "` belongs to `preset` " + owners);
   }
   PresetOptions o;
   o.slenderness = s.number("slenderness", o.slenderness);
@@ -260,9 +262,10 @@ AssemblySetup assembly_from(const Settings& s) {
   if (info(setup.assembly.contact).schemes && effective_scheme(setup.assembly, o) == AssemblyScheme::TimeStepping)
     for (const char* n : {"rtol", "atol", "method"})
       if (s.has(n))
-        throw std::invalid_argument(std::string("--") + n +
-                                    " belongs to --scheme event-driven (time-stepping, the rigid law's " +
-                                    "default above " + std::to_string(kEventDrivenMaxBlocks) + " blocks, has --step)");
+        throw std::invalid_argument(std::string("`") + n +
+                                    "`"
+                                    " belongs to `scheme` event-driven (time-stepping, the rigid law's " +
+                                    "default above " + std::to_string(kEventDrivenMaxBlocks) + " blocks, has `step`)");
   apply_integrator_settings(s, o.integrator);
   o.output_interval = s.number("output-interval", o.output_interval);
   validate(o);

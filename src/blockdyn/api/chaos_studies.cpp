@@ -40,7 +40,7 @@ std::vector<StudyOption> chaos_map_options() {
       {"omega-min", "smallest omega = Omega/p", x(d.grid.omega_min)},
       {"omega-max", "largest omega", x(d.grid.omega_max)},
       {"omega-points", "omegas, uniform", std::to_string(d.grid.omega_points)},
-      {"t-end", "duration of each run [s] (instead of --periods)", ""},
+      {"t-end", "duration of each run [s] (instead of `periods`)", ""},
       {"periods", "forcing periods per run, transient included", x(d.total_periods)},
       {"threads", "worker threads (0: all cores)", "0"},
       {"beta-min", "smallest beta", x(d.grid.beta_min)},
@@ -66,7 +66,7 @@ ChaosMapOptions chaos_options_of(const StudyOptions& s) {
   o.grid.beta_max = s.number("beta-max");
   o.grid.beta_points = s.small_integer("beta-points");
   o.grid.threads = s.threads();
-  if (s.given("t-end") && s.given("periods")) throw std::invalid_argument("give --t-end or --periods, not both");
+  if (s.given("t-end") && s.given("periods")) throw std::invalid_argument("give `t-end` or `periods`, not both");
   o.use_t_end = s.given("t-end");
   if (o.use_t_end) o.grid.t_end = s.number("t-end");
   o.total_periods = s.number("periods");
@@ -93,8 +93,8 @@ StudyReport chaos_map_study(const Settings& given, const StudyRequest& request) 
   const ChaosMapOptions o = chaos_options_of(s);
   const ForcedModel fm = forced_model_of(s);
   if (!fm.linearisable)
-    throw std::invalid_argument("--contact " + fm.description["contact"].get<std::string>() +
-                                ": no Lyapunov exponent (Moreau-Jean time-stepping); use --contact deformable");
+    throw std::invalid_argument("`contact` " + fm.description["contact"].get<std::string>() +
+                                ": no Lyapunov exponent (Moreau-Jean time-stepping); use `contact` deformable");
   const auto lyap = fm.lyapunov;
   const ForcedLyapunovRun run = [lyap](const GroundMotion& g, const ForcedLyapunovOptions& fo) {
     return lyap(g, fo, RigidInitial{});
@@ -144,8 +144,8 @@ std::vector<StudyOption> lyapunov_options() {
   for (StudyOption x : forced_model_options({"winkler"})) {
     if (x.name == "model")
       x.help =
-          "winkler (default: the free Winkler block, --r --mu --k), housner, rigid (a block on rigid ground, "
-          "--width --height) or assembly (--preset)";
+          "winkler (default: the free Winkler block, `r` `mu` `k`), housner, rigid (a block on rigid ground, "
+          "`width` `height`) or assembly (`preset`)";
     o.push_back(x);
   }
   for (const StudyOption& x : ground_options()) o.push_back(x);
@@ -153,7 +153,7 @@ std::vector<StudyOption> lyapunov_options() {
       {"t-end", "final time (> 0)", "200"},
       {"d0", "separation after each renormalisation, in [1e-14, 1e-2]", Settings::exact(d.d0)},
       {"interval", "time method: renormalisation interval (> 0)", Settings::exact(d.interval)},
-      {"beta", "forced: seed 002 excitation a_H = beta alpha g cos(Omega t + phase) (with --omega)", ""},
+      {"beta", "forced: seed 002 excitation a_H = beta alpha g cos(Omega t + phase) (with `omega`)", ""},
       {"omega", "forced: Omega / p of the seed 002 excitation", ""},
       {"phase", "forced: phase of the seed 002 excitation (rad, default 0)", ""},
       {"t-transient", "forced: the tangent starts here (s), or at the first motion after it", ""},
@@ -165,7 +165,7 @@ std::vector<StudyOption> lyapunov_options() {
 
 void refuse_given(const StudyOptions& o, const std::vector<std::string>& names, const std::string& why) {
   for (const std::string& n : names)
-    if (o.given(n)) throw std::invalid_argument("--" + n + " " + why);
+    if (o.given(n)) throw std::invalid_argument(std::string("`") + n + "` " + why);
 }
 
 StudyTable history_table(const std::vector<LyapunovSample>& history) {
@@ -187,7 +187,7 @@ ForcedExcitation forced_excitation(const StudyOptions& o, const ForcedModel& fm)
   ForcedExcitation x;
   x.T = 2 * M_PI / fm.p;
   if (o.given("beta") || o.given("omega")) {
-    if (!o.given("beta") || !o.given("omega")) throw std::invalid_argument("--beta and --omega go together");
+    if (!o.given("beta") || !o.given("omega")) throw std::invalid_argument("`beta` and `omega` go together");
     const double beta = o.number("beta"), omega = o.number("omega");
     const double phase = o.given("phase") ? o.number("phase") : 0.0;
     require_in_range("beta", beta, 0, 1e3, false);
@@ -216,7 +216,7 @@ ForcedLyapunovOptions forced_lyapunov_options(const StudyOptions& o, double T) {
   f.integrator.atol = o.given("atol") ? o.number("atol") : ff.lyapunov_atol;
   const auto m = method_from_string(o.text("integrator-method"));
   if (!m)
-    throw std::invalid_argument("--integrator-method = '" + o.text("integrator-method") +
+    throw std::invalid_argument("`integrator-method` = '" + o.text("integrator-method") +
                                 "' is not one of: auto, dopri5, dop853");
   f.integrator.method = *m;
   f.twin_d0 = o.given("twin-d0") ? o.number("twin-d0") : 1e-9;
@@ -240,14 +240,14 @@ RigidInitial forced_initial(const StudyOptions& o) {
 
 StudyReport forced_lyapunov_study(const StudyOptions& o, const StudyRequest& request) {
   refuse_given(o, {"r", "mu", "k", "ic", "energy", "energy-of", "vy-sign", "w0-alpha", "d0"},
-               "applies to --model winkler only (forced models: --w0 --vw0, --twin-d0)");
+               "applies to `model` winkler only (forced models: `w0` `vw0`, `twin-d0`)");
   if (o.text("method") != "time")
-    throw std::invalid_argument("--method " + o.text("method") + ": forced models renormalise at fixed times only");
+    throw std::invalid_argument("`method` " + o.text("method") + ": forced models renormalise at fixed times only");
   const ForcedModel fm = forced_model_of(o);
   if (!fm.linearisable)
-    throw std::invalid_argument("--contact " + fm.description["contact"].get<std::string>() +
+    throw std::invalid_argument("`contact` " + fm.description["contact"].get<std::string>() +
                                 ": no Lyapunov exponent (Moreau-Jean time-stepping has no event-located orbit to "
-                                "linearise); use --contact deformable");
+                                "linearise); use `contact` deformable");
   const ForcedExcitation x = forced_excitation(o, fm);
   const ForcedLyapunovOptions f = forced_lyapunov_options(o, x.T);
   const ForcedLyapunovOutcome r = fm.lyapunov(x.g, f, forced_initial(o));
@@ -286,10 +286,10 @@ StudyReport winkler_lyapunov_study(const StudyOptions& o, const StudyRequest& re
   for (const char* g : {"ground-h", "ground-h-amplitude", "ground-h-pulse", "ground-h-record", "ground-v",
                         "ground-v-amplitude", "ground-v-pulse", "ground-v-record"})
     forced_only.push_back(g);
-  refuse_given(o, forced_only, "applies to --model housner|rigid|assembly only (the Winkler block runs free here)");
+  refuse_given(o, forced_only, "applies to `model` housner|rigid|assembly only (the Winkler block runs free here)");
   if (request.asked("twin"))
     throw std::invalid_argument(
-        "--twin-csv applies to --model housner|rigid|assembly only (the Winkler block runs free here)");
+        "`twin-csv` applies to `model` housner|rigid|assembly only (the Winkler block runs free here)");
   const WinklerParams p{o.number("r"), o.number("mu"), o.number("k")};
   validate(p);
   LyapunovOptions opt;
@@ -298,7 +298,7 @@ StudyReport winkler_lyapunov_study(const StudyOptions& o, const StudyRequest& re
   opt.interval = o.number("interval");
   const std::string method = o.text("method");
   if (method != "time" && method != "section")
-    throw std::invalid_argument("--method = '" + method + "' is not one of: time, section");
+    throw std::invalid_argument("`method` = '" + method + "' is not one of: time, section");
   opt.method = method == "section" ? LyapunovMethod::Section : LyapunovMethod::Time;
   const WinklerOrbit orbit = winkler_orbit(o, "integrator-method");
   opt.integrator = orbit.integrator;
@@ -349,7 +349,7 @@ namespace {
 StudyReport lyapunov_study(const Settings& given, const StudyRequest& request) {
   const StudyOptions o(given, lyapunov_options());
   const Family& f =
-      family_named("--model", o.text("model"), [](const Family& x) { return x.free_lyapunov || x.forced; });
+      family_named("`model`", o.text("model"), [](const Family& x) { return x.free_lyapunov || x.forced; });
   return f.free_lyapunov ? f.free_lyapunov(o, request) : forced_lyapunov_study(o, request);
 }
 

@@ -20,7 +20,7 @@ namespace {
 
 void refuse(const Settings& s, const std::vector<std::string>& names, const std::string& why) {
   for (const std::string& n : names)
-    if (s.has(n)) throw std::invalid_argument("--" + n + " " + why);
+    if (s.has(n)) throw std::invalid_argument(std::string("`") + n + "` " + why);
 }
 
 void check_values(const Settings& s) {
@@ -32,14 +32,14 @@ void check_values(const Settings& s) {
 
 ForcedModel block_model(const Settings& s, const Family& family) {
   if (!s.has("width") || !s.has("height"))
-    throw std::invalid_argument("--width and --height are needed for --model " + std::string(family.name));
+    throw std::invalid_argument("`width` and `height` are needed for `model` " + std::string(family.name));
   RigidBlockParams rp;
   rp.shape = {*s.number("width"), *s.number("height"), s.number("mass", 1.0), s.number("g", 9.81)};
   const double mu_s = s.number("mu-s", 0.7);
   rp.interface = {mu_s, s.number("mu-k", mu_s)};
   const std::string impact = s.text("impact", to_string(ImpactLaw::Housner));
   const std::optional<ImpactLaw> law = impact_law_from_string(impact);
-  if (!law) throw std::invalid_argument("--impact = '" + impact + "' is not one of: housner, newton");
+  if (!law) throw std::invalid_argument("`impact` = '" + impact + "' is not one of: housner, newton");
   rp.impact = *law;
   if (auto e = s.number("restitution")) rp.restitution = *e;
   return forced_block_model(rp, *family.rigid_ground);
@@ -47,9 +47,9 @@ ForcedModel block_model(const Settings& s, const Family& family) {
 
 ForcedModel assembly_model(const Settings& s, const Family& family) {
   const std::string preset = s.text("preset");
-  if (preset.empty()) throw std::invalid_argument("--model assembly needs --preset block|trilith|column|arch");
+  if (preset.empty()) throw std::invalid_argument("`model` assembly needs `preset` block|trilith|column|arch");
   PresetOptions po = preset_geometry_from(s, preset);
-  po.contact = contact_kind_from("--contact", s.text("contact", to_string(ContactKind::Deformable)));
+  po.contact = contact_kind_from("`contact`", s.text("contact", to_string(ContactKind::Deformable)));
   const double phi_s = s.number("phi-s", 90), phi_l = s.number("phi-l", 90);
   require_in_range("phi-s", phi_s, 0, 90);
   require_in_range("phi-l", phi_l, 0, 90);
@@ -82,7 +82,7 @@ const std::vector<std::string>& assembly_only_options() {
   return n;
 }
 
-const char* const kNotBlock = "applies to --model assembly only";
+const char* const kNotBlock = "applies to `model` assembly only";
 
 }  // namespace
 
@@ -92,7 +92,7 @@ const char* const kNotBlock = "applies to --model assembly only";
 // cost (docs/forced-chaos.md).
 const ForcedFamily& housner_forced() {
   static const ForcedFamily f{
-      .refused = {{assembly_only_options(), kNotBlock}, {{"mu-s", "mu-k", "impact"}, "applies to --model rigid only"}},
+      .refused = {{assembly_only_options(), kNotBlock}, {{"mu-s", "mu-k", "impact"}, "applies to `model` rigid only"}},
       .build = block_model,
       .lyapunov_rtol = 1e-10,
       .lyapunov_atol = 1e-12};
@@ -110,8 +110,8 @@ const ForcedFamily& rigid_forced() {
 const ForcedFamily& assembly_forced() {
   static const ForcedFamily f{
       .refused = {{{"width", "height", "mass", "g", "mu-s", "mu-k", "impact"},
-                   "applies to --model housner|rigid only (an assembly's blocks and friction come from --preset and "
-                   "--phi-s/--phi-l)"}},
+                   "applies to `model` housner|rigid only (an assembly's blocks and friction come from `preset` and "
+                   "`phi-s`/`phi-l`)"}},
       .build = assembly_model,
       .lyapunov_rtol = 1e-8,
       .lyapunov_atol = 1e-10,
@@ -146,7 +146,7 @@ ForcedModelChoice forced_model_choice(const Settings& s) {
 }
 
 const Family& forced_family(const std::string& name) {
-  return family_named("--model", name, [](const Family& f) { return f.forced != nullptr; });
+  return family_named("`model`", name, [](const Family& f) { return f.forced != nullptr; });
 }
 
 ForcedModel forced_model_from(const Settings& s) {

@@ -32,7 +32,7 @@ std::vector<StudyOption> fragility_options() {
        "pga"},
       {"levels", "the intensity levels A:B:N (N uniform from A to B) or a list A,B,C (> 0)"},
       {"damping", "damping ratio of sa:T", "0.05"},
-      {"t-end", "duration of every run [s] (default: each record's end + --t-after)"},
+      {"t-end", "duration of every run [s] (default: each record's end + `t-after`)"},
       {"t-after", "simulated time after each record's end [s]", "5"},
       {"bootstrap", "bootstrap resamples of the records for the 90 % band (0: none)", "200"},
       {"seed", "seed of the bootstrap", "1"},

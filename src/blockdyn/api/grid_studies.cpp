@@ -36,7 +36,7 @@ std::vector<StudyOption> excitation_grid_options() {
           {"omega-max", "largest omega", x(d.omega_max)},
           {"omega-points", "omegas, uniform", std::to_string(d.omega_points)},
           {"t-end", "duration of each run [s]: the transient window", x(d.t_end)},
-          {"periods", "duration of each run in forcing periods (instead of --t-end)", ""},
+          {"periods", "duration of each run in forcing periods (instead of `t-end`)", ""},
           {"threads", "worker threads (0: all cores)", "0"}};
 }
 

@@ -32,15 +32,16 @@ void apply_component_settings(const Settings& s, const std::string& n, GroundCom
   if (s.has(n + "-pulse")) {
     const std::string v = s.text(n + "-pulse");
     const auto p = pulse_from_string(v);
-    if (!p) throw std::invalid_argument("--" + n + "-pulse = '" + v + "' is not one of: " + pulse_names());
+    if (!p) throw std::invalid_argument(std::string("`") + n + "-pulse` = '" + v + "' is not one of: " + pulse_names());
     c.pulse = *p;
   }
   if (auto r = s.record(n + "-record"))
     c.record = std::move(r);
   else if (s.has(n + "-record"))
-    c.record = std::make_shared<const Accelerogram>(load_accelerogram(s.text(n + "-record"), "--" + n + "-record"));
+    c.record = std::make_shared<const Accelerogram>(
+        load_accelerogram(s.text(n + "-record"), std::string("`") + n + "-record`"));
   if (s.has(n + "-scale") && !c.record)
-    throw std::invalid_argument("--" + n + "-scale needs a record (--" + n + "-record FILE)");
+    throw std::invalid_argument(std::string("`") + n + "-scale` needs a record (`" + n + "-record` FILE)");
 }
 
 }  // namespace

@@ -17,7 +17,7 @@ namespace blockdyn {
 using json = nlohmann::ordered_json;
 
 std::vector<StudyOption> forced_model_options(const std::vector<std::string>& extra_models) {
-  std::string help = "housner, rigid (a block on rigid ground) or assembly (with --preset)";
+  std::string help = "housner, rigid (a block on rigid ground) or assembly (with `preset`)";
   for (const auto& m : extra_models) help += ", or " + m;
   return {{"model", help, extra_models.empty() ? "housner" : extra_models.front()},
           {"width", "housner/rigid: block width [m]", ""},
@@ -67,7 +67,7 @@ std::vector<StudyOption> harmonic_run_options(double default_periods) {
       {"omega", "frequency omega = Omega / p (required)", ""},
       {"phase", "phase of cos(Omega t + phase) [rad]", "0"},
       {"t-end", "duration of the run [s]", ""},
-      {"periods", "duration of the run in forcing periods (instead of --t-end)", Settings::exact(default_periods)},
+      {"periods", "duration of the run in forcing periods (instead of `t-end`)", Settings::exact(default_periods)},
       {"block", "the block analysed (assemblies: 0 is the first column)", "0"},
       {"trace-per-period", "samples per forcing period of the trace and of the figures' trajectories", "32"}};
   o.insert(o.end(), run.begin(), run.end());
@@ -76,10 +76,10 @@ std::vector<StudyOption> harmonic_run_options(double default_periods) {
 
 HarmonicSetup harmonic_setup(const StudyOptions& o) {
   if (o.text("excitation") != "harmonic")
-    throw std::invalid_argument("--excitation = '" + o.text("excitation") + "' is not one of: harmonic");
+    throw std::invalid_argument("`excitation` = '" + o.text("excitation") + "' is not one of: harmonic");
   if (!o.given("beta"))
-    throw std::invalid_argument("--beta is needed (a_H = beta alpha g cos(Omega t + phase)), in (0, 1000]");
-  if (!o.given("omega")) throw std::invalid_argument("--omega is needed (omega = Omega / p), in (0, 1e4]");
+    throw std::invalid_argument("`beta` is needed (a_H = beta alpha g cos(Omega t + phase)), in (0, 1000]");
+  if (!o.given("omega")) throw std::invalid_argument("`omega` is needed (omega = Omega / p), in (0, 1e4]");
   HarmonicSetup h;
   h.beta = o.number("beta");
   h.omega = o.number("omega");
@@ -87,7 +87,7 @@ HarmonicSetup harmonic_setup(const StudyOptions& o) {
   require_in_range("beta", h.beta, 0, 1e3, false);
   require_in_range("omega", h.omega, 0, 1e4, false);
   require_in_range("phase", h.phase, -1e3, 1e3);
-  if (o.given("t-end") && o.given("periods")) throw std::invalid_argument("give --t-end or --periods, not both");
+  if (o.given("t-end") && o.given("periods")) throw std::invalid_argument("give `t-end` or `periods`, not both");
   const double periods = o.number("periods");
   if (o.given("t-end"))
     require_in_range("t-end", o.number("t-end"), 0, 1e5, false);

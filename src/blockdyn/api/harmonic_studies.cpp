@@ -222,7 +222,7 @@ void add_harmonic_studies(std::vector<StudyCommand>& to) {
                       cycles_study};
   cycles.series_outputs = {
       {"strobe", "out", "write the strobe samples as CSV (k, t, states per block, cycle)"},
-      {"trace", "trace", "write the trajectory sampled --trace-per-period times per period as CSV"}};
+      {"trace", "trace", "write the trajectory sampled `trace-per-period` times per period as CSV"}};
   cycles.quiet_flag = true;
   to.push_back(cycles);
   StudyCommand map{"impact-map",
@@ -235,7 +235,7 @@ void add_harmonic_studies(std::vector<StudyCommand>& to) {
                    impact_map_study};
   map.series_outputs = {{"impacts", "out", "write the impacts as CSV (i, t, phase, omega_before, omega_after)"},
                         {"poincare", "poincare", "write the Poincare section as CSV (k, t, states per block)"},
-                        {"trace", "trace", "write the trajectory sampled --trace-per-period times per period as CSV"}};
+                        {"trace", "trace", "write the trajectory sampled `trace-per-period` times per period as CSV"}};
   map.quiet_flag = true;
   to.push_back(map);
 }

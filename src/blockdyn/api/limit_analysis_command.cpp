@@ -125,7 +125,7 @@ json limit_analysis_run(const Settings& given) {
                   "(primal and dual feasible to 1e-9), else GLPK's exact (rational) simplex from it"}};
   j.update(analysis_json(a, r));
   if (given.flag("min-thickness")) {
-    if (a.preset != "arch") throw std::invalid_argument("--min-thickness needs --preset arch");
+    if (a.preset != "arch") throw std::invalid_argument("`min-thickness` needs `preset` arch");
     const double tol = given.number("tolerance", 1e-7);
     if (!(tol >= 1e-9 && tol <= 1e-2))
       throw std::invalid_argument("tolerance = " + Settings::exact(tol) + " must be in [1e-9, 1e-2]");
@@ -141,7 +141,7 @@ json limit_analysis_run(const Settings& given) {
                           {"assembly", assembly_geometry_json(m.arch)},
                           {"analysis", analysis_json(m.arch, m.at_minimum)}};
   } else if (given.has("tolerance")) {
-    throw std::invalid_argument("--tolerance belongs to --min-thickness");
+    throw std::invalid_argument("`tolerance` belongs to `min-thickness`");
   }
   j["timing_s"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return j;

@@ -60,15 +60,15 @@ void check_work(const Plan& p) {
       throw std::invalid_argument("zeta-f = " + number_text(p.rz.zeta_f) + ", f-mid = " + number_text(p.rz.f_mid) +
                                   " Hz, f-slope = " + number_text(p.rz.f_slope) +
                                   " Hz/s: the filter's memory makes a record cost " + number_text(terms, 3) +
-                                  " kernel terms (at most 2e10): raise --zeta-f or the filter frequency, or "
-                                  "shorten --t-end");
+                                  " kernel terms (at most 2e10): raise `zeta-f` or the filter frequency, or "
+                                  "shorten `t-end`");
   }
   const double bytes = double(p.count) * record_bytes(p);
   if (bytes > kMaxSuiteBytes)
     throw std::invalid_argument(
         "count = " + std::to_string(p.count) + " records of " + std::to_string(sample_count(p)) + " samples need " +
         number_text(std::round(bytes / 1e6)) +
-        " MB of .AT2 files: at most 16 GiB per suite (lower --count or --t-end, or raise --dt)");
+        " MB of .AT2 files: at most 16 GiB per suite (lower `count` or `t-end`, or raise `dt`)");
   struct statvfs fs {};
   const auto slash = p.out.find_last_of('/');
   const std::string where = ::access(p.out.c_str(), F_OK) == 0 ? p.out
@@ -93,14 +93,15 @@ Plan plan_of(const Settings& given) {
   p.background = !p.pulse || s.has("arias");
   if (!p.pulse)
     for (const char* n : {"pulse-pgv", "pulse-period", "gamma", "nu", "pulse-t0"})
-      if (s.has(n)) throw std::invalid_argument(std::string("--") + n + " belongs to --model pulse");
+      if (s.has(n)) throw std::invalid_argument(std::string("`") + n + "` belongs to `model` pulse");
   p.rz.dt = s.number("dt", 0.01);
   p.rz.g = s.number("g", 9.81);
   if (p.background) {
     for (const char* n : kRezaeianOptions)
       if (!s.has(n) && std::string(n) != "f-slope" && std::string(n) != "zeta-f")
-        throw std::invalid_argument(std::string("--") + n +
-                                    ": the rezaeian model needs --arias --d5-95 --t-mid --f-mid");
+        throw std::invalid_argument(std::string("`") + n +
+                                    "`"
+                                    ": the rezaeian model needs `arias` `d5-95` `t-mid` `f-mid`");
     p.rz.arias = *s.number("arias");
     p.rz.d5_95 = *s.number("d5-95");
     p.rz.t_mid = *s.number("t-mid");
@@ -111,7 +112,7 @@ Plan plan_of(const Settings& given) {
   } else {
     for (const char* n : kRezaeianOptions)
       if (s.has(n))
-        throw std::invalid_argument(std::string("--") + n + " needs the background's --arias (rezaeian targets)");
+        throw std::invalid_argument(std::string("`") + n + "` needs the background's `arias` (rezaeian targets)");
   }
   if (p.pulse) {
     p.pp.pgv = s.number("pulse-pgv", 0.0);
@@ -122,7 +123,7 @@ Plan plan_of(const Settings& given) {
   }
   const double t_min = p.pulse ? p.pp.t0 + 0.5 * p.pp.gamma * p.pp.period : 0.0;
   p.rz.t_end = s.number("t-end", p.background ? 0.0 : t_min + 5.0);
-  if (!s.has("t-end") && p.background) throw std::invalid_argument("--t-end: give the records' duration [s]");
+  if (!s.has("t-end") && p.background) throw std::invalid_argument("`t-end`: give the records' duration [s]");
   if (p.pulse) validate(p.pp, p.rz.dt, p.rz.t_end);
   if (p.background) {
     validate(p.rz);
@@ -143,7 +144,7 @@ Plan plan_of(const Settings& given) {
     throw std::invalid_argument("threads = " + std::to_string(threads) + " is out of range: must be in [0, 1024]");
   p.threads = int(threads);
   p.out = s.text("out");
-  if (p.out.empty()) throw std::invalid_argument("--out: give the directory for the records");
+  if (p.out.empty()) throw std::invalid_argument("`out`: give the directory for the records");
   check_work(p);
   return p;
 }
@@ -181,7 +182,7 @@ void make_directory(const std::string& dir, bool overwrite) {
     const bool has_suite = ::stat((dir + "/motions.json").c_str(), &st) == 0 || !suite_files(dir).empty();
     if (has_suite && !overwrite)
       throw std::invalid_argument(
-          "out = '" + dir + "' already holds a suite (motions.json or records): give --overwrite or another directory");
+          "out = '" + dir + "' already holds a suite (motions.json or records): give `overwrite` or another directory");
     return;
   }
   if (::mkdir(dir.c_str(), 0777) != 0)
@@ -200,7 +201,7 @@ void check_samples(const Plan& p, const std::vector<double>& a, std::size_t k) {
   if (peak > 100.0)
     throw std::invalid_argument((p.background ? "record " + std::to_string(k + 1) : std::string("the pulse")) +
                                 " peaks at " + number_text(peak, 4) + " g, beyond the 100 g a record may hold: " +
-                                (p.pulse ? "lower --pulse-pgv or lengthen --pulse-period" : "lower --arias"));
+                                (p.pulse ? "lower `pulse-pgv` or lengthen `pulse-period`" : "lower `arias`"));
 }
 
 double median(std::vector<double> v) {

@@ -21,7 +21,7 @@ namespace {
 // --periods, else a logarithmic grid from --period-min to --period-max.
 std::vector<double> periods_of(const Settings& s) {
   const bool grid = s.has("period-min") || s.has("period-max") || s.has("period-points");
-  if (s.has("periods") && grid) throw std::invalid_argument("--periods and --period-min/max/points: give one of them");
+  if (s.has("periods") && grid) throw std::invalid_argument("`periods` and `period-min`/max/points: give one of them");
   std::vector<double> p;
   if (s.has("periods")) {
     for (const std::string& v : s.values("periods"))
@@ -45,8 +45,8 @@ std::vector<double> periods_of(const Settings& s) {
 const std::vector<StudyOption>& motion_info_options() {
   static const std::vector<StudyOption> options = {
       {"spectrum", "also the pseudo-acceleration spectrum Sa(T) (g) of a damped linear oscillator", "", true},
-      {"periods", "the spectrum's periods (s), e.g. 0.1,0.2,0.5 (implies --spectrum)", "", false, true},
-      {"period-min", "smallest period of a logarithmic grid (s; default 0.02; implies --spectrum)"},
+      {"periods", "the spectrum's periods (s), e.g. 0.1,0.2,0.5 (implies `spectrum`)", "", false, true},
+      {"period-min", "smallest period of a logarithmic grid (s; default 0.02; implies `spectrum`)"},
       {"period-max", "largest period (s; default 5)"},
       {"period-points", "periods of the grid (default 60)"},
       {"damping", "the oscillator's damping ratio, in [0, 1)", "0.05"},

@@ -180,7 +180,7 @@ StudyReport poincare_study(const Settings& given, const StudyRequest&) {
   require_in_range("t-min", t_min, 0.0, t_end);
   const std::string direction = o.text("direction");
   if (direction != "both" && direction != "positive" && direction != "negative")
-    throw std::invalid_argument("--direction = '" + direction + "' is not one of: both, positive, negative");
+    throw std::invalid_argument("`direction` = '" + direction + "' is not one of: both, positive, negative");
   const CrossingDirection dir = direction == "positive"   ? CrossingDirection::Positive
                                 : direction == "negative" ? CrossingDirection::Negative
                                                           : CrossingDirection::Both;

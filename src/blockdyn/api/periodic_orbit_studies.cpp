@@ -28,7 +28,7 @@ std::vector<StudyOption> periodic_orbit_options() {
           {"g", "gravity [m/s^2]", "9.81"},
           {"restitution", "restitution e in [0, 1] (default Housner's 1 - 1.5 sin^2 alpha)", ""},
           {"ks", "forcing amplitude K_s (g)", ""},
-          {"beta", "forcing amplitude as K_s / alpha (instead of --ks)", ""},
+          {"beta", "forcing amplitude as K_s / alpha (instead of `ks`)", ""},
           {"omega", "forcing frequency omega = Omega / p", "2"},
           {"cycle", "m,n: 2m impacts per n forcing periods (seed 002)", "1,1", false, true},
           {"asymmetric",
@@ -43,8 +43,8 @@ std::vector<StudyOption> periodic_orbit_options() {
           {"region", "map the existence and stability of the orbits over (K_s, omega)", "", true},
           {"ks-min", "region: smallest K_s (g)", x(r.ks_min)},
           {"ks-max", "region: largest K_s (g)", x(r.ks_max)},
-          {"beta-min", "region: smallest K_s / alpha (instead of --ks-min)", ""},
-          {"beta-max", "region: largest K_s / alpha (instead of --ks-max)", ""},
+          {"beta-min", "region: smallest K_s / alpha (instead of `ks-min`)", ""},
+          {"beta-max", "region: largest K_s / alpha (instead of `ks-max`)", ""},
           {"ks-points", "region: amplitudes", std::to_string(r.ks_points)},
           {"omega-min", "region: smallest omega", x(r.omega_min)},
           {"omega-max", "region: largest omega", x(r.omega_max)},
@@ -71,20 +71,20 @@ std::array<int, 2> parse_cycle(const StudyOptions& o) {
   }
   if (v.size() != 2 || v[0] != std::floor(v[0]) || v[1] != std::floor(v[1]) || std::fabs(v[0]) > 1e6 ||
       std::fabs(v[1]) > 1e6)
-    throw std::invalid_argument("--cycle must be m,n (two integers)");
+    throw std::invalid_argument("`cycle` must be m,n (two integers)");
   return {int(v[0]), int(v[1])};
 }
 
 void read_amplitude(const StudyOptions& o, RockingForcing& rf, bool region) {
-  if (o.given("ks") && o.given("beta")) throw std::invalid_argument("give --ks or --beta, not both");
-  if (!o.given("ks") && !o.given("beta") && !region) throw std::invalid_argument("--ks (or --beta) is needed");
+  if (o.given("ks") && o.given("beta")) throw std::invalid_argument("give `ks` or `beta`, not both");
+  if (!o.given("ks") && !o.given("beta") && !region) throw std::invalid_argument("`ks` (or `beta`) is needed");
   const double alpha = rf.alpha();
   rf.ks = o.given("beta") ? o.number("beta") * alpha : o.given("ks") ? o.number("ks") : 0.1;
   require_in_range(o.given("beta") ? "beta" : "ks", o.given("beta") ? o.number("beta") : rf.ks, 0, 1e3, false);
 }
 
 OrbitSetup orbit_setup(const StudyOptions& o) {
-  if (!o.given("width") || !o.given("height")) throw std::invalid_argument("--width and --height are needed");
+  if (!o.given("width") || !o.given("height")) throw std::invalid_argument("`width` and `height` are needed");
   OrbitSetup st;
   RockingForcing& rf = st.rf;
   const double width = o.number("width"), height = o.number("height");
@@ -108,12 +108,12 @@ OrbitSetup orbit_setup(const StudyOptions& o) {
   require_in_range("atol", st.so.integrator.atol, 0, 1e-3, false);
   const bool guess_given = o.given("guess-phase") || o.given("guess-velocity");
   if (guess_given && !(o.given("guess-phase") && o.given("guess-velocity")))
-    throw std::invalid_argument("--guess-phase and --guess-velocity go together");
+    throw std::invalid_argument("`guess-phase` and `guess-velocity` go together");
   if (guess_given) {
     require_in_range("guess-velocity", o.number("guess-velocity"), 0, 1e3, false);
     st.guess = std::array<double, 2>{o.number("guess-phase"), o.number("guess-velocity")};
   }
-  if (region && o.given("continue")) throw std::invalid_argument("give --region or --continue, not both");
+  if (region && o.given("continue")) throw std::invalid_argument("give `region` or `continue`, not both");
   const OrbitType& type = st.type;
   st.title = "housner b/h=" + std::to_string(width / height).substr(0, 5) +
              " e=" + std::to_string(rf.e()).substr(0, 5) + " (" + std::to_string(type.m) + "," +
@@ -139,7 +139,7 @@ StudyReport region_report(const StudyOptions& o, const OrbitSetup& st, const Stu
   ro.ks_max = o.number("ks-max");
   if (o.given("beta-min") || o.given("beta-max")) {
     if (o.given("ks-min") || o.given("ks-max"))
-      throw std::invalid_argument("give --ks-min/max or --beta-min/max, not both");
+      throw std::invalid_argument("give `ks-min`/max or `beta-min`/max, not both");
     ro.ks_min = (o.given("beta-min") ? o.number("beta-min") : 0.0) * st.rf.alpha();
     ro.ks_max = (o.given("beta-max") ? o.number("beta-max") : 0.0) * st.rf.alpha();
   }
@@ -212,9 +212,9 @@ ContinuationOptions continuation_options(const StudyOptions& o, const OrbitSetup
   ContinuationOptions co;
   co.parameter = o.text("continue");
   if (co.parameter != "ks" && co.parameter != "omega")
-    throw std::invalid_argument("--continue = '" + co.parameter + "' is not one of: ks, omega");
+    throw std::invalid_argument("`continue` = '" + co.parameter + "' is not one of: ks, omega");
   if (!o.given("continue-min") || !o.given("continue-max"))
-    throw std::invalid_argument("--continue needs --continue-min and --continue-max (K_s in g, or omega)");
+    throw std::invalid_argument("`continue` needs `continue-min` and `continue-max` (K_s in g, or omega)");
   co.min = o.number("continue-min");
   co.max = o.number("continue-max");
   co.ds = o.number("ds");
@@ -230,7 +230,7 @@ StudyReport continuation_report(const StudyOptions& o, const OrbitSetup& st, con
                                 const StudyRequest& request) {
   const ContinuationOptions co = continuation_options(o, st);
   if (at.orbits.empty())
-    throw std::runtime_error("no orbit found at the start point to continue (give --guess-phase/--guess-velocity)");
+    throw std::runtime_error("no orbit found at the start point to continue (give `guess-phase`/`guess-velocity`)");
   const OrbitBranches b = continue_orbits(st.rf, st.type, at.orbits, co);
   StudyReport rep;
   rep.summary = orbit_study_header(st.rf, st.type, st.so);

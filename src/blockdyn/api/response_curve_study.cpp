@@ -35,10 +35,10 @@ std::vector<StudyOption> response_curve_options() {
   o.push_back({"betas", "amplitudes beta, comma separated (a_H = beta alpha g ...)", "", false, true});
   for (const StudyOption& x : excitation_grid_options()) o.push_back(x);
   const std::vector<StudyOption> own = {
-      {"omega", "one frequency omega = Omega/p (instead of --omega-min/max/points)", ""},
+      {"omega", "one frequency omega = Omega/p (instead of `omega-min`/max/points)", ""},
       {"phi-l-values",
        "assembly: friction angles between blocks [deg], \"v1,v2,...\" or \"min:max:points\"; more than one makes "
-       "phi_l the curve's abscissa (seed 002 Figs. 4-5; needs one --omega)",
+       "phi_l the curve's abscissa (seed 002 Figs. 4-5; needs one `omega`)",
        ""},
       {"phi-s-values",
        "assembly: friction angles on the ground [deg], \"v1,v2,...\" or \"min:max:points\" (one curve each)", ""}};
@@ -50,18 +50,18 @@ std::vector<StudyOption> response_curve_options() {
 SurvivalOptions curve_grid_of(const StudyOptions& so) {
   SurvivalOptions o = excitation_grid_of(so);
   o.betas = so.given("betas") ? so.numbers("betas") : std::vector<double>{};
-  if (o.betas.empty()) throw std::invalid_argument("--betas B1,B2,... is needed (the amplitudes, in units of alpha g)");
+  if (o.betas.empty()) throw std::invalid_argument("`betas` B1,B2,... is needed (the amplitudes, in units of alpha g)");
   o.beta_points = int(o.betas.size());
   if (so.given("omega")) {
     for (const char* n : {"omega-min", "omega-max", "omega-points"})
       if (so.given(n))
-        throw std::invalid_argument(std::string("--omega and --") + n + ": give one frequency or a range");
+        throw std::invalid_argument(std::string("`omega` and `") + n + "`: give one frequency or a range");
     const double omega = so.number("omega");
     require_in_range("omega", omega, 0, 1e4, false);
     o.omega_min = o.omega_max = omega;
     o.omega_points = 1;
   }
-  if (so.given("t-end") && so.given("periods")) throw std::invalid_argument("give --t-end or --periods, not both");
+  if (so.given("t-end") && so.given("periods")) throw std::invalid_argument("give `t-end` or `periods`, not both");
   validate(o);
   return o;
 }
@@ -69,7 +69,8 @@ SurvivalOptions curve_grid_of(const StudyOptions& so) {
 // A friction-angle axis (deg, in (0, 90]) from --phi-X-values, or the single --phi-X value.
 std::vector<double> phi_axis(const StudyOptions& so, const std::string& name, double single) {
   if (!so.given(name + "-values")) return {single};
-  if (so.given(name)) throw std::invalid_argument("--" + name + "-values and --" + name + ": give only one");
+  if (so.given(name))
+    throw std::invalid_argument(std::string("`") + name + "-values` and `" + name + "`: give only one");
   const SweepAxis a = parse_axis(name + "-values", so.text(name + "-values"), AxisSpacing::Linear);
   for (double v : a.values)
     if (!(v > 0 && v <= 90)) throw std::invalid_argument(name + "-values: each angle must be in (0, 90] deg");
@@ -83,12 +84,12 @@ struct CurveAxes {
 
 CurveAxes curve_axes(const StudyOptions& so, const ForcedModelChoice& choice, const SurvivalOptions& o) {
   if ((so.given("phi-s-values") || so.given("phi-l-values")) && !choice.friction_angles())
-    throw std::invalid_argument("phi-s-values, phi-l-values: friction angles belong to --model assembly");
+    throw std::invalid_argument("phi-s-values, phi-l-values: friction angles belong to `model` assembly");
   CurveAxes a;
   a.phi_s = phi_axis(so, "phi-s", choice.phi_s);
   a.phi_l = phi_axis(so, "phi-l", choice.phi_l);
   if (a.phi_l.size() > 1 && o.omega_points > 1)
-    throw std::invalid_argument("omega: give one frequency (--omega W) for a curve versus phi-l");
+    throw std::invalid_argument("omega: give one frequency (`omega` W) for a curve versus phi-l");
   Settings model;
   for (const std::string& n : forced_model_option_names())
     for (const std::string& v : so.given_settings().values(n)) model.add(n, v);

@@ -37,12 +37,12 @@ Vec3 vec3_option(const Settings& s, const char* name) {
     char* end = nullptr;
     const double x = std::strtod(cell.c_str(), &end);
     if (cell.empty() || *end != '\0' || !std::isfinite(x) || std::fabs(x) > 1e3)
-      throw std::invalid_argument(std::string("--") + name + " = '" + all +
+      throw std::invalid_argument(std::string("`") + name + "` = '" + all +
                                   "': three finite numbers X,Y,Z are needed, each within [-1000, 1000]");
     xs.push_back(x);
   }
   if (xs.size() != 3)
-    throw std::invalid_argument(std::string("--") + name + " = '" + all + "': three numbers X,Y,Z are needed");
+    throw std::invalid_argument(std::string("`") + name + "` = '" + all + "': three numbers X,Y,Z are needed");
   return {xs[0], xs[1], xs[2]};
 }
 
@@ -50,17 +50,17 @@ Body3d body_from(const Settings& s) {
   Body3d b;
   const std::string shape = s.text("shape", "box");
   if (shape != "box" && shape != "cylinder")
-    throw std::invalid_argument("--shape = '" + shape + "' is not one of: box, cylinder");
+    throw std::invalid_argument("`shape` = '" + shape + "' is not one of: box, cylinder");
   b.shape = shape == "box" ? BodyShape3d::Box : BodyShape3d::Cylinder;
   for (const char* n :
        b.shape == BodyShape3d::Box ? std::vector<const char*>{"radius"} : std::vector<const char*>{"width", "depth"})
-    if (s.has(n)) throw std::invalid_argument(std::string("--") + n + " does not belong to --shape " + shape);
+    if (s.has(n)) throw std::invalid_argument(std::string("`") + n + "` does not belong to `shape` " + shape);
   b.height = s.number("height", 1.2);
   b.width = s.number("width", 0.4);
   b.depth = s.number("depth", b.width);
   b.radius = s.number("radius", 0.2);
   b.g = s.number("g", 9.81);
-  if (s.has("mass") && s.has("density")) throw std::invalid_argument("--mass and --density: give one of them");
+  if (s.has("mass") && s.has("density")) throw std::invalid_argument("`mass` and `density`: give one of them");
   if (s.has("density")) {
     const double rho = s.number("density", 0);
     require_in_range("density", rho, 0, 1e5, false);
@@ -86,7 +86,7 @@ Body3dStart start_from(const Settings& s) {
   if (s.has("velocity")) {
     if (!(st.lift > 0))
       throw std::invalid_argument(
-          "--velocity needs --lift > 0: in contact the velocity follows from the rotation about the contact");
+          "`velocity` needs `lift` > 0: in contact the velocity follows from the rotation about the contact");
     st.velocity = vec3_option(s, "velocity");
   }
   if (s.has("angular-velocity")) st.angular_velocity = vec3_option(s, "angular-velocity");
@@ -311,11 +311,11 @@ class PreparedRigid3d final : public PreparedRun {
 const std::vector<StudyOption>& rigid3d_options() {
   static const std::vector<StudyOption> o = [] {
     std::vector<StudyOption> v{
-        {"shape", "rigid3d: box (--width along x, --depth along y, --height) or cylinder (--radius, --height)", "box"},
-        {"depth", "rigid3d: the box's depth along its e2 axis [m] (default: --width)"},
-        {"tilt-azimuth", "rigid3d: the side the body leans to at --tilt, degrees from x towards y (default 0)"},
+        {"shape", "rigid3d: box (`width` along x, `depth` along y, `height`) or cylinder (`radius`, `height`)", "box"},
+        {"depth", "rigid3d: the box's depth along its e2 axis [m] (default: `width`)"},
+        {"tilt-azimuth", "rigid3d: the side the body leans to at `tilt`, degrees from x towards y (default 0)"},
         {"yaw", "rigid3d: the body's e1 axis from x towards y [deg] (default 0)"},
-        {"velocity", "rigid3d: initial velocity VX,VY,VZ of the centroid [m/s] (with --lift)"},
+        {"velocity", "rigid3d: initial velocity VX,VY,VZ of the centroid [m/s] (with `lift`)"},
         {"angular-velocity", "rigid3d: initial angular velocity WX,WY,WZ [rad/s] (world frame)"},
         {"lift", "rigid3d: start in flight this high above the ground [m] (default 0)"},
     };

@@ -26,13 +26,13 @@ std::vector<StudyOption> rocking_spectrum_options() {
   return {{"model", "housner (default) or rigid (3 DOF, Coulomb friction)", "housner"},
           {"record", "the ground motion: PEER .AT2 (g) or CSV 't, a' (s, g)"},
           {"scale", "factor on the record", "1"},
-          {"scales", "record scale factors, comma separated (a second axis; instead of --scale)", "", false, true},
+          {"scales", "record scale factors, comma separated (a second axis; instead of `scale`)", "", false, true},
           {"alpha", "slenderness angle alpha = atan(b/h) [rad], in (0, pi/4]"},
           {"p-values", "frequency parameters p = sqrt(3 g / (4 R)) [rad/s], comma separated", "", false, true},
           {"p-min", "smallest p of a geometric range [rad/s]"},
           {"p-max", "largest p [rad/s]"},
           {"p-points", "number of p values"},
-          {"t-end", "duration of every run [s] (default: the record's end + --t-after)"},
+          {"t-end", "duration of every run [s] (default: the record's end + `t-after`)"},
           {"t-after", "simulated time after the record's end [s]", "5"},
           {"mass", "block mass [kg]", "1"},
           {"g", "gravity [m/s^2]", "9.81"},
@@ -47,8 +47,8 @@ std::vector<double> p_values(const StudyOptions& o) {
   const bool list = o.given("p-values");
   const bool range = o.given("p-min") || o.given("p-max") || o.given("p-points");
   if (list == range)
-    throw std::invalid_argument(list ? "give --p-values or --p-min/--p-max/--p-points, not both"
-                                     : "give --p-values P1,P2,... or --p-min --p-max --p-points");
+    throw std::invalid_argument(list ? "give `p-values` or `p-min`/`p-max`/`p-points`, not both"
+                                     : "give `p-values` P1,P2,... or `p-min` `p-max` `p-points`");
   std::vector<double> p;
   if (list) {
     p = o.numbers("p-values");
@@ -110,7 +110,7 @@ GridStudy rocking_grid(const Settings& given, const std::string& output) {
   if (!so.given("alpha")) throw std::invalid_argument("alpha: give the slenderness angle [rad]");
   const double alpha = so.number("alpha");
   require_in_range("alpha", alpha, 0, M_PI / 4, false);
-  if (so.given("scale") && so.given("scales")) throw std::invalid_argument("--scale and --scales: give only one");
+  if (so.given("scale") && so.given("scales")) throw std::invalid_argument("`scale` and `scales`: give only one");
   Axes ax;
   ax.p = p_values(so);
   ax.scales = so.given("scales") ? so.numbers("scales") : std::vector<double>{so.number("scale")};
@@ -125,7 +125,7 @@ GridStudy rocking_grid(const Settings& given, const std::string& output) {
   require_in_range("mass", base.shape.mass, 0, 1e12, false);
   if (!m.friction)
     for (const char* n : {"mu-s", "mu-k", "impact"})
-      if (so.given(n)) throw std::invalid_argument(std::string("--") + n + " applies to --model rigid only");
+      if (so.given(n)) throw std::invalid_argument(std::string("`") + n + "` applies to `model` rigid only");
   base.interface.mu_s = so.number("mu-s");
   base.interface.mu_k = so.given("mu-k") ? so.number("mu-k") : base.interface.mu_s;
   const auto law = impact_law_from_string(so.text("impact"));
@@ -133,7 +133,7 @@ GridStudy rocking_grid(const Settings& given, const std::string& output) {
   base.impact = *law;
   if (so.given("restitution")) base.restitution = so.number("restitution");
   const auto rec = record_from(given);
-  if (so.given("t-end") && so.given("t-after")) throw std::invalid_argument("--t-end and --t-after: give only one");
+  if (so.given("t-end") && so.given("t-after")) throw std::invalid_argument("`t-end` and `t-after`: give only one");
   const double t_end = so.given("t-end") ? so.number("t-end") : rec->t_last() + t_after;
   require_in_range("t-end", t_end, 0, 1e5, false);
   // Every block of the grid is checked before any point runs (a restitution out of range, ...).

@@ -38,17 +38,18 @@ void check_family_options(const Settings& s, const std::string& model) {
   if (rigid) {
     for (const char* n : {"r", "k", "mu", "ic", "units"})
       if (s.has(n))
-        throw std::invalid_argument(std::string("--") + n + " belongs to the winkler model, not to --model " + model);
+        throw std::invalid_argument(std::string("`") + n + "` belongs to the winkler model, not to `model` " + model);
   } else {
     for (const char* n : {"restitution", "mu-s", "mu-k", "impact"})
       if (s.has(n))
-        throw std::invalid_argument(std::string("--") + n + " belongs to --model housner|rigid, not to winkler");
+        throw std::invalid_argument(std::string("`") + n + "` belongs to `model` housner|rigid, not to winkler");
   }
   if (rigid && !rigid->friction)
     for (const char* n : {"mu-s", "mu-k", "impact", "x0", "y0", "vx0", "vy0"})
       if (s.has(n))
-        throw std::invalid_argument(std::string("--") + n +
-                                    " belongs to --model rigid (housner has one degree of freedom)");
+        throw std::invalid_argument(std::string("`") + n +
+                                    "`"
+                                    " belongs to `model` rigid (housner has one degree of freedom)");
 }
 
 // The physical-block options on top of the scenario's [physical] block (if any).
@@ -58,12 +59,12 @@ void apply_physical(const Settings& s, Scenario& sc) {
   for (const PhysOption& po : kPhysOptions) {
     if (!s.has(po.name)) continue;
     if (rigid && po.winkler_only)
-      throw std::invalid_argument(std::string("--") + po.name + " belongs to the winkler model (--model winkler)");
+      throw std::invalid_argument(std::string("`") + po.name + "` belongs to the winkler model (`model` winkler)");
     any = true;
   }
   if (!any) return;
   if (!rigid && (s.has("r") || s.has("k")))
-    throw std::invalid_argument("--r/--k and a physical block (--height, --width, ...) both given: use one");
+    throw std::invalid_argument("`r`/`k` and a physical block (`height`, `width`, ...) both given: use one");
   PhysicalBlock pb = sc.physical.value_or(PhysicalBlock{});
   if (!rigid) pb.mu = s.has("mu") ? sc.params.mu : (sc.physical ? pb.mu : sc.params.mu);
   for (const PhysOption& po : kPhysOptions) {
@@ -84,7 +85,7 @@ void apply_initial(const Settings& s, Scenario& sc) {
   if (s.has("ic")) {
     const std::string v = s.text("ic");
     if (v != "ic1" && v != "ic2" && v != "custom")
-      throw std::invalid_argument("--ic = '" + v + "' is not one of: ic1, ic2, custom");
+      throw std::invalid_argument("`ic` = '" + v + "' is not one of: ic1, ic2, custom");
     sc.initial.set = v;
   }
   for (auto [name, field] : {std::pair{"w0", &InitialSpec::w0},
@@ -133,7 +134,7 @@ Scenario scenario_from(const Settings& s) {
   if (s.has("impact")) {
     const std::string v = s.text("impact");
     const auto law = impact_law_from_string(v);
-    if (!law) throw std::invalid_argument("--impact = '" + v + "' is not one of: housner, newton");
+    if (!law) throw std::invalid_argument("`impact` = '" + v + "' is not one of: housner, newton");
     sc.impact = *law;
   }
   apply_ground_settings(s, sc.ground);
@@ -147,7 +148,7 @@ Scenario scenario_from(const Settings& s) {
       throw std::invalid_argument("units = '" + sc.units + "' is not one of: nondim, physical");
     if (sc.units == "physical" && !sc.physical)
       throw std::invalid_argument(
-          "units = physical needs a physical block (--height --width ... or [physical] in the scenario)");
+          "units = physical needs a physical block (`height` `width` ... or [physical] in the scenario)");
   }
   return sc;
 }

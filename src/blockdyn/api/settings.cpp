@@ -46,7 +46,7 @@ bool Settings::has(std::string_view name) const { return find(name) != nullptr; 
 
 namespace {
 std::invalid_argument bad(std::string_view name, const std::string& value, const char* what) {
-  return std::invalid_argument("--" + std::string(name) + " = '" + value + "' is not " + what);
+  return std::invalid_argument(std::string("`") + std::string(name) + "` = '" + value + "' is not " + what);
 }
 }  // namespace
 
@@ -117,7 +117,7 @@ void Settings::require_known(const std::vector<std::string>& known, const std::s
   for (const auto& [k, v] : entries_) {
     bool ok = false;
     for (const std::string& n : known) ok = ok || n == k;
-    if (!ok) throw std::invalid_argument("--" + k + ": not an option of " + what);
+    if (!ok) throw std::invalid_argument(std::string("`") + k + "`: not an option of " + what);
   }
 }
 
@@ -138,7 +138,8 @@ Settings with_canonical_names(const Settings& s, const std::vector<StudyOption>&
     for (const StudyOption& o : specs)
       for (const std::string& a : o.aliases)
         if (canonical_alias(a) == n) {
-          if (s.has(o.name)) throw std::invalid_argument("--" + n + " and --" + o.name + ": the same option, give one");
+          if (s.has(o.name))
+            throw std::invalid_argument(std::string("`") + n + "` and `" + o.name + "`: the same option, give one");
           name = o.name;
         }
     for (const std::string& v : s.values(n)) out.add(name, v);
@@ -154,7 +155,7 @@ void apply_integrator_settings(const Settings& s, IntegratorOptions& o) {
   if (s.has("method")) {
     const std::string v = s.text("method");
     const auto m = method_from_string(v);
-    if (!m) throw std::invalid_argument("--method = '" + v + "' is not one of: auto, dopri5, dop853");
+    if (!m) throw std::invalid_argument("`method` = '" + v + "' is not one of: auto, dopri5, dop853");
     o.method = *m;
   }
 }

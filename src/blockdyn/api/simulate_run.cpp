@@ -223,7 +223,7 @@ class PreparedBlock final : public PreparedRun {
 
 std::unique_ptr<PreparedRun> prepare_block(const Settings& s) {
   Scenario sc = scenario_from(s);
-  if (family_named("--model", sc.model).rigid_ground) (void)rigid_params(sc);  // invalid parameters fail here
+  if (family_named("`model`", sc.model).rigid_ground) (void)rigid_params(sc);  // invalid parameters fail here
   return std::make_unique<PreparedBlock>(std::move(sc));
 }
 
@@ -317,16 +317,16 @@ std::unique_ptr<PreparedRun> prepare_assembly(const Settings& s) {
 
 std::unique_ptr<PreparedRun> prepare_run(const Settings& s) {
   const std::string model = s.text("model");
-  const Family& f = model.empty() ? families().front() : family_named("--model", model);
-  s.require_known(f.options(), "--model " + std::string(f.name));
+  const Family& f = model.empty() ? families().front() : family_named("`model`", model);
+  s.require_known(f.options(), "`model` " + std::string(f.name));
   return f.prepare(s);
 }
 
 SimulateReport run_scenario(const Scenario& sc, const SimulateOutputs& out) {
   if (out.timing_repeat < 1 || out.timing_repeat > 1000)
     throw std::invalid_argument("timing-repeat = " + std::to_string(out.timing_repeat) + " is out of range: [1, 1000]");
-  const Family& f = family_named("--model", sc.model);
-  if (!f.scenario()) throw std::invalid_argument("--model " + sc.model + " is not described by a scenario");
+  const Family& f = family_named("`model`", sc.model);
+  if (!f.scenario()) throw std::invalid_argument("`model` " + sc.model + " is not described by a scenario");
   return f.run_scenario(sc, out);
 }
 

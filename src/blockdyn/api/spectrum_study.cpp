@@ -52,8 +52,8 @@ std::vector<double> durations_of(const StudyOptions& o) {
   const bool list = o.given("durations");
   const bool range = o.given("duration-min") || o.given("duration-max") || o.given("duration-points");
   if (list == range)
-    throw std::invalid_argument(list ? "give --durations or --duration-min/--duration-max/--duration-points, not both"
-                                     : "give --durations D1,D2,... or --duration-min --duration-max --duration-points");
+    throw std::invalid_argument(list ? "give `durations` or `duration-min`/`duration-max`/`duration-points`, not both"
+                                     : "give `durations` D1,D2,... or `duration-min` `duration-max` `duration-points`");
   if (list) return o.numbers("durations");
   const double lo = o.given("duration-min") ? o.number("duration-min") : 0.0;
   const double hi = o.given("duration-max") ? o.number("duration-max") : 0.0;

@@ -29,7 +29,7 @@ const std::vector<StudyCommand>& study_commands() {
       for (std::size_t i = 0; i < c.options.size(); ++i)
         for (std::size_t k = 0; k < i; ++k)
           if (c.options[i].name == c.options[k].name)
-            throw std::logic_error("study " + c.name + ": option --" + c.options[i].name + " twice");
+            throw std::logic_error("study " + c.name + ": option `" + c.options[i].name + "` twice");
     return v;
   }();
   return all;
@@ -78,12 +78,12 @@ std::vector<double> StudyOptions::numbers(const std::string& name) const {
 
 double StudyOptions::number(const std::string& name) const {
   const auto v = values_.number(name);
-  if (!v) throw std::invalid_argument("--" + name + " is required");
+  if (!v) throw std::invalid_argument(std::string("`") + name + "` is required");
   return *v;
 }
 
 long StudyOptions::integer(const std::string& name) const {
-  if (!values_.has(name)) throw std::invalid_argument("--" + name + " is required");
+  if (!values_.has(name)) throw std::invalid_argument(std::string("`") + name + "` is required");
   return values_.integer(name, 0);
 }
 
@@ -107,7 +107,7 @@ StudyRunOptions StudyOptions::run_options() const {
   run.integrator.max_steps = integer("max-steps");
   const std::string m = text("method");
   const auto method = method_from_string(m);
-  if (!method) throw std::invalid_argument("--method = '" + m + "' is not one of: auto, dopri5, dop853");
+  if (!method) throw std::invalid_argument("`method` = '" + m + "' is not one of: auto, dopri5, dop853");
   run.integrator.method = *method;
   require_in_range("t-end", run.t_end, 0.0, 1e9, false, true);
   require_in_range("rtol", run.integrator.rtol, 0.0, 1.0, false, false);

@@ -53,9 +53,9 @@ SurvivalOptions survival_options_of(const StudyOptions& so, int& refine) {
   o.t_star_classes = so.numbers("t-star-classes");
   if (o.t_star_classes.size() != 4)
     throw std::invalid_argument(
-        "--t-star-classes: 4 values are needed (the upper bounds of <=5 s, short, medium, long)");
+        "`t-star-classes`: 4 values are needed (the upper bounds of <=5 s, short, medium, long)");
   validate(o);
-  if (so.given("t-end") && so.given("periods")) throw std::invalid_argument("give --t-end or --periods, not both");
+  if (so.given("t-end") && so.given("periods")) throw std::invalid_argument("give `t-end` or `periods`, not both");
   const long levels = so.integer("refine");
   require_in_range("refine", double(levels), 0, 8);
   refine = int(levels);
@@ -63,7 +63,7 @@ SurvivalOptions survival_options_of(const StudyOptions& so, int& refine) {
   const std::size_t nyf = RefinementPlan::fine_count(std::size_t(o.beta_points), refine);
   if (double(nxf) * double(nyf) > 4e6)
     throw std::invalid_argument("refine: the fine lattice would have " + std::to_string(nxf * nyf) +
-                                " points (at most 4e6): lower --refine or the point counts");
+                                " points (at most 4e6): lower `refine` or the point counts");
   return o;
 }
 
@@ -114,7 +114,7 @@ GridStudy survival_grid(const Settings& given, const std::string& output) {
   if (o.periods > 0 && !(o.periods * 2 * M_PI / (o.omega_min * fm->p) <= 1e5))
     throw std::invalid_argument("periods = " + number_text(o.periods) + " gives runs of " +
                                 number_text(o.periods * 2 * M_PI / (o.omega_min * fm->p), 6) +
-                                " s at omega-min: at most 1e5 s (lower --periods or raise --omega-min)");
+                                " s at omega-min: at most 1e5 s (lower `periods` or raise `omega-min`)");
   const json options = survival_run_options(o, *fm, refine);
   const json definition = {{"model", fm->description},
                            {"alpha", fm->alpha},

@@ -51,7 +51,7 @@ void apply_state_and_run(const Settings& s, Initial& initial, Options& options) 
 // --w0 and --w0-over-alpha (one of them): the tilt, absolute or per point.
 template <class Set>
 void apply_tilt(const Settings& s, Set&& set) {
-  if (s.has("w0") && s.has("w0-over-alpha")) throw std::invalid_argument("--w0 and --w0-over-alpha: give only one");
+  if (s.has("w0") && s.has("w0-over-alpha")) throw std::invalid_argument("`w0` and `w0-over-alpha`: give only one");
   if (s.has("w0")) set(*s.number("w0"), false);
   if (s.has("w0-over-alpha")) set(*s.number("w0-over-alpha"), true);
 }
@@ -69,9 +69,9 @@ SweepPlotAxis plot_axis(const SweepAxis& a) { return {a.name, a.values, a.is_ran
 
 SweepDefinition winkler_sweep(const Settings& s, const Family& family) {
   for (const char* n : kRigidOnly)
-    if (s.has(n)) throw std::invalid_argument(std::string("--") + n + " belongs to --model housner|rigid sweeps");
+    if (s.has(n)) throw std::invalid_argument(std::string("`") + n + "` belongs to `model` housner|rigid sweeps");
   SweepSpec sp = s.has("definition") ? load_sweep(s.text("definition")) : SweepSpec{};
-  if (s.has("r") && s.has("inv-r")) throw std::invalid_argument("--r and --inv-r: give only one aspect-ratio axis");
+  if (s.has("r") && s.has("inv-r")) throw std::invalid_argument("`r` and `inv-r`: give only one aspect-ratio axis");
   if (s.has("k")) sp.k = parse_axis("k", s.text("k"), AxisSpacing::Log);
   if (s.has("r")) sp.r = parse_axis("r", s.text("r"), AxisSpacing::Linear);
   if (s.has("inv-r")) sp.r = parse_axis("inv_r", s.text("inv-r"), AxisSpacing::Linear);
@@ -102,10 +102,10 @@ SweepDefinition winkler_sweep(const Settings& s, const Family& family) {
 }
 
 std::vector<std::pair<std::string, std::string>> winkler_sweep_axes() {
-  return {{"k", "foundation stiffness (--k; [axes] k in a definition file)"},
-          {"r", "aspect ratio width/height (--r), or inv_r its inverse (--inv-r)"},
-          {"mu", "friction coefficient (--mu)"},
-          {"ic", "initial-condition sets ic1, ic2, custom (--ic)"}};
+  return {{"k", "foundation stiffness (`k`; [axes] k in a definition file)"},
+          {"r", "aspect ratio width/height (`r`), or inv_r its inverse (`inv-r`)"},
+          {"mu", "friction coefficient (`mu`)"},
+          {"ic", "initial-condition sets ic1, ic2, custom (`ic`)"}};
 }
 
 namespace {
@@ -124,7 +124,7 @@ void apply_block(const Settings& s, RigidSweepSpec& sp) {
   if (s.has("restitution")) sp.block.restitution = *s.number("restitution");
   if (s.has("impact")) {
     const auto law = impact_law_from_string(s.text("impact"));
-    if (!law) throw std::invalid_argument("--impact = '" + s.text("impact") + "' is not one of: housner, newton");
+    if (!law) throw std::invalid_argument("`impact` = '" + s.text("impact") + "' is not one of: housner, newton");
     sp.block.impact = *law;
   }
 }
@@ -133,11 +133,11 @@ void add_axes(const Settings& s, RigidSweepSpec& sp) {
   for (const std::string& a : s.values("axis")) {
     const auto eq = a.find('=');
     if (eq == std::string::npos || eq == 0)
-      throw std::invalid_argument("--axis '" + a + "': expected NAME=SPEC, e.g. ground_h_amplitude=0.1:1:20");
+      throw std::invalid_argument("`axis` '" + a + "': expected NAME=SPEC, e.g. ground_h_amplitude=0.1:1:20");
     const std::string name = a.substr(0, eq);
     for (const auto& x : sp.axes)
       if (x.name == name)
-        throw std::invalid_argument("--axis " + name + ": given twice (or also in the definition file)");
+        throw std::invalid_argument("`axis` " + name + ": given twice (or also in the definition file)");
     sp.axes.push_back(parse_axis(name, a.substr(eq + 1), AxisSpacing::Linear));
   }
 }
@@ -148,7 +148,7 @@ SweepDefinition rigid_sweep(const Settings& s, const Family& family) {
   const std::string model = family.name;
   for (const char* n : kWinklerOnly)
     if (s.has(n))
-      throw std::invalid_argument(std::string("--") + n + " belongs to the winkler sweep, not to --model " + model);
+      throw std::invalid_argument(std::string("`") + n + "` belongs to the winkler sweep, not to `model` " + model);
   RigidSweepSpec sp;
   if (s.has("definition"))
     sp = load_rigid_sweep(s.text("definition"), *family.rigid_ground);
@@ -177,7 +177,7 @@ SweepDefinition rigid_sweep(const Settings& s, const Family& family) {
   if (!has_width || !has_height)
     throw std::invalid_argument(std::string("the ") + model + " sweep needs the block's " +
                                 (has_width ? "height" : "width") +
-                                ": --width and --height [m] (or [physical] in the definition, or an axis)");
+                                ": `width` and `height` [m] (or [physical] in the definition, or an axis)");
   validate(sp);
   SweepDefinition d;
   d.model = model;
@@ -198,7 +198,7 @@ const std::vector<StudyOption>& sweep_options() {
         {"model", "model family: winkler (default), housner, rigid"},
         {"axis",
          "housner/rigid: an axis NAME=SPEC (repeatable; the first varies fastest), e.g. ground_h_amplitude=0.1:1:20 "
-         "(see --list-axes)",
+         "(see `list-axes`)",
          "", false, true},
         {"width", "housner/rigid: block width [m]"},
         {"height", "housner/rigid: block height [m]"},
@@ -230,8 +230,8 @@ const std::vector<StudyOption>& sweep_options() {
         {"stop-at-first-flight", "stop each run at its first take-off", "", true},
         {"stop-at-ihor", "stop each run once ihor reaches N (0: never)"},
         {"no-energy", "do not track the energy balance (max_abs_energy_error left empty)", "", true},
-        {"metric", "extra per-point columns by name (repeatable; see --list-metrics)", "", false, true},
-        {"plot", "plot (PNG, SVG beside it): 1-D line or 2-D map of --plot-column"},
+        {"metric", "extra per-point columns by name (repeatable; see `list-metrics`)", "", false, true},
+        {"plot", "plot (PNG, SVG beside it): 1-D line or 2-D map of `plot-column`"},
         {"plot-column", "column to plot (default first_flight_time; housner/rigid max_abs_rotation_over_alpha)"}};
     o.insert(o.end(), rest.begin(), rest.end());
     return o;

@@ -29,14 +29,14 @@ std::vector<StudyOption> winkler_orbit_options(const std::string& method_option)
        "(dop853 when rtol < 1e-6)",
        "auto"},
       {"ic",
-       "initial conditions: ic1 (tilted, at rest), ic2 (upright, impulse), custom, or surface (given --w0 --y0, "
-       "y' solved so that the energy is --energy / that of --energy-of)",
+       "initial conditions: ic1 (tilted, at rest), ic2 (upright, impulse), custom, or surface (given `w0` `y0`, "
+       "y' solved so that the energy is `energy` / that of `energy-of`)",
        "ic1"},
       {"energy", "surface: the total energy E of the initial state", ""},
-      {"energy-of", "surface: use the energy of this set (ic1 or ic2) when --energy is not given", "ic1"},
+      {"energy-of", "surface: use the energy of this set (ic1 or ic2) when `energy` is not given", "ic1"},
       {"vy-sign", "surface: sign of the solved y' (+1 or -1)", "1"},
       {"w0", "initial tilt w (ic1 override, default alpha/2; custom state)", ""},
-      {"w0-alpha", "initial tilt as a fraction of alpha = atan(r) (instead of --w0)", ""},
+      {"w0-alpha", "initial tilt as a fraction of alpha = atan(r) (instead of `w0`)", ""},
       {"x0", "initial x (overrides the set's value)", ""},
       {"y0", "initial y of the centre (overrides)", ""},
       {"vx0", "initial x' (overrides)", ""},
@@ -54,11 +54,11 @@ std::string one_of(const StudyOptions& o, const std::string& name, const std::ve
     if (a == v) return v;
     list += (list.empty() ? "" : ", ") + a;
   }
-  throw std::invalid_argument("--" + name + " = '" + v + "' is not one of: " + list);
+  throw std::invalid_argument(std::string("`") + name + "` = '" + v + "' is not one of: " + list);
 }
 
 std::optional<double> initial_tilt(const StudyOptions& o, const WinklerParams& p) {
-  if (o.given("w0") && o.given("w0-alpha")) throw std::invalid_argument("give either --w0 or --w0-alpha, not both");
+  if (o.given("w0") && o.given("w0-alpha")) throw std::invalid_argument("give either `w0` or `w0-alpha`, not both");
   if (o.given("w0")) return o.number("w0");
   if (!o.given("w0-alpha")) return std::nullopt;
   const double f = o.number("w0-alpha");
@@ -71,9 +71,9 @@ WinklerState initial_of(const StudyOptions& o, const WinklerOrbit& orbit) {
   const std::optional<double> w0 = initial_tilt(o, p);
   const std::string of = one_of(o, "energy-of", {"ic1", "ic2"});
   const long sign = o.integer("vy-sign");
-  if (sign != 1 && sign != -1) throw std::invalid_argument("--vy-sign = " + std::to_string(sign) + " is not 1 or -1");
+  if (sign != 1 && sign != -1) throw std::invalid_argument("`vy-sign` = " + std::to_string(sign) + " is not 1 or -1");
   if (orbit.ic == "surface") {
-    if (!w0 || !o.given("y0")) throw std::invalid_argument("ic = surface needs --w0 (or --w0-alpha) and --y0");
+    if (!w0 || !o.given("y0")) throw std::invalid_argument("ic = surface needs `w0` (or `w0-alpha`) and `y0`");
     const double E = o.given("energy") ? o.number("energy") : energy(p, of == "ic2" ? ic2(p) : ic1(p)).total();
     return state_on_energy_surface(p, E, *w0, o.number("y0"), int(sign));
   }
@@ -101,7 +101,7 @@ WinklerOrbit winkler_orbit(const StudyOptions& o, const std::string& method_opti
   orbit.integrator.atol = o.number("atol");
   const auto m = method_from_string(o.text(method_option));
   if (!m)
-    throw std::invalid_argument("--" + method_option + " = '" + o.text(method_option) +
+    throw std::invalid_argument(std::string("`") + method_option + "` = '" + o.text(method_option) +
                                 "' is not one of: auto, dopri5, dop853");
   orbit.integrator.method = *m;
   orbit.ic = one_of(o, "ic", {"ic1", "ic2", "custom", "surface"});

@@ -183,7 +183,7 @@ void validate(const RezaeianParams& p) {
                                 " s lies outside the record [0, t-end = " + number_text(p.t_end) + " s]");
   if (!(p.d5_95 >= 20.0 * p.dt))
     throw std::invalid_argument("d5-95 = " + number_text(p.d5_95) + " s spans fewer than 20 samples of dt = " +
-                                number_text(p.dt) + " s: give a longer --d5-95 or a smaller --dt");
+                                number_text(p.dt) + " s: give a longer `d5-95` or a smaller `dt`");
   const Modulation q = fit_modulation(p.arias, p.d5_95, p.t_mid, p.g);
   // The record cut at t_end keeps the fraction F of the modulation's energy: its expected D5-95
   // runs between the quantiles 0.05 F and 0.95 F.
@@ -195,7 +195,7 @@ void validate(const RezaeianParams& p) {
         " s, t-mid = " + number_text(p.t_mid) + " s: the record would hold " + number_text(100.0 * kept, 4) +
         " % of the Arias target and a D5-95 of " + number_text(d_cut, 4) +
         " s (at least 98 %, and within 5 %, needed); its 99.5 % point lies at " + number_text(q.husid_time(0.995), 4) +
-        " s: give a longer --t-end or move --t-mid and --d5-95 earlier");
+        " s: give a longer `t-end` or move `t-mid` and `d5-95` earlier");
 }
 
 double rezaeian_record_cost(const RezaeianParams& p) {
@@ -263,7 +263,7 @@ void validate(const PulseParams& p, double dt, double t_end) {
   if (!(p.period >= 10.0 * dt))
     throw std::invalid_argument("pulse-period = " + number_text(p.period) +
                                 " s is sampled by fewer than 10 samples of dt = " + number_text(dt) +
-                                " s: give a longer --pulse-period or a smaller --dt");
+                                " s: give a longer `pulse-period` or a smaller `dt`");
   const double half = 0.5 * p.gamma * p.period;
   if (!(p.t0 - half >= -1e-12 * half))
     throw std::invalid_argument(

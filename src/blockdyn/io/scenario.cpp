@@ -163,12 +163,12 @@ RigidBlockParams rigid_params(const Scenario& s) {
   RigidBlockParams p;
   if (!s.physical)
     throw std::invalid_argument("the " + s.model +
-                                " model needs the block's width and height (--width --height, or [physical])");
+                                " model needs the block's width and height (`width` `height`, or [physical])");
   const PhysicalBlock& b = *s.physical;
   if (b.width == 0.0)
-    throw std::invalid_argument("width is missing: give the block's width [m] (--width, physical.width)");
+    throw std::invalid_argument("width is missing: give the block's width [m] (`width`, physical.width)");
   if (b.height == 0.0)
-    throw std::invalid_argument("height is missing: give the block's height [m] (--height, physical.height)");
+    throw std::invalid_argument("height is missing: give the block's height [m] (`height`, physical.height)");
   p.shape.width = b.width;
   p.shape.height = b.height;
   p.shape.g = b.g;

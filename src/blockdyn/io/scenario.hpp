@@ -39,7 +39,7 @@ struct Scenario {
 struct Family;
 // The family named, if a scenario describes it (winkler, housner, rigid); throws
 // std::invalid_argument "<field> = '<name>' is not one of: <those families>".
-const Family& scenario_family(const std::string& name, const std::string& field = "--model");
+const Family& scenario_family(const std::string& name, const std::string& field = "`model`");
 
 // Reads a TOML scenario; throws std::invalid_argument with the offending key on error.
 // Record paths in [ground.*] are relative to the scenario file's directory.

@@ -16,7 +16,7 @@ HousnerBlock::State housner_initial_state(const HousnerBlock& m, const RigidInit
   const char* extra = in.x0 ? "x0" : in.y0 ? "y0" : in.vx0 ? "vx0" : in.vy0 ? "vy0" : nullptr;
   if (extra)
     throw std::invalid_argument(std::string(extra) +
-                                " is not a state of the housner model (only w0, vw0; use --model rigid)");
+                                " is not a state of the housner model (only w0, vw0; use `model` rigid)");
   require(std::isfinite(in.w0), "w0", "finite", in.w0);
   require(std::isfinite(in.vw0), "vw0", "finite", in.vw0);
   HousnerBlock::State z{in.w0, in.vw0, 0.0, 0.0};

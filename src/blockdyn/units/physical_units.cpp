@@ -32,9 +32,9 @@ double mass_of(const PhysicalBlock& b) {
 
 WinklerParams to_nondimensional(const PhysicalBlock& b) {
   if (b.height == 0.0)
-    throw std::invalid_argument("height is missing: give the block's height [m] (--height, physical.height)");
+    throw std::invalid_argument("height is missing: give the block's height [m] (`height`, physical.height)");
   if (b.width == 0.0)
-    throw std::invalid_argument("width is missing: give the block's width [m] (--width, physical.width)");
+    throw std::invalid_argument("width is missing: give the block's width [m] (`width`, physical.width)");
   positive("height", b.height);
   positive("width", b.width);
   positive("g", b.g);

@@ -107,7 +107,7 @@ void SweepJournal::load() {
   std::size_t line_no = 2;
   auto fail = [&](const std::string& why) {
     throw std::invalid_argument("journal '" + path_ + "' " + why +
-                                "; use --overwrite to discard it, or a different output path");
+                                "; use `overwrite` to discard it, or a different output path");
   };
   if (text.compare(0, expect.size(), expect) != 0) {
     if (text.rfind("# blockdyn sweep journal v1 ", 0) == 0)

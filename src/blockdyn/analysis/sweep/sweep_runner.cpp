@@ -104,14 +104,14 @@ SweepSession::SweepSession(const PointTable& ev, const SweepRunOptions& o)
     if (have_journal)
       throw std::invalid_argument(
           "output: '" + paths_.journal +
-          "' holds an unfinished sweep: pass --resume to continue it or --overwrite to start over");
-    if (have_csv) throw std::invalid_argument("output: '" + paths_.csv + "' exists: pass --overwrite to replace it");
+          "' holds an unfinished sweep: pass `resume` to continue it or `overwrite` to start over");
+    if (have_csv) throw std::invalid_argument("output: '" + paths_.csv + "' exists: pass `overwrite` to replace it");
   }
   if (o.resume && !have_journal && have_csv) {
     if (complete_sidecar_fingerprint(paths_.sidecar) != ev.fingerprint())
       throw std::invalid_argument(
           "output: '" + paths_.csv + "' exists but '" + paths_.sidecar +
-          "' does not record a finished sweep of this definition; pass --overwrite to replace it");
+          "' does not record a finished sweep of this definition; pass `overwrite` to replace it");
     was_complete_ = true;
     return;
   }

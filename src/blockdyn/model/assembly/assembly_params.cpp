@@ -452,7 +452,7 @@ void validate(const Assembly& a, int max_blocks) {
 
 void restrict_to_rocking_on_ground(Assembly& a) {
   if (!info(a.contact).rock_only_restriction)
-    throw std::invalid_argument("--columns-rock-only (seed 001's 5-DOF restriction) needs --contact rigid");
+    throw std::invalid_argument("`columns-rock-only` (seed 001's 5-DOF restriction) needs `contact` rigid");
   a.rock_only_on_ground = true;
   for (AssemblyInterface& i : a.interfaces)
     if (i.lower < 0) {

@@ -20,8 +20,8 @@ double housner_coefficient(const BlockShape& shape, std::optional<double> restit
     throw std::invalid_argument(
         "restitution: Housner's 1 - 1.5 sin^2(alpha) = " + number_text(e, 6) +
         " is negative for this block (b/h = " + number_text(shape.width / shape.height, 6) +
-        " > sqrt(2)): it would bounce back onto the same corner; give --restitution in [0, 1], or use --model rigid "
-        "(impacts by the impact law, --impact)");
+        " > sqrt(2)): it would bounce back onto the same corner; give `restitution` in [0, 1], or use `model` rigid "
+        "(impacts by the impact law, `impact`)");
   return e;
 }
 
