@@ -2,7 +2,7 @@
 #pragma once
 // The assembly family's model options (preset, contact law, friction, collapse criteria, rigid
 // step), registered on `assembly` and on `simulate` (for --model assembly). The values are read by
-// the library from the options given (api/assembly_settings.cpp); the fields here only give CLI11
+// the library from the options given (commands/assembly_settings.cpp); the fields here only give CLI11
 // the types to check and --help the defaults.
 #include <CLI/CLI.hpp>
 

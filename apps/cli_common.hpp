@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
-#include "blockdyn/api/option_spec.hpp"
-#include "blockdyn/api/settings.hpp"
+#include "blockdyn/commands/option_spec.hpp"
+#include "blockdyn/commands/settings.hpp"
 #include "blockdyn/integrate/integrator_options.hpp"
 #include "blockdyn/io/json_event_spool.hpp"
 #include "blockdyn/model/winkler/winkler_params.hpp"
@@ -17,7 +17,7 @@
 namespace blockdyn::cli {
 
 // The library's text (messages, help) as the command line spells it: each option named in
-// backticks becomes --name (spell_options, api/option_spec.hpp).
+// backticks becomes --name (spell_options, commands/option_spec.hpp).
 inline std::string cli_text(std::string_view text) { return spell_options(text, "--", false); }
 
 // Thrown for invalid user input: main prints "error: <what>" and exits with status 2.
@@ -37,7 +37,7 @@ inline void refuse(const CLI::App& s, const std::vector<std::string>& flags, con
 // the ones in `exclude` (the command's own output flags, e.g. "--plot").
 Settings settings_of(const CLI::App& app, const std::vector<std::string>& exclude = {});
 
-// Options the library describes (api/option_spec.hpp), unbound: read back with settings_of.
+// Options the library describes (commands/option_spec.hpp), unbound: read back with settings_of.
 void add_spec_options(CLI::App& app, const std::vector<StudyOption>& specs);
 
 // --r --mu --k bound to p (defaults kept unless given).

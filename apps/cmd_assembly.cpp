@@ -5,7 +5,7 @@
 #include <memory>
 
 #include "assembly_flags.hpp"
-#include "blockdyn/api/ground_settings.hpp"
+#include "blockdyn/commands/ground_settings.hpp"
 #include "cli_common.hpp"
 #include "cli_registry.hpp"
 #include "simulate_output.hpp"

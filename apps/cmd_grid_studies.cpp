@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// Every library grid study (blockdyn/api/grid_studies.hpp: spectrum, survival) as a subcommand:
+// Every library grid study (blockdyn/commands/grid_studies.hpp: spectrum, survival) as a subcommand:
 // its options from the study's description, its points on the sweep runner (threads, MPI ranks,
 // journal and --resume, progress), then its report from the finished table: JSON, figures, text.
 #include <sys/stat.h>
@@ -9,7 +9,7 @@
 #include <map>
 #include <memory>
 
-#include "blockdyn/api/grid_studies.hpp"
+#include "blockdyn/commands/grid_studies.hpp"
 #include "blockdyn/io/atomic_file.hpp"
 #include "cli_common.hpp"
 #include "cli_registry.hpp"

@@ -1,14 +1,14 @@
 // SPDX-License-Identifier: Apache-2.0
 // `blockdyn limit-analysis (--preset ... | FILE.toml)`: the horizontal load multiplier of rigid
 // no-tension blocks with Coulomb friction, its mechanism and line of thrust, and (--min-thickness)
-// the thinnest arch that stands (blockdyn/api/limit_analysis_command.hpp). Parse, call the
+// the thinnest arch that stands (blockdyn/commands/limit_analysis_command.hpp). Parse, call the
 // library, write.
 #include <unistd.h>
 
 #include <cstdio>
 #include <memory>
 
-#include "blockdyn/api/limit_analysis_command.hpp"
+#include "blockdyn/commands/limit_analysis_command.hpp"
 #include "blockdyn/io/atomic_file.hpp"
 #include "cli_common.hpp"
 #include "cli_registry.hpp"

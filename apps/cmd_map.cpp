@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: Apache-2.0
 // `blockdyn map`: the response map of the thesis's chapter 6 (Figs 6.1-6.2), built by the library
-// (blockdyn/api/map_study.hpp): the grid's points on the sweep runner (threads, MPI, resumable
+// (blockdyn/commands/map_study.hpp): the grid's points on the sweep runner (threads, MPI, resumable
 // journal), then the boundary curves beside it and the figure.
 #include <memory>
 
 #include "blockdyn/analysis/sweep/sweep_runner.hpp"
-#include "blockdyn/api/map_study.hpp"
+#include "blockdyn/commands/map_study.hpp"
 #include "cli_common.hpp"
 #include "cli_registry.hpp"
 #include "grid_run.hpp"

@@ -1,12 +1,12 @@
 // SPDX-License-Identifier: Apache-2.0
-// `blockdyn motion generate` (a suite of synthetic records: blockdyn/api/motion_generate.hpp) and
+// `blockdyn motion generate` (a suite of synthetic records: blockdyn/commands/motion_generate.hpp) and
 // `blockdyn motion info FILE` (a record's intensity measures and its response spectrum:
-// blockdyn/api/motion_info.hpp). Parse, call the library, write.
+// blockdyn/commands/motion_info.hpp). Parse, call the library, write.
 #include <cstdio>
 #include <memory>
 
-#include "blockdyn/api/motion_generate.hpp"
-#include "blockdyn/api/motion_info.hpp"
+#include "blockdyn/commands/motion_generate.hpp"
+#include "blockdyn/commands/motion_info.hpp"
 #include "blockdyn/io/progress.hpp"
 #include "cli_common.hpp"
 #include "cli_registry.hpp"

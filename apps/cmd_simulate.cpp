@@ -8,8 +8,8 @@
 #include <memory>
 
 #include "assembly_flags.hpp"
-#include "blockdyn/api/ground_settings.hpp"
-#include "blockdyn/api/simulate_run.hpp"
+#include "blockdyn/commands/ground_settings.hpp"
+#include "blockdyn/commands/simulate_run.hpp"
 #include "blockdyn/family/family.hpp"
 #include "blockdyn/units/physical_units.hpp"
 #include "cli_common.hpp"

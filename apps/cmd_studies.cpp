@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// Every library study (blockdyn/api/study_command.hpp) as a subcommand: its options from the
+// Every library study (blockdyn/commands/study_command.hpp) as a subcommand: its options from the
 // study's description, its outputs written here (CSV with sidecar, figure, JSON, text).
 #include <unistd.h>
 
@@ -10,7 +10,7 @@
 #include <memory>
 #include <sstream>
 
-#include "blockdyn/api/study_command.hpp"
+#include "blockdyn/commands/study_command.hpp"
 #include "blockdyn/io/atomic_file.hpp"
 #include "blockdyn/io/progress.hpp"
 #include "cli_common.hpp"

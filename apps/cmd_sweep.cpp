@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 // `blockdyn sweep`: a grid of runs, from a TOML definition and/or flags (the library builds it:
-// blockdyn/api/sweep_settings.hpp); threads, MPI, resumable journal, progress, CSV + JSON
+// blockdyn/commands/sweep_settings.hpp); threads, MPI, resumable journal, progress, CSV + JSON
 // sidecar, plot. The axes come from the model family: k, r (or 1/r), mu and initial conditions
 // for the Winkler block; the block's shape, interface, impact, initial state and ground motion
 // (--axis NAME=SPEC) for the housner and rigid models.
@@ -11,7 +11,7 @@
 #include "blockdyn/analysis/sweep/rigid_sweep.hpp"
 #include "blockdyn/analysis/sweep/sweep_metrics.hpp"
 #include "blockdyn/analysis/sweep/sweep_runner.hpp"
-#include "blockdyn/api/sweep_settings.hpp"
+#include "blockdyn/commands/sweep_settings.hpp"
 #include "blockdyn/family/family.hpp"
 #include "blockdyn/io/json_io.hpp"
 #include "cli_common.hpp"

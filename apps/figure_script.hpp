@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "blockdyn/api/figure_spec.hpp"
+#include "blockdyn/commands/figure_spec.hpp"
 
 namespace blockdyn::cli {
 

@@ -14,7 +14,7 @@
 #include <thread>
 
 #include "blockdyn/analysis/sweep/parallel_map.hpp"
-#include "blockdyn/api/option_spec.hpp"
+#include "blockdyn/commands/option_spec.hpp"
 #include "cli_common.hpp"
 
 #ifdef BLOCKDYN_HAVE_MPI

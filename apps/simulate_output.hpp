@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "blockdyn/api/simulate_run.hpp"
+#include "blockdyn/commands/simulate_run.hpp"
 
 namespace blockdyn::cli {
 

@@ -6,7 +6,7 @@
 #include <ostream>
 #include <string>
 
-#include "blockdyn/api/study_command.hpp"
+#include "blockdyn/commands/study_command.hpp"
 
 namespace blockdyn::cli {
 

@@ -3,9 +3,9 @@
 # transitively (so an installed header never names one that is not installed). Internal helpers
 # (atomic files, progress bars, TOML readers, the parallel map, recorders, study plumbing) stay out.
 set(BLOCKDYN_PUBLIC_ENTRY_HEADERS
-  api/settings.hpp
-  api/scenario_settings.hpp
-  api/simulate_run.hpp
+  commands/settings.hpp
+  commands/scenario_settings.hpp
+  commands/simulate_run.hpp
   simulation/winkler_simulation.hpp
   simulation/rigid_simulation.hpp
   simulation/run.hpp

@@ -1,17 +1,17 @@
 // SPDX-License-Identifier: Apache-2.0
 // The one registration of every model family: a row each. The entries live with each family's
-// runs (api/simulate_run.cpp, api/sweep_settings.cpp, api/forced_model_settings.cpp,
-// api/chaos_studies.cpp) and its model (simulation/rigid_ground_model.cpp).
+// runs (commands/simulate_run.cpp, commands/sweep_settings.cpp, commands/forced_model_settings.cpp,
+// commands/chaos_studies.cpp) and its model (simulation/rigid_ground_model.cpp).
 #include <stdexcept>
 
 #include "blockdyn/analysis/sweep/rigid_sweep.hpp"
-#include "blockdyn/api/assembly_settings.hpp"
-#include "blockdyn/api/forced_model_settings.hpp"
-#include "blockdyn/api/rigid3d_run.hpp"
-#include "blockdyn/api/scenario_settings.hpp"
-#include "blockdyn/api/simulate_run.hpp"
-#include "blockdyn/api/study_command.hpp"
-#include "blockdyn/api/sweep_settings.hpp"
+#include "blockdyn/commands/assembly_settings.hpp"
+#include "blockdyn/commands/forced_model_settings.hpp"
+#include "blockdyn/commands/rigid3d_run.hpp"
+#include "blockdyn/commands/scenario_settings.hpp"
+#include "blockdyn/commands/simulate_run.hpp"
+#include "blockdyn/commands/study_command.hpp"
+#include "blockdyn/commands/sweep_settings.hpp"
 #include "blockdyn/family/family.hpp"
 #include "blockdyn/simulation/rigid_ground_model.hpp"
 
