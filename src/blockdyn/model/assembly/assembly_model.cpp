@@ -132,7 +132,7 @@ void AssemblyModel<MaxBlocks>::geometry(const State& z, Geometry& g) const {
   for (int i = 0; i < ni_; ++i) {
     const int l = lower_[i], u = upper_[i];
     const LocalFace& lf = lface_[i];
-    g.lower[i] = l < 0 ? Face{lf.c, lf.t, lf.n, lf.half} : face_at(g.pose[l], lf);
+    g.lower[i] = lower_face_at(lf, l < 0, l < 0 ? BodyPose{} : g.pose[l]);
     g.upper[i] = face_at(g.pose[u], uface_[i]);
   }
 }

@@ -33,6 +33,12 @@ inline Face face_at(const BodyPose& p, const LocalFace& f) {
   return {c, p.q.offset(f.t.x, f.t.y), p.q.offset(f.n.x, f.n.y), f.half};
 }
 
+// An interface's lower face placed: with its block's pose, or as it is where the lower body is
+// the ground (lower_is_ground). Every contact law places its faces so.
+inline Face lower_face_at(const LocalFace& f, bool lower_is_ground, const BodyPose& lower) {
+  return lower_is_ground ? Face{f.c, f.t, f.n, f.half} : face_at(lower, f);
+}
+
 // The rotation of block b about an end of the face it stands on (its first interface as the upper
 // block) at which its centre of mass passes over that end: atan(width / height) for a rectangle;
 // for a polygon the smaller of the two ends' angles between the face's normal and the line from

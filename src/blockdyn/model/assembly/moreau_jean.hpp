@@ -146,8 +146,7 @@ class MoreauJean {
   std::vector<double> limit_;                // collapse mode 1's rotation per block
   // Interface i's faces placed with the poses of its blocks.
   Face lower_face_at(int i, const BodyPose& lower) const {
-    const LocalFace& f = local_faces_[i].lower;
-    return asm_.interfaces[i].lower < 0 ? Face{f.c, f.t, f.n, f.half} : face_at(lower, f);
+    return blockdyn::lower_face_at(local_faces_[i].lower, asm_.interfaces[i].lower < 0, lower);
   }
   Face upper_face_at(int i, const BodyPose& upper) const { return face_at(upper, local_faces_[i].upper); }
   // Per active end: the blocks (upper, lower; -1 the ground), the Jacobian rows (normal x, y,
