@@ -12,6 +12,7 @@
 #include <thread>
 
 #include "blockdyn/analysis/forced/fragility_study.hpp"
+#include "blockdyn/analysis/forced/rocking_spectrum.hpp"
 #include "blockdyn/simulation/rigid_ground_model.hpp"
 #include "test_sweep_util.hpp"
 
@@ -381,4 +382,37 @@ TEST(ForcedRunner, TypedFragilityStudyEqualsTheCommand) {
   EXPECT_EQ(r.band.beta_hi, j["fit"]["ci90"]["beta"][1].get<double>());
   ASSERT_EQ(r.curve.size(), j["curve"].size());
   EXPECT_EQ(r.curve[40].p, j["curve"][40]["p"].get<double>());
+}
+
+// The typed rocking spectrum (analysis/forced/rocking_spectrum.hpp) gives the command's rows and
+// overturning scales.
+TEST(ForcedRunner, TypedRockingSpectrumEqualsTheCommand) {
+  TmpDir d("forced-rocking-typed");
+  make_suite(d.path);
+  const CliResult ref =
+      run_cli({"rocking-spectrum", "--record", "suite/rezaeian_0001.AT2", "--alpha", "0.2", "--p-min", "1", "--p-max",
+               "4", "--p-points", "5", "--scales", "0.5,1,2", "--out", "rs.csv", "--json", "--quiet"},
+              d.path);
+  ASSERT_EQ(ref.code, 0) << ref.err;
+  const json j = json::parse(ref.out);
+  blockdyn::RockingSpectrumOptions o;
+  o.alpha = 0.2;
+  o.p = j["definition"]["p"].get<std::vector<double>>();
+  o.scales = {0.5, 1, 2};
+  o.t_end = j["definition"]["t_end"].get<double>();
+  o.threads = 2;
+  const auto record = std::make_shared<const blockdyn::Accelerogram>(
+      blockdyn::load_accelerogram(d.path + "/suite/rezaeian_0001.AT2", "record"));
+  blockdyn::RigidBlockParams base;
+  const auto pts = blockdyn::rocking_spectrum(blockdyn::housner_on_rigid_ground(), base, o, record);
+  ASSERT_EQ(pts.size(), j["rows"].size());
+  for (std::size_t i = 0; i < pts.size(); ++i) {
+    EXPECT_EQ(pts[i].p, j["rows"][i]["p"].get<double>());
+    EXPECT_EQ(pts[i].max_abs_rotation_over_alpha, j["rows"][i]["max_abs_rotation_over_alpha"].get<double>()) << i;
+    EXPECT_EQ(pts[i].overturned, j["rows"][i]["overturned"].get<bool>()) << i;
+  }
+  const auto s = blockdyn::overturning_scales(pts, o);
+  ASSERT_EQ(s.size(), j["overturning_scales"].size());
+  for (std::size_t i = 0; i < s.size(); ++i)
+    EXPECT_EQ(s[i].scale.has_value(), !j["overturning_scales"][i]["min_overturning_scale"].is_null()) << i;
 }

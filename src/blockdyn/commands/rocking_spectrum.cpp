@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "blockdyn/analysis/forced/forced_model.hpp"
+#include "blockdyn/analysis/forced/rocking_spectrum.hpp"
 #include "blockdyn/analysis/sweep/grid_table.hpp"
 #include "blockdyn/base/number_text.hpp"
 #include "blockdyn/base/range_check.hpp"
@@ -64,42 +65,39 @@ std::vector<double> p_values(const StudyOptions& o) {
   return p;
 }
 
-// The block of slenderness alpha and frequency parameter p (its size R = 3 g / (4 p^2)).
-RigidBlockParams block_of(const RigidBlockParams& base, double alpha, double p) {
-  RigidBlockParams b = base;
-  const double R = 0.75 * base.shape.g / (p * p);
-  b.shape.width = 2 * R * std::sin(alpha);
-  b.shape.height = 2 * R * std::cos(alpha);
-  return b;
-}
-
-struct Axes {
-  std::vector<double> p, scales;
-};
-
-json rows_json(const Table& t, const Axes& ax) {
-  json rows = json::array(), scales = json::array();
+// The spectrum's points as the runner's table holds them.
+std::vector<RockingSpectrumPoint> points_of(const Table& t) {
   const std::size_t cp = t.column("p"), cs = t.column("scale"), cr = t.column("max_abs_rotation_over_alpha"),
                     co = t.column("overturned"), ct = t.column("overturn_time");
+  std::vector<RockingSpectrumPoint> pts;
   for (const TableRow& r : t.rows) {
-    const std::optional<double> over = cell_optional_double(r.cells[ct]);
-    rows.push_back({{"p", cell_double(r.cells[cp])},
-                    {"scale", cell_double(r.cells[cs])},
-                    {"max_abs_rotation_over_alpha", cell_double(r.cells[cr])},
-                    {"overturned", r.cells[co] == "1"},
-                    {"overturn_time", over ? json(*over) : json(nullptr)}});
+    RockingSpectrumPoint pt;
+    pt.p = cell_double(r.cells[cp]);
+    pt.scale = cell_double(r.cells[cs]);
+    pt.max_abs_rotation_over_alpha = cell_double(r.cells[cr]);
+    pt.overturned = r.cells[co] == "1";
+    pt.overturn_time = cell_optional_double(r.cells[ct]);
+    pts.push_back(pt);
   }
-  // Per p: the smallest scale of the list that overturns the block (scales ascending as given).
-  if (ax.scales.size() > 1)
-    for (std::size_t i = 0; i < ax.p.size(); ++i) {
-      json first = nullptr;
-      for (std::size_t k = 0; k < ax.scales.size(); ++k)
-        for (const json& r : rows)
-          if (first.is_null() && r["p"] == ax.p[i] && r["scale"] == ax.scales[k] && r["overturned"].get<bool>())
-            first = ax.scales[k];
-      scales.push_back({{"p", ax.p[i]}, {"min_overturning_scale", first}});
-    }
-  return {{"rows", rows}, {"overturning_scales", scales}};
+  return pts;
+}
+
+json rows_json(const std::vector<RockingSpectrumPoint>& pts) {
+  json rows = json::array();
+  for (const RockingSpectrumPoint& r : pts)
+    rows.push_back({{"p", r.p},
+                    {"scale", r.scale},
+                    {"max_abs_rotation_over_alpha", r.max_abs_rotation_over_alpha},
+                    {"overturned", r.overturned},
+                    {"overturn_time", r.overturn_time ? json(*r.overturn_time) : json(nullptr)}});
+  return rows;
+}
+
+json overturning_scales_json(const std::vector<OverturningScale>& s) {
+  json j = json::array();
+  for (const OverturningScale& x : s)
+    j.push_back({{"p", x.p}, {"min_overturning_scale", x.scale ? json(*x.scale) : json(nullptr)}});
+  return j;
 }
 
 GridStudy rocking_grid(const Settings& given, const std::string& output) {
@@ -111,7 +109,8 @@ GridStudy rocking_grid(const Settings& given, const std::string& output) {
   const double alpha = so.number("alpha");
   require_in_range("alpha", alpha, 0, M_PI / 4, false);
   if (so.given("scale") && so.given("scales")) throw std::invalid_argument("`scale` and `scales`: give only one");
-  Axes ax;
+  RockingSpectrumOptions ax;
+  ax.alpha = alpha;
   ax.p = p_values(so);
   ax.scales = so.given("scales") ? so.numbers("scales") : std::vector<double>{so.number("scale")};
   for (double x : ax.scales) require_in_range("scales", x, 0, 1e3, false);
@@ -136,9 +135,10 @@ GridStudy rocking_grid(const Settings& given, const std::string& output) {
   if (so.given("t-end") && so.given("t-after")) throw std::invalid_argument("`t-end` and `t-after`: give only one");
   const double t_end = so.given("t-end") ? so.number("t-end") : rec->t_last() + t_after;
   require_in_range("t-end", t_end, 0, 1e5, false);
+  ax.t_end = t_end;
   // Every block of the grid is checked before any point runs (a restitution out of range, ...).
-  for (double p : ax.p) forced_block_model(block_of(base, alpha, p), m);
-  const ForcedModel first = forced_block_model(block_of(base, alpha, ax.p.front()), m);
+  for (double p : ax.p) forced_block_model(block_of_slenderness(base, alpha, p), m);
+  const ForcedModel first = forced_block_model(block_of_slenderness(base, alpha, ax.p.front()), m);
   const json definition = {{"model", model},
                            {"record", rec->source()},
                            {"record_digest", rec->digest()},
@@ -154,21 +154,16 @@ GridStudy rocking_grid(const Settings& given, const std::string& output) {
       std::vector<std::string>{"p", "scale", "width", "height", "max_abs_rotation_over_alpha", "overturned",
                                "overturn_time"},
       ax.p.size() * ax.scales.size(),
-      [ax, base, alpha, &m, rec, t_end](std::size_t i, RowBuilder& row) {
-        const double p = ax.p[i % ax.p.size()], scale = ax.scales[i / ax.p.size()];
-        const RigidBlockParams b = block_of(base, alpha, p);
-        GroundMotion gm;
-        gm.horizontal.record = rec;
-        gm.horizontal.scale = scale;
-        const SurvivalOutcome out = forced_block_model(b, m).run(gm, t_end);
-        row.add(p);
-        row.add(scale);
-        row.add(b.shape.width);
-        row.add(b.shape.height);
-        row.add(out.max_abs_rotation / alpha);
-        row.add(std::string(out.collapse_mode ? "1" : "0"));
-        if (out.t_failure)
-          row.add(*out.t_failure);
+      [ax, base, &m, rec](std::size_t i, RowBuilder& row) {
+        const RockingSpectrumPoint pt = rocking_spectrum_point(m, base, ax, rec, i);
+        row.add(pt.p);
+        row.add(pt.scale);
+        row.add(pt.width);
+        row.add(pt.height);
+        row.add(pt.max_abs_rotation_over_alpha);
+        row.add(std::string(pt.overturned ? "1" : "0"));
+        if (pt.overturn_time)
+          row.add(*pt.overturn_time);
         else
           row.empty();
       },
@@ -180,9 +175,9 @@ GridStudy rocking_grid(const Settings& given, const std::string& output) {
     j["run"] = run_info();
     j["definition"] = definition;
     j["units"] = "p in rad/s, times in s, rotations over alpha";
-    const json r = rows_json(t, ax);
-    j["rows"] = r["rows"];
-    if (ax.scales.size() > 1) j["overturning_scales"] = r["overturning_scales"];
+    const std::vector<RockingSpectrumPoint> pts = points_of(t);
+    j["rows"] = rows_json(pts);
+    if (ax.scales.size() > 1) j["overturning_scales"] = overturning_scales_json(overturning_scales(pts, ax));
     std::size_t n_over = 0;
     for (const json& x : j["rows"]) n_over += x["overturned"].get<bool>();
     std::string record = definition.at("record").get<std::string>();
