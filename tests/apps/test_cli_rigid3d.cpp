@@ -102,7 +102,7 @@ TEST(CliRigid3d, UsageErrorsNameTheOption) {
                        {joined(m, {"--lift", "0.1", "--velocity", "1,0"}), "--velocity"},
                        {joined(m, {"--tilt", "2"}), "tilt"},
                        {joined(m, {"--width", "-1"}), "width"},
-                       {joined(m, {"--mu-k", "0.3"}), "--mu-k"},
+                       {joined(m, {"--mu-k", "-0.3"}), "mu-k"},
                        {joined(m, {"--mass", "1", "--density", "2000"}), "--density"},
                        {joined(m, {"--ground-h2-amplitude", "0.3", "--ground-h2-pulse", "wave"}), "--ground-h2-pulse"}},
                       d.path);

@@ -101,6 +101,8 @@ Rigid3dSetup rigid3d_from(const Settings& s) {
   validate(r.ground);
   r.model.mu_s = s.number("mu-s", 0.7);
   require_in_range("mu-s", r.model.mu_s, 0, 1e6);
+  r.model.mu_k = s.number("mu-k", r.model.mu_s);
+  require_in_range("mu-k", r.model.mu_k, 0, 1e6);
   r.model.rest_yaw = r.start.yaw;
   r.run.t_end = s.number("t-end", 10);
   r.run.output_interval = s.number("output-interval", 0.01);
@@ -123,6 +125,8 @@ const char* mode_name(const Body3d& b, const BodyOnGroundMode& m) {
       return "corner";
     case BodyContact::Line:
       return b.shape == BodyShape3d::Box ? "edge" : "rim";
+    case BodyContact::Slide:
+      return "slide";
   }
   return "?";
 }
@@ -147,6 +151,7 @@ void fill_row(RowBuffer& row, const BodyOnGround& m, double e0, const Body3dSamp
   row.number(pot);
   row.number(z[BodyOnGround::kWorkGround]);
   row.number(z[BodyOnGround::kWorkImpact]);
+  row.number(z[BodyOnGround::kWorkFriction]);
   row.number(m.balance(z) - e0);
   row.text(smp.event ? smp.event : "");
 }
@@ -211,8 +216,8 @@ json summary_json(const Rigid3dSetup& s, const BodyOnGround& m, const Body3dResu
           {"max_tilt", r.max_tilt},
           {"max_tilt_azimuth", r.max_tilt_azimuth},
           {"overturn_azimuth", r.overturn_time >= 0 ? json(r.overturn_azimuth) : json(nullptr)},
-          // The contacts stick until sliding would start, where the run stops (not modelled yet).
-          {"max_slide", 0.0},
+          {"first_slide_time", optional_time(r.first_slide_time)},
+          {"max_slide", r.max_slide},
           {"final_mode", mode_name(b, r.mode)},
           {"final_state", std::vector<double>(z.begin(), z.begin() + BodyOnGround::kWorkGround)},
           {"max_abs_energy_error", r.max_abs_energy_error},
@@ -220,7 +225,8 @@ json summary_json(const Rigid3dSetup& s, const BodyOnGround& m, const Body3dResu
            {{"initial", r.initial_energy},
             {"final", m.energy(z)},
             {"work_ground", z[BodyOnGround::kWorkGround]},
-            {"work_impact", z[BodyOnGround::kWorkImpact]}}},
+            {"work_impact", z[BodyOnGround::kWorkImpact]},
+            {"work_friction", z[BodyOnGround::kWorkFriction]}}},
           {"body", body},
           {"initial_state",
            {{"yaw_deg", s.start.yaw / kDeg},
@@ -229,7 +235,12 @@ json summary_json(const Rigid3dSetup& s, const BodyOnGround& m, const Body3dResu
             {"lift", s.start.lift},
             {"velocity", s.start.velocity},
             {"angular_velocity", s.start.angular_velocity}}},
-          {"friction", {{"mu_s", s.model.mu_s}, {"contacts", "stick (sliding not modelled yet: the run stops)"}}},
+          {"friction",
+           {{"mu_s", s.model.mu_s},
+            {"mu_k", s.model.mu_k < 0 ? s.model.mu_s : s.model.mu_k},
+            {"contacts",
+             "a box's base slides on its four corners (Coulomb, mu_k, each against its own slip: twisting "
+             "included); edges, corners and a cylinder's base stick (the run stops where they would slide)"}}},
           {"impact_law", "angular momentum about the new contact conserved (Housner's law in 3D)"},
           {"ground",
            {{"azimuth_deg", s.ground.azimuth},
@@ -327,8 +338,8 @@ const std::vector<StudyOption>& rigid3d_options() {
 
 const std::vector<std::string>& rigid3d_option_names() {
   static const std::vector<std::string> names = [] {
-    std::vector<std::string> n{"model", "width", "height", "radius", "mass", "density", "g",
-                               "tilt",  "mu-s",  "t-end",  "rtol",   "atol", "method",  "output-interval"};
+    std::vector<std::string> n{"model", "width", "height", "radius", "mass",   "density",        "g", "tilt", "mu-s",
+                               "mu-k",  "t-end", "rtol",   "atol",   "method", "output-interval"};
     for (const StudyOption& o : rigid3d_options()) n.push_back(o.name);
     for (const std::string& g : ground_option_names()) n.push_back(g);
     return n;
@@ -337,11 +348,32 @@ const std::vector<std::string>& rigid3d_option_names() {
 }
 
 const std::vector<std::string>& rigid3d_columns() {
-  static const std::vector<std::string> c{"t",       "x",         "y",           "z",           "qw",
-                                          "qx",      "qy",        "qz",          "tilt",        "tilt_azimuth",
-                                          "vx",      "vy",        "vz",          "wx",          "wy",
-                                          "wz",      "mode",      "contact_x",   "contact_y",   "normal_force",
-                                          "kinetic", "potential", "work_ground", "work_impact", "energy_error",
+  static const std::vector<std::string> c{"t",
+                                          "x",
+                                          "y",
+                                          "z",
+                                          "qw",
+                                          "qx",
+                                          "qy",
+                                          "qz",
+                                          "tilt",
+                                          "tilt_azimuth",
+                                          "vx",
+                                          "vy",
+                                          "vz",
+                                          "wx",
+                                          "wy",
+                                          "wz",
+                                          "mode",
+                                          "contact_x",
+                                          "contact_y",
+                                          "normal_force",
+                                          "kinetic",
+                                          "potential",
+                                          "work_ground",
+                                          "work_impact",
+                                          "work_friction",
+                                          "energy_error",
                                           "event"};
   return c;
 }

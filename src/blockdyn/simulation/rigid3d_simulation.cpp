@@ -13,6 +13,19 @@ namespace {
 
 using Model = BodyOnGround;
 
+// The body leaves the ground where it stood flat (rest or slide) for a tilted contact or flight.
+bool lifts(const BodyOnGroundMode& from, const BodyOnGroundMode& to) {
+  const auto flat = [](BodyContact c) { return c == BodyContact::Rest || c == BodyContact::Slide; };
+  return flat(from.contact) && !flat(to.contact);
+}
+
+// The centre of the body's base (world): its centroid less c along its axis.
+Vec3 base_centre(const Model& m, const Model::State& z) {
+  const Mat3 r = rotation({z[Model::kQw], z[Model::kQx], z[Model::kQy], z[Model::kQz]});
+  const double c = m.body().half_height();
+  return {z[Model::kX] - c * r[0][2], z[Model::kY] - c * r[1][2], z[Model::kZ] - c * r[2][2]};
+}
+
 // Watches the run: rows at the output clock, events, the energy balance at every step end.
 class Body3dWatch final : public Observer<Model> {
  public:
@@ -21,12 +34,29 @@ class Body3dWatch final : public Observer<Model> {
   const Body3dRunOptions& o;
   Body3dResult& res;
   double next_row = 0;
+  // The distance slid: the base's centre's displacements while sliding, summed (slid), and where
+  // it was when the current slide began.
+  bool sliding = false;
+  Vec3 slid{}, slide_from{};
+  void slide_changes(const Model::Mode& from, const Model::Mode& to, const Model::State& z) {
+    const bool was = from.contact == BodyContact::Slide, is = to.contact == BodyContact::Slide;
+    if (was == is) return;
+    const Vec3 c = base_centre(model, z);
+    if (was) slid = {slid[0] + c[0] - slide_from[0], slid[1] + c[1] - slide_from[1], 0};
+    if (is) slide_from = c;
+    sliding = is;
+  }
 
   void row(double t, const Model::Mode& m, const Model::State& z, const char* event = nullptr) const {
     if (o.on_sample) o.on_sample({t, m, z, event});
   }
   void track(double t, const Model::State& z) {
     res.max_abs_energy_error = std::fmax(res.max_abs_energy_error, std::fabs(model.balance(z) - res.initial_energy));
+    if (sliding) {
+      const Vec3 c = base_centre(model, z);
+      res.max_slide =
+          std::fmax(res.max_slide, std::hypot(slid[0] + c[0] - slide_from[0], slid[1] + c[1] - slide_from[1]));
+    }
     const double tilt = model.tilt(z);
     if (tilt > res.max_tilt) {
       res.max_tilt = tilt;
@@ -55,16 +85,18 @@ class Body3dWatch final : public Observer<Model> {
   }
   bool on_event(const Model&, const Event& e) override {
     const auto kind = Body3dEventKind(e.kind);
-    // A breakpoint of the ground motion (every sample of a record) is no event of the body's.
-    if (kind == Body3dEventKind::GroundBreak && !e.stop) return true;
+    // A breakpoint of the ground motion (every sample of a record) is no event of the body's, nor
+    // a slide's new reference direction.
+    if ((kind == Body3dEventKind::GroundBreak || kind == Body3dEventKind::SlipTurn) && !e.stop) return true;
     if (kind == Body3dEventKind::Impact) ++res.impacts;
-    if (res.first_uplift_time < 0 && e.from.contact == BodyContact::Rest && e.to.contact != BodyContact::Rest)
-      res.first_uplift_time = e.t;
+    if (res.first_uplift_time < 0 && lifts(e.from, e.to)) res.first_uplift_time = e.t;
+    if (res.first_slide_time < 0 && e.to.contact == BodyContact::Slide) res.first_slide_time = e.t;
     if (kind == Body3dEventKind::Overturn) {
       res.overturn_time = e.t;
       res.overturn_azimuth = tilt_azimuth_deg(e.z);
     }
     if (e.stop) res.note = Model::stop_reason(e.from, e.index, kind);
+    slide_changes(e.from, e.to, e.z);
     const Body3dEventRecord rec{{e.t, kind}, e.from.contact, e.to.contact, e.z};
     if (o.events)
       o.events->on_event(rec);
@@ -107,7 +139,9 @@ Body3dResult simulate_body3d(const BodyOnGround& model, BodyOnGround::State z, c
     res.status = SimStatus::Invalid;
     res.note = Model::stop_reason(mode, kBreakpoint, Body3dEventKind(start.kind));
   } else {
-    if (start.next.contact != mode.contact) res.first_uplift_time = 0;
+    if (lifts(mode, start.next)) res.first_uplift_time = 0;
+    if (start.next.contact == BodyContact::Slide) res.first_slide_time = 0;
+    watch.slide_changes(Model::Mode{}, start.next, z);
     mode = start.next;
     Simulation<Model> sim(model, o.integ, t, mode, z);
     res.run_status = sim.advance(o.t_end, watch);

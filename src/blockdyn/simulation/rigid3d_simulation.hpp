@@ -40,7 +40,8 @@ struct Body3dRunOptions {
 struct Body3dResult : RunResult {
   BodyOnGround::State z{};
   BodyOnGroundMode mode{};
-  double overturn_time = -1, first_uplift_time = -1, max_tilt = 0;
+  double overturn_time = -1, first_uplift_time = -1, first_slide_time = -1, max_tilt = 0;
+  double max_slide = 0;  // m: the largest horizontal distance of the base's centre from its start
   double max_tilt_azimuth = 0, overturn_azimuth = 0;  // deg: where the body leans, from x towards y
   double initial_energy = 0;                          // of the closed balance (J)
   std::vector<Body3dEventRecord> events;              // when no sink is given

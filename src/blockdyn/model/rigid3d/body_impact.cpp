@@ -55,7 +55,8 @@ Tr BodyOnGround::landed_flat(double t, State& z) const {
 
 Tr BodyOnGround::transition(double t, const Mode& m, State& z, int event) const {
   Tr tr = mode_change(t, m, z, event);
-  const bool impact_event = (event >= kEvTouch0 && event <= kEvTouch3) || event == kEvTouchdown;
+  const bool impact_event =
+      m.contact != BodyContact::Slide && ((event >= kEvTouch0 && event <= kEvTouch3) || event == kEvTouchdown);
   if (!impact_event) {
     // The count of impacts at an instant carries through the mode changes between them.
     tr.next.impact_t = m.impact_t;
@@ -65,6 +66,8 @@ Tr BodyOnGround::transition(double t, const Mode& m, State& z, int event) const 
 }
 
 Tr BodyOnGround::mode_change(double t, const Mode& m, State& z, int event) const {
+  if (m.contact == BodyContact::Slide)
+    return event == kBreakpoint ? Tr{m, false, int(Body3dEventKind::GroundBreak)} : slide_change(t, m, z, event);
   switch (event) {
     case kBreakpoint:
       if (m.contact == BodyContact::Rest && !rest_holds(t, m.yaw)) return leave_rest(t, z);

@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "blockdyn/base/number_text.hpp"
+#include "blockdyn/model/rigid3d/base_slide.hpp"
 #include "blockdyn/model/rigid3d/body_pivot.hpp"
 #include "blockdyn/model/rigid3d/body_state.hpp"
 
@@ -53,6 +54,10 @@ const char* to_string(Body3dEventKind k) {
       return "invalid";
     case Body3dEventKind::Painleve:
       return "painleve";
+    case Body3dEventKind::Stick:
+      return "stick";
+    case Body3dEventKind::SlipTurn:
+      return "slip_turn";
   }
   return "?";
 }
@@ -68,7 +73,11 @@ BodyOnGround::BodyOnGround(const Body3d& body, const GroundMotion3d& ground, con
   step_ = 0.05 * std::sqrt(size_ / body_.g);
   window_ = kReleasedWindow * std::sqrt(size_ / body_.g);
   const double v = std::sqrt(body_.g * size_), w = std::sqrt(body_.g / size_), e = body_.mass * body_.g * size_;
-  scale_ = {size_, size_, size_, 1, 1, 1, 1, v, v, v, w, w, w, e, e};
+  scale_ = {size_, size_, size_, 1, 1, 1, 1, v, v, v, w, w, w, e, e, e};
+  mu_k_ = opt_.mu_k < 0 ? opt_.mu_s : opt_.mu_k;
+  if (!(mu_k_ >= 0 && std::isfinite(mu_k_)))
+    throw std::invalid_argument("mu-k = " + number_text(opt_.mu_k) + " is out of range: finite and >= 0");
+  if (body_.shape == BodyShape3d::Box) reach_ = base_reach(body_.width, body_.depth);
   forced_ = !ground_.is_zero();
   rest_search_ = BodyRestSearch(body_, opt_.mu_s, ground_, opt_.rest_yaw);
 }
@@ -86,6 +95,7 @@ Vec3 BodyOnGround::corner(int i) const {
 void BodyOnGround::rhs(double t, const Mode& m, const State& z, State& dz) const {
   dz.fill(0.0);
   if (m.contact == BodyContact::Rest) return;
+  if (m.contact == BodyContact::Slide) return slide_rhs(t, m, z, dz);
   const Mat3 r = rotation(quat_at(z, S::kQw));
   const Vec3 w = vec_at(z, kWx), v = vec_at(z, kVx), f = specific_force(t);
   const Quat dq = Quat{0, w[0], w[1], w[2]} * quat_at(z, S::kQw);
@@ -111,6 +121,7 @@ void BodyOnGround::rhs(double t, const Mode& m, const State& z, State& dz) const
 void BodyOnGround::events(double t, const Mode& m, const State& z, std::array<double, kNumEvents>& g) const {
   g.fill(1.0);
   if (m.contact == BodyContact::Rest) return;
+  if (m.contact == BodyContact::Slide) return slide_events(t, m, z, g);
   const Mat3 r = rotation(quat_at(z, S::kQw));
   if (m.contact == BodyContact::Flight) {
     g[kEvTouchdown] = z[kZ] - lowest_point(body_, r).depth;
@@ -156,11 +167,17 @@ void BodyOnGround::events(double t, const Mode& m, const State& z, std::array<do
 }
 
 void BodyOnGround::complete(const Mode& m, State& z) const {
-  const Quat q = normalized(quat_at(z, S::kQw));
+  Quat q = quat_at(z, S::kQw);
+  if (m.contact == BodyContact::Slide) q.x = q.y = 0;  // flat: turned about the vertical only
+  q = normalized(q);
   z[kQw] = q.w;
   z[kQx] = q.x;
   z[kQy] = q.y;
   z[kQz] = q.z;
+  if (m.contact == BodyContact::Slide) {
+    z[kVz] = z[kWx] = z[kWy] = 0;
+    return;
+  }
   if (m.contact != BodyContact::Line && m.contact != BodyContact::Point) return;
   // The contact point stays where it touched: the centroid and its velocity follow the rotation.
   if (m.contact == BodyContact::Line) set_vec_at(z, kWx, scaled(m.axis, dot(m.axis, vec_at(z, kWx))));
@@ -202,6 +219,13 @@ std::array<Vec3, 2> BodyOnGround::contact_forces(double t, const Mode& m, const 
   const Vec3 f = specific_force(t);
   if (m.contact == BodyContact::Flight) return {};
   if (m.contact == BodyContact::Rest) return {scaled(f, -body_.mass), Vec3{0, 0, 0}};
+  if (m.contact == BodyContact::Slide) {
+    const SlideState s = slide_state(t, m, z);
+    Vec3 total{};
+    for (int i = 0; i < 4; ++i)
+      total = plus(total, {s.motion.friction[i][0], s.motion.friction[i][1], s.motion.load[i]});
+    return {total, Vec3{}};
+  }
   const Mat3 r = rotation(quat_at(z, S::kQw));
   const Vec3 s = pivot_to_centroid(m), w = vec_at(z, kWx);
   if (m.contact == BodyContact::Point) return {point_pivot_motion(inertia_, body_.mass, r, s, w, f).force, Vec3{}};

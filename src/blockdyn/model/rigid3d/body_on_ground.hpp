@@ -18,12 +18,13 @@
 
 #include "blockdyn/excitation/ground_motion_3d.hpp"
 #include "blockdyn/integrate/hybrid_model.hpp"
+#include "blockdyn/model/rigid3d/base_slide.hpp"
 #include "blockdyn/model/rigid3d/body_rest.hpp"
 #include "blockdyn/model/rigid3d/body_shape.hpp"
 
 namespace blockdyn {
 
-enum class BodyContact : unsigned char { Rest, Flight, Line, Point };
+enum class BodyContact : unsigned char { Rest, Flight, Line, Point, Slide };
 
 // Which base points touch and how: Line holds two (box corners i and j, or one rim point and
 // its tangent), Point one corner. Body-frame points; world pivot and axis (fixed while in mode).
@@ -38,6 +39,9 @@ struct BodyOnGroundMode {
   double released_t = 0;             // (its touch is first looked for a rounding's height below)
   double impact_t = -1;              // the last impact's time, and how many came within
   int rapid_impacts = 0;             // kInstant of the one before (an accumulation at an instant)
+  // slide: the unit direction of the slip's generalised velocity (vx, vy, L omega_z) it was last
+  // seen in (base_slide.hpp): the slide ends where the slip's component along it reaches zero.
+  Vec3 slip_ref{};
 };
 
 enum class Body3dEventKind : int {
@@ -51,11 +55,14 @@ enum class Body3dEventKind : int {
   GroundBreak,  // a breakpoint of the ground motion
   Invalid,      // the ground pulls down faster than g
   Painleve,     // at a new contact neither sticking nor lifting is consistent (the run stops)
+  Stick,        // a slide ends: the base sticks (at rest, or sliding on in another direction)
+  SlipTurn,     // a slide's direction turned by 60 degrees from its reference: a new reference (no event)
 };
 const char* to_string(Body3dEventKind k);
 
 struct BodyOnGroundOptions {
   double mu_s = 1e6;    // static friction coefficient (large: sticking throughout)
+  double mu_k = -1;     // kinetic friction coefficient of a sliding base (< 0: mu_s)
   double rest_yaw = 0;  // rad: the yaw the body rests at (its exit from rest under a record is
                         // prepared for it; at another yaw it is searched from scratch)
 };
@@ -66,18 +73,36 @@ class BodyOnGround {
   // clang's -Wshadow reports the hiding, which is what is meant here.
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wshadow"
-  enum : std::size_t { kX, kY, kZ, kQw, kQx, kQy, kQz, kVx, kVy, kVz, kWx, kWy, kWz, kWorkGround, kWorkImpact, kDimB };
+  enum : std::size_t {
+    kX,
+    kY,
+    kZ,
+    kQw,
+    kQx,
+    kQy,
+    kQz,
+    kVx,
+    kVy,
+    kVz,
+    kWx,
+    kWy,
+    kWz,
+    kWorkGround,
+    kWorkImpact,
+    kWorkFriction,
+    kDimB
+  };
 #pragma GCC diagnostic pop
   enum Event : int {
     kEvLiftOff,  // the total normal load (contact modes)
     kEvLoadA,    // a line's end loads (box edge), or the moment a rim point cannot carry
     kEvLoadB,
-    kEvTouch0,  // the heights of the base points not in contact (box: 4; rim: the opposite point)
-    kEvTouch3 = kEvTouch0 + 3,
-    kEvOverturn,  // R33: the base vertical
-    kEvSlipA,     // mu_s N - |T| at each contact point
-    kEvSlipB,
-    kEvTouchdown,  // flight: the lowest base point's height
+    kEvTouch0,                  // the heights of the base points not in contact (box: 4; rim: the opposite point);
+    kEvTouch3 = kEvTouch0 + 3,  // slide: the four corners' loads
+    kEvOverturn,                // R33: the base vertical
+    kEvSlipA,                   // mu_s N - |T| at each contact point; slide: the slip along its reference
+    kEvSlipB,                   // slide: the slip's turn from its reference (60 degrees)
+    kEvTouchdown,               // flight: the lowest base point's height
     kNumEventsB
   };
   static constexpr std::size_t kDim = kDimB;
@@ -110,9 +135,13 @@ class BodyOnGround {
   double next_breakpoint(double t, const Mode& m) const;
   State abs_tol_scale() const { return scale_; }
 
-  // Kinetic + m g z (J), and the closed balance: energy - ground work - impact work (constant).
+  // Kinetic + m g z (J), and the closed balance: energy - ground work - impact and friction work
+  // (constant).
   double energy(const State& z) const;
-  double balance(const State& z) const { return energy(z) - z[kWorkGround] - z[kWorkImpact]; }
+  double balance(const State& z) const { return energy(z) - z[kWorkGround] - z[kWorkImpact] - z[kWorkFriction]; }
+  // A sliding base's predicted time to its stick (where its slip would reverse: the friction
+  // jumps there), for the integrator's step control; infinity in the other modes.
+  double kink_ahead(double t, const Mode& m, const State& z, const State& dz) const;
   // The ground's reaction (N) at the contact points of m (a and b), world frame.
   std::array<Vec3, 2> contact_forces(double t, const Mode& m, const State& z) const;
   double tilt(const State& z) const;  // rad: e3 from Z
@@ -143,6 +172,18 @@ class BodyOnGround {
   Transition<Mode> after_load_zero(double t, const Mode& m, State& z, int event) const;
   Transition<Mode> settle(double t, State& z) const;
   Transition<Mode> landed_flat(double t, State& z) const;
+  // The sliding base (base_slide.hpp): its mode, its motion, its mode changes.
+  Mode slide_mode(const State& z, const Vec3& slip_ref) const;
+  Vec3 slip_of(const State& z) const;  // the slip's generalised velocity (vx, vy, L omega_z)
+  struct SlideState {
+    BaseSlide motion;
+    Vec3 f;  // the specific force (m/s^2)
+  };
+  SlideState slide_state(double t, const Mode& m, const State& z) const;
+  void slide_rhs(double t, const Mode& m, const State& z, State& dz) const;
+  void slide_events(double t, const Mode& m, const State& z, std::array<double, kNumEvents>& g) const;
+  Transition<Mode> slide_change(double t, const Mode& m, State& z, int event) const;
+  Transition<Mode> start_slide(double t, const State& z, const Vec3& towards) const;
   // Housner's law in 3D: the angular momentum about the new contact m conserved.
   void conserve_momentum_about(const Mode& m, State& z) const;
   void set_contact_velocity(const Mode& m, State& z) const;
@@ -153,6 +194,7 @@ class BodyOnGround {
   BodyOnGroundOptions opt_;
   Vec3 inertia_;
   double size_, step_, window_;
+  double mu_k_ = 0, reach_ = 0;  // the kinetic friction; the base's half diagonal (box)
   State scale_;
   bool forced_ = false;
   BodyRestSearch rest_search_;

@@ -90,7 +90,12 @@ BodyOnGroundMode BodyOnGround::mode_of(double t, const State& z) const {
   std::vector<int> touching;
   for (int i = 0; i < 4; ++i)
     if (z[kZ] + dot(r[2], corner(i)) <= tol) touching.push_back(i);
-  if (touching.size() >= 3) return rest;
+  if (touching.size() >= 3) {
+    // Standing flat and moving along the ground (a box): sliding.
+    const Vec3 u = slip_of(z);
+    if (body_.shape == BodyShape3d::Box && dot(u, u) > 0) return slide_mode(z, scaled(u, 1.0 / std::sqrt(dot(u, u))));
+    return rest;
+  }
   if (touching.size() == 2) return line_mode(r, x, corner(touching[0]), corner(touching[1]), touching[0], touching[1]);
   return point_mode(r, x, corner(touching[0]), touching[0]);
 }
@@ -98,11 +103,15 @@ BodyOnGroundMode BodyOnGround::mode_of(double t, const State& z) const {
 std::string BodyOnGround::stop_reason(const Mode& from, int event, Body3dEventKind kind) {
   if (kind == Body3dEventKind::Invalid)
     return "the ground accelerates downwards faster than g: the body resting on it would leave it";
-  if (kind == Body3dEventKind::SlipOnset) return "a contact needs more friction than mu_s: sliding is not modelled yet";
+  if (kind == Body3dEventKind::SlipOnset)
+    return "a contact needs more friction than mu_s: sliding on an edge, a corner or a cylinder's base is not "
+           "modelled yet";
   if (kind == Body3dEventKind::Painleve)
     return "Painleve: at the new contact sticking would pull on the ground and lifting would sink into it (the "
            "contact would slide: not modelled yet)";
   if (kind != Body3dEventKind::NotModelled) return "";
+  if (from.contact == BodyContact::Slide)
+    return "a corner's load reaches zero while the base slides: rocking while sliding is not modelled yet";
   if (event == kEvLoadA && from.contact == BodyContact::Line && from.half_length == 0)
     return "the cylinder's contact starts rolling along the rim: rolling is not modelled yet";
   if (event < 0)
@@ -117,7 +126,8 @@ Tr BodyOnGround::leave_rest(double t, const State& z) const {
   m.yaw = std::atan2(r[1][0], r[0][0]);
   const RestFailure f = rest_search_.failure(t, m.yaw);
   if (f.way == RestExitWay::Lifts) return stop(m, Body3dEventKind::Invalid);
-  if (f.way == RestExitWay::Slides) return stop(m, Body3dEventKind::SlipOnset);
+  if (f.way == RestExitWay::Slides)
+    return body_.shape == BodyShape3d::Box ? start_slide(t, z, f.towards) : stop(m, Body3dEventKind::SlipOnset);
   if (f.way == RestExitWay::None) return {m, false, int(Body3dEventKind::GroundBreak)};
   // The ground accelerating towards u tips the body towards -u.
   const Vec3 x = vec_at(z, kX), ab = transposed_times(r, f.towards);  // body frame
