@@ -24,6 +24,8 @@ def main():
     rows = read_rows(a.csv)
     levels = {}
     for r in rows:
+        if r["overturned"] == "":  # the run left the model: not in the fractions
+            continue
         n, k = levels.get(float(r["level"]), (0, 0))
         levels[float(r["level"])] = (n + 1, k + (r["overturned"] == "1"))
     xs = sorted(levels)

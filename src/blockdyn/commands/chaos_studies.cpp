@@ -88,10 +88,18 @@ ChaosMapOptions chaos_options_of(const StudyOptions& s) {
   return o;
 }
 
+// A model without a variational equation (the 3D body, for now) has no Lyapunov exponent.
+void require_lyapunov(const ForcedModel& fm) {
+  if (!fm.lyapunov)
+    throw std::invalid_argument("`model` " + fm.description.value("model", std::string("?")) +
+                                ": no Lyapunov exponent (its variational equation is not available yet)");
+}
+
 StudyReport chaos_map_study(const Settings& given, const StudyRequest& request) {
   const StudyOptions s(given, chaos_map_options());
   const ChaosMapOptions o = chaos_options_of(s);
   const ForcedModel fm = forced_model_of(s);
+  require_lyapunov(fm);
   if (!fm.linearisable)
     throw std::invalid_argument("`contact` " + fm.description["contact"].get<std::string>() +
                                 ": no Lyapunov exponent (Moreau-Jean time-stepping); use `contact` deformable");
@@ -244,6 +252,7 @@ StudyReport forced_lyapunov_study(const StudyOptions& o, const StudyRequest& req
   if (o.text("method") != "time")
     throw std::invalid_argument("`method` " + o.text("method") + ": forced models renormalise at fixed times only");
   const ForcedModel fm = forced_model_of(o);
+  require_lyapunov(fm);
   if (!fm.linearisable)
     throw std::invalid_argument("`contact` " + fm.description["contact"].get<std::string>() +
                                 ": no Lyapunov exponent (Moreau-Jean time-stepping has no event-located orbit to "

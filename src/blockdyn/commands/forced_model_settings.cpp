@@ -4,12 +4,14 @@
 #include "blockdyn/base/number_text.hpp"
 
 #include "blockdyn/commands/assembly_settings.hpp"
+#include "blockdyn/commands/rigid3d_run.hpp"
 
 #include <cmath>
 #include <stdexcept>
 #include <utility>
 #include <vector>
 
+#include "blockdyn/analysis/forced/forced_body3d.hpp"
 #include "blockdyn/base/range_check.hpp"
 #include "blockdyn/family/family.hpp"
 #include "blockdyn/model/rigid_ground/rigid_params.hpp"
@@ -72,6 +74,10 @@ ForcedModel assembly_model(const Settings& s, const Family& family) {
   return forced_assembly_model(a, std::move(description));
 }
 
+ForcedModel body3d_model(const Settings& s, const Family&) {
+  return forced_body3d_model(body3d_from(s), body3d_friction_from(s), s.number("incidence", 0.0));
+}
+
 const std::vector<std::string>& assembly_only_options() {
   static const std::vector<std::string> n = [] {
     std::vector<std::string> out{"preset", "contact", "phi-s", "phi-l", "columns-rock-only"};
@@ -83,6 +89,16 @@ const std::vector<std::string>& assembly_only_options() {
 }
 
 const char* const kNotBlock = "applies to `model` assembly only";
+const char* const kNot3d = "applies to `model` rigid3d only";
+const std::vector<std::string> kBody3dOnly = {"shape", "depth", "incidence"};
+
+// The assembly's options the 3D body does not share (it has a radius and a density of its own).
+std::vector<std::string> not_body3d_options() {
+  std::vector<std::string> out;
+  for (const std::string& o : assembly_only_options())
+    if (o != "radius" && o != "density") out.push_back(o);
+  return out;
+}
 
 }  // namespace
 
@@ -91,16 +107,17 @@ const char* const kNotBlock = "applies to `model` assembly only";
 // resolve: at 1e-6 its chaos-map exponent agrees with 1e-8 to a few per cent at a hundredth of the
 // cost (docs/forced-chaos.md).
 const ForcedFamily& housner_forced() {
-  static const ForcedFamily f{
-      .refused = {{assembly_only_options(), kNotBlock}, {{"mu-s", "mu-k", "impact"}, "applies to `model` rigid only"}},
-      .build = block_model,
-      .lyapunov_rtol = 1e-10,
-      .lyapunov_atol = 1e-12};
+  static const ForcedFamily f{.refused = {{assembly_only_options(), kNotBlock},
+                                          {{"mu-s", "mu-k", "impact"}, "applies to `model` rigid only"},
+                                          {kBody3dOnly, kNot3d}},
+                              .build = block_model,
+                              .lyapunov_rtol = 1e-10,
+                              .lyapunov_atol = 1e-12};
   return f;
 }
 
 const ForcedFamily& rigid_forced() {
-  static const ForcedFamily f{.refused = {{assembly_only_options(), kNotBlock}},
+  static const ForcedFamily f{.refused = {{assembly_only_options(), kNotBlock}, {kBody3dOnly, kNot3d}},
                               .build = block_model,
                               .lyapunov_rtol = 1e-10,
                               .lyapunov_atol = 1e-12};
@@ -111,7 +128,8 @@ const ForcedFamily& assembly_forced() {
   static const ForcedFamily f{
       .refused = {{{"width", "height", "mass", "g", "mu-s", "mu-k", "impact"},
                    "applies to `model` housner|rigid only (an assembly's blocks and friction come from `preset` and "
-                   "`phi-s`/`phi-l`)"}},
+                   "`phi-s`/`phi-l`)"},
+                  {kBody3dOnly, kNot3d}},
       .build = assembly_model,
       .lyapunov_rtol = 1e-8,
       .lyapunov_atol = 1e-10,
@@ -122,10 +140,25 @@ const ForcedFamily& assembly_forced() {
   return f;
 }
 
+// The 3D body: the planar analyses' motion along `incidence`; its runs start at rest (no --w0),
+// and it has no tangent (no Lyapunov exponent) nor a cycle trace yet.
+const ForcedFamily& rigid3d_forced() {
+  static const ForcedFamily f{.refused = {{not_body3d_options(), kNotBlock},
+                                          {{"impact", "restitution"},
+                                           "applies to `model` housner|rigid|assembly (the 3D body's impacts "
+                                           "conserve the angular momentum about the new contact)"}},
+                              .build = body3d_model,
+                              .lyapunov_rtol = 1e-10,
+                              .lyapunov_atol = 1e-12,
+                              .initial_state = false};
+  return f;
+}
+
 const std::vector<std::string>& forced_model_option_names() {
   static const std::vector<std::string> n = [] {
-    std::vector<std::string> out{"model",  "width",       "height", "mass",    "g",     "mu-s",  "mu-k",
-                                 "impact", "restitution", "preset", "contact", "phi-s", "phi-l", "columns-rock-only"};
+    std::vector<std::string> out{"model",  "width",       "height",   "mass",    "g",     "mu-s",  "mu-k",
+                                 "impact", "restitution", "preset",   "contact", "phi-s", "phi-l", "columns-rock-only",
+                                 "shape",  "depth",       "incidence"};
     for (const std::string& o : preset_geometry_option_names())
       if (o != "tilt") out.push_back(o);
     return out;

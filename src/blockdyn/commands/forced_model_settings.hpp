@@ -33,6 +33,7 @@ const Family& forced_family(const std::string& name);
 const ForcedFamily& housner_forced();
 const ForcedFamily& rigid_forced();
 const ForcedFamily& assembly_forced();
+const ForcedFamily& rigid3d_forced();
 // Throws std::invalid_argument naming the option.
 ForcedModel forced_model_from(const Settings& s);
 

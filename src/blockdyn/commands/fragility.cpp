@@ -111,6 +111,7 @@ std::vector<FragilityRunOutcome> runs_of(const Table& t, std::size_t n_levels) {
     o.record_im = cell_double(r.cells[cr]);
     o.scale = cell_double(r.cells[cs]);
     o.overturned = r.cells[co] == "1";
+    o.invalid = r.cells[co].empty();  // a run that left the model
     o.max_abs_rotation = cell_double(r.cells[cm]);
     if (!r.cells[cf].empty()) o.t_failure = cell_double(r.cells[cf]);
     runs.push_back(o);
@@ -127,15 +128,22 @@ StudyReport fragility_report(const Table& t, const FragilitySuite& suite, const 
   j["run"] = run_info();
   j["definition"] = definition;
   json runs = json::array();
-  for (const FragilityRunOutcome& r : res.runs)
-    runs.push_back({{"record", suite.names[r.record]},
-                    {"level", r.level},
-                    {"im", im},
-                    {"scale", r.scale},
-                    {"overturned", r.overturned},
-                    {"max_abs_rotation", r.max_abs_rotation}});
+  for (const FragilityRunOutcome& r : res.runs) {
+    json one = {{"record", suite.names[r.record]},
+                {"level", r.level},
+                {"im", im},
+                {"scale", r.scale},
+                {"overturned", r.invalid ? json(nullptr) : json(r.overturned)},
+                {"max_abs_rotation", r.max_abs_rotation}};
+    if (r.invalid) one["outside_model"] = true;
+    runs.push_back(one);
+  }
   json lv = json::array();
-  for (const FragilityLevel& l : res.levels) lv.push_back({{"im", l.im}, {"n", l.n}, {"n_overturned", l.n_overturned}});
+  for (const FragilityLevel& l : res.levels) {
+    json one = {{"im", l.im}, {"n", l.n}, {"n_overturned", l.n_overturned}};
+    if (l.n_outside_model > 0) one["n_outside_model"] = l.n_outside_model;
+    lv.push_back(one);
+  }
   j["levels"] = lv;
   j["fit"] = fit_json(res.fit, res.band, int(o.bootstrap));
   j["curve"] = curve_json(res.curve);
@@ -211,7 +219,7 @@ GridStudy fragility_grid(const Settings& given, const std::string& output) {
         row.add(r.level);
         row.add(r.record_im);
         row.add(r.scale);
-        row.add(std::string(r.overturned ? "1" : "0"));
+        row.add(std::string(r.invalid ? "" : r.overturned ? "1" : "0"));  // empty: outside the model
         row.add(r.max_abs_rotation);
         if (r.t_failure)
           row.add(*r.t_failure);

@@ -17,15 +17,20 @@ namespace blockdyn {
 using json = nlohmann::ordered_json;
 
 std::vector<StudyOption> forced_model_options(const std::vector<std::string>& extra_models) {
-  std::string help = "housner, rigid (a block on rigid ground) or assembly (with `preset`)";
+  std::string help =
+      "housner, rigid (a block on rigid ground), assembly (with `preset`) or rigid3d (a box or cylinder, the motion "
+      "along `incidence`)";
   for (const auto& m : extra_models) help += ", or " + m;
   return {{"model", help, extra_models.empty() ? "housner" : extra_models.front()},
-          {"width", "housner/rigid: block width [m]", ""},
-          {"height", "housner/rigid: block height [m]", ""},
-          {"mass", "housner/rigid: mass [kg] (default 1)", ""},
+          {"width", "housner/rigid/rigid3d: block width [m]", ""},
+          {"height", "housner/rigid/rigid3d: block height [m]", ""},
+          {"mass", "housner/rigid/rigid3d: mass [kg] (default 1; rigid3d 100)", ""},
+          {"shape", "rigid3d: box or cylinder (default box)", ""},
+          {"depth", "rigid3d: the box's depth along e2 [m] (default: `width`)", ""},
+          {"incidence", "rigid3d: the motion's direction, degrees from the body's e1 towards e2 (default 0)", ""},
           {"g", "gravity [m/s^2] (default 9.81)", ""},
-          {"mu-s", "rigid: static friction (default 0.7)", ""},
-          {"mu-k", "rigid: kinetic friction (default mu-s)", ""},
+          {"mu-s", "rigid/rigid3d: static friction (default 0.7)", ""},
+          {"mu-k", "rigid/rigid3d: kinetic friction (default mu-s)", ""},
           {"impact", "rigid: housner or newton", ""},
           {"restitution", "restitution (housner/rigid as in simulate; assembly as in assembly)", ""},
           {"preset", "assembly: block, trilith, column or arch", ""},
@@ -34,12 +39,12 @@ std::vector<StudyOption> forced_model_options(const std::vector<std::string>& ex
           {"block-width", "assembly: width [m] (default 0.12)", ""},
           {"drums", "assembly column: drums (default 4)", ""},
           {"thickness", "assembly: out-of-plane depth [m] (default 0.06)", ""},
-          {"density", "assembly: density [kg/m^3] (default 2700)", ""},
+          {"density", "assembly: density [kg/m^3] (default 2700); rigid3d: instead of `mass`", ""},
           {"lintel-length", "assembly trilith: lintel length [m] (default: column height)", ""},
           {"overhang", "assembly trilith: lintel beyond each column's outer face [m] (default 0)", ""},
           {"voussoirs", "assembly arch: number of voussoirs (default 9)", ""},
           {"thickness-ratio", "assembly arch: ring thickness / centreline radius (default 0.15)", ""},
-          {"radius", "assembly arch: centreline radius [m] (default 1)", ""},
+          {"radius", "assembly arch: centreline radius [m] (default 1); rigid3d cylinder: its radius [m]", ""},
           {"embrace", "assembly arch: angle spanned [deg] (default 180)", ""},
           {"phi-s", "assembly: friction angle on the ground [deg] (default 90)", ""},
           {"phi-l", "assembly: friction angle between blocks [deg] (default 90)", ""},
@@ -122,6 +127,9 @@ HarmonicRun run_harmonic(const HarmonicSetup& h, double t0, int per_period) {
   HarmonicRun r;
   r.trace = std::make_unique<ForcedTrace>(t0, h.period, per_period);
   r.trace->keep_events_of(h.block);
+  if (!h.fm.traced)
+    throw std::invalid_argument("`model` " + h.fm.description.value("model", std::string("?")) +
+                                ": no strobe trace of its runs yet (cycles and impact maps)");
   r.outcome = h.fm.traced(h.g, h.t_end, r.trace.get());
   return r;
 }

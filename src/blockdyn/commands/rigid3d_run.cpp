@@ -46,7 +46,9 @@ Vec3 vec3_option(const Settings& s, const char* name) {
   return {xs[0], xs[1], xs[2]};
 }
 
-Body3d body_from(const Settings& s) {
+}  // namespace
+
+Body3d body3d_from(const Settings& s) {
   Body3d b;
   const std::string shape = s.text("shape", "box");
   if (shape != "box" && shape != "cylinder")
@@ -73,6 +75,17 @@ Body3d body_from(const Settings& s) {
   return b;
 }
 
+BodyOnGroundOptions body3d_friction_from(const Settings& s) {
+  BodyOnGroundOptions f;
+  f.mu_s = s.number("mu-s", 0.7);
+  require_in_range("mu-s", f.mu_s, 0, 1e6);
+  f.mu_k = s.number("mu-k", f.mu_s);
+  require_in_range("mu-k", f.mu_k, 0, 1e6);
+  return f;
+}
+
+namespace {
+
 Body3dStart start_from(const Settings& s) {
   Body3dStart st;
   st.yaw = s.number("yaw", 0) * kDeg;
@@ -95,14 +108,11 @@ Body3dStart start_from(const Settings& s) {
 
 Rigid3dSetup rigid3d_from(const Settings& s) {
   Rigid3dSetup r;
-  r.body = body_from(s);
+  r.body = body3d_from(s);
   r.start = start_from(s);
   apply_ground_settings(s, r.ground);
   validate(r.ground);
-  r.model.mu_s = s.number("mu-s", 0.7);
-  require_in_range("mu-s", r.model.mu_s, 0, 1e6);
-  r.model.mu_k = s.number("mu-k", r.model.mu_s);
-  require_in_range("mu-k", r.model.mu_k, 0, 1e6);
+  r.model = body3d_friction_from(s);
   r.model.rest_yaw = r.start.yaw;
   r.run.t_end = s.number("t-end", 10);
   r.run.output_interval = s.number("output-interval", 0.01);

@@ -24,4 +24,10 @@ std::unique_ptr<PreparedRun> prepare_rigid3d(const Settings& s);
 // The trajectory's columns, in order.
 const std::vector<std::string>& rigid3d_columns();
 
+// The body and its friction from options by name (the forced analyses' rigid3d model).
+struct Body3d;
+struct BodyOnGroundOptions;
+Body3d body3d_from(const Settings& s);
+BodyOnGroundOptions body3d_friction_from(const Settings& s);
+
 }  // namespace blockdyn

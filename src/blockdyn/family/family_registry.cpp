@@ -62,7 +62,8 @@ const std::vector<Family>& families() {
        .options = rigid3d_option_names,
        .prepare = prepare_rigid3d,
        .own_options = rigid3d_options,
-       .state_columns = "x,y,z,qw,qx,qy,qz,vx,vy,vz,wx,wy,wz"},
+       .state_columns = "x,y,z,qw,qx,qy,qz,vx,vy,vz,wx,wy,wz",
+       .forced = &rigid3d_forced()},
   };
   return rows;
 }

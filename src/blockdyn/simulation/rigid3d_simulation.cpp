@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "blockdyn/base/number_text.hpp"
+#include "blockdyn/integrate/root_bracket.hpp"
 #include "blockdyn/simulation/simulation.hpp"
 
 namespace blockdyn {
@@ -77,11 +78,34 @@ class Body3dWatch final : public Observer<Model> {
       }
     }
     if (o.track_energy) {
+      Model::State a;
+      seg.eval(t0, a);
+      model.complete(m, a);
       seg.eval(t1, y);
       model.complete(m, y);
+      // The tilt's largest value inside the step, where its rate changes sign from rising.
+      const double ra = tilt_rate_sign(a), rb = tilt_rate_sign(y);
+      if (ra > 0 && rb < 0) {
+        auto f = [&](double t) {
+          Model::State z;
+          seg.eval(t, z);
+          model.complete(m, z);
+          return tilt_rate_sign(z);
+        };
+        Model::State z;
+        seg.eval(locate_root(f, t0, t1, ra, rb), z);
+        model.complete(m, z);
+        track(t0, z);
+      }
       track(t1, y);
     }
     return true;
+  }
+  // A quantity with the sign of the tilt's rate: d(cos tilt)/dt = (omega x e3)_z, so the tilt
+  // rises where omega_y e3_x - omega_x e3_y > 0.
+  static double tilt_rate_sign(const Model::State& z) {
+    const Mat3 r = rotation({z[Model::kQw], z[Model::kQx], z[Model::kQy], z[Model::kQz]});
+    return z[Model::kWy] * r[0][2] - z[Model::kWx] * r[1][2];
   }
   bool on_event(const Model&, const Event& e) override {
     const auto kind = Body3dEventKind(e.kind);

@@ -11,7 +11,9 @@
 #include <cmath>
 #include <vector>
 
+#include "blockdyn/analysis/forced/forced_body3d.hpp"
 #include "blockdyn/simulation/rigid3d_simulation.hpp"
+#include "blockdyn/simulation/rigid_ground_model.hpp"
 #include "blockdyn/simulation/rigid_simulation.hpp"
 
 using blockdyn::Body3dEventKind;
@@ -195,4 +197,44 @@ TEST(Rigid3dSlide, CircularMotionSlidesRoundWithItsBalanceClosed) {
   EXPECT_TRUE(times_of(r, Body3dEventKind::Stick).empty());  // it never stops
   EXPECT_LT(balance_error(r, m), 1e-10);
   EXPECT_LT(r.z[BodyOnGround::kWorkFriction], 0.0);
+}
+
+// The 3D body as the forced analyses' model (analysis/forced/forced_body3d.hpp): under a pulse
+// along a principal axis, with friction that holds, each run is Housner's block's of that section
+// (overturned or not, the largest rotation), and its slenderness and frequency parameter are the
+// section's.
+TEST(Rigid3dSlide, ForcedModelAlongAnAxisIsHousnersBlock) {
+  const double b = 0.4, d = 0.35, h = 1.2;
+  BodyOnGroundOptions stick;  // mu_s 1e6: the contacts hold
+  for (double incidence : {0.0, 90.0, 180.0}) {
+    const blockdyn::ForcedModel m3 = blockdyn::forced_body3d_model(blockdyn::box_body(b, d, h, 100), stick, incidence);
+    blockdyn::RigidBlockParams p;
+    p.shape.width = incidence == 90 ? d : b;
+    p.shape.height = h;
+    p.shape.mass = 100;
+    const blockdyn::ForcedModel m2 = blockdyn::forced_block_model(p, blockdyn::housner_on_rigid_ground());
+    EXPECT_NEAR(m3.alpha, m2.alpha, 1e-15);
+    EXPECT_NEAR(m3.p, m2.p, 1e-14);
+    // One-sine pulses whose rocking keeps the edge on the ground (a stronger swing lifts it off,
+    // which Housner's pivot cannot do: a difference of model, not of the planar limit).
+    int overturned = 0;
+    // (The amplitudes scale with the section's slenderness: the same motions relative to it.)
+    for (const auto& [a0, duration] : {std::pair{0.3, 1.5}, {0.34, 1.5}, {0.38, 1.5}, {0.34, 2.5}, {0.42, 2.5}}) {
+      const double a = a0 * p.shape.width / b;
+      blockdyn::GroundMotion g;
+      g.horizontal.amplitude = a;
+      g.horizontal.duration = duration;
+      g.horizontal.pulse = blockdyn::PulseShape::OneSine;
+      const blockdyn::SurvivalOutcome o3 = m3.run(g, 8.0), o2 = m2.run(g, 8.0);
+      ASSERT_FALSE(o3.invalid) << incidence << " " << a;
+      EXPECT_EQ(o3.collapse_mode.has_value(), o2.collapse_mode.has_value()) << incidence << " " << a;
+      overturned += o3.collapse_mode.has_value();
+      if (o3.collapse_mode) {
+        EXPECT_NEAR(*o3.t_failure, *o2.t_failure, 1e-9) << incidence << " " << a;
+      } else {
+        EXPECT_NEAR(o3.max_abs_rotation, o2.max_abs_rotation, 1e-9) << incidence << " " << a;
+      }
+    }
+    EXPECT_EQ(overturned, 1) << incidence;
+  }
 }

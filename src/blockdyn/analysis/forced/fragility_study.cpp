@@ -63,6 +63,7 @@ FragilityRunOutcome fragility_run(const ForcedModel& m, const FragilitySuite& s,
   gm.horizontal.scale = r.scale;
   const SurvivalOutcome out = m.run(gm, o.t_end ? *o.t_end : s.records[r.record]->t_last() + o.t_after);
   r.overturned = out.collapse_mode.has_value();
+  r.invalid = out.invalid && !r.overturned;
   r.max_abs_rotation = out.max_abs_rotation;
   r.t_failure = out.t_failure;
   return r;
@@ -101,6 +102,10 @@ FragilityResult fragility_result(std::vector<FragilityRunOutcome> runs, const Fr
   for (std::size_t i = 0; i < nl; ++i) res.levels[i].im = o.levels[i];
   for (std::size_t i = 0; i < runs.size(); ++i) {
     const FragilityRunOutcome& r = runs[i];
+    if (r.invalid) {
+      ++res.levels[i % nl].n_outside_model;
+      continue;
+    }
     all.push_back({r.level, r.overturned});
     groups[r.record].push_back({r.level, r.overturned});
     ++res.levels[i % nl].n;

@@ -62,6 +62,7 @@ struct FragilityRunOutcome {
   std::size_t record = 0;
   double level = 0, record_im = 0, scale = 0;
   bool overturned = false;
+  bool invalid = false;  // the run left the model (it stopped where the model cannot go on)
   double max_abs_rotation = 0;
   std::optional<double> t_failure;
 };
@@ -70,7 +71,8 @@ FragilityRunOutcome fragility_run(const ForcedModel& m, const FragilitySuite& s,
 
 struct FragilityLevel {
   double im = 0;
-  std::size_t n = 0, n_overturned = 0;
+  std::size_t n = 0, n_overturned = 0;  // the runs that stayed in the model, and of them overturned
+  std::size_t n_outside_model = 0;      // the runs that left it: not in n, nor in the fit
 };
 // The fitted curve on 80 levels from lo / 2 to 1.5 hi (lo, hi: the study's levels), with the
 // bootstrap's pointwise 90 % band where there is one.
