@@ -11,6 +11,7 @@
 #include "blockdyn/simulation/rigid3d_simulation.hpp"
 #include "blockdyn/simulation/rigid_simulation.hpp"
 #include "housner_reference.hpp"
+#include "model/rigid3d/body3d_run.hpp"
 
 namespace {
 
@@ -33,11 +34,7 @@ std::shared_ptr<const blockdyn::Accelerogram> fixture_record() {
 }
 
 Body3dResult run(const BodyOnGround& m, const blockdyn::Body3dStart& s, double t_end) {
-  blockdyn::Body3dRunOptions o;
-  o.t_end = t_end;
-  o.integ.rtol = 1e-12;
-  o.integ.atol = 1e-14;
-  return blockdyn::simulate_body3d(m, blockdyn::initial_state(m.body(), s), o);
+  return blockdyn::test::run_body(m, s, t_end);
 }
 
 std::vector<blockdyn::Body3dEventRecord> impacts(const Body3dResult& r) {

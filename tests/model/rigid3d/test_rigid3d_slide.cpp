@@ -15,6 +15,7 @@
 #include "blockdyn/simulation/rigid3d_simulation.hpp"
 #include "blockdyn/simulation/rigid_ground_model.hpp"
 #include "blockdyn/simulation/rigid_simulation.hpp"
+#include "model/rigid3d/body3d_run.hpp"
 
 using blockdyn::Body3dEventKind;
 using blockdyn::Body3dResult;
@@ -27,11 +28,7 @@ namespace slide_test {
 constexpr double kG = 9.81;
 
 Body3dResult slide_run(const BodyOnGround& m, const blockdyn::Body3dStart& s, double t_end) {
-  blockdyn::Body3dRunOptions o;
-  o.t_end = t_end;
-  o.integ.rtol = 1e-12;
-  o.integ.atol = 1e-14;
-  return blockdyn::simulate_body3d(m, blockdyn::initial_state(m.body(), s), o);
+  return blockdyn::test::run_body(m, s, t_end);
 }
 
 BodyOnGroundOptions friction(double mu_s, double mu_k) {
