@@ -40,7 +40,7 @@ void add(CLI::App& app) {
   s->callback([s, f] {
     Settings settings = settings_of(*s, simulate_output_flag_names());
     settings.add("model", "assembly");
-    run_and_write(prepare_run(settings), f->out);
+    run_and_write(*prepare_run(settings), f->out);
   });
 }
 

@@ -8,8 +8,7 @@
 #include "blockdyn/commands/map_study.hpp"
 #include "cli_common.hpp"
 #include "cli_registry.hpp"
-#include "grid_run.hpp"
-#include "study_table_output.hpp"
+#include "table_files.hpp"
 
 namespace blockdyn::cli {
 // Each command's own names (add, Flags, ...) in its own namespace: the files build as one unity.
@@ -24,20 +23,15 @@ struct MapFlags {
 void run(const CLI::App& s, const MapFlags& f) {
   require_range("threads", f.threads, 0, 4096);
   const Settings given = settings_of(s, {"--threads", "--resume", "--overwrite", "--quiet"});
-  const MapStudy m = map_study(given);
-  require_writable("plot", m.plot);
   SweepRunOptions ro;
   ro.threads = f.threads;
   ro.resume = f.resume;
   ro.overwrite = f.overwrite;
   ro.progress = f.quiet ? ProgressMode::None : ProgressMode::Auto;
-  const GridRunResult dispatched = dispatch_points(*m.table, ro);
-  if (!dispatched.root) return;  // the other ranks computed their share of the points
-  const SweepOutcome& out = dispatched.outcome;
-  const MapBoundaries b = map_boundaries(given, f.threads);
-  const std::string bpath = map_boundaries_path(out.paths.csv);
-  write_study_table(bpath, b.table, b.meta);
-  if (!m.plot.empty()) run_python("plot_map.py", {out.paths.csv, bpath, m.plot, m.title});
+  const MapFiles files = write_map(given, ro);
+  if (!files.grid.root) return;  // the other ranks computed their share of the points
+  const SweepOutcome& out = files.grid.outcome;
+  const std::string& bpath = files.boundaries_csv;
   if (!f.quiet)
     std::printf("map: %zu points (%zu computed, %zu resumed) in %.1f s -> %s, boundaries -> %s\n", out.points,
                 out.computed, out.resumed, out.wall_seconds, out.paths.csv.c_str(), bpath.c_str());

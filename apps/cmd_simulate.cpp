@@ -72,7 +72,7 @@ void add_physical_flags(CLI::App& s, SimulateFlags& f) {
 void run(const CLI::App& s, const SimulateFlags& f) {
   const auto prepared = prepare_run(settings_of(s, simulate_output_flag_names()));
   const auto [trajectory, plot] = prepared->scenario_outputs();
-  run_and_write(prepared, f.out, given(s, "--trajectory") || trajectory.empty() ? f.out.trajectory : trajectory,
+  run_and_write(*prepared, f.out, given(s, "--trajectory") || trajectory.empty() ? f.out.trajectory : trajectory,
                 given(s, "--plot") || plot.empty() ? f.out.plot : plot);
 }
 

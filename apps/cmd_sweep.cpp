@@ -17,6 +17,7 @@
 #include "cli_common.hpp"
 #include "cli_registry.hpp"
 #include "grid_run.hpp"
+#include "table_files.hpp"
 
 namespace blockdyn::cli {
 // Each command's own names (add, Flags, ...) in its own namespace: the files build as one unity.
@@ -33,35 +34,6 @@ struct RunnerFlags {
 const std::vector<std::string> kRunnerFlags = {
     "--threads", "--resume",       "--overwrite", "--progress", "--progress-interval",
     "--quiet",   "--list-metrics", "--list-axes", "--dry-run"};
-
-// Axes with more than one value become plot axes (the first two); the others are held at one value.
-void plot(const SweepDefinition& d, const SweepPaths& paths) {
-  std::vector<std::string> args = {paths.csv, d.plot};
-  std::vector<const SweepPlotAxis*> varying;
-  for (const SweepPlotAxis& a : d.plot_axes) {
-    if (a.values.size() > 1 && varying.size() < 2) {
-      varying.push_back(&a);
-    } else {
-      args.push_back("--where");
-      args.push_back(a.name + "=" + format_double(a.values.front()));
-    }
-  }
-  for (const auto& h : d.held) {
-    args.push_back("--where");
-    args.push_back(h);
-  }
-  if (varying.empty()) throw UsageError("plot: the sweep has no axis with more than one value");
-  const char* axis_flag[2] = {"--x", "--y"};
-  const char* log_flag[2] = {"--logx", "--logy"};
-  for (std::size_t i = 0; i < varying.size(); ++i) {
-    args.push_back(axis_flag[i]);
-    args.push_back(varying[i]->name);
-    const auto& v = varying[i]->values;
-    if (varying[i]->log || (v.front() > 0 && v.back() / v.front() >= 100.0)) args.push_back(log_flag[i]);
-  }
-  args.insert(args.end(), {"--column", d.plot_column, "--t-end", format_double(d.t_end)});
-  run_python("plot_sweep.py", args);
-}
 
 void list_metrics() {
   for (const auto& m : metric_catalog()) {
@@ -97,10 +69,9 @@ void execute(const SweepDefinition& d, const RunnerFlags& f) {
   o.overwrite = f.overwrite;
   o.progress = f.quiet ? ProgressMode::None : parse_progress_mode(f.progress);
   o.progress_interval = f.progress_interval;
-  const GridRunResult res = dispatch_points(*d.table, o);
+  const GridRunResult res = write_sweep(d, o);
   if (!res.root) return;  // only rank 0 reports
   const SweepOutcome& out = res.outcome;
-  if (!d.plot.empty()) plot(d, out.paths);
   if (f.quiet) return;
   if (out.was_complete) {
     std::printf("sweep: %zu points already complete in %s (nothing recomputed)\n", out.points, out.paths.csv.c_str());

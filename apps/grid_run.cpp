@@ -3,6 +3,7 @@
 
 #include <unistd.h>
 
+#include <atomic>
 #include <cstdio>
 
 #include "cli_common.hpp"
@@ -34,7 +35,9 @@ GridOutput::GridOutput(const std::string& csv_flag, const std::string& csv, cons
   if (csv_.empty()) {
     if (f.resume) throw UsageError("resume: needs " + csv_flag + " F.csv (the table whose journal is resumed)");
     scratch_ = true;
-    csv_ = "/tmp/blockdyn-" + kind + "-" + std::to_string(::getpid()) + ".csv";
+    // Distinct per call: Python may run several tables at once in one process.
+    static std::atomic<unsigned> serial{0};
+    csv_ = "/tmp/blockdyn-" + kind + "-" + std::to_string(::getpid()) + "-" + std::to_string(serial++) + ".csv";
     const SweepPaths p = sweep_paths(csv_);
     guard_[0] = std::make_unique<RemoveOnSignal>(p.csv);
     guard_[1] = std::make_unique<RemoveOnSignal>(p.journal);

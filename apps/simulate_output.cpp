@@ -40,8 +40,8 @@ const std::vector<std::string>& simulate_output_flag_names() {
   return n;
 }
 
-void run_and_write(const std::unique_ptr<PreparedRun>& run, const SimulateOutputFlags& f, const std::string& trajectory,
-                   const std::string& plot) {
+SimulateReport run_and_write(const PreparedRun& run, const SimulateOutputFlags& f, const std::string& trajectory,
+                             const std::string& plot, const RunCapture& capture) {
   require_writable("plot", plot);
   require_animation(f.animate, f.animate_frames);
   require_writable("trajectory", trajectory);
@@ -49,16 +49,24 @@ void run_and_write(const std::unique_ptr<PreparedRun>& run, const SimulateOutput
   TrajectoryTarget target(trajectory, plot.empty() ? f.animate : plot);
   std::optional<CsvTable> table;
   if (target.file) table.emplace(target.file->stream());
+  std::optional<TableTee> both;
+  if (table && capture.table) both.emplace(*table, *capture.table);
   // Events go to a spool of the JSON summary as the run makes them: O(1) memory whatever its length.
   const bool json = f.json || !f.json_out.empty();
   std::unique_ptr<JsonEventSpool> spool;
   if (json) spool = std::make_unique<JsonEventSpool>();
   SimulateOutputs out;
-  out.trajectory = table ? &*table : nullptr;
+  out.trajectory = both    ? static_cast<TrajectoryTable*>(&*both)
+                   : table ? static_cast<TrajectoryTable*>(&*table)
+                           : capture.table;
   out.max_output_rows = f.max_output_rows;
-  if (spool) out.on_event = [&spool](const nlohmann::ordered_json& e) { spool->add(e); };
+  if (spool || capture.on_event)
+    out.on_event = [&spool, &capture](const nlohmann::ordered_json& e) {
+      if (spool) spool->add(e);
+      if (capture.on_event) capture.on_event(e);
+    };
   out.timing_repeat = f.timing_repeat;
-  const SimulateReport rep = run->run(out);
+  const SimulateReport rep = run.run(out);
   std::vector<std::string> animate_args = figure_arguments(rep.figure.animation);
   animate_args.insert(animate_args.end(), {"--frames", std::to_string(f.animate_frames)});
   target.figures_and_clean({{plot_script(rep.figure.plot), plot, figure_arguments(rep.figure.plot)},
@@ -72,6 +80,7 @@ void run_and_write(const std::unique_ptr<PreparedRun>& run, const SimulateOutput
   if (!f.json && !f.quiet) std::fputs(rep.text.c_str(), stdout);
   if (f.timing && !f.json && !f.quiet)
     std::printf("integration: %.6g s CPU, %.6g s wall\n", rep.timing.cpu_s, rep.timing.wall_s);
+  return rep;
 }
 
 }  // namespace blockdyn::cli

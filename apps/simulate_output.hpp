@@ -4,6 +4,7 @@
 // summary, text, timing; and the one function that runs a prepared run into them.
 #include <CLI/CLI.hpp>
 
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -24,12 +25,18 @@ struct SimulateOutputFlags {
 void add_simulate_output_flags(CLI::App& app, SimulateOutputFlags& f, double default_interval);
 // Their names, less --output-interval (a model option: the library reads it).
 const std::vector<std::string>& simulate_output_flag_names();
+// What a caller keeps of the run besides the files (Python: its NumPy columns and events).
+struct RunCapture {
+  TrajectoryTable* table = nullptr;
+  std::function<void(const nlohmann::ordered_json&)> on_event;
+};
+
 // Checks the outputs, runs, writes the CSV, figures, JSON and text. `trajectory` and `plot` are the
 // paths to use (a scenario file may name them).
-void run_and_write(const std::unique_ptr<PreparedRun>& run, const SimulateOutputFlags& f, const std::string& trajectory,
-                   const std::string& plot);
-inline void run_and_write(const std::unique_ptr<PreparedRun>& run, const SimulateOutputFlags& f) {
-  run_and_write(run, f, f.trajectory, f.plot);
+SimulateReport run_and_write(const PreparedRun& run, const SimulateOutputFlags& f, const std::string& trajectory,
+                             const std::string& plot, const RunCapture& capture = {});
+inline SimulateReport run_and_write(const PreparedRun& run, const SimulateOutputFlags& f) {
+  return run_and_write(run, f, f.trajectory, f.plot);
 }
 
 }  // namespace blockdyn::cli

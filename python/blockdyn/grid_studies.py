@@ -2,12 +2,10 @@
 """Analyses over a grid of runs: spectra, survival and response maps, fragility, sweeps and maps."""
 import json
 import os
-import tempfile
 
 import numpy as np
 
 from . import _core
-from ._command_line import _args, _read_csv, run
 from ._marshal import _columns, _is_samples, _options, _threads
 
 
@@ -93,27 +91,26 @@ def response_curve(**options):
 
 def _table_command(command, definition, options):
     """The grid of `sweep` or `map`: in memory on `threads` threads, or, given `output` (or a
-    figure), through the command's writers (CSV, sidecar, journal, figure)."""
-    if options.get("output") or options.get("plot"):
-        with tempfile.TemporaryDirectory(prefix="blockdyn-py-") as tmp:
-            out = options.pop("output", None) or os.path.join(tmp, command + ".csv")
-            opts = dict(options, output=out, quiet=True)
-            run(*_args(command, opts, [definition] if definition else []))
-            cols = _read_csv(out)
-            side = os.path.splitext(out)[0] + ".json" if out.endswith(".csv") else out + ".json"
-            with open(side) as f:
-                cols["_sidecar"] = json.load(f)
-            if command == "map":
-                cols["_boundaries"] = _read_csv(os.path.splitext(out)[0] + "_boundaries.csv")
-            return cols
-    for reserved in ("resume", "overwrite", "progress", "progress_interval", "dry_run"):
-        if reserved in options:
-            raise ValueError(f"{reserved}: a file-run option; give output= to run blockdyn.{command} on files")
+    figure), on files by the command's writers (CSV, sidecar, journal, figure; resume= and
+    overwrite= as on the command line)."""
     options.pop("quiet", None)
     threads = _threads(options.pop("threads", 0) or 0)
     if definition is not None:
         options["definition"] = os.fspath(definition)
-    result = getattr(_core, command)(_options(options), threads)
+    if "dry_run" in options:
+        raise ValueError(f"dry_run: a command-line option (`blockdyn {command} --dry-run`)")
+    if options.get("output") or options.get("plot"):
+        runner = dict(resume=bool(options.pop("resume", False)), overwrite=bool(options.pop("overwrite", False)),
+                      progress=str(options.pop("progress", "none")),
+                      progress_interval=float(options.pop("progress_interval", 10)))
+        if options.get("output"):
+            options["output"] = os.fspath(options["output"])
+        result = getattr(_core, command + "_files")(_options(options), threads, **runner)
+    else:
+        for reserved in ("resume", "overwrite", "progress", "progress_interval"):
+            if reserved in options:
+                raise ValueError(f"{reserved}: a file-run option; give output= to run blockdyn.{command} on files")
+        result = getattr(_core, command)(_options(options), threads)
     cols = _columns(result[0])
     cols["_sidecar"] = json.loads(result[1])
     if command == "map":

@@ -4,15 +4,29 @@ import json
 import os
 
 from . import _core
-from ._command_line import _FILE_OPTIONS, _with_trajectory
-from ._marshal import _columns, _options, _threads
-from .results import Assembly, _simulation, _simulation_of
+from ._marshal import _columns, _number, _options, _threads
+from .results import Assembly, _simulation
+
+# The files a run writes besides returning its arrays, by the command line's writers.
+_FILE_OPTIONS = ("trajectory", "plot", "animate", "animate_frames", "json_out")
+
+
+def _files(options):
+    """(the model's options, {output: path} of the files asked for)."""
+    files = {}
+    for key in _FILE_OPTIONS:
+        value = options.get(key)
+        if value is not None and value is not False:
+            files[key.replace("_", "-")] = _number(value) if key == "animate_frames" else os.fspath(value)
+    return {k: v for k, v in options.items() if k not in _FILE_OPTIONS}, files
 
 
 def _prepared(scenario, options, command="simulate"):
-    for reserved in ("trajectory", "json", "json_out"):
-        if reserved in options:
-            raise ValueError(f"{reserved}: set by blockdyn.{command} itself")
+    if "json" in options:
+        raise ValueError("json: the summary is the result's `summary` (json_out= writes it to a file)")
+    for key in _FILE_OPTIONS:
+        if options.get(key) is not None and options.get(key) is not False:
+            raise ValueError(f"{key}: files are written by blockdyn.simulate and blockdyn.assembly, not here")
     opts = dict(options)
     if scenario is not None:
         opts["scenario"] = os.fspath(scenario)
@@ -37,9 +51,11 @@ def simulate(scenario=None, **options):
     """Runs one block (the options of `blockdyn simulate`, optionally a TOML scenario) and returns a
     Simulation (an Assembly with model="assembly"), from memory. A record may be a file or arrays:
     ground_h_record=(t, a), t in s, a in g."""
-    if any(options.get(k) for k in _FILE_OPTIONS):
-        return _simulation_of(*_with_trajectory("simulate", scenario, options))
-    return _simulation(_core.simulate(_prepared(scenario, options), True))
+    options, files = _files(options)
+    prepared = _prepared(scenario, options)
+    if files:
+        return _simulation(_core.simulate_files(prepared, files))
+    return _simulation(_core.simulate(prepared, True))
 
 
 def simulate_many(runs, threads=1, trajectory=True):
@@ -58,7 +74,7 @@ def simulate_many(runs, threads=1, trajectory=True):
 def assembly(file=None, **options):
     """Runs a block assembly (a preset, e.g. preset="trilith", or an assembly TOML file; the options
     of `blockdyn assembly`) and returns an Assembly with NumPy arrays, from memory."""
-    if any(options.get(k) for k in _FILE_OPTIONS):
-        return Assembly(*_with_trajectory("assembly", file, options))
-    cols, summary = _core.simulate(_prepared(file, options, "assembly"), True)
+    options, files = _files(options)
+    prepared = _prepared(file, options, "assembly")
+    cols, summary = _core.simulate_files(prepared, files) if files else _core.simulate(prepared, True)
     return Assembly(_columns(cols), json.loads(summary))

@@ -2,7 +2,8 @@
 // blockdyn._core: the library for Python. Runs are made from memory: options go to the library as
 // Settings (the same vocabulary and validation as the command line), results come back as NumPy
 // columns and the JSON summary's text, and the integration runs without the GIL. Runs that write
-// figures go through the command line in process (run_cli), whose writers make them.
+// files (a trajectory CSV, a JSON summary, figures) go through the command line's writers, called
+// directly, in the same run that fills the columns.
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
@@ -10,7 +11,10 @@
 #include <algorithm>
 #include <cmath>
 #include <exception>
+#include <fstream>
 #include <functional>
+#include <iterator>
+#include <map>
 #include <memory>
 #include <string>
 #include <thread>
@@ -20,6 +24,7 @@
 
 #include "blockdyn/analysis/sweep/parallel_map.hpp"
 #include "blockdyn/analysis/sweep/sweep_runner.hpp"
+#include "blockdyn/base/range_check.hpp"
 #include "blockdyn/commands/grid_studies.hpp"
 #include "blockdyn/commands/limit_analysis_command.hpp"
 #include "blockdyn/commands/map_study.hpp"
@@ -31,8 +36,12 @@
 #include "blockdyn/commands/sweep_settings.hpp"
 #include "blockdyn/family/family.hpp"
 #include "blockdyn/io/json_io.hpp"
+#include "blockdyn/io/progress.hpp"
 #include "blockdyn/version.hpp"
+#include "cli_common.hpp"
 #include "cli_run.hpp"
+#include "simulate_output.hpp"
+#include "table_files.hpp"
 
 namespace py = pybind11;
 using namespace blockdyn;
@@ -114,6 +123,41 @@ void finish_summary(const Prepared& p, Outcome& o) {
   o.summary_text = dump_json(doc);
 }
 
+// The same run writing the files asked for (by the command line's writers) and keeping its columns.
+void execute_with_files(const Prepared& p, const std::map<std::string, std::string>& files, Outcome& o) {
+  cli::SimulateOutputFlags f;
+  f.quiet = true;
+  f.max_output_rows = p.max_rows;
+  static const std::map<std::string, std::string cli::SimulateOutputFlags::*> kPaths{
+      {"trajectory", &cli::SimulateOutputFlags::trajectory},
+      {"plot", &cli::SimulateOutputFlags::plot},
+      {"animate", &cli::SimulateOutputFlags::animate},
+      {"json-out", &cli::SimulateOutputFlags::json_out}};
+  Settings frames;
+  for (const auto& [name, value] : files) {
+    if (const auto it = kPaths.find(name); it != kPaths.end())
+      f.*(it->second) = value;
+    else if (name == "animate-frames")
+      frames.add(name, value);
+    else
+      throw std::invalid_argument("`" + name +
+                                  "` is not an output of a run (trajectory, plot, animate, animate-frames, json-out)");
+  }
+  f.animate_frames = frames.small_integer("animate-frames", f.animate_frames);
+  cli::RunCapture capture;
+  capture.table = &o.table;
+  capture.on_event = [&o](const nlohmann::ordered_json& e) { o.events.push_back(e); };
+  // The JSON file's schema names the command, as the program's does.
+  const std::string caller = std::exchange(cli::current_command(), p.command);
+  try {
+    o.report = cli::run_and_write(*p.run, f, f.trajectory, f.plot, capture);
+  } catch (...) {
+    cli::current_command() = caller;
+    throw;
+  }
+  cli::current_command() = caller;
+}
+
 // (columns {name: array or list of str}, summary JSON text).
 py::tuple to_python(Outcome& o) {
   py::dict cols;
@@ -190,6 +234,89 @@ py::tuple grid_in_memory(const PointTable& table, int threads) {
   return py::make_tuple(study_columns(study_table_of(t)), dump_json(table_sidecar(table, "complete")));
 }
 
+// A table run on files: the user's `output`, else scratch files (removed when `scratch` goes)
+// that the figure is made from.
+Settings with_output(Settings s, const std::string& kind, bool resume, bool overwrite,
+                     std::unique_ptr<cli::GridOutput>& scratch) {
+  if (s.has("output")) return s;
+  cli::GridRunFlags g;
+  g.resume = resume;
+  g.overwrite = overwrite;
+  scratch = std::make_unique<cli::GridOutput>("`output`", "", kind, g, "");
+  s.set("output", scratch->csv());
+  return s;
+}
+
+// The runner's options of a table on files; usage errors name the option.
+struct FileRun {
+  int threads = 0;
+  bool resume = false, overwrite = false;
+  std::string progress = "none";
+  double progress_interval = 10;
+  SweepRunOptions options() const {
+    if (resume && overwrite) throw std::invalid_argument("`resume` and `overwrite`: give only one");
+    require_in_range("progress-interval", progress_interval, 0.0, 1e9, false);
+    SweepRunOptions o;
+    o.threads = threads;
+    o.resume = resume;
+    o.overwrite = overwrite;
+    o.progress = parse_progress_mode(progress);
+    o.progress_interval = progress_interval;
+    return o;
+  }
+};
+
+// The sidecar the runner wrote (none beside a FIFO or a device: the table's own then).
+std::string sidecar_text(const SweepOutcome& out, const PointTable& table) {
+  std::ifstream in(out.paths.sidecar);
+  if (!in) return dump_json(table_sidecar(table, "complete"));
+  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+
+// `blockdyn sweep` and `blockdyn map` on files, through the command line's writers.
+void add_table_files(py::module_& m) {
+  m.def(
+      "sweep_files",
+      [](const OptionList& options, int threads, bool resume, bool overwrite, const std::string& progress,
+         double progress_interval) {
+        const FileRun run{threads, resume, overwrite, progress, progress_interval};
+        const SweepRunOptions o = run.options();
+        std::unique_ptr<cli::GridOutput> scratch;
+        const SweepDefinition d =
+            sweep_definition(with_output(settings_of(options), "sweep", resume, overwrite, scratch));
+        cli::GridRunResult r;
+        {
+          py::gil_scoped_release release;
+          r = cli::write_sweep(d, o);
+        }
+        return py::make_tuple(study_columns(study_table_of(r.outcome.table)), sidecar_text(r.outcome, *d.table));
+      },
+      py::arg("options"), py::arg("threads") = 0, py::arg("resume") = false, py::arg("overwrite") = false,
+      py::arg("progress") = "none", py::arg("progress_interval") = 10.0,
+      "Runs `blockdyn sweep` on files (output, journal, sidecar, plot); returns (columns, sidecar JSON text).");
+  m.def(
+      "map_files",
+      [](const OptionList& options, int threads, bool resume, bool overwrite, const std::string& progress,
+         double progress_interval) {
+        const FileRun run{threads, resume, overwrite, progress, progress_interval};
+        const SweepRunOptions o = run.options();
+        std::unique_ptr<cli::GridOutput> scratch;
+        const Settings s = with_output(settings_of(options), "map", resume, overwrite, scratch);
+        cli::MapFiles f;
+        {
+          py::gil_scoped_release release;
+          f = cli::write_map(s, o);
+        }
+        return py::make_tuple(study_columns(study_table_of(f.grid.outcome.table)),
+                              sidecar_text(f.grid.outcome, *f.table), study_columns(f.boundaries.table),
+                              dump_json(f.boundaries.meta));
+      },
+      py::arg("options"), py::arg("threads") = 0, py::arg("resume") = false, py::arg("overwrite") = false,
+      py::arg("progress") = "none", py::arg("progress_interval") = 10.0,
+      "Runs `blockdyn map` on files (output, journal, sidecar, boundaries CSV, plot); returns (columns, sidecar "
+      "JSON text, boundary columns, their meta JSON).");
+}
+
 // Runs of one model: prepared, single, many on threads.
 void add_runs(py::module_& m) {
   py::class_<Prepared>(m, "Prepared", "a run's options, parsed and validated once (blockdyn.Simulator)")
@@ -207,6 +334,20 @@ void add_runs(py::module_& m) {
       },
       py::arg("prepared"), py::arg("trajectory") = true,
       "Runs one block; returns ({column: array}, summary JSON text).");
+  m.def(
+      "simulate_files",
+      [](const Prepared& p, const std::map<std::string, std::string>& files) {
+        Outcome o;
+        {
+          py::gil_scoped_release release;
+          execute_with_files(p, files, o);
+          finish_summary(p, o);
+        }
+        return to_python(o);
+      },
+      py::arg("prepared"), py::arg("files"),
+      "Runs one block writing the files named ({output: path}: trajectory, plot, animate, animate-frames, "
+      "json-out) as the command line writes them; returns ({column: array}, summary JSON text).");
   m.def(
       "simulate_many",
       [](const std::vector<Prepared>& runs, int threads, bool trajectory) {
@@ -395,5 +536,6 @@ PYBIND11_MODULE(_core, m) {
   m.attr("git_describe") = blockdyn::kGitDescribe;
   add_runs(m);
   add_studies(m);
+  add_table_files(m);
   add_records_and_catalogues(m);
 }

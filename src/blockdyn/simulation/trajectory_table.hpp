@@ -73,4 +73,22 @@ class ColumnTable final : public TrajectoryTable {
   std::size_t rows_ = 0;
 };
 
+// The same rows to two tables (a CSV file and NumPy columns from one run).
+class TableTee final : public TrajectoryTable {
+ public:
+  TableTee(TrajectoryTable& a, TrajectoryTable& b) : a_(a), b_(b) {}
+  void columns(const std::vector<std::string>& names) override {
+    a_.columns(names);
+    b_.columns(names);
+  }
+  void row(const TableCell* cells) override {
+    a_.row(cells);
+    b_.row(cells);
+  }
+
+ private:
+  TrajectoryTable& a_;
+  TrajectoryTable& b_;
+};
+
 }  // namespace blockdyn
