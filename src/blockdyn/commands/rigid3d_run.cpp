@@ -132,8 +132,11 @@ const char* mode_name(const Body3d& b, const BodyOnGroundMode& m) {
     case BodyContact::Flight:
       return "flight";
     case BodyContact::Point:
-      return "corner";
+      return m.slips() ? "corner_slip" : "corner";
     case BodyContact::Line:
+      // A slipping edge: both ends slip, or one sticks and the edge turns about it.
+      if (m.slipping == 3) return "edge_slip";
+      if (m.slips()) return "edge_turn";
       return b.shape == BodyShape3d::Box ? "edge" : "rim";
     case BodyContact::Slide:
       return "slide";
@@ -151,9 +154,9 @@ void fill_row(RowBuffer& row, const BodyOnGround& m, double e0, const Body3dSamp
   row.number(tilt_azimuth_deg(z));
   for (std::size_t i = BodyOnGround::kVx; i <= BodyOnGround::kWz; ++i) row.number(z[i]);
   row.text(mode_name(m.body(), smp.mode));
-  const bool touching = smp.mode.contact == BodyContact::Line || smp.mode.contact == BodyContact::Point;
-  row.number(touching ? smp.mode.pivot[0] : NAN);
-  row.number(touching ? smp.mode.pivot[1] : NAN);
+  const Vec3 contact = m.contact_point(smp.mode, z);
+  row.number(contact[0]);
+  row.number(contact[1]);
   const std::array<Vec3, 2> f = m.contact_forces(smp.t, smp.mode, z);
   row.number(f[0][2] + f[1][2]);
   const double pot = m.body().mass * m.body().g * z[BodyOnGround::kZ];
@@ -166,11 +169,18 @@ void fill_row(RowBuffer& row, const BodyOnGround& m, double e0, const Body3dSamp
   row.text(smp.event ? smp.event : "");
 }
 
+BodyOnGroundMode mode_of_record(BodyContact c, unsigned char slipping) {
+  BodyOnGroundMode m;
+  m.contact = c;
+  m.slipping = slipping;
+  return m;
+}
+
 json event_json(const BodyOnGround& m, const Body3dEventRecord& e) {
   return {{"t", e.t},
           {"kind", to_string(e.kind)},
-          {"from", mode_name(m.body(), BodyOnGroundMode{e.from})},
-          {"to", mode_name(m.body(), BodyOnGroundMode{e.to})},
+          {"from", mode_name(m.body(), mode_of_record(e.from, e.from_slipping))},
+          {"to", mode_name(m.body(), mode_of_record(e.to, e.to_slipping))},
           {"x", e.z[BodyOnGround::kX]},
           {"y", e.z[BodyOnGround::kY]},
           {"z", e.z[BodyOnGround::kZ]},

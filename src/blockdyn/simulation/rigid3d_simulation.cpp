@@ -35,17 +35,25 @@ class Body3dWatch final : public Observer<Model> {
   const Body3dRunOptions& o;
   Body3dResult& res;
   double next_row = 0;
-  // The distance slid: the base's centre's displacements while sliding, summed (slid), and where
-  // it was when the current slide began.
-  bool sliding = false;
-  Vec3 slid{}, slide_from{};
+  // The distance slid: the displacements of the slipping point on the ground (the base's centre
+  // sliding flat, the corner or the edge's midpoint slipping), summed over the slips (slid), and
+  // where that point was when the current slip began.
+  Model::Mode current{};
+  Vec3 slid{}, slip_from{};
+  static bool slipping(const Model::Mode& m) {
+    return m.contact == BodyContact::Slide ||
+           ((m.contact == BodyContact::Line || m.contact == BodyContact::Point) && m.slips());
+  }
+  Vec3 slip_point(const Model::Mode& m, const Model::State& z) const {
+    return m.contact == BodyContact::Slide ? base_centre(model, z) : model.contact_point(m, z);
+  }
   void slide_changes(const Model::Mode& from, const Model::Mode& to, const Model::State& z) {
-    const bool was = from.contact == BodyContact::Slide, is = to.contact == BodyContact::Slide;
-    if (was == is) return;
-    const Vec3 c = base_centre(model, z);
-    if (was) slid = {slid[0] + c[0] - slide_from[0], slid[1] + c[1] - slide_from[1], 0};
-    if (is) slide_from = c;
-    sliding = is;
+    if (slipping(from)) {
+      const Vec3 c = slip_point(from, z);
+      slid = {slid[0] + c[0] - slip_from[0], slid[1] + c[1] - slip_from[1], 0};
+    }
+    if (slipping(to)) slip_from = slip_point(to, z);
+    current = to;
   }
 
   void row(double t, const Model::Mode& m, const Model::State& z, const char* event = nullptr) const {
@@ -53,10 +61,10 @@ class Body3dWatch final : public Observer<Model> {
   }
   void track(double t, const Model::State& z) {
     res.max_abs_energy_error = std::fmax(res.max_abs_energy_error, std::fabs(model.balance(z) - res.initial_energy));
-    if (sliding) {
-      const Vec3 c = base_centre(model, z);
+    if (slipping(current)) {
+      const Vec3 c = slip_point(current, z);
       res.max_slide =
-          std::fmax(res.max_slide, std::hypot(slid[0] + c[0] - slide_from[0], slid[1] + c[1] - slide_from[1]));
+          std::fmax(res.max_slide, std::hypot(slid[0] + c[0] - slip_from[0], slid[1] + c[1] - slip_from[1]));
     }
     const double tilt = model.tilt(z);
     if (tilt > res.max_tilt) {
@@ -114,14 +122,14 @@ class Body3dWatch final : public Observer<Model> {
     if ((kind == Body3dEventKind::GroundBreak || kind == Body3dEventKind::SlipTurn) && !e.stop) return true;
     if (kind == Body3dEventKind::Impact) ++res.impacts;
     if (res.first_uplift_time < 0 && lifts(e.from, e.to)) res.first_uplift_time = e.t;
-    if (res.first_slide_time < 0 && e.to.contact == BodyContact::Slide) res.first_slide_time = e.t;
+    if (res.first_slide_time < 0 && slipping(e.to)) res.first_slide_time = e.t;
     if (kind == Body3dEventKind::Overturn) {
       res.overturn_time = e.t;
       res.overturn_azimuth = tilt_azimuth_deg(e.z);
     }
     if (e.stop) res.note = Model::stop_reason(e.from, e.index, kind);
     slide_changes(e.from, e.to, e.z);
-    const Body3dEventRecord rec{{e.t, kind}, e.from.contact, e.to.contact, e.z};
+    const Body3dEventRecord rec{{e.t, kind}, e.from.contact, e.to.contact, e.from.slipping, e.to.slipping, e.z};
     if (o.events)
       o.events->on_event(rec);
     else
@@ -164,7 +172,7 @@ Body3dResult simulate_body3d(const BodyOnGround& model, BodyOnGround::State z, c
     res.note = Model::stop_reason(mode, kBreakpoint, Body3dEventKind(start.kind));
   } else {
     if (lifts(mode, start.next)) res.first_uplift_time = 0;
-    if (start.next.contact == BodyContact::Slide) res.first_slide_time = 0;
+    if (Body3dWatch::slipping(start.next)) res.first_slide_time = 0;
     watch.slide_changes(Model::Mode{}, start.next, z);
     mode = start.next;
     Simulation<Model> sim(model, o.integ, t, mode, z);

@@ -16,7 +16,8 @@ namespace blockdyn {
 
 struct Body3dEventRecord : EventRecordCore<Body3dEventKind> {
   BodyContact from, to;
-  BodyOnGround::State z;  // after the event (after an impact's jump)
+  unsigned char from_slipping = 0, to_slipping = 0;  // the contact's slipping points (BodyOnGroundMode)
+  BodyOnGround::State z{};                           // after the event (after an impact's jump)
 };
 
 // A trajectory row: time, mode and state; at an event its kind (after the event's transition).
@@ -41,7 +42,9 @@ struct Body3dResult : RunResult {
   BodyOnGround::State z{};
   BodyOnGroundMode mode{};
   double overturn_time = -1, first_uplift_time = -1, first_slide_time = -1, max_tilt = 0;
-  double max_slide = 0;  // m: the largest horizontal distance of the base's centre from its start
+  // m: the largest length of the slip so far, the slipping point's displacements on the ground (the
+  // base's centre sliding flat, the corner or the edge's midpoint slipping) summed over the slips
+  double max_slide = 0;
   double max_tilt_azimuth = 0, overturn_azimuth = 0;  // deg: where the body leans, from x towards y
   double initial_energy = 0;                          // of the closed balance (J)
   std::vector<Body3dEventRecord> events;              // when no sink is given

@@ -37,7 +37,7 @@ std::array<double, 4> solve4(std::array<std::array<double, 4>, 4> a, std::array<
 }  // namespace
 
 BaseSlide base_slide(double b, double d, double c, double mass, double inertia_z, double mu_k, double yaw,
-                     const Vec3& v, double omega_z, const Vec3& f, const Vec3& reference, double noise) {
+                     const Vec3& v, double omega_z, const Vec3& f, const Vec3& reference, double noise, int unloaded) {
   const double cy = std::cos(yaw), sy = std::sin(yaw), reach = base_reach(b, d);
   // Past the slip's reversal (its generalised velocity against the reference: only past a stick,
   // which the slide's event ends) the friction keeps its direction.
@@ -67,7 +67,7 @@ BaseSlide base_slide(double b, double d, double c, double mass, double inertia_z
     a[0][i] = 1;
     a[1][i] = py[i] - c * mu_k * dir_body[i][1];
     a[2][i] = c * mu_k * dir_body[i][0] - px[i];
-    a[3][i] = (i == 0 || i == 3) ? 1 : -1;
+    a[3][i] = unloaded >= 0 ? (i == unloaded ? 1 : 0) : (i == 0 || i == 3) ? 1 : -1;
   }
   BaseSlide s;
   s.load = solve4(a, {-mass * f[2], 0, 0, 0});

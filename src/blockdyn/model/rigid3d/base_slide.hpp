@@ -5,9 +5,9 @@
 // about the vertical as well as translating. A rigid base on rigid ground is statically
 // indeterminate; the corner loads are the linear pressure over the base sampled at its corners
 // (three unknowns for the three equations: the weight, and no tilting moment about the centroid
-// in x and y), which gives the rocking thresholds of the standing box (a corner pair's load
-// reaches zero exactly where rocking about the opposite edge begins) and makes a slide in closed
-// form where the planar block's is (docs/3d.md). Vectors in the ground's frame unless _body.
+// in x and y); where that pressure would pull at a corner, the other three bear it. That gives the rocking thresholds
+// of the standing box (a corner pair's load reaches zero exactly where rocking about the opposite edge begins) and
+// makes a slide in closed form where the planar block's is (docs/3d.md). Vectors in the ground's frame unless _body.
 #include <array>
 #include <cmath>
 
@@ -33,8 +33,11 @@ struct BaseSlide {
 // rounding, and a slip that small is at its stick, reached along the reference. A slip against
 // the reference (past a stick) keeps the friction's direction: the slide's smooth continuation,
 // which the integrator steps across to locate the stick.
+// With `unloaded` >= 0 that corner carries nothing and the other three bear the base (three
+// unknowns, three equations: determinate); the linear pressure's condition is dropped.
 BaseSlide base_slide(double b, double d, double c, double mass, double inertia_z, double mu_k, double yaw,
-                     const Vec3& v, double omega_z, const Vec3& f, const Vec3& reference, double noise);
+                     const Vec3& v, double omega_z, const Vec3& f, const Vec3& reference, double noise,
+                     int unloaded = -1);
 
 // The base's half diagonal sqrt(b^2 + d^2) / 2: the length that makes the spin a velocity in the
 // slip's generalised velocity (vx, vy, L omega_z).

@@ -68,6 +68,7 @@ Tr BodyOnGround::transition(double t, const Mode& m, State& z, int event) const 
 Tr BodyOnGround::mode_change(double t, const Mode& m, State& z, int event) const {
   if (m.contact == BodyContact::Slide)
     return event == kBreakpoint ? Tr{m, false, int(Body3dEventKind::GroundBreak)} : slide_change(t, m, z, event);
+  if (m.slips()) return contact_slip_change(t, m, z, event);
   switch (event) {
     case kBreakpoint:
       if (m.contact == BodyContact::Rest && !rest_holds(t, m.yaw)) return leave_rest(t, z);
@@ -80,7 +81,9 @@ Tr BodyOnGround::mode_change(double t, const Mode& m, State& z, int event) const
       return {m, true, int(Body3dEventKind::Overturn)};
     case kEvSlipA:
     case kEvSlipB:
-      return {m, true, int(Body3dEventKind::SlipOnset)};
+      // A box's edge or corner slips; a rim point's slip is not modelled yet.
+      if (body_.shape != BodyShape3d::Box) return {m, true, int(Body3dEventKind::SlipOnset)};
+      return stick_or_slip(t, m, z, int(Body3dEventKind::Slip), false);
     default:
       return impact(t, m, z, event);
   }
@@ -127,26 +130,38 @@ Tr BodyOnGround::contact_after_impact(double t, const Mode& from, State& z, int)
     return -1;
   };
   if (const int i = sinking(); i >= 0) {
-    if (next.contact == BodyContact::Line) return settle(t, z = before);
-    next = line_mode(r, x, corner(fresh[0]), corner(i), fresh[0], i);
-    z = before;
-    conserve_momentum_about(next, z);
-    if (sinking() >= 0) return settle(t, z = before);
+    if (next.contact == BodyContact::Line) {
+      // A line landing drives the old line back into the ground (a slipping body lands with its
+      // sliding velocity): the old line's impact follows at the same instant, as in the planar
+      // block; if that drives the new one down again, the base lands flat.
+      if (from.contact != BodyContact::Line || from.half_length == 0) return settle(t, z = before);
+      const Mode old = line_mode(r, x, from.point_a, from.point_b, from.corner_a, from.corner_b);
+      conserve_momentum_about(old, z);
+      for (int c : fresh)
+        if ((z[kVz] + cross(vec_at(z, kWx), r * corner(c))[2]) < -v_tol) return settle(t, z = before);
+      next = old;
+    } else {
+      next = line_mode(r, x, corner(fresh[0]), corner(i), fresh[0], i);
+      z = before;
+      conserve_momentum_about(next, z);
+      if (sinking() >= 0) return settle(t, z = before);
+    }
   }
   z[kWorkImpact] += energy(z) - body_.mass * body_.g * z[kZ] - ke;
   complete(next, z);
   if (pulls_away(t, next, z)) {
-    // Sticking would pull on the ground; but if in flight the contact point (at rest after the
-    // impact) accelerates into the ground, neither holds: Painleve's paradox of a rigid contact
-    // with large friction (it would slide). The run stops there rather than loop.
+    // Sticking would pull on the ground: the body flies if the contact point (at rest after the
+    // impact) rises in flight, else the contact slips if a slip is consistent (a box); neither:
+    // Painleve's paradox of a rigid contact with large friction. The run stops there.
     Mode flight{BodyContact::Flight};
     State d;
     rhs(t, flight, z, d);
     const Vec3 arm = minus(next.pivot, vec_at(z, kX));
     const Vec3 w = vec_at(z, kWx);
     const double a_contact = (plus(vec_at(d, kVx), plus(cross(vec_at(d, kWx), arm), cross(w, cross(w, arm)))))[2];
-    if (a_contact < 0) return {from, true, int(Body3dEventKind::Painleve)};
-    return {flight, false, int(Body3dEventKind::Impact)};
+    if (a_contact >= 0) return {flight, false, int(Body3dEventKind::Impact)};
+    const Tr slip = stick_or_slip(t, next, z, int(Body3dEventKind::Impact), false);
+    return slip.stop || !slip.next.slips() ? Tr{from, true, int(Body3dEventKind::Painleve)} : slip;
   }
   // Impacts accumulate in finite time (a geometric series of swings shrinking by e each): once
   // the time they have left is below the accumulation horizon, the body is at rest.
@@ -162,7 +177,8 @@ Tr BodyOnGround::contact_after_impact(double t, const Mode& from, State& z, int)
     const double horizon = std::fmax(kAccumulationTime * std::sqrt(size_ / body_.g), 1e-12 * std::fabs(t) / (1 - e));
     if (e < 1 && decel > 0 && 2 * std::sqrt(dot(w, w)) / (decel * (1 - e)) < horizon) return settle(t, z);
   }
-  return {next, false, int(Body3dEventKind::Impact)};
+  // The new contact, at rest after the impact, sticks if friction holds it, else slips.
+  return stick_or_slip(t, next, z, int(Body3dEventKind::Impact));
 }
 
 BodyOnGround::State initial_state(const Body3d& b, const Body3dStart& s) {

@@ -58,6 +58,8 @@ const char* to_string(Body3dEventKind k) {
       return "stick";
     case Body3dEventKind::SlipTurn:
       return "slip_turn";
+    case Body3dEventKind::Slip:
+      return "slip";
   }
   return "?";
 }
@@ -96,6 +98,7 @@ void BodyOnGround::rhs(double t, const Mode& m, const State& z, State& dz) const
   dz.fill(0.0);
   if (m.contact == BodyContact::Rest) return;
   if (m.contact == BodyContact::Slide) return slide_rhs(t, m, z, dz);
+  if (m.slips()) return contact_slip_rhs(t, m, z, dz);
   const Mat3 r = rotation(quat_at(z, S::kQw));
   const Vec3 w = vec_at(z, kWx), v = vec_at(z, kVx), f = specific_force(t);
   const Quat dq = Quat{0, w[0], w[1], w[2]} * quat_at(z, S::kQw);
@@ -122,6 +125,7 @@ void BodyOnGround::events(double t, const Mode& m, const State& z, std::array<do
   g.fill(1.0);
   if (m.contact == BodyContact::Rest) return;
   if (m.contact == BodyContact::Slide) return slide_events(t, m, z, g);
+  if (m.slips()) return contact_slip_events(t, m, z, g);
   const Mat3 r = rotation(quat_at(z, S::kQw));
   if (m.contact == BodyContact::Flight) {
     g[kEvTouchdown] = z[kZ] - lowest_point(body_, r).depth;
@@ -167,6 +171,7 @@ void BodyOnGround::events(double t, const Mode& m, const State& z, std::array<do
 }
 
 void BodyOnGround::complete(const Mode& m, State& z) const {
+  if (m.slips()) return contact_slip_complete(m, z);
   Quat q = quat_at(z, S::kQw);
   if (m.contact == BodyContact::Slide) q.x = q.y = 0;  // flat: turned about the vertical only
   q = normalized(q);
@@ -226,6 +231,10 @@ std::array<Vec3, 2> BodyOnGround::contact_forces(double t, const Mode& m, const 
       total = plus(total, {s.motion.friction[i][0], s.motion.friction[i][1], s.motion.load[i]});
     return {total, Vec3{}};
   }
+  if (m.slips()) {
+    const SlipContactMotion sm = contact_slip_motion(t, m, z);
+    return {sm.force[0], m.contact == BodyContact::Line ? sm.force[1] : Vec3{}};
+  }
   const Mat3 r = rotation(quat_at(z, S::kQw));
   const Vec3 s = pivot_to_centroid(m), w = vec_at(z, kWx);
   if (m.contact == BodyContact::Point) return {point_pivot_motion(inertia_, body_.mass, r, s, w, f).force, Vec3{}};
@@ -233,6 +242,13 @@ std::array<Vec3, 2> BodyOnGround::contact_forces(double t, const Mode& m, const 
   if (m.half_length == 0) return {pm.force, Vec3{}};
   const LineLoads ll = split_line_reaction(pm.force, pm.moment, m.axis, m.half_length);
   return {ll.plus, ll.minus};
+}
+
+Vec3 BodyOnGround::contact_point(const Mode& m, const State& z) const {
+  if (m.contact != BodyContact::Line && m.contact != BodyContact::Point) return {NAN, NAN, NAN};
+  if (!m.slips()) return m.pivot;
+  const Vec3 mid = m.contact == BodyContact::Line ? scaled(plus(m.point_a, m.point_b), 0.5) : m.point_a;
+  return plus(vec_at(z, kX), rotation(quat_at(z, S::kQw)) * mid);
 }
 
 }  // namespace blockdyn

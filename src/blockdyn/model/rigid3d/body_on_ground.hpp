@@ -1,14 +1,15 @@
 // SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The rigid3d body on rigid ground (docs/3d.md), one hybrid model over its contact modes: at
-// rest on its base; rocking about a base edge (two corners sticking) or, for a cylinder, about a
-// rim point and its tangent; pivoting on one sticking corner; in flight. Each mode's events are
-// located on the dense output: a contact point's load reaching zero (a corner lifts, the body
-// takes off), a base point touching the ground (an impact), the friction a contact needs
-// reaching mu_s (sliding starts: not modelled yet, the run stops there; a point carrying less
-// than 1 % of the load is not checked: it is about to lift, and the friction so small a load
-// could give is not what keeps it), the base standing
-// vertical (overturn). At an impact the angular momentum about the new contact is conserved
+// rest on its base; sliding on it (a box); rocking about a base edge (two corners) or, for a
+// cylinder, about a rim point and its tangent; pivoting on one corner; a box's edge or corner
+// sticking or slipping (Coulomb, contact_slip.hpp); in flight. Each mode's events are located on
+// the dense output: a contact point's load reaching zero (a corner lifts, the body takes off), a
+// base point touching the ground (an impact), the friction a sticking contact needs reaching
+// mu_s (it slips; a point carrying less than 1 % of the load is not checked: it is about to lift,
+// and the friction so small a load could give is not what keeps it), a slip ending (it sticks, or
+// slips on the other way), no load being consistent with the slip (Painleve: the run stops), the
+// base standing vertical (overturn). At an impact the angular momentum about the new contact is conserved
 // (Housner's law in 3D); a sequence of impacts that accumulates ends at rest. The exit from rest
 // is found on the ground motion itself (excitation/rest_exit.hpp) at its first crossing.
 // State in the ground's frame: as BodyFlight's, then the ground's work and the impacts' loss (J).
@@ -21,6 +22,7 @@
 #include "blockdyn/model/rigid3d/base_slide.hpp"
 #include "blockdyn/model/rigid3d/body_rest.hpp"
 #include "blockdyn/model/rigid3d/body_shape.hpp"
+#include "blockdyn/model/rigid3d/contact_slip.hpp"
 
 namespace blockdyn {
 
@@ -39,9 +41,17 @@ struct BodyOnGroundMode {
   double released_t = 0;             // (its touch is first looked for a rounding's height below)
   double impact_t = -1;              // the last impact's time, and how many came within
   int rapid_impacts = 0;             // kInstant of the one before (an accumulation at an instant)
+  // Line or Point: which of its points slip on the ground (bit 0: a, bit 1: b; 0: both stick).
+  // A point that sticks while the other slips stays at `pivot` (world).
+  unsigned char slipping = 0;
+  // slide: the base corner that carries no load, the base bearing on the other three (-1: on all
+  // four, the linear pressure).
+  int unloaded = -1;
   // slide: the unit direction of the slip's generalised velocity (vx, vy, L omega_z) it was last
-  // seen in (base_slide.hpp): the slide ends where the slip's component along it reaches zero.
-  Vec3 slip_ref{};
+  // seen in (slip_reference.hpp): the slide ends where its component along it reaches zero. A
+  // slipping point a (b): the direction of its slip velocity, likewise.
+  Vec3 slip_ref{}, slip_ref_b{};
+  bool slips() const { return slipping != 0; }
 };
 
 enum class Body3dEventKind : int {
@@ -50,13 +60,14 @@ enum class Body3dEventKind : int {
   LiftOff,      // the body leaves the ground
   Rest,         // an accumulation of impacts ends at rest
   Overturn,     // the base stands vertical
-  SlipOnset,    // a contact needs more than mu_s: sliding (not modelled yet; the run stops)
+  SlipOnset,    // a rim contact needs more than mu_s: its slip is not modelled yet (the run stops)
   NotModelled,  // rolling on the rim, a chatter it cannot resolve (the run stops)
   GroundBreak,  // a breakpoint of the ground motion
   Invalid,      // the ground pulls down faster than g
   Painleve,     // at a new contact neither sticking nor lifting is consistent (the run stops)
   Stick,        // a slide ends: the base sticks (at rest, or sliding on in another direction)
   SlipTurn,     // a slide's direction turned by 60 degrees from its reference: a new reference (no event)
+  Slip,         // a box's edge or corner starts slipping (or slips on the other way)
 };
 const char* to_string(Body3dEventKind k);
 
@@ -100,9 +111,12 @@ class BodyOnGround {
     kEvTouch0,                  // the heights of the base points not in contact (box: 4; rim: the opposite point);
     kEvTouch3 = kEvTouch0 + 3,  // slide: the four corners' loads
     kEvOverturn,                // R33: the base vertical
-    kEvSlipA,                   // mu_s N - |T| at each contact point; slide: the slip along its reference
-    kEvSlipB,                   // slide: the slip's turn from its reference (60 degrees)
+    kEvSlipA,                   // mu_s N - |T| at each sticking contact point (a, b); a slipping point: its
+    kEvSlipB,                   // slip along its reference; slide: the slip along its reference, its turn
     kEvTouchdown,               // flight: the lowest base point's height
+    kEvPainleve,                // slipping edge or corner: the loads' consistency (Painleve where it is zero)
+    kEvTurnA,                   // a slipping point's turn from its reference (60 degrees): a, b
+    kEvTurnB,
     kNumEventsB
   };
   static constexpr std::size_t kDim = kDimB;
@@ -139,11 +153,13 @@ class BodyOnGround {
   // (constant).
   double energy(const State& z) const;
   double balance(const State& z) const { return energy(z) - z[kWorkGround] - z[kWorkImpact] - z[kWorkFriction]; }
-  // A sliding base's predicted time to its stick (where its slip would reverse: the friction
-  // jumps there), for the integrator's step control; infinity in the other modes.
+  // A slip's predicted time to its stick (where it would reverse: the friction jumps there), for
+  // the integrator's step control; infinity in the other modes.
   double kink_ahead(double t, const Mode& m, const State& z, const State& dz) const;
   // The ground's reaction (N) at the contact points of m (a and b), world frame.
   std::array<Vec3, 2> contact_forces(double t, const Mode& m, const State& z) const;
+  // Where the body touches the ground (world; a line's midpoint), NaN off it or on its base.
+  Vec3 contact_point(const Mode& m, const State& z) const;
   double tilt(const State& z) const;  // rad: e3 from Z
 
   // The mode of a body at state z touching the ground where it does (rest, a line, a corner or
@@ -184,6 +200,45 @@ class BodyOnGround {
   void slide_events(double t, const Mode& m, const State& z, std::array<double, kNumEvents>& g) const;
   Transition<Mode> slide_change(double t, const Mode& m, State& z, int event) const;
   Transition<Mode> start_slide(double t, const State& z, const Vec3& towards) const;
+  // The base sliding flat, corner k's load reaches zero: it bears on the other three, or tips onto
+  // the edge or corner still loaded, its points slipping as they move.
+  Transition<Mode> unload_in_slide(double t, const Mode& m, const State& z, int k) const;
+  Transition<Mode> tip_from_slide(double t, const Mode& m, const State& z, const int* support, int n) const;
+  // Contact c with its points slipping the way they move (those at rest: as c has them).
+  Mode moving_contact(const Mode& c, const State& z) const;
+  // A box's edge or corner with a point slipping (contact_slip.hpp, body_contact_slip.cpp): the
+  // points' arms and horizontal velocities, the motion, its events and mode changes.
+  struct ContactSlip {
+    ContactPoints points;
+    std::array<Vec3, 2> slip{};  // each point's horizontal velocity
+  };
+  ContactSlip contact_slip_of(const Mode& m, const State& z) const;
+  SlipContactMotion contact_slip_motion(double t, const Mode& m, const State& z) const;
+  // The slipping points' horizontal accelerations.
+  std::array<Vec3, 2> contact_slip_rates(double t, const Mode& m, const State& z) const;
+  void contact_slip_rhs(double t, const Mode& m, const State& z, State& dz) const;
+  void contact_slip_events(double t, const Mode& m, const State& z, std::array<double, kNumEvents>& g) const;
+  void contact_slip_complete(const Mode& m, State& z) const;
+  Transition<Mode> contact_slip_change(double t, const Mode& m, State& z, int event) const;
+  // The contact `stick` at z (its points at rest) sticking if friction holds it (and may_stick),
+  // else with the points that friction cannot hold slipping the way the motion takes them
+  // (reported as `kind`, or as Slip where it was Mode).
+  Transition<Mode> stick_or_slip(double t, const Mode& stick, const State& z, int kind, bool may_stick = true) const;
+  // The contact m (from `stick`, its points at rest) with the points of `mask` slipping, their
+  // directions the fixed point of the slip's acceleration.
+  Mode slipping_contact(double t, const Mode& stick, const State& z, unsigned mask) const;
+  // The direction point i of m starts slipping in, at rest at z: the one its slip accelerates in.
+  Vec3 slip_start_direction(double t, const Mode& m, const State& z, int i) const;
+  // Both ends of an edge starting to slip together: their directions, solved together.
+  void joint_start_directions(double t, Mode& m, const State& z) const;
+  // Whether contact m is consistent at z (loads, friction, the slip's directions; `lifted` a
+  // corner that leaves the ground, rising).
+  bool consistent_contact(double t, const Mode& m, const State& z, int lifted) const;
+  // The corners off m's contact that touch the ground (flat: a base tipping) do not accelerate
+  // into it.
+  bool flat_corners_rise(double t, const Mode& m, const State& z) const;
+  // m's sticking points' friction margins (mu_s N - |T|, in m g): a and b (1 where none).
+  std::array<double, 2> stick_margins(double t, const Mode& m, const State& z) const;
   // Housner's law in 3D: the angular momentum about the new contact m conserved.
   void conserve_momentum_about(const Mode& m, State& z) const;
   void set_contact_velocity(const Mode& m, State& z) const;

@@ -12,6 +12,7 @@
 #include "blockdyn/model/rigid3d/body_on_ground.hpp"
 #include "blockdyn/model/rigid3d/body_pivot.hpp"
 #include "blockdyn/model/rigid3d/body_state.hpp"
+#include "blockdyn/model/rigid3d/slip_reference.hpp"
 
 namespace blockdyn {
 
@@ -19,17 +20,7 @@ namespace {
 using S = BodyOnGround;
 using Tr = Transition<BodyOnGroundMode>;
 
-// The slip's turn from its reference that takes a new one: cos 60 degrees.
-constexpr double kTurnCosine = 0.5;
-// A slip below this (in sqrt(g size)) at a turn is a stick.
-constexpr double kStickSlip = 1e-9;
-// A slip's direction is not followed below this size (in sqrt(g size)): it is the integration's
-// noise there (the velocities' absolute tolerance is 1e-12 of that scale), and a slip that small
-// is about to stick. The turn's event function is offset by it.
-constexpr double kSlipNoise = 1e-9;
-// A kink predicted closer than this share of the slip's own size (its minimum along the
-// linear extrapolation) is a stick ahead; farther, the slip only curves.
-constexpr double kStickAhead = 1e-3;
+using namespace slip_reference;
 
 double yaw_of(const Mat3& r) { return std::atan2(r[1][0], r[0][0]); }
 }  // namespace
@@ -48,7 +39,7 @@ BodyOnGround::SlideState BodyOnGround::slide_state(double t, const Mode& m, cons
   const Mat3 r = rotation(quat_at(z, S::kQw));
   const Vec3 f = specific_force(t);
   return {base_slide(body_.width, body_.depth, body_.half_height(), body_.mass, inertia_[2], mu_k_, yaw_of(r),
-                     vec_at(z, kVx), z[kWz], f, m.slip_ref, kSlipNoise * std::sqrt(body_.g * size_)),
+                     vec_at(z, kVx), z[kWz], f, m.slip_ref, kSlipNoise * std::sqrt(body_.g * size_), m.unloaded),
           f};
 }
 
@@ -78,20 +69,31 @@ void BodyOnGround::slide_events(double t, const Mode& m, const State& z, std::ar
     load += s.motion.load[i];
   }
   g[kEvLiftOff] = load / weight;
+  if (m.unloaded >= 0) {
+    // On three corners: the fourth bears again where the linear pressure would load it.
+    Mode four = m;
+    four.unloaded = -1;
+    g[kEvTouch0 + m.unloaded] = 1;
+    g[kEvLoadA] = -slide_state(t, four, z).motion.load[m.unloaded] / weight;
+  }
   const Vec3 u = slip_of(z);
-  const double along = dot(u, m.slip_ref);
-  g[kEvSlipA] = along / vs;
-  g[kEvSlipB] = (along - kTurnCosine * std::sqrt(dot(u, u))) / vs + kSlipNoise;
+  g[kEvSlipA] = along(u, m.slip_ref, vs);
+  g[kEvSlipB] = turn(u, m.slip_ref, vs);
 }
 
-double BodyOnGround::kink_ahead(double, const Mode& m, const State& z, const State& dz) const {
+double BodyOnGround::kink_ahead(double t, const Mode& m, const State& z, const State& dz) const {
+  if (m.slips()) {
+    // The first of the slipping points' sticks ahead.
+    const ContactSlip c = contact_slip_of(m, z);
+    const std::array<Vec3, 2> a = contact_slip_rates(t, m, z);
+    double tau = INFINITY;
+    for (int i = 0; i < c.points.n; ++i)
+      if (!c.points.sticks[i]) tau = std::fmin(tau, stick_ahead(c.slip[i], a[i]));
+    (void)dz;
+    return tau;
+  }
   if (m.contact != BodyContact::Slide) return INFINITY;
-  const Vec3 u = slip_of(z), du = {dz[kVx], dz[kVy], reach_ * dz[kWz]};
-  const double rate = dot(u, du), dd = dot(du, du);
-  if (!(rate < 0) || !(dd > 0)) return INFINITY;
-  const double tau = -rate / dd;
-  const Vec3 closest = plus(u, scaled(du, tau));
-  return dot(closest, closest) <= kStickAhead * kStickAhead * dot(u, u) ? tau : INFINITY;
+  return stick_ahead(slip_of(z), {dz[kVx], dz[kVy], reach_ * dz[kWz]});
 }
 
 Tr BodyOnGround::start_slide(double t, const State& z, const Vec3& towards) const {
@@ -104,7 +106,12 @@ Tr BodyOnGround::start_slide(double t, const State& z, const Vec3& towards) cons
 
 Tr BodyOnGround::slide_change(double t, const Mode& m, State& z, int event) const {
   if (event == kEvLiftOff) return {m, true, int(Body3dEventKind::Invalid)};
-  if (event >= kEvTouch0 && event <= kEvTouch3) return {m, true, int(Body3dEventKind::NotModelled)};
+  if (event >= kEvTouch0 && event <= kEvTouch3) return unload_in_slide(t, m, z, event - kEvTouch0);
+  if (event == kEvLoadA) {
+    Mode four = m;
+    four.unloaded = -1;
+    return {four, false, int(Body3dEventKind::Mode)};
+  }
   const Vec3 u = slip_of(z);
   // A turn located with the slip at its noise (a stick) is the stick.
   const double vs = std::sqrt(body_.g * size_);
@@ -123,6 +130,73 @@ Tr BodyOnGround::slide_change(double t, const Mode& m, State& z, int event) cons
   Tr tr = leave_rest(t, z);
   if (!tr.stop) tr.kind = int(Body3dEventKind::Stick);
   return tr;
+}
+
+Tr BodyOnGround::unload_in_slide(double t, const Mode& m, const State& z, int k) const {
+  // The corners without load: k, the one already unloaded, and any other at zero with k (to the
+  // tie). One alone, or a diagonal pair: the base bears on the other three; else it tips onto
+  // the corners still loaded.
+  constexpr double kLoadTieShare = 1e-9;
+  std::array<double, kNumEvents> g;
+  events(t, m, z, g);
+  unsigned off = 1u << unsigned(k);
+  if (m.unloaded >= 0) off |= 1u << unsigned(m.unloaded);
+  for (int i = 0; i < 4; ++i)
+    if (i != m.unloaded && g[kEvTouch0 + i] < kLoadTieShare) off |= 1u << unsigned(i);
+  const bool diagonal = off == 0b1001u || off == 0b0110u;
+  if (off == (1u << unsigned(k)) || diagonal) {
+    Mode three = m;
+    three.unloaded = k;
+    return {three, false, int(Body3dEventKind::Mode)};
+  }
+  int support[4], n = 0;
+  for (int i = 0; i < 4; ++i)
+    if (!(off & (1u << unsigned(i)))) support[n++] = i;
+  return tip_from_slide(t, m, z, support, n);
+}
+
+Tr BodyOnGround::tip_from_slide(double t, const Mode& m, const State& z, const int* support, int n) const {
+  // Onto the edge still loaded (or one of its ends), or onto the corner (or one of its edges):
+  // the first that keeps the other corners from sinking, its loads and friction consistent.
+  const Mat3 r = rotation(quat_at(z, S::kQw));
+  const Vec3 x = vec_at(z, kX);
+  Mode candidates[3];
+  int count = 0;
+  if (n == 2) {
+    const int p = support[0], q = support[1];
+    candidates[count++] = line_mode(r, x, corner(p), corner(q), p, q);
+  } else if (n == 1) {
+    const int o = support[0];
+    candidates[count++] = point_mode(r, x, corner(o), o);
+    candidates[count++] = line_mode(r, x, corner(o), corner(o ^ 1), o, o ^ 1);
+    candidates[count++] = line_mode(r, x, corner(o), corner(o ^ 2), o, o ^ 2);
+  }
+  for (int i = 0; i < count; ++i) {
+    const Tr tr = stick_or_slip(t, moving_contact(candidates[i], z), z, int(Body3dEventKind::Mode));
+    if (!tr.stop && flat_corners_rise(t, tr.next, z)) return tr;
+  }
+  return {m, true, int(Body3dEventKind::Painleve)};
+}
+
+BodyOnGroundMode BodyOnGround::moving_contact(const Mode& c, const State& z) const {
+  // The points in contact go on slipping as the base did; one at rest (the base spinning about
+  // it) holds or slips as friction decides.
+  Mode moving = c;
+  moving.slipping = c.contact == BodyContact::Line ? 3 : 1;
+  const ContactSlip s = contact_slip_of(moving, z);
+  unsigned mask = 0;
+  const double still = kSlipNoise * std::sqrt(body_.g * size_);
+  for (int k = 0; k < s.points.n; ++k) {
+    const double speed = std::sqrt(dot(s.slip[k], s.slip[k]));
+    if (speed <= still) continue;
+    mask |= 1u << unsigned(k);
+    (k == 0 ? moving.slip_ref : moving.slip_ref_b) = scaled(s.slip[k], 1.0 / speed);
+  }
+  if (mask == 0) return c;
+  moving.slipping = static_cast<unsigned char>(mask);
+  const Mat3 r = rotation(quat_at(z, S::kQw));
+  if (s.points.n == 2 && mask != 3) moving.pivot = plus(vec_at(z, kX), r * (mask == 1 ? c.point_b : c.point_a));
+  return moving;
 }
 
 }  // namespace blockdyn

@@ -96,22 +96,29 @@ BodyOnGroundMode BodyOnGround::mode_of(double t, const State& z) const {
     if (body_.shape == BodyShape3d::Box && dot(u, u) > 0) return slide_mode(z, scaled(u, 1.0 / std::sqrt(dot(u, u))));
     return rest;
   }
-  if (touching.size() == 2) return line_mode(r, x, corner(touching[0]), corner(touching[1]), touching[0], touching[1]);
-  return point_mode(r, x, corner(touching[0]), touching[0]);
+  const Mode contact = touching.size() == 2
+                           ? line_mode(r, x, corner(touching[0]), corner(touching[1]), touching[0], touching[1])
+                           : point_mode(r, x, corner(touching[0]), touching[0]);
+  // In contact on an edge or a corner the start takes the velocities the contact allows (docs/3d.md:
+  // a slipping start would need a tangential impact first); it slips if friction cannot hold it.
+  State still = z;
+  complete(contact, still);
+  const Tr tr = stick_or_slip(t, contact, still, int(Body3dEventKind::Mode));
+  return tr.stop ? contact : tr.next;
 }
 
 std::string BodyOnGround::stop_reason(const Mode& from, int event, Body3dEventKind kind) {
   if (kind == Body3dEventKind::Invalid)
     return "the ground accelerates downwards faster than g: the body resting on it would leave it";
   if (kind == Body3dEventKind::SlipOnset)
-    return "a contact needs more friction than mu_s: sliding on an edge, a corner or a cylinder's base is not "
-           "modelled yet";
+    return "a contact of the cylinder needs more friction than mu_s: the slip of its rim or base is not modelled "
+           "yet";
   if (kind == Body3dEventKind::Painleve)
-    return "Painleve: at the new contact sticking would pull on the ground and lifting would sink into it (the "
-           "contact would slide: not modelled yet)";
+    return from.slips() ? "Painleve: no normal load is consistent with the slipping contact (a rigid contact with "
+                          "this much friction has no solution there)"
+                        : "Painleve: at the new contact sticking would pull on the ground and lifting would sink into "
+                          "it";
   if (kind != Body3dEventKind::NotModelled) return "";
-  if (from.contact == BodyContact::Slide)
-    return "a corner's load reaches zero while the base slides: rocking while sliding is not modelled yet";
   if (event == kEvLoadA && from.contact == BodyContact::Line && from.half_length == 0)
     return "the cylinder's contact starts rolling along the rim: rolling is not modelled yet";
   if (event < 0)
@@ -136,9 +143,10 @@ Tr BodyOnGround::leave_rest(double t, const State& z) const {
     return {rim_mode(r, x, {-body_.radius * ab[0] / ah, -body_.radius * ab[1] / ah, -c}), false,
             int(Body3dEventKind::Mode)};
   const int bx = f.x_side > 0 ? 0 : 1, by = f.y_side > 0 ? 0 : 2;
-  if (f.x_side != 0 && f.y_side != 0) return {point_mode(r, x, corner(bx | by), bx | by), false, 0};
-  if (f.x_side != 0) return {line_mode(r, x, corner(bx), corner(bx | 2), bx, bx | 2), false, 0};
-  return {line_mode(r, x, corner(by), corner(by | 1), by, by | 1), false, 0};
+  const int mode = int(Body3dEventKind::Mode);
+  if (f.x_side != 0 && f.y_side != 0) return stick_or_slip(t, point_mode(r, x, corner(bx | by), bx | by), z, mode);
+  if (f.x_side != 0) return stick_or_slip(t, line_mode(r, x, corner(bx), corner(bx | 2), bx, bx | 2), z, mode);
+  return stick_or_slip(t, line_mode(r, x, corner(by), corner(by | 1), by, by | 1), z, mode);
 }
 
 Tr BodyOnGround::settle(double t, State& z) const {
@@ -177,7 +185,7 @@ Tr BodyOnGround::after_load_zero(double t, const Mode& m, State& z, int event) c
   next.released_t = t;
   set_contact_velocity(next, z);
   if (pulls_away(t, next, z)) return {Mode{BodyContact::Flight}, false, int(Body3dEventKind::LiftOff)};
-  return {next, false, int(Body3dEventKind::Mode)};
+  return stick_or_slip(t, next, z, int(Body3dEventKind::Mode));
 }
 
 }  // namespace blockdyn
