@@ -12,7 +12,7 @@ error. An SVG is written beside the PNG.
 
 from plotkit import figure_parser, legend_outside, np, plot_in_power_of_ten, plt, read_rows, save, shade_runs
 
-MODE_COLOURS = {"rest": "0.92", "slide": "#d4ecd4", "edge": "#fff2c2", "rim": "#fff2c2", "corner": "#ffd8b0",
+MODE_COLOURS = {"rest": "0.92", "slide": "#d4ecd4", "edge": "#fff2c2", "rim": "#fff2c2", "roll": "#fde0ef", "corner": "#ffd8b0",
                 "flight": "#e4d4ff"}
 
 

@@ -79,6 +79,8 @@ run $B simulate --model rigid --width 0.6 --height 1.8 --mass 150 --mu-s 0.35 --
 run $B simulate --model rigid3d --width 0.4 --depth 0.3 --height 1.2 --mass 250 --yaw 20 --tilt 0.15 \
   --tilt-azimuth 50 --angular-velocity 0,0,0.5 --mu-s 5 --t-end 3 --output-interval 0.005 \
   --plot "$F/rigid3d_wobble.png" --animate "$F/rigid3d_wobble.gif" --animate-frames 80
+run $B simulate --model rigid3d --shape cylinder --radius 0.15 --height 0.1 --mass 5 --tilt 0.3 \
+  --angular-velocity=-4,0.5,6 --mu-s 5 --t-end 3 --output-interval 0.005 --plot "$F/rigid3d_roll.png"
 run $B motion generate --model rezaeian --arias 3.888 --d5-95 12 --t-mid 10 --f-mid 2.5 --f-slope -0.05 --t-end 40 \
   --seed 2026 --count 2 --out "$D/bidirectional" --overwrite --quiet
 run $B simulate --model rigid3d --width 0.35 --depth 0.35 --height 1.2 --mass 250 --mu-s 100 --t-end 40 \

@@ -140,6 +140,8 @@ const char* mode_name(const Body3d& b, const BodyOnGroundMode& m) {
       return b.shape == BodyShape3d::Box ? "edge" : "rim";
     case BodyContact::Slide:
       return "slide";
+    case BodyContact::Roll:
+      return "roll";
   }
   return "?";
 }

@@ -69,6 +69,7 @@ Tr BodyOnGround::mode_change(double t, const Mode& m, State& z, int event) const
   if (m.contact == BodyContact::Slide)
     return event == kBreakpoint ? Tr{m, false, int(Body3dEventKind::GroundBreak)} : slide_change(t, m, z, event);
   if (m.slips()) return contact_slip_change(t, m, z, event);
+  if (m.contact == BodyContact::Roll) return roll_change(t, m, z, event);
   switch (event) {
     case kBreakpoint:
       if (m.contact == BodyContact::Rest && !rest_holds(t, m.yaw)) return leave_rest(t, z);

@@ -23,13 +23,15 @@
 #include "blockdyn/model/rigid3d/body_rest.hpp"
 #include "blockdyn/model/rigid3d/body_shape.hpp"
 #include "blockdyn/model/rigid3d/contact_slip.hpp"
+#include "blockdyn/model/rigid3d/rim_rolling.hpp"
 
 namespace blockdyn {
 
-enum class BodyContact : unsigned char { Rest, Flight, Line, Point, Slide };
+enum class BodyContact : unsigned char { Rest, Flight, Line, Point, Slide, Roll };
 
 // Which base points touch and how: Line holds two (box corners i and j, or one rim point and
-// its tangent), Point one corner. Body-frame points; world pivot and axis (fixed while in mode).
+// its tangent), Point one corner, Roll a cylinder's rim rolling (its contact point travelling). Body-frame points;
+// world pivot and axis (fixed while in mode).
 struct BodyOnGroundMode {
   BodyContact contact = BodyContact::Rest;
   int corner_a = -1, corner_b = -1;  // box corner indices (bit 0: +x, bit 1: +y); -1: a rim point
@@ -204,6 +206,12 @@ class BodyOnGround {
   // the edge or corner still loaded, its points slipping as they move.
   Transition<Mode> unload_in_slide(double t, const Mode& m, const State& z, int k) const;
   Transition<Mode> tip_from_slide(double t, const Mode& m, const State& z, const int* support, int n) const;
+  // A cylinder rolling on its rim (rim_rolling.hpp): motion, events, completion, mode changes.
+  RimRolling rolling(double t, const State& z) const;
+  void roll_rhs(double t, const State& z, State& dz) const;
+  void roll_events(double t, const State& z, std::array<double, kNumEvents>& g) const;
+  void roll_complete(State& z) const;
+  Transition<Mode> roll_change(double t, const Mode& m, State& z, int event) const;
   // Contact c with its points slipping the way they move (those at rest: as c has them).
   Mode moving_contact(const Mode& c, const State& z) const;
   // A box's edge or corner with a point slipping (contact_slip.hpp, body_contact_slip.cpp): the

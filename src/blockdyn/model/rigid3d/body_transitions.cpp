@@ -27,6 +27,9 @@ Tr stop(const BodyOnGroundMode& m, Body3dEventKind k) { return {m, true, int(k)}
 
 // Base points this close to the ground (in body sizes) touch it.
 constexpr double kTouchTolerance = 1e-11;
+// A cylinder starting on its rim with an angular velocity off the rim point's tangent above this
+// (in sqrt(g / size)) rolls.
+constexpr double kRollStart = 1e-12;
 
 }  // namespace
 
@@ -85,8 +88,13 @@ BodyOnGroundMode BodyOnGround::mode_of(double t, const State& z) const {
     rest.contact = BodyContact::Flight;
     return rest;
   }
-  if (body_.shape == BodyShape3d::Cylinder)
-    return r[2][2] >= 1 - 1e-15 ? rest : rim_mode(r, x, lowest_point(body_, r).body);
+  if (body_.shape == BodyShape3d::Cylinder) {
+    if (r[2][2] >= 1 - 1e-15) return rest;
+    // Turning about more than the rim point's tangent (a spin, a wobble): it rolls.
+    const Mode rim = rim_mode(r, x, lowest_point(body_, r).body);
+    const Vec3 w = vec_at(z, kWx), off = minus(w, scaled(rim.axis, dot(rim.axis, w)));
+    return std::sqrt(dot(off, off)) > kRollStart * std::sqrt(body_.g / size_) ? Mode{BodyContact::Roll} : rim;
+  }
   std::vector<int> touching;
   for (int i = 0; i < 4; ++i)
     if (z[kZ] + dot(r[2], corner(i)) <= tol) touching.push_back(i);
@@ -119,8 +127,6 @@ std::string BodyOnGround::stop_reason(const Mode& from, int event, Body3dEventKi
                         : "Painleve: at the new contact sticking would pull on the ground and lifting would sink into "
                           "it";
   if (kind != Body3dEventKind::NotModelled) return "";
-  if (event == kEvLoadA && from.contact == BodyContact::Line && from.half_length == 0)
-    return "the cylinder's contact starts rolling along the rim: rolling is not modelled yet";
   if (event < 0)
     return "the contact alternates between an edge and a corner at one instant: it would slide (not modelled "
            "yet)";
@@ -175,7 +181,8 @@ Tr BodyOnGround::settle(double t, State& z) const {
 
 Tr BodyOnGround::after_load_zero(double t, const Mode& m, State& z, int event) const {
   if (event == kEvLiftOff) return {Mode{BodyContact::Flight}, false, int(Body3dEventKind::LiftOff)};
-  if (m.half_length == 0) return stop(m, Body3dEventKind::NotModelled);
+  // A rim point that would need a moment: the contact starts rolling along the rim.
+  if (m.half_length == 0) return {Mode{BodyContact::Roll}, false, int(Body3dEventKind::Mode)};
   // One end of the line lifts: the body pivots on the other, unless that one pulls away too.
   const Mat3 r = rotation(quat_at(z, S::kQw));
   const Vec3 x = vec_at(z, kX);

@@ -1,0 +1,35 @@
+// SPDX-License-Identifier: Apache-2.0
+#pragma once
+// A cylinder rolling on its base rim without slipping (docs/3d.md): the material point of the rim
+// touching the ground has no velocity, v_G = -omega x r (r = P - G), while the contact point P
+// travels along the rim (the rim's lowest point, in closed form from the orientation). The
+// constraint at acceleration level, differentiated with the contact point moving,
+//   a_G + alpha x r + omega x (omega x r) + omega x (R p') = 0   (p' the contact point's rate
+//   along the rim, body frame),
+// with Newton-Euler m a_G = m f + F and I alpha = r x F - omega x I omega gives the reaction F
+// from a 3 x 3 symmetric positive definite system. A nonholonomic constraint: the position on
+// the ground is free, only the velocities are tied. Vectors in the ground's frame unless _body.
+#include "blockdyn/model/rigid3d/quaternion.hpp"
+
+namespace blockdyn {
+
+struct RimRolling {
+  Vec3 contact_body{};  // the rim's lowest point P (body frame)
+  Vec3 arm{};           // r = P - G (world)
+  Vec3 force{};         // the ground's reaction F (N)
+  Vec3 accel{};         // the centroid's acceleration
+  Vec3 domega{};        // the angular acceleration
+};
+
+// The rim's lowest point (body frame) of a cylinder of radius a whose base is c below G, at
+// orientation r: opposite the world's up seen in the body's base plane; its rate along the rim
+// (body frame) for the body turning at omega (world). The base must be tilted (not flat).
+Vec3 rim_lowest_point(double a, double c, const Mat3& r);
+Vec3 rim_point_rate(double a, const Mat3& r, const Vec3& omega);
+
+// The rolling motion of the body (principal inertias `inertia` about G, body frame; mass) at
+// orientation r turning at omega under the specific force f (m/s^2).
+RimRolling rim_rolling_motion(const Vec3& inertia, double mass, double a, double c, const Mat3& r, const Vec3& omega,
+                              const Vec3& f);
+
+}  // namespace blockdyn
