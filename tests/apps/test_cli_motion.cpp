@@ -10,6 +10,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "blockdyn/excitation/accelerogram.hpp"
 #include "cli_test.hpp"
 
 namespace {
@@ -217,6 +218,72 @@ TEST(CliMotion, GenerateBadInputIsAUsageError) {
       {{"motion", "generate", "--model", "pulse", "--pulse-period", "1", "--out", "o"}, "pulse-pgv"},
       {{"motion", "generate", "--arias", "0.5", "--t-mid", "5", "--f-mid", "4", "--t-end", "20", "--out", "o"},
        "d5-95"},
+  };
+  expect_usage_errors(cases, d.path);
+}
+
+TEST(CliMotion, ComponentsAreIndependentRecordsWithTheirOwnTargets) {
+  // Three components per record: each meets its own targets over the suite, the first is the
+  // single-component suite's record (the same stream), and the components are uncorrelated.
+  TmpDir d("motion_components");
+  const std::vector<std::string> base = {"motion",  "generate", "--arias", "0.5", "--d5-95", "8",  "--t-mid", "5",
+                                         "--f-mid", "4",        "--t-end", "20",  "--seed",  "11", "--json"};
+  auto with = [&](std::vector<std::string> extra) {
+    std::vector<std::string> a = base;
+    a.insert(a.end(), extra.begin(), extra.end());
+    return a;
+  };
+  const json j = cli_json(with({"--count", "40", "--components", "3", "--h2-arias", "0.3", "--v-arias", "0.1",
+                                "--v-f-mid", "8", "--out", "c"}),
+                          d.path);
+  ASSERT_FALSE(j.is_null());
+  EXPECT_EQ(j["components"], json::array({"h1", "h2", "v"}));
+  EXPECT_EQ(j["component_targets"]["v"]["f_mid"], 8.0);
+  const json single = cli_json(with({"--count", "40", "--out", "s"}), d.path);
+  ASSERT_FALSE(single.is_null());
+  std::vector<double> arias_h2, arias_v, correlation;
+  for (std::size_t k = 0; k < 40; ++k) {
+    const json& r = j["records"][k];
+    ASSERT_EQ(r["components"].size(), 3u);
+    EXPECT_EQ(r["components"]["h1"]["arias"], single["records"][k]["arias"]) << k;
+    arias_h2.push_back(r["components"]["h2"]["arias"].get<double>());
+    arias_v.push_back(r["components"]["v"]["arias"].get<double>());
+    const auto a = blockdyn::load_accelerogram(d.path + "/c/" + r["components"]["h1"]["file"].get<std::string>(), "h1");
+    const auto b = blockdyn::load_accelerogram(d.path + "/c/" + r["components"]["h2"]["file"].get<std::string>(), "h2");
+    double ab = 0, aa = 0, bb = 0;
+    for (std::size_t i = 0; i < a.size(); ++i) {
+      ab += a.values()[i] * b.values()[i];
+      aa += a.values()[i] * a.values()[i];
+      bb += b.values()[i] * b.values()[i];
+    }
+    correlation.push_back(ab / std::sqrt(aa * bb));
+  }
+  auto median = [](std::vector<double> v) {
+    std::sort(v.begin(), v.end());
+    return 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
+  };
+  EXPECT_NEAR(median(arias_h2), 0.3, 0.12 * 0.3);
+  EXPECT_NEAR(median(arias_v), 0.1, 0.12 * 0.1);
+  // Independent streams: the correlations scatter about zero (their spread over ~400 effective
+  // samples is about 0.05; the mean of 40 about 0.01).
+  double mean = 0;
+  for (double c : correlation) mean += c / double(correlation.size());
+  EXPECT_LT(std::fabs(mean), 0.04);
+  EXPECT_LT(*std::max_element(correlation.begin(), correlation.end(),
+                              [](double x, double y) { return std::fabs(x) < std::fabs(y); }),
+            0.3);
+  // A one-component suite over it removes its component files.
+  ASSERT_EQ(run_cli(with({"--count", "2", "--out", "c", "--overwrite"}), d.path).code, 0);
+  std::ifstream gone(d.path + "/c/rezaeian_0001_h2.AT2");
+  EXPECT_FALSE(gone.good());
+  const std::vector<std::pair<std::vector<std::string>, std::string>> cases{
+      {with({"--out", "o", "--components", "4"}), "components"},
+      {with({"--out", "o", "--components", "2", "--v-arias", "0.1"}), "v-arias"},
+      {with({"--out", "o", "--components", "3", "--v-f-mid", "8"}), "v-arias"},
+      {with({"--out", "o", "--components", "2", "--h2-arias", "-1"}), "h2-arias"},
+      {{"motion", "generate", "--model", "pulse", "--pulse-pgv", "1", "--pulse-period", "1", "--components", "2",
+        "--out", "o"},
+       "components"},
   };
   expect_usage_errors(cases, d.path);
 }

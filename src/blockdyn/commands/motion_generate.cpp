@@ -7,6 +7,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <array>
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
@@ -30,11 +31,17 @@ namespace blockdyn {
 using json = nlohmann::ordered_json;
 namespace {
 
+// The components of a multi-component suite: two horizontal principal components and the vertical.
+const char* const kComponentNames[] = {"h1", "h2", "v"};
+
 struct Plan {
   std::string model, out;
   bool background = false;  // rezaeian records (alone, or under the pulse)
-  RezaeianParams rz;
+  RezaeianParams rz;        // the record's (or the first component's) targets and filter
   Modulation q;
+  int components = 1;                 // 1, or 2 (h1, h2) or 3 (h1, h2, v)
+  std::array<RezaeianParams, 3> rzc;  // each component's targets and filter
+  std::array<Modulation, 3> qc;
   bool pulse = false;
   PulseParams pp;
   long count = 1;
@@ -49,11 +56,22 @@ std::size_t sample_count(const Plan& p) { return std::size_t(std::floor(p.rz.t_e
 // The bytes of one record's file: the header and at most 25 characters per sample, a newline per 5.
 double record_bytes(const Plan& p) { return 200.0 + 25.2 * double(sample_count(p)); }
 
+// Component c of record k draws its own stream: (seed, k + c 2^40); the first is the
+// single-component record's.
+std::uint64_t stream_index(std::size_t k, int c) { return std::uint64_t(k) + (std::uint64_t(c) << 40); }
+
 // Work and disk are bounded before anything runs: a record's filter terms, and the suite's size
 // against a budget and against the free space where it goes.
 constexpr double kMaxRecordTerms = 2e10;              // about a minute of one core per record
 constexpr double kMaxSuiteBytes = 16.0 * (1u << 30);  // 16 GiB of .AT2 files
 void check_work(const Plan& p) {
+  for (int c = 1; c < p.components; ++c) {
+    const double terms = rezaeian_record_cost(p.rzc[std::size_t(c)]);
+    if (terms > kMaxRecordTerms)
+      throw std::invalid_argument(std::string(kComponentNames[c]) + "-zeta-f, " + kComponentNames[c] +
+                                  "-f-mid: the filter's memory makes a record cost " + number_text(terms, 3) +
+                                  " kernel terms (at most 2e10): raise them");
+  }
   if (p.background) {
     const double terms = rezaeian_record_cost(p.rz);
     if (terms > kMaxRecordTerms)
@@ -63,7 +81,7 @@ void check_work(const Plan& p) {
                                   " kernel terms (at most 2e10): raise `zeta-f` or the filter frequency, or "
                                   "shorten `t-end`");
   }
-  const double bytes = double(p.count) * record_bytes(p);
+  const double bytes = double(p.count) * double(p.components) * record_bytes(p);
   if (bytes > kMaxSuiteBytes)
     throw std::invalid_argument(
         "count = " + std::to_string(p.count) + " records of " + std::to_string(sample_count(p)) + " samples need " +
@@ -79,6 +97,46 @@ void check_work(const Plan& p) {
     if (bytes > free_bytes)
       throw std::invalid_argument("out = '" + p.out + "': the suite needs " + number_text(std::round(bytes / 1e6)) +
                                   " MB and " + number_text(std::round(free_bytes / 1e6)) + " MB are free there");
+  }
+}
+
+// `components` and each extra component's targets (`h2-arias`, ..., `v-f-mid`; the first
+// component's where not given, the vertical's arias and f-mid required).
+void plan_components(const Settings& s, Plan& p) {
+  const long n = s.integer("components", 1);
+  if (n < 1 || n > 3) throw std::invalid_argument("components = " + std::to_string(n) + ": must be 1, 2 or 3");
+  p.components = int(n);
+  for (int c = 1; c < 3; ++c)
+    for (const char* o : kRezaeianOptions) {
+      const std::string name = std::string(kComponentNames[c]) + "-" + o;
+      if (s.has(name) && c >= p.components)
+        throw std::invalid_argument("`" + name + "` needs `components` " + std::to_string(c + 1));
+    }
+  p.rzc.fill(p.rz);
+  p.qc.fill(p.q);
+  if (p.components == 1) return;
+  if (!p.background || p.pulse)
+    throw std::invalid_argument("components = " + std::to_string(n) +
+                                ": the components are rezaeian records (`model` rezaeian)");
+  if (p.components == 3)
+    for (const char* o : {"arias", "f-mid"})
+      if (!s.has(std::string("v-") + o))
+        throw std::invalid_argument(std::string("`v-") + o + "`: components = 3 needs the vertical's own target");
+  for (int c = 1; c < p.components; ++c) {
+    RezaeianParams& r = p.rzc[std::size_t(c)];
+    const std::string pre = std::string(kComponentNames[c]) + "-";
+    r.arias = s.number(pre + "arias", r.arias);
+    r.d5_95 = s.number(pre + "d5-95", r.d5_95);
+    r.t_mid = s.number(pre + "t-mid", r.t_mid);
+    r.f_mid = s.number(pre + "f-mid", r.f_mid);
+    r.f_slope = s.number(pre + "f-slope", r.f_slope);
+    r.zeta_f = s.number(pre + "zeta-f", r.zeta_f);
+    try {
+      validate(r);
+    } catch (const std::invalid_argument& e) {
+      throw std::invalid_argument(pre + e.what());
+    }
+    p.qc[std::size_t(c)] = fit_modulation(r.arias, r.d5_95, r.t_mid, r.g);
   }
 }
 
@@ -133,6 +191,7 @@ Plan plan_of(const Settings& given) {
     require_in_range("t-end", p.rz.t_end, 10 * p.rz.dt, 1e4);
     require_in_range("g", p.rz.g, 0, 1e3, false);
   }
+  plan_components(s, p);
   p.count = s.integer("count", 1);
   if (p.count < 1 || p.count > 100000)
     throw std::invalid_argument("count = " + std::to_string(p.count) + ": must be in [1, 100000]");
@@ -157,7 +216,14 @@ bool is_suite_file(const std::string& name) {
   for (const char* model : {"rezaeian_", "pulse_"}) {
     const std::string m(model);
     if (stem.rfind(m, 0) != 0 || stem.size() < m.size() + 5 || stem.compare(stem.size() - 4, 4, ".AT2") != 0) continue;
-    const std::string digits = stem.substr(m.size(), stem.size() - m.size() - 4);
+    std::string digits = stem.substr(m.size(), stem.size() - m.size() - 4);
+    for (const char* c : {"_h1", "_h2", "_v"}) {
+      const std::string suffix(c);
+      if (digits.size() > suffix.size() && digits.compare(digits.size() - suffix.size(), suffix.size(), suffix) == 0) {
+        digits.resize(digits.size() - suffix.size());
+        break;
+      }
+    }
     if (!digits.empty() && std::all_of(digits.begin(), digits.end(), [](char c) { return c >= '0' && c <= '9'; }))
       return true;
   }
@@ -230,6 +296,22 @@ const std::vector<StudyOption>& motion_generate_options() {
       {"dt", "sample spacing [s]", "0.01"},
       {"t-end", "duration of every record [s]"},
       {"count", "number of records", "1"},
+      {"components",
+       "1, or 2 (two horizontal principal components h1, h2: NAME_0001_h1.AT2, ...) or 3 (and the "
+       "vertical v), each an independent record with its own targets",
+       "1"},
+      {"h2-arias", "h2's target Arias intensity [m/s] (default: arias)"},
+      {"h2-d5-95", "h2's target D5-95 [s] (default: d5-95)"},
+      {"h2-t-mid", "h2's t-mid [s] (default: t-mid)"},
+      {"h2-f-mid", "h2's filter frequency at t-mid [Hz] (default: f-mid)"},
+      {"h2-f-slope", "h2's filter frequency rate [Hz/s] (default: f-slope)"},
+      {"h2-zeta-f", "h2's filter damping (default: zeta-f)"},
+      {"v-arias", "v's target Arias intensity [m/s] (components 3)"},
+      {"v-d5-95", "v's target D5-95 [s] (default: d5-95)"},
+      {"v-t-mid", "v's t-mid [s] (default: t-mid)"},
+      {"v-f-mid", "v's filter frequency at t-mid [Hz] (components 3)"},
+      {"v-f-slope", "v's filter frequency rate [Hz/s] (default: f-slope)"},
+      {"v-zeta-f", "v's filter damping (default: zeta-f)"},
       {"seed", "seed of the suite (record k: its own stream of (seed, k))", "1"},
       {"g", "gravity [m/s^2]: the records are written in g", "9.81"},
       {"out", "directory for the records (NAME_0001.AT2, ...) and motions.json"}};
@@ -248,11 +330,15 @@ json motion_generate(const Settings& s, const std::function<void(std::size_t, st
   const std::size_t n = sample_count(p);
   const int width = std::max(4, int(std::to_string(p.count).size()));
   const std::string tmp_suffix = ".tmp." + std::to_string(::getpid());
-  std::vector<std::string> names(std::size_t(p.count));
-  for (std::size_t k = 0; k < names.size(); ++k) {
+  // Record k's files: NAME_k.AT2, or NAME_k_h1.AT2, NAME_k_h2.AT2 (, NAME_k_v.AT2).
+  const std::size_t nc = std::size_t(p.components);
+  std::vector<std::string> names(std::size_t(p.count) * nc);
+  for (std::size_t k = 0; k < std::size_t(p.count); ++k) {
     std::string digits = std::to_string(k + 1);
     digits.insert(0, std::size_t(std::max(0, width - int(digits.size()))), '0');
-    names[k] = p.model + "_" + digits + ".AT2";
+    for (std::size_t c = 0; c < nc; ++c)
+      names[k * nc + c] =
+          p.model + "_" + digits + (nc > 1 ? std::string("_") + kComponentNames[c] : std::string()) + ".AT2";
   }
   // Every record is made, checked and written under a temporary name; only when all are done do
   // they replace the suite (an error leaves the directory as it was).
@@ -264,24 +350,32 @@ json motion_generate(const Settings& s, const std::function<void(std::size_t, st
   std::vector<json> rows;
   try {
     rows = parallel_map<json>(std::size_t(p.count), p.threads, [&](std::size_t k) {
-      GeneratedRecord r;
-      if (p.background) r = rezaeian_record(p.rz, p.q, p.seed, k);
-      if (r.a.empty()) r.a.assign(n, 0.0);
-      if (p.pulse)
-        for (std::size_t i = 0; i < n; ++i) r.a[i] += pulse_acceleration(p.pp, double(i) * p.rz.dt, p.rz.g);
-      check_samples(p, r.a, k);
-      const std::string text =
-          at2_text(r.a, p.rz.dt, p.model + " record " + std::to_string(k + 1) + " of seed " + std::to_string(p.seed));
-      std::ofstream out(p.out + "/" + names[k] + tmp_suffix, std::ios::binary | std::ios::trunc);
-      out << text;
-      out.flush();
-      if (!out) throw std::runtime_error("cannot write '" + p.out + "/" + names[k] + "'");
-      // The file reads back to the very samples written; its measures are the record's.
-      const IntensityMeasures m = intensity_measures(Accelerogram(r.a, p.rz.dt, names[k]), p.rz.g);
-      json row = {{"file", names[k]}};
-      const json measures = measures_json(m);
-      for (auto it = measures.begin(); it != measures.end(); ++it) row[it.key()] = it.value();
-      row["baseline_correction"] = r.baseline_correction;
+      json row;
+      for (std::size_t c = 0; c < nc; ++c) {
+        const std::string& name = names[k * nc + c];
+        GeneratedRecord r;
+        if (p.background) r = rezaeian_record(p.rzc[c], p.qc[c], p.seed, stream_index(k, int(c)));
+        if (r.a.empty()) r.a.assign(n, 0.0);
+        if (p.pulse)
+          for (std::size_t i = 0; i < n; ++i) r.a[i] += pulse_acceleration(p.pp, double(i) * p.rz.dt, p.rz.g);
+        check_samples(p, r.a, k);
+        const std::string title = p.model + " record " + std::to_string(k + 1) +
+                                  (nc > 1 ? std::string(" component ") + kComponentNames[c] : std::string()) +
+                                  " of seed " + std::to_string(p.seed);
+        std::ofstream out(p.out + "/" + name + tmp_suffix, std::ios::binary | std::ios::trunc);
+        out << at2_text(r.a, p.rz.dt, title);
+        out.flush();
+        if (!out) throw std::runtime_error("cannot write '" + p.out + "/" + name + "'");
+        // The file reads back to the very samples written; its measures are the record's.
+        const IntensityMeasures m = intensity_measures(Accelerogram(r.a, p.rz.dt, name), p.rz.g);
+        json one = {{"file", name}};
+        const json measures = measures_json(m);
+        for (auto it = measures.begin(); it != measures.end(); ++it) one[it.key()] = it.value();
+        one["baseline_correction"] = r.baseline_correction;
+        // A multi-component record: the first component's file and measures, and every component's.
+        if (c == 0) row = one;
+        if (nc > 1) row["components"][kComponentNames[c]] = one;
+      }
       if (progress) {
         const std::lock_guard<std::mutex> lock(done_lock);
         progress(++done, std::size_t(p.count));
@@ -308,6 +402,17 @@ json motion_generate(const Settings& s, const std::function<void(std::size_t, st
   j["model"] = p.model;
   j["seed"] = p.seed;
   j["count"] = p.count;
+  if (p.components > 1) {
+    json names_of = json::array(), targets;
+    for (int c = 0; c < p.components; ++c) {
+      const RezaeianParams& r = p.rzc[std::size_t(c)];
+      names_of.push_back(kComponentNames[c]);
+      targets[kComponentNames[c]] = {{"arias", r.arias}, {"d5_95", r.d5_95},     {"t_mid", r.t_mid},
+                                     {"f_mid", r.f_mid}, {"f_slope", r.f_slope}, {"zeta_f", r.zeta_f}};
+    }
+    j["components"] = names_of;
+    j["component_targets"] = targets;
+  }
   j["dt"] = p.rz.dt;
   j["t_end"] = p.rz.t_end;
   j["g"] = p.rz.g;
