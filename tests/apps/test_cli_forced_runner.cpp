@@ -8,11 +8,14 @@
 #include <nlohmann/json.hpp>
 
 #include <chrono>
+#include <cmath>
+#include <fstream>
 #include <memory>
 #include <thread>
 
 #include "blockdyn/analysis/forced/fragility_study.hpp"
 #include "blockdyn/analysis/forced/rocking_spectrum.hpp"
+#include "blockdyn/analysis/sweep/point_table.hpp"
 #include "blockdyn/simulation/rigid_ground_model.hpp"
 #include "test_sweep_util.hpp"
 
@@ -322,6 +325,94 @@ TEST(ForcedRunner, FragilityBadInputIsAUsageError) {
       {{"fragility", "--records", "suite/*.AT2", "--levels", "0.1:1:3", "--bootstrap", "-1", "--width", "0.4",
         "--height", "1.7"},
        "bootstrap"},
+  };
+  expect_usage_errors(cases, d.path);
+}
+
+TEST(ForcedRunner, FragilityOfASuiteInComponentsAtIncidences) {
+  // Two-component records at three incidences on a 3D box: each run is `simulate` with both
+  // components scaled alike along the incidence, the measure the geometric mean of the two pgas,
+  // and the fits per incidence name the critical one.
+  TmpDir d("forced-fragility-3d");
+  ASSERT_EQ(run_cli({"motion",     "generate", "--arias", "1.2", "--d5-95", "5", "--t-mid",      "4",
+                     "--f-mid",    "2.5",      "--t-end", "10",  "--count", "4", "--components", "2",
+                     "--h2-arias", "0.8",      "--out",   "s3",  "--quiet"},
+                    d.path)
+                .code,
+            0);
+  const std::vector<std::string> args = {"fragility", "--model",  "rigid3d",   "--width", "0.4", "--height",
+                                         "1.2",       "--mu-s",   "0.7",       "--suite", "s3",  "--incidence",
+                                         "0:90:3",    "--levels", "0.1:0.4:3", "--t-end", "12",  "--bootstrap",
+                                         "0",         "--json",   "--quiet"};
+  const CliResult r = run_cli(args, d.path);
+  ASSERT_EQ(r.code, 0) << r.err;
+  const json j = json::parse(r.out);
+  EXPECT_EQ(j["definition"]["components"], json::array({"h1", "h2"}));
+  EXPECT_EQ(j["definition"]["incidences"], json::array({0.0, 45.0, 90.0}));
+  ASSERT_EQ(j["runs"].size(), 36u);  // 4 records x 3 incidences x 3 levels
+  ASSERT_EQ(j["incidences"].size(), 3u);
+  const double critical = j["critical_incidence"].get<double>();
+  EXPECT_TRUE(critical == 0.0 || critical == 45.0 || critical == 90.0);
+  std::ifstream mf(d.path + "/s3/motions.json");
+  const json motions = json::parse(mf);
+  int compared = 0;
+  for (const std::size_t i : {5u, 22u, 34u}) {
+    const json& run = j["runs"][i];
+    const std::size_t record = i / 9, incidence = (i / 3) % 3;
+    const json& c = motions["records"][record]["components"];
+    const double im = std::sqrt(c["h1"]["pga"].get<double>() * c["h2"]["pga"].get<double>());
+    EXPECT_DOUBLE_EQ(run["scale"].get<double>(), run["level"].get<double>() / im) << i;
+    const std::string scale = blockdyn::format_double(run["scale"].get<double>());
+    const CliResult sim = run_cli({"simulate",
+                                   "--model",
+                                   "rigid3d",
+                                   "--width",
+                                   "0.4",
+                                   "--depth",
+                                   "0.4",
+                                   "--height",
+                                   "1.2",
+                                   "--mass",
+                                   "100",
+                                   "--mu-s",
+                                   "0.7",
+                                   "--ground-h-record",
+                                   "s3/" + c["h1"]["file"].get<std::string>(),
+                                   "--ground-h2-record",
+                                   "s3/" + c["h2"]["file"].get<std::string>(),
+                                   "--ground-h-scale",
+                                   scale,
+                                   "--ground-h2-scale",
+                                   scale,
+                                   "--ground-azimuth",
+                                   blockdyn::format_double(45.0 * double(incidence)),
+                                   "--t-end",
+                                   "12",
+                                   "--json",
+                                   "--quiet"},
+                                  d.path);
+    ASSERT_EQ(sim.code, 0) << sim.err;
+    const json sj = json::parse(sim.out);
+    if (sj["status"] == "invalid") {
+      EXPECT_TRUE(run["overturned"].is_null()) << i;
+      continue;
+    }
+    EXPECT_EQ(run["overturned"].get<bool>(), sj["status"] == "overturned") << i;
+    EXPECT_EQ(run["max_abs_rotation"], sj["max_tilt"]) << i;
+    ++compared;
+  }
+  EXPECT_GE(compared, 2);
+  const std::vector<std::pair<std::vector<std::string>, std::string>> cases{
+      {{"fragility", "--suite", "s3", "--levels", "0.1:1:3", "--width", "0.4", "--height", "1.7"}, "rigid3d"},
+      {{"fragility", "--model", "rigid3d", "--suite", "s3", "--records", "s3/*.AT2", "--levels", "0.1:1:3", "--width",
+        "0.4", "--height", "1.2"},
+       "suite"},
+      {{"fragility", "--model", "rigid3d", "--suite", "none", "--levels", "0.1:1:3", "--width", "0.4", "--height",
+        "1.2"},
+       "suite"},
+      {{"fragility", "--model", "rigid3d", "--suite", "s3", "--incidence", "0:400:3", "--levels", "0.1:1:3", "--width",
+        "0.4", "--height", "1.2"},
+       "incidence"},
   };
   expect_usage_errors(cases, d.path);
 }

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <fstream>
 #include <memory>
 #include <optional>
 #include <stdexcept>
@@ -27,6 +28,10 @@ std::vector<StudyOption> fragility_options() {
   std::vector<StudyOption> o = forced_model_options();
   const std::vector<StudyOption> own = {
       {"records", "the suite: a glob of record files (PEER .AT2 or CSV), e.g. 'suite/*.AT2' (quoted)"},
+      {"suite",
+       "the suite: a directory written by `motion generate` (its motions.json), its records in one, two or three "
+       "components (rigid3d: h1 along `incidence`, h2 across it, v vertical; the measure the geometric mean of h1's "
+       "and h2's)"},
       {"im",
        "intensity measure: pga (g), pgv (m/s), sa:T (Sa at period T s, g) or pga-over-uplift (PGA / (g tan alpha))",
        "pga"},
@@ -99,6 +104,58 @@ std::string studied_object(const json& model) {
   return family;
 }
 
+// A suite's record files: h1 (or the records), and h2 and v where it has those components.
+struct SuiteRecords {
+  std::vector<std::string> h1, h2, v;
+  std::vector<std::string> component_names() const {
+    std::vector<std::string> c{"h1"};
+    if (!h2.empty()) c.push_back("h2");
+    if (!v.empty()) c.push_back("v");
+    return c;
+  }
+};
+SuiteRecords suite_records(const std::string& dir) {
+  json j;
+  std::ifstream file(dir + "/motions.json");
+  try {
+    if (!file) throw std::runtime_error("cannot open it");
+    j = json::parse(file);
+  } catch (const std::exception& e) {
+    throw std::invalid_argument("suite = '" + dir + "': no readable motions.json (" + e.what() + ")");
+  }
+  if (!j.contains("records") || !j["records"].is_array() || j["records"].empty())
+    throw std::invalid_argument("suite = '" + dir + "': its motions.json lists no records");
+  SuiteRecords s;
+  for (const json& r : j["records"]) {
+    if (!r.contains("components")) {
+      s.h1.push_back(dir + "/" + r.at("file").get<std::string>());
+      continue;
+    }
+    const json& c = r["components"];
+    s.h1.push_back(dir + "/" + c.at("h1").at("file").get<std::string>());
+    if (c.contains("h2")) s.h2.push_back(dir + "/" + c["h2"].at("file").get<std::string>());
+    if (c.contains("v")) s.v.push_back(dir + "/" + c["v"].at("file").get<std::string>());
+  }
+  if ((!s.h2.empty() && s.h2.size() != s.h1.size()) || (!s.v.empty() && s.v.size() != s.h1.size()))
+    throw std::invalid_argument("suite = '" + dir + "': its records do not all have the same components");
+  return s;
+}
+
+// `incidence` as one angle or A:B:N / a list (rigid3d; degrees); one 0 where not given.
+std::vector<double> incidences_of(const Settings& given) {
+  if (!given.has("incidence")) return {0.0};
+  const std::vector<double> v = parse_axis("incidence", given.text("incidence"), AxisSpacing::Linear).values;
+  for (double a : v) require_in_range("incidence", a, -360, 360);
+  return v;
+}
+// The forced model with `incidence` one angle of the study's.
+ForcedModel model_at_incidence(const Settings& given, double incidence) {
+  Settings s = given;
+  if (given.has("incidence")) s.set("incidence", format_double(incidence));
+  const StudyOptions so(s, fragility_options());
+  return forced_model_of(so);
+}
+
 // The runs as the runner's table holds them (row index: level fastest, then record).
 std::vector<FragilityRunOutcome> runs_of(const Table& t, std::size_t n_levels) {
   const std::size_t cl = t.column("level"), cr = t.column("record_im"), cs = t.column("scale"),
@@ -117,6 +174,36 @@ std::vector<FragilityRunOutcome> runs_of(const Table& t, std::size_t n_levels) {
     runs.push_back(o);
   }
   return runs;
+}
+
+// A 3D study's fits at each incidence, and the critical incidence: the one of the smallest fitted
+// median (where none fits, of the most overturned runs; ties: the first).
+void by_incidence(json& j, const std::vector<FragilityRunOutcome>& runs, const FragilitySuite& suite,
+                  const FragilityOptions& o) {
+  std::vector<double> angles;
+  for (std::size_t k = 0; k < suite.names.size(); ++k)
+    if (suite.incidence_index[k] == angles.size()) angles.push_back(suite.incidence[k]);
+  json all = json::array();
+  std::size_t critical = 0;
+  double best_median = INFINITY;
+  std::size_t most_overturned = 0;
+  bool any_fit = false;
+  for (std::size_t a = 0; a < angles.size(); ++a) {
+    FragilityOptions oa = o;
+    oa.bootstrap = 0;  // the band is the whole study's
+    const FragilityResult r = fragility_result_at_incidence(runs, suite, oa, a);
+    std::size_t overturned = 0;
+    for (const FragilityLevel& l : r.levels) overturned += l.n_overturned;
+    all.push_back({{"incidence", angles[a]}, {"fit", fit_json(r.fit, r.band, 0)}, {"n_overturned", overturned}});
+    const bool better =
+        r.fit.ok ? (!any_fit || r.fit.median < best_median) : (!any_fit && overturned > most_overturned);
+    if (better) critical = a;
+    if (r.fit.ok && (!any_fit || r.fit.median < best_median)) best_median = r.fit.median;
+    any_fit = any_fit || r.fit.ok;
+    most_overturned = std::max(most_overturned, overturned);
+  }
+  j["incidences"] = all;
+  j["critical_incidence"] = angles[critical];
 }
 
 // The report of the finished runs: the stripes, the fit and its band, the curve, the figure.
@@ -146,6 +233,7 @@ StudyReport fragility_report(const Table& t, const FragilitySuite& suite, const 
   }
   j["levels"] = lv;
   j["fit"] = fit_json(res.fit, res.band, int(o.bootstrap));
+  if (suite.three_dimensional()) by_incidence(j, res.runs, suite, o);
   j["curve"] = curve_json(res.curve);
   j["runs"] = runs;
   std::string curve;
@@ -179,7 +267,8 @@ GridStudy fragility_grid(const Settings& given, const std::string& output) {
   if (!so.given("levels")) throw std::invalid_argument("levels: give the intensity levels A:B:N or A,B,C");
   fo.levels = parse_axis("levels", so.text("levels"), AxisSpacing::Linear).values;
   for (double l : fo.levels) require_in_range("levels", l, 0, 1e6, false);
-  if (!so.given("records")) throw std::invalid_argument("records: give a glob of record files");
+  if (so.given("records") == so.given("suite"))
+    throw std::invalid_argument("records, suite: give one of them (a glob of record files, or a suite's directory)");
   fo.bootstrap = so.integer("bootstrap");
   const long seed = so.integer("seed");
   if (fo.bootstrap < 0 || fo.bootstrap > 100000) throw std::invalid_argument("bootstrap: must be in [0, 100000]");
@@ -189,25 +278,50 @@ GridStudy fragility_grid(const Settings& given, const std::string& output) {
   require_in_range("t-after", fo.t_after, 0, 1e4);
   if (so.given("t-end")) fo.t_end = so.number("t-end");
   if (fo.t_end) require_in_range("t-end", *fo.t_end, 0, 1e5, false);
-  const auto fm = std::make_shared<const ForcedModel>(forced_model_of(so));
+  const SuiteRecords in = so.given("suite") ? suite_records(so.text("suite"))
+                                            : SuiteRecords{expand_glob("records", so.text("records"), 100000), {}, {}};
+  const std::vector<double> incidences = incidences_of(given);
+  const auto fm = std::make_shared<const ForcedModel>(model_at_incidence(given, incidences.front()));
   const double g = given.number("g", 9.81);
-  const std::vector<std::string> files = expand_glob("records", so.text("records"), 100000);
-  std::vector<std::shared_ptr<const Accelerogram>> records;
-  for (const std::string& f : files)
-    records.push_back(std::make_shared<const Accelerogram>(load_accelerogram(f, "records")));
-  const auto suite = std::make_shared<const FragilitySuite>(fragility_suite(files, records, imm, g, fm->alpha));
+  auto load_all = [](const std::vector<std::string>& files) {
+    std::vector<std::shared_ptr<const Accelerogram>> out;
+    for (const std::string& f : files)
+      out.push_back(std::make_shared<const Accelerogram>(load_accelerogram(f, "suite")));
+    return out;
+  };
+  const auto h1 = load_all(in.h1), h2 = load_all(in.h2), vert = load_all(in.v);
+  const bool three_d = !h2.empty() || !vert.empty() || incidences.size() > 1;
+  std::shared_ptr<const FragilitySuite> suite;
+  if (three_d) {
+    if (!fm->run3)
+      throw std::invalid_argument("suite: records in components or several incidences need --model rigid3d");
+    std::vector<double> alphas;
+    for (double inc : incidences) alphas.push_back(model_at_incidence(given, inc).alpha);
+    suite = std::make_shared<const FragilitySuite>(fragility_suite_3d(in.h1, h1, h2, vert, incidences, alphas, imm, g));
+  } else {
+    suite = std::make_shared<const FragilitySuite>(fragility_suite(in.h1, h1, imm, g, fm->alpha));
+  }
   json digests = json::array();
-  for (const auto& r : suite->records) digests.push_back(r->digest());
+  for (const auto& r : h1) digests.push_back(r->digest());
+  for (const auto& r : h2) digests.push_back(r->digest());
+  for (const auto& r : vert) digests.push_back(r->digest());
   const std::string im = imm.text;
-  const json definition = {{"model", fm->description},
-                           {"records", suite->names},
-                           {"record_digests", digests},
-                           {"im", im},
-                           {"levels", fo.levels},
-                           {"t_end", fo.t_end ? json(*fo.t_end) : json(nullptr)},
-                           {"t_after", fo.t_after},
-                           {"damping", damping},
-                           {"index", "level fastest, then record"}};
+  json definition = {{"model", fm->description},
+                     {"records", suite->names},
+
+                     {"record_digests", digests},
+                     {"im", im},
+                     {"levels", fo.levels},
+                     {"t_end", fo.t_end ? json(*fo.t_end) : json(nullptr)},
+                     {"t_after", fo.t_after},
+                     {"damping", damping},
+                     {"index", "level fastest, then record"}};
+  if (three_d) {
+    // Each entry a record at an incidence (entry = record * incidences + incidence).
+    definition["components"] = in.component_names();
+    definition["incidences"] = incidences;
+    definition["index"] = "level fastest, then incidence, then record";
+  }
   GridStudy gs;
   gs.table = std::make_shared<const GridTable>(
       "fragility",

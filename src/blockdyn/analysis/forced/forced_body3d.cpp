@@ -56,11 +56,7 @@ ForcedModel forced_body3d_model(const Body3d& body, const BodyOnGroundOptions& f
   fm.tolerances = to_json(defaults.integ);
   fm.block_names = {"body"};
   fm.impact_definition = "a base point hitting the ground";
-  fm.run = [body, friction, incidence_deg](const GroundMotion& g, double t_end) {
-    GroundMotion3d g3;
-    g3.h = g.horizontal;
-    g3.v = g.vertical;
-    g3.azimuth = incidence_deg;
+  fm.run3 = [body, friction](const GroundMotion3d& g3, double t_end) {
     const BodyOnGround m(body, g3, friction);
     Body3dRunOptions o;
     o.t_end = t_end;
@@ -80,6 +76,13 @@ ForcedModel forced_body3d_model(const Body3d& body, const BodyOnGroundOptions& f
       out.t_failure = r.overturn_time;
     }
     return out;
+  };
+  fm.run = [run3 = fm.run3, incidence_deg](const GroundMotion& g, double t_end) {
+    GroundMotion3d g3;
+    g3.h = g.horizontal;
+    g3.v = g.vertical;
+    g3.azimuth = incidence_deg;
+    return run3(g3, t_end);
   };
   return fm;
 }

@@ -13,6 +13,7 @@
 #include "blockdyn/analysis/forced/forced_trace.hpp"
 #include "blockdyn/analysis/forced/survival_map.hpp"
 #include "blockdyn/excitation/ground_motion.hpp"
+#include "blockdyn/excitation/ground_motion_3d.hpp"
 #include "blockdyn/model/assembly/assembly_params.hpp"
 #include "blockdyn/model/rigid_ground/rigid_params.hpp"
 
@@ -31,6 +32,9 @@ struct ForcedModel {
   // analyses classify (blocks: collapse mode 1 when overturned). Under harmonic motion the
   // outcome's cycle is the dominant (m, n) cycle of block 0 (cycle_detection.hpp).
   SurvivalRun run;
+  // A 3D body's run under ground motion in three components (its `azimuth` the direction of h
+  // from the body's e1); null for the planar families.
+  std::function<SurvivalOutcome(const GroundMotion3d& g, double t_end)> run3;
   // The same run reporting to a probe (may be null): the cycle and impact-map analyses.
   std::function<SurvivalOutcome(const GroundMotion& g, double t_end, RunProbe* probe)> traced;
   ImpactRule impact_rule = ImpactRule::VelocityJump;  // what an impact is for this model (forced_trace.hpp)

@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "blockdyn/analysis/sweep/parallel_map.hpp"
+#include "blockdyn/base/number_text.hpp"
 #include "blockdyn/base/range_check.hpp"
 #include "blockdyn/excitation/intensity_measures.hpp"
 #include "blockdyn/excitation/response_spectrum.hpp"
@@ -42,6 +43,43 @@ FragilitySuite fragility_suite(const std::vector<std::string>& names,
   return s;
 }
 
+FragilitySuite fragility_suite_3d(const std::vector<std::string>& names,
+                                  const std::vector<std::shared_ptr<const Accelerogram>>& h1,
+                                  const std::vector<std::shared_ptr<const Accelerogram>>& h2,
+                                  const std::vector<std::shared_ptr<const Accelerogram>>& v,
+                                  const std::vector<double>& incidences, const std::vector<double>& alpha_at,
+                                  const IntensityMeasure& im, double g, const std::string& field) {
+  const std::size_t n = h1.size(), ni = incidences.size();
+  if (names.size() != n || (!h2.empty() && h2.size() != n) || (!v.empty() && v.size() != n))
+    throw std::invalid_argument(field + ": every record needs the same components");
+  if (ni == 0 || alpha_at.size() != ni) throw std::invalid_argument(field + ": give the incidences");
+  for (std::size_t k = 0; k < n; ++k) {
+    const auto same_length = [&](const std::vector<std::shared_ptr<const Accelerogram>>& c) {
+      return c.empty() || (c[k]->size() == h1[k]->size() && c[k]->t_last() == h1[k]->t_last());
+    };
+    if (!same_length(h2) || !same_length(v))
+      throw std::invalid_argument(field + ": the components of '" + names[k] + "' differ in length (" +
+                                  std::to_string(h1[k]->size()) + " samples in h1)");
+  }
+  FragilitySuite s;
+  for (std::size_t k = 0; k < n; ++k)
+    for (std::size_t j = 0; j < ni; ++j) {
+      s.names.push_back(ni > 1 ? names[k] + " @ " + number_text(incidences[j]) + " deg" : names[k]);
+      s.records.push_back(h1[k]);
+      if (!h2.empty()) s.records_h2.push_back(h2[k]);
+      if (!v.empty()) s.records_v.push_back(v[k]);
+      s.incidence.push_back(incidences[j]);
+      s.incidence_index.push_back(j);
+      double m = intensity_of(*h1[k], im, g, alpha_at[j]);
+      if (!h2.empty()) m = std::sqrt(m * intensity_of(*h2[k], im, g, alpha_at[j]));
+      if (!(m > 0))
+        throw std::invalid_argument(field + ": '" + names[k] + "' has " + im.text +
+                                    " = 0: it cannot be scaled to a level");
+      s.im.push_back(m);
+    }
+  return s;
+}
+
 void validate(const FragilityOptions& o) {
   if (o.levels.empty()) throw std::invalid_argument("levels: give the intensity levels A:B:N or A,B,C");
   for (double l : o.levels) require_in_range("levels", l, 0, 1e6, false);
@@ -58,10 +96,29 @@ FragilityRunOutcome fragility_run(const ForcedModel& m, const FragilitySuite& s,
   r.level = o.levels[i % nl];
   r.record_im = s.im[r.record];
   r.scale = r.level / r.record_im;
-  GroundMotion gm;
-  gm.horizontal.record = s.records[r.record];
-  gm.horizontal.scale = r.scale;
-  const SurvivalOutcome out = m.run(gm, o.t_end ? *o.t_end : s.records[r.record]->t_last() + o.t_after);
+  const double t_end = o.t_end ? *o.t_end : s.records[r.record]->t_last() + o.t_after;
+  SurvivalOutcome out;
+  if (s.three_dimensional()) {
+    if (!m.run3) throw std::invalid_argument("suite: records in components or at incidences need a 3D body (rigid3d)");
+    GroundMotion3d g3;
+    g3.h.record = s.records[r.record];
+    g3.h.scale = r.scale;
+    if (!s.records_h2.empty()) {
+      g3.h2.record = s.records_h2[r.record];
+      g3.h2.scale = r.scale;
+    }
+    if (!s.records_v.empty()) {
+      g3.v.record = s.records_v[r.record];
+      g3.v.scale = r.scale;
+    }
+    g3.azimuth = s.incidence[r.record];
+    out = m.run3(g3, t_end);
+  } else {
+    GroundMotion gm;
+    gm.horizontal.record = s.records[r.record];
+    gm.horizontal.scale = r.scale;
+    out = m.run(gm, t_end);
+  }
   r.overturned = out.collapse_mode.has_value();
   r.invalid = out.invalid && !r.overturned;
   r.max_abs_rotation = out.max_abs_rotation;
@@ -118,6 +175,26 @@ FragilityResult fragility_result(std::vector<FragilityRunOutcome> runs, const Fr
   res.curve = fragility_curve(res.fit, res.band, lo * 0.5, hi * 1.5);
   res.runs = std::move(runs);
   return res;
+}
+
+FragilityResult fragility_result_at_incidence(const std::vector<FragilityRunOutcome>& runs, const FragilitySuite& s,
+                                              const FragilityOptions& o, std::size_t j) {
+  FragilitySuite sub;
+  std::vector<std::size_t> entry_of(s.names.size(), std::size_t(-1));
+  for (std::size_t k = 0; k < s.names.size(); ++k)
+    if (s.incidence_index[k] == j) {
+      entry_of[k] = sub.names.size();
+      sub.names.push_back(s.names[k]);
+      sub.im.push_back(s.im[k]);
+    }
+  std::vector<FragilityRunOutcome> mine;
+  for (const FragilityRunOutcome& r : runs) {
+    if (entry_of[r.record] == std::size_t(-1)) continue;
+    FragilityRunOutcome one = r;
+    one.record = entry_of[r.record];
+    mine.push_back(one);
+  }
+  return fragility_result(std::move(mine), sub, o);
 }
 
 FragilityResult run_fragility(const ForcedModel& m, const FragilitySuite& s, const FragilityOptions& o) {

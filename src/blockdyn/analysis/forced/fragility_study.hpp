@@ -34,10 +34,19 @@ struct IntensityMeasure {
 // The record's measure at scale 1 (alpha: the block's slenderness, for pga-over-uplift).
 double intensity_of(const Accelerogram& r, const IntensityMeasure& im, double g, double alpha);
 
+// A suite's entries: records, or records of two or three components (h1 along the incidence, h2
+// across it, v vertical), each at one or more incidences (a 3D body's: the angle of h1 from the
+// body's e1). An entry's measure is its record's, or the geometric mean of its two horizontal
+// components' (pga-over-uplift: with the entry's incidence's alpha).
 struct FragilitySuite {
   std::vector<std::string> names;
   std::vector<std::shared_ptr<const Accelerogram>> records;
-  std::vector<double> im;  // of each record at scale 1
+  std::vector<double> im;  // of each entry at scale 1
+  // Components and incidences (empty: single records along the model's own direction).
+  std::vector<std::shared_ptr<const Accelerogram>> records_h2, records_v;
+  std::vector<double> incidence;             // deg, one per entry
+  std::vector<std::size_t> incidence_index;  // the entry's incidence among the study's (0, 1, ...)
+  bool three_dimensional() const { return !records_h2.empty() || !records_v.empty() || !incidence.empty(); }
 };
 // The suite with each record's measure; throws std::invalid_argument naming `field` and the
 // record for a record whose measure is zero (it cannot be scaled to a level).
@@ -45,6 +54,17 @@ FragilitySuite fragility_suite(const std::vector<std::string>& names,
                                const std::vector<std::shared_ptr<const Accelerogram>>& records,
                                const IntensityMeasure& im, double g, double alpha,
                                const std::string& field = "records");
+
+// The suite of records (h1, and h2 and v where given: the same length or empty) at every
+// incidence (record fastest is not the order: entry = record * incidences + incidence index),
+// `alpha_at` each incidence's slenderness angle (for pga-over-uplift). Throws
+// std::invalid_argument naming `field`.
+FragilitySuite fragility_suite_3d(const std::vector<std::string>& names,
+                                  const std::vector<std::shared_ptr<const Accelerogram>>& h1,
+                                  const std::vector<std::shared_ptr<const Accelerogram>>& h2,
+                                  const std::vector<std::shared_ptr<const Accelerogram>>& v,
+                                  const std::vector<double>& incidences, const std::vector<double>& alpha_at,
+                                  const IntensityMeasure& im, double g, const std::string& field = "suite");
 
 struct FragilityOptions {
   std::vector<double> levels;   // intensity levels (> 0)
@@ -90,6 +110,9 @@ struct FragilityResult {
 // The study's result from its runs (any order of computation; `runs` indexed as fragility_run).
 FragilityResult fragility_result(std::vector<FragilityRunOutcome> runs, const FragilitySuite& s,
                                  const FragilityOptions& o);
+// The study's result restricted to the entries at incidence index j (their runs, re-indexed).
+FragilityResult fragility_result_at_incidence(const std::vector<FragilityRunOutcome>& runs, const FragilitySuite& s,
+                                              const FragilityOptions& o, std::size_t j);
 // Every run in memory (o.threads), then fragility_result: the same numbers as the command.
 FragilityResult run_fragility(const ForcedModel& m, const FragilitySuite& s, const FragilityOptions& o);
 
