@@ -12,6 +12,7 @@
 #include <cmath>
 #include <vector>
 
+#include "blockdyn/excitation/stochastic_motion.hpp"
 #include "blockdyn/simulation/rigid3d_simulation.hpp"
 #include "blockdyn/simulation/rigid_simulation.hpp"
 #include "model/rigid3d/body3d_run.hpp"
@@ -209,6 +210,38 @@ TEST(Rigid3dSlip, TwoRecordComponentsSlipWithTheBalanceClosed) {
   EXPECT_TRUE(std::any_of(r.events.begin(), r.events.end(), slips));
   EXPECT_LT(r.z[BodyOnGround::kWorkFriction], 0.0);
   EXPECT_GT(r.max_slide, 0.0);
+  EXPECT_LT(balance_error(r, m), 1e-9);
+}
+
+TEST(Rigid3dSlip, AStickNearedOffItsReferenceDoesNotChatter) {
+  // A corner's slip that nears its stick turning away from its reference (record 11 of a seeded
+  // two-component suite, x 2.05): once it ran on with steps that never grew, its friction's
+  // direction jumping where the slip entered the noise. The run ends (it overturns) in a few
+  // thousand steps, its balance closed.
+  blockdyn::RezaeianParams h;
+  h.arias = 1.2;
+  h.d5_95 = 6;
+  h.t_mid = 5;
+  h.f_mid = 2.5;
+  h.f_slope = -0.05;
+  h.t_end = 15;
+  blockdyn::RezaeianParams h2 = h;
+  h2.arias = 0.8;
+  auto record = [](const blockdyn::RezaeianParams& p, std::uint64_t index) {
+    const auto r = blockdyn::rezaeian_record(p, blockdyn::fit_modulation(p.arias, p.d5_95, p.t_mid, p.g), 2026, index);
+    return std::make_shared<const blockdyn::Accelerogram>(r.a, p.dt, "suite record 11");
+  };
+  blockdyn::GroundMotion3d g;
+  g.h.record = record(h, 10);
+  g.h2.record = record(h2, 10 + (std::uint64_t(1) << 40));
+  g.h.scale = g.h2.scale = 2.0457282429569172;
+  const BodyOnGround m(blockdyn::box_body(0.4, 0.4, 1.2, 100), g, friction(0.7, 0.7));
+  blockdyn::Body3dRunOptions o;
+  o.t_end = 20;
+  const Body3dResult r = blockdyn::simulate_body3d(m, blockdyn::initial_state(m.body(), {}), o);
+  EXPECT_STREQ(to_string(r.status), "overturned") << r.note;
+  EXPECT_LT(r.stats.accepted, 20000);
+  EXPECT_TRUE(std::any_of(r.events.begin(), r.events.end(), slips));
   EXPECT_LT(balance_error(r, m), 1e-9);
 }
 

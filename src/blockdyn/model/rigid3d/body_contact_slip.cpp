@@ -77,11 +77,17 @@ BodyOnGround::ContactSlip BodyOnGround::contact_slip_of(const Mode& m, const Sta
     p.sticks[i] = !(m.slipping & bit(i));
     if (p.sticks[i]) continue;
     // Against the friction's own slip; past its reversal (only past a stick, which the event
-    // ends) it keeps its direction, the slip's smooth continuation; below the noise, at a stick
-    // reached along the reference, it takes the reference's.
+    // ends) it keeps its direction, the slip's smooth continuation. Below half the noise it takes
+    // the reference's (a start from rest, a stick reached along it); between, it turns from one
+    // to the other continuously: a direction that jumped at one size would make a slip that
+    // nears its stick off its reference chatter there.
     const Vec3& ref = reference_of(m, i);
-    const double sense = dot(c.slip[i], ref) < 0 ? -1.0 : 1.0;
-    p.dir[i] = length_of(c.slip[i]) < noise ? ref : scaled(unit_or_zero(c.slip[i]), sense);
+    const double sense = dot(c.slip[i], ref) < 0 ? -1.0 : 1.0, size = length_of(c.slip[i]);
+    const double share = std::fmin(1.0, std::fmax(0.0, 2 * size / noise - 1));
+    p.dir[i] = share >= 1 ? scaled(unit_or_zero(c.slip[i]), sense)
+               : share <= 0
+                   ? ref
+                   : unit_or_zero(plus(scaled(unit_or_zero(c.slip[i]), sense * share), scaled(ref, 1 - share)));
   }
   return c;
 }
