@@ -2,6 +2,7 @@
 #pragma once
 // One run of the rigid3d body for the tests: from its initial state, at tight tolerances.
 #include "blockdyn/simulation/rigid3d_simulation.hpp"
+#include "blockdyn/simulation/rigid_simulation.hpp"
 
 namespace blockdyn::test {
 
@@ -11,6 +12,22 @@ inline Body3dResult run_body(const BodyOnGround& m, const Body3dStart& s, double
   o.integ.rtol = 1e-12;
   o.integ.atol = 1e-14;
   return simulate_body3d(m, initial_state(m.body(), s), o);
+}
+
+// The planar 3-DOF block of a b x h section (mass, friction) under g from init, at the same
+// tight tolerances: the planar limit's reference.
+inline RigidResult planar_block_run(double b, double h, double mass, double mu_s, double mu_k, const GroundMotion& g,
+                                    const RigidInitial& init, double t_end) {
+  RigidBlockParams p;
+  p.shape.width = b;
+  p.shape.height = h;
+  p.shape.mass = mass;
+  p.interface = {mu_s, mu_k};
+  RigidRunOptions o;
+  o.t_end = t_end;
+  o.integrator.rtol = 1e-12;
+  o.integrator.atol = 1e-14;
+  return simulate_rigid(p, g, init, o);
 }
 
 }  // namespace blockdyn::test

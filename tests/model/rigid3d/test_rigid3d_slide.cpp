@@ -99,19 +99,10 @@ TEST(Rigid3dSlide, PlanarLimitIsTheThreeDofBlock) {
   const Body3dResult r = slide_run(m, {}, t_end);
   ASSERT_EQ(r.status, blockdyn::SimStatus::TEnd) << r.note;
 
-  blockdyn::RigidBlockParams p;
-  p.shape.width = b;
-  p.shape.height = h;
-  p.shape.mass = 500;
-  p.interface = {mu_s, mu_k};
   blockdyn::GroundMotion g2;
   g2.horizontal.amplitude = A;
   g2.horizontal.frequency = f;
-  blockdyn::RigidRunOptions o;
-  o.t_end = t_end;
-  o.integrator.rtol = 1e-12;
-  o.integrator.atol = 1e-14;
-  const blockdyn::RigidResult planar = blockdyn::simulate_rigid(p, g2, {}, o);
+  const blockdyn::RigidResult planar = blockdyn::test::planar_block_run(b, h, 500, mu_s, mu_k, g2, {}, t_end);
   ASSERT_EQ(planar.status, blockdyn::SimStatus::TEnd);
   // Its mechanism changes: rest -> slide at the onset, slide -> rest at each stick.
   std::vector<double> starts, stops;

@@ -71,18 +71,9 @@ TEST(Rigid3dSlip, PlanarLimitIsTheThreeDofBlocksSlideRock) {
   const Body3dResult r = released(m, tilt, 0.0, t_end);
   ASSERT_EQ(r.status, blockdyn::SimStatus::TEnd) << r.note;
 
-  blockdyn::RigidBlockParams p;
-  p.shape.width = b;
-  p.shape.height = h;
-  p.shape.mass = 400;
-  p.interface = {mu, mu};
   blockdyn::RigidInitial init;
   init.w0 = tilt;
-  blockdyn::RigidRunOptions o;
-  o.t_end = t_end;
-  o.integrator.rtol = 1e-12;
-  o.integrator.atol = 1e-14;
-  const blockdyn::RigidResult planar = blockdyn::simulate_rigid(p, {}, init, o);
+  const blockdyn::RigidResult planar = blockdyn::test::planar_block_run(b, h, 400, mu, mu, {}, init, t_end);
   ASSERT_EQ(planar.status, blockdyn::SimStatus::TEnd);
 
   double onset = -1, onset3 = -1;

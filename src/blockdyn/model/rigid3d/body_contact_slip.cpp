@@ -112,16 +112,9 @@ std::array<Vec3, 2> BodyOnGround::contact_slip_rates(double t, const Mode& m, co
 void BodyOnGround::contact_slip_rhs(double t, const Mode& m, const State& z, State& dz) const {
   const SlipContactMotion sm = contact_slip_motion(t, m, z);
   const ContactSlip c = contact_slip_of(m, z);
-  const Vec3 w = vec_at(z, kWx), v = vec_at(z, kVx), f = specific_force(t);
-  const Quat dq = Quat{0, w[0], w[1], w[2]} * quat_at(z, S::kQw);
-  set_vec_at(dz, kX, v);
-  dz[kQw] = 0.5 * dq.w;
-  dz[kQx] = 0.5 * dq.x;
-  dz[kQy] = 0.5 * dq.y;
-  dz[kQz] = 0.5 * dq.z;
+  set_kinematic_rates(t, z, dz);
   set_vec_at(dz, kVx, sm.accel);
   set_vec_at(dz, kWx, sm.domega);
-  dz[kWorkGround] = body_.mass * (f[0] * v[0] + f[1] * v[1] + (f[2] + body_.g) * v[2]);
   double power = 0;
   for (int i = 0; i < c.points.n; ++i)
     if (!c.points.sticks[i]) power += sm.force[i][0] * c.slip[i][0] + sm.force[i][1] * c.slip[i][1];

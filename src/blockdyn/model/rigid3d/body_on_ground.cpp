@@ -94,13 +94,7 @@ Vec3 BodyOnGround::corner(int i) const {
   return {(i & 1 ? 0.5 : -0.5) * body_.width, (i & 2 ? 0.5 : -0.5) * body_.depth, -body_.half_height()};
 }
 
-void BodyOnGround::rhs(double t, const Mode& m, const State& z, State& dz) const {
-  dz.fill(0.0);
-  if (m.contact == BodyContact::Rest) return;
-  if (m.contact == BodyContact::Slide) return slide_rhs(t, m, z, dz);
-  if (m.contact == BodyContact::Roll) return roll_rhs(t, z, dz);
-  if (m.slips()) return contact_slip_rhs(t, m, z, dz);
-  const Mat3 r = rotation(quat_at(z, S::kQw));
+void BodyOnGround::set_kinematic_rates(double t, const State& z, State& dz) const {
   const Vec3 w = vec_at(z, kWx), v = vec_at(z, kVx), f = specific_force(t);
   const Quat dq = Quat{0, w[0], w[1], w[2]} * quat_at(z, S::kQw);
   set_vec_at(dz, kX, v);
@@ -108,8 +102,20 @@ void BodyOnGround::rhs(double t, const Mode& m, const State& z, State& dz) const
   dz[kQx] = 0.5 * dq.x;
   dz[kQy] = 0.5 * dq.y;
   dz[kQz] = 0.5 * dq.z;
-  // The ground's inertial force m (f + g Z) does work on the centroid; a sticking contact does none.
+  // The ground's inertial force m (f + g Z) does work on the centroid; a sticking or rolling
+  // contact does none.
   dz[kWorkGround] = body_.mass * (f[0] * v[0] + f[1] * v[1] + (f[2] + body_.g) * v[2]);
+}
+
+void BodyOnGround::rhs(double t, const Mode& m, const State& z, State& dz) const {
+  dz.fill(0.0);
+  if (m.contact == BodyContact::Rest) return;
+  if (m.contact == BodyContact::Slide) return slide_rhs(t, m, z, dz);
+  if (m.contact == BodyContact::Roll) return roll_rhs(t, z, dz);
+  if (m.slips()) return contact_slip_rhs(t, m, z, dz);
+  const Mat3 r = rotation(quat_at(z, S::kQw));
+  const Vec3 w = vec_at(z, kWx), f = specific_force(t);
+  set_kinematic_rates(t, z, dz);
   if (m.contact == BodyContact::Flight) {
     set_vec_at(dz, kVx, f);
     set_vec_at(dz, kWx, free_angular_acceleration(inertia_, r, w));

@@ -178,7 +178,9 @@ class BodyOnGround {
 
  private:
   Vec3 specific_force(double t) const;  // gravity and the ground's acceleration reversed (m/s^2)
-  Vec3 corner(int i) const;             // body frame
+  // The rates every moving mode shares: position, orientation and the ground's work on the centroid.
+  void set_kinematic_rates(double t, const State& z, State& dz) const;
+  Vec3 corner(int i) const;  // body frame
   bool rest_holds(double t, double yaw) const;
   Mode line_mode(const Mat3& r, const Vec3& x, const Vec3& pa, const Vec3& pb, int ca, int cb) const;
   Mode point_mode(const Mat3& r, const Vec3& x, const Vec3& p, int c) const;

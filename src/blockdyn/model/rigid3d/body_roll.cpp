@@ -24,17 +24,9 @@ RimRolling BodyOnGround::rolling(double t, const State& z) const {
 
 void BodyOnGround::roll_rhs(double t, const State& z, State& dz) const {
   const RimRolling rr = rolling(t, z);
-  const Vec3 w = vec_at(z, kWx), v = vec_at(z, kVx), f = specific_force(t);
-  const Quat dq = Quat{0, w[0], w[1], w[2]} * quat_at(z, S::kQw);
-  set_vec_at(dz, kX, v);
-  dz[kQw] = 0.5 * dq.w;
-  dz[kQx] = 0.5 * dq.x;
-  dz[kQy] = 0.5 * dq.y;
-  dz[kQz] = 0.5 * dq.z;
+  set_kinematic_rates(t, z, dz);
   set_vec_at(dz, kVx, rr.accel);
   set_vec_at(dz, kWx, rr.domega);
-  // A rolling contact does no work: the ground's inertial force on the centroid does.
-  dz[kWorkGround] = body_.mass * (f[0] * v[0] + f[1] * v[1] + (f[2] + body_.g) * v[2]);
 }
 
 void BodyOnGround::roll_events(double t, const State& z, std::array<double, kNumEvents>& g) const {
