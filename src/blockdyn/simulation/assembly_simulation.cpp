@@ -181,8 +181,10 @@ class AssemblyTrajectory final : public TrajectoryRows<M, AssemblyTrajectory<M>>
     const auto a = m.ground_acceleration(t);
     c.number(a[0]);
     c.number(a[1]);
+    std::array<typename M::PointForce, M::kPoints> forces;
+    m.point_forces(md, z, t, forces);
     for (int p = 0; p < 2 * m.interfaces(); ++p) {
-      const auto f = m.point_force(md, z, t, p);
+      const auto& f = forces[p];
       for (double v : {f.c.P.x, f.c.P.y, f.fn, f.ft}) c.number(v);
       c.text(kEndState[int(md.point[p])]);
     }

@@ -143,6 +143,12 @@ class AssemblyModel {
   // The same at time t (the deformable law's forces depend on the state alone; the rigid law's
   // constraint forces on the ground's acceleration too).
   PointForce point_force(const Mode& m, const State& z, double /*t*/, int p) const { return point_force(m, z, p); }
+  // Every point's force at once (a trajectory row), the geometry computed once.
+  void point_forces(const Mode& m, const State& z, double /*t*/, std::array<PointForce, kPoints>& out) const {
+    Geometry g;
+    geometry(z, g);
+    for (int p = 0; p < 2 * ni_; ++p) point_force(m, z, g, p, out[p]);
+  }
   // Accelerations of every block (and the normal-force rates of the slipping points), the
   // ground's accelerations and the contact points. all_points = false: the open points clear of
   // their faces get only their gap (what the right-hand side needs).

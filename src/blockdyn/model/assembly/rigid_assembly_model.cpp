@@ -216,6 +216,28 @@ typename RigidAssemblyModel<MaxBlocks>::PointForce RigidAssemblyModel<MaxBlocks>
 }
 
 template <int MaxBlocks>
+void RigidAssemblyModel<MaxBlocks>::point_forces(const Mode& m, const State& z, double t,
+                                                 std::array<PointForce, kPoints>& out) const {
+  Geometry geo;
+  geo_.geometry(z, geo);
+  std::array<PointRows, kPoints> r;
+  Mode mm = m;
+  if (m.rest) mm.rest = false;
+  rows(z, geo, mm, r);
+  bool any_closed = false;
+  for (int p = 0; p < 2 * ni_; ++p) any_closed = any_closed || is_closed(mm.point[p]);
+  Solution s;
+  if (any_closed) s = solve(t, mm, z, r);
+  for (int p = 0; p < 2 * ni_; ++p) {
+    out[p] = PointForce{};
+    out[p].c = r[p].c;
+    if (!is_closed(mm.point[p])) continue;
+    out[p].fn = s.fn[p];
+    out[p].ft = s.ft[p];
+  }
+}
+
+template <int MaxBlocks>
 typename RigidAssemblyModel<MaxBlocks>::PointForce RigidAssemblyModel<MaxBlocks>::point_force(const Mode& m,
                                                                                               const State& z,
                                                                                               int p) const {

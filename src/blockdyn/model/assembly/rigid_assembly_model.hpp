@@ -124,6 +124,8 @@ class RigidAssemblyModel {
   // rest the least-norm distribution that holds the blocks).
   PointForce point_force(const Mode& m, const State& z, int p) const;
   PointForce point_force(const Mode& m, const State& z, double t, int p) const;
+  // Every point's force from one solve of the mode's contact problem (a trajectory row).
+  void point_forces(const Mode& m, const State& z, double t, std::array<PointForce, kPoints>& out) const;
 
   // The static limits of the configuration z (every contact closed): a_H / (g + a_V) at which rest
   // fails in each direction; nullopt where no distribution holds the blocks at all.
