@@ -70,11 +70,7 @@ ForcedModel forced_body3d_model(const Body3d& body, const BodyOnGroundOptions& f
     out.moved = r.first_uplift_time >= 0 || r.first_slide_time >= 0;
     out.max_abs_rotation = r.max_tilt;
     out.max_sliding = r.max_slide;
-    out.invalid = r.status == SimStatus::Invalid || r.status == SimStatus::NumericalFailure;
-    if (r.status == SimStatus::Overturned) {
-      out.collapse_mode = 1;
-      out.t_failure = r.overturn_time;
-    }
+    classify_block_end(out, r.status, r.overturn_time);
     return out;
   };
   fm.run = [run3 = fm.run3, incidence_deg](const GroundMotion& g, double t_end) {

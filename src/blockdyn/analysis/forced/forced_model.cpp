@@ -63,11 +63,7 @@ ForcedModel forced_block_model(const RigidBlockParams& rp, const RigidGroundMode
     SurvivalOutcome out;
     out.moved = r.first_motion_time.has_value();
     out.max_abs_rotation = r.max_abs_rotation;
-    out.invalid = r.status == SimStatus::Invalid || r.status == SimStatus::NumericalFailure;
-    if (r.status == SimStatus::Overturned) {
-      out.collapse_mode = 1;
-      out.t_failure = r.overturn_time;
-    }
+    classify_block_end(out, r.status, r.overturn_time);
     return out;
   };
   fm.impact_rule = ImpactRule::VelocityJump;

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "blockdyn/excitation/ground_motion.hpp"
+#include "blockdyn/simulation/sim_status.hpp"
 
 namespace blockdyn {
 
@@ -47,6 +48,15 @@ struct SurvivalOutcome {
   double max_abs_rotation = 0, max_sliding = 0;
   std::string cycle;  // harmonic motion: the dominant cycle label (cycle_detection.hpp), "" if none
 };
+// A single block's run classified by how it ended: outside the model (invalid, a numerical
+// failure), or overturned (collapse mode 1 at overturn_time).
+inline void classify_block_end(SurvivalOutcome& out, SimStatus status, std::optional<double> overturn_time) {
+  out.invalid = status == SimStatus::Invalid || status == SimStatus::NumericalFailure;
+  if (status == SimStatus::Overturned) {
+    out.collapse_mode = 1;
+    out.t_failure = overturn_time;
+  }
+}
 // Thread-safe: one run under g to t_end (s).
 using SurvivalRun = std::function<SurvivalOutcome(const GroundMotion& g, double t_end)>;
 

@@ -92,14 +92,13 @@ BodyOnGround::ContactSlip BodyOnGround::contact_slip_of(const Mode& m, const Sta
   return c;
 }
 
-SlipContactMotion BodyOnGround::contact_slip_motion(double t, const Mode& m, const State& z) const {
-  return slipping_contact_motion(inertia_, body_.mass, rotation(quat_at(z, S::kQw)), contact_slip_of(m, z).points,
-                                 vec_at(z, kWx), specific_force(t), mu_k_);
+SlipContactMotion BodyOnGround::contact_slip_motion(double t, const ContactSlip& c, const State& z) const {
+  return slipping_contact_motion(inertia_, body_.mass, rotation(quat_at(z, S::kQw)), c.points, vec_at(z, kWx),
+                                 specific_force(t), mu_k_);
 }
 
-std::array<Vec3, 2> BodyOnGround::contact_slip_rates(double t, const Mode& m, const State& z) const {
-  const SlipContactMotion sm = contact_slip_motion(t, m, z);
-  const ContactSlip c = contact_slip_of(m, z);
+std::array<Vec3, 2> BodyOnGround::contact_slip_rates(double t, const ContactSlip& c, const State& z) const {
+  const SlipContactMotion sm = contact_slip_motion(t, c, z);
   const Vec3 w = vec_at(z, kWx);
   std::array<Vec3, 2> a{};
   for (int i = 0; i < c.points.n; ++i) {
@@ -110,8 +109,8 @@ std::array<Vec3, 2> BodyOnGround::contact_slip_rates(double t, const Mode& m, co
 }
 
 void BodyOnGround::contact_slip_rhs(double t, const Mode& m, const State& z, State& dz) const {
-  const SlipContactMotion sm = contact_slip_motion(t, m, z);
   const ContactSlip c = contact_slip_of(m, z);
+  const SlipContactMotion sm = contact_slip_motion(t, c, z);
   set_kinematic_rates(t, z, dz);
   set_vec_at(dz, kVx, sm.accel);
   set_vec_at(dz, kWx, sm.domega);
@@ -133,8 +132,8 @@ std::array<double, 2> BodyOnGround::stick_margins(double t, const Mode& m, const
 
 void BodyOnGround::contact_slip_events(double t, const Mode& m, const State& z,
                                        std::array<double, kNumEvents>& g) const {
-  const SlipContactMotion sm = contact_slip_motion(t, m, z);
   const ContactSlip c = contact_slip_of(m, z);
+  const SlipContactMotion sm = contact_slip_motion(t, c, z);
   const double weight = body_.mass * body_.g, vs = std::sqrt(body_.g * size_);
   const bool line = m.contact == BodyContact::Line;
   g[kEvLiftOff] = (sm.force[0][2] + (line ? sm.force[1][2] : 0.0)) / weight;
@@ -346,7 +345,7 @@ bool BodyOnGround::consistent_contact(double t, const Mode& m, const State& z, i
   if (m.slips()) {
     if (!(g[kEvPainleve] > 0)) return false;
     const ContactSlip c = contact_slip_of(m, z);
-    const std::array<Vec3, 2> a = contact_slip_rates(t, m, z);
+    const std::array<Vec3, 2> a = contact_slip_rates(t, c, z);
     const double noise = kSlipNoise * std::sqrt(body_.g * size_);
     // A point starting to slip accelerates along its direction (a root of d x a(d)), not against it.
     for (int i = 0; i < c.points.n; ++i) {

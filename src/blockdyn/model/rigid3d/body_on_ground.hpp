@@ -223,9 +223,16 @@ class BodyOnGround {
     std::array<Vec3, 2> slip{};  // each point's horizontal velocity
   };
   ContactSlip contact_slip_of(const Mode& m, const State& z) const;
-  SlipContactMotion contact_slip_motion(double t, const Mode& m, const State& z) const;
-  // The slipping points' horizontal accelerations.
-  std::array<Vec3, 2> contact_slip_rates(double t, const Mode& m, const State& z) const;
+  // The motion and the points' horizontal accelerations, from the points as contact_slip_of gives
+  // them (computed once per evaluation), or from the mode.
+  SlipContactMotion contact_slip_motion(double t, const ContactSlip& c, const State& z) const;
+  SlipContactMotion contact_slip_motion(double t, const Mode& m, const State& z) const {
+    return contact_slip_motion(t, contact_slip_of(m, z), z);
+  }
+  std::array<Vec3, 2> contact_slip_rates(double t, const ContactSlip& c, const State& z) const;
+  std::array<Vec3, 2> contact_slip_rates(double t, const Mode& m, const State& z) const {
+    return contact_slip_rates(t, contact_slip_of(m, z), z);
+  }
   void contact_slip_rhs(double t, const Mode& m, const State& z, State& dz) const;
   void contact_slip_events(double t, const Mode& m, const State& z, std::array<double, kNumEvents>& g) const;
   void contact_slip_complete(const Mode& m, State& z) const;

@@ -85,7 +85,7 @@ double BodyOnGround::kink_ahead(double t, const Mode& m, const State& z, const S
   if (m.slips()) {
     // The first of the slipping points' sticks ahead.
     const ContactSlip c = contact_slip_of(m, z);
-    const std::array<Vec3, 2> a = contact_slip_rates(t, m, z);
+    const std::array<Vec3, 2> a = contact_slip_rates(t, c, z);
     double tau = INFINITY;
     for (int i = 0; i < c.points.n; ++i)
       if (!c.points.sticks[i]) tau = std::fmin(tau, stick_ahead(c.slip[i], a[i]));
