@@ -193,14 +193,7 @@ const bool studies_registered = [] {
 
 }  // namespace
 
-void write_study_rows(std::ostream& os, const StudyTable& t) {
-  for (std::size_t i = 0; i < t.columns.size(); ++i) os << (i ? "," : "") << t.columns[i];
-  os << '\n';
-  for (const auto& row : t.rows) {
-    for (std::size_t i = 0; i < row.size(); ++i) os << (i ? "," : "") << row[i];
-    os << '\n';
-  }
-}
+void write_study_rows(std::ostream& os, const StudyTable& t) { write_csv(os, t); }
 
 void write_study_csv(const std::string& path, const StudyTable& t, const nlohmann::ordered_json& sidecar) {
   std::ostringstream os;

@@ -64,13 +64,19 @@ struct RowQueue {
   std::exception_ptr error;
 };
 
-// Length-prefixed so that a row (which may contain quoted newlines) and its error travel together.
-std::string encode(const SweepRow& r) { return std::to_string(r.text.size()) + "\n" + r.text + r.error; }
+// A row travels as the CSV writer's line (its reader gives back cells that write the same bytes),
+// length-prefixed so that the line (which may hold quoted newlines) and its error travel together.
+std::string encode(const SweepRow& r) {
+  const std::string line = csv_line(r.cells);
+  return std::to_string(line.size()) + "\n" + line + r.error;
+}
 
 SweepRow decode(const std::string& s) {
   const std::size_t nl = s.find('\n');
   const std::size_t n = std::stoul(s.substr(0, nl));
-  return SweepRow{s.substr(nl + 1, n), s.substr(nl + 1 + n)};
+  const std::string line = s.substr(nl + 1, n);
+  if (line.empty() || line.back() != '\n') throw std::invalid_argument("a row without its end of line");
+  return SweepRow{parse_csv_row(line.substr(0, line.size() - 1)), s.substr(nl + 1 + n)};
 }
 
 [[noreturn]] void abort_all(const std::string& what_raw) {
@@ -153,7 +159,7 @@ void run_stage(const PointTable& ev, const std::vector<std::size_t>& mine, int t
       }
       try {
         const SweepRow r = decode(buf);
-        session->record(row_index(r.text), r);
+        session->record(std::size_t(r.cells.at(0).integer()), r);
       } catch (const std::exception& e) {
         abort_all(std::string("rank 0: bad row from rank ") + std::to_string(st.MPI_SOURCE) + ": " + e.what());
       }

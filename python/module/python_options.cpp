@@ -14,20 +14,7 @@
 #include "blockdyn/io/json_io.hpp"
 
 namespace blockdyn::python {
-namespace {
-
-// A cell as a CSV reader gives it: a quoted cell without its quotes ("" read as ").
-std::string unquoted(const std::string& c) {
-  if (c.size() < 2 || c.front() != '"' || c.back() != '"') return c;
-  std::string s;
-  for (std::size_t i = 1; i + 1 < c.size(); ++i) {
-    s += c[i];
-    if (c[i] == '"' && c[i + 1] == '"') ++i;
-  }
-  return s;
-}
-
-}  // namespace
+namespace {}  // namespace
 
 std::string python_text(std::string_view text) { return spell_options(text, "", true); }
 
@@ -50,23 +37,23 @@ Settings settings_of(const OptionList& options) {
 }
 
 py::dict study_columns(const StudyTable& t) {
+  // A column of numbers (empty cells NaN) is a NumPy array; a column holding a label is a list of
+  // texts (numbers in it as the CSV writer writes them).
   py::dict cols;
   for (std::size_t j = 0; j < t.columns.size(); ++j) {
-    std::vector<double> numbers;
-    std::vector<std::string> texts;
     bool numeric = true;
-    for (const auto& row : t.rows) {
-      const std::string c = unquoted(j < row.size() ? row[j] : std::string());
-      char* end = nullptr;
-      const double v = c.empty() ? std::nan("") : std::strtod(c.c_str(), &end);
-      numeric = numeric && (c.empty() || end == c.c_str() + c.size());
-      numbers.push_back(v);
-      texts.push_back(c);
-    }
-    if (numeric)
-      cols[py::str(t.columns[j])] = py::array_t<double>(py::ssize_t(numbers.size()), numbers.data());
-    else
+    for (const CellRow& row : t.rows) numeric = numeric && (j >= row.size() || row[j].empty() || row[j].is_number());
+    if (numeric) {
+      py::array_t<double> a(py::ssize_t(t.rows.size()));
+      double* out = a.mutable_data();
+      for (const CellRow& row : t.rows) *out++ = j < row.size() && !row[j].empty() ? row[j].number() : std::nan("");
+      cols[py::str(t.columns[j])] = std::move(a);
+    } else {
+      std::vector<std::string> texts;
+      texts.reserve(t.rows.size());
+      for (const CellRow& row : t.rows) texts.push_back(j < row.size() ? row[j].text() : std::string());
       cols[py::str(t.columns[j])] = py::cast(texts);
+    }
   }
   return cols;
 }

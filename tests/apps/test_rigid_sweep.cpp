@@ -85,7 +85,7 @@ TEST(RigidSweep, RowsEqualSingleRuns) {
   EXPECT_EQ(p.block.interface.mu_s, 0.5);
   EXPECT_EQ(p.ground.horizontal.amplitude, 0.4);
   const auto r = blockdyn::simulate_rigid(p.block, p.ground, p.initial, s.options);
-  const std::string row = ev.row(3).text;
+  const std::string row = blockdyn::csv_line(ev.row(3).cells);
   EXPECT_NE(row.find(std::string(",") + to_string(r.status) + ","), std::string::npos) << row;
   EXPECT_NE(row.find("," + blockdyn::format_double(r.max_abs_rotation) + ","), std::string::npos) << row;
 }

@@ -9,8 +9,6 @@
 // (analysis/forced/chaos_map.hpp), for a block on rigid ground or an assembly preset.
 #include <algorithm>
 #include <cmath>
-#include <iomanip>
-#include <sstream>
 #include <stdexcept>
 
 #include "blockdyn/analysis/forced/chaos_map.hpp"
@@ -128,9 +126,7 @@ StudyReport chaos_map_study(const Settings& given, const StudyRequest& request) 
   j["counts"] = chaos_counts_json(pts);
   j["points"] = chaos_points_json(pts);
   if (request.wants("points")) {
-    std::ostringstream os;
-    write_chaos_csv(os, pts);
-    rep.series.push_back({"points", table_from_csv(os.str())});
+    rep.series.push_back({"points", chaos_table(pts)});
   }
   rep.figure = FigureSpec{"chaos_map",
                           {"@csv:points", "@plot"},
@@ -177,10 +173,10 @@ void refuse_given(const StudyOptions& o, const std::vector<std::string>& names, 
 }
 
 StudyTable history_table(const std::vector<LyapunovSample>& history) {
-  std::ostringstream os;
-  os << "t,growth,estimate\n" << std::setprecision(17);
-  for (const auto& s : history) os << s.t << ',' << s.growth << ',' << s.estimate << '\n';
-  return table_from_csv(os.str());
+  StudyTable t;
+  t.columns = {"t", "growth", "estimate"};
+  for (const auto& s : history) t.rows.push_back({s.t, s.growth, s.estimate});
+  return t;
 }
 
 // The forced motion: seed 002's form (--beta --omega) or the ground options; T the default
@@ -266,9 +262,7 @@ StudyReport forced_lyapunov_study(const StudyOptions& o, const StudyRequest& req
   rep.summary = forced_lyapunov_summary(fm, x.g, x.description, f, r);
   if (request.wants("history")) rep.series.push_back({"history", history_table(tl.history)});
   if (request.wants("twin")) {
-    std::ostringstream os;
-    write_twin_csv(os, r);
-    rep.series.push_back({"twin", table_from_csv(os.str())});
+    rep.series.push_back({"twin", twin_table(r)});
   }
   char title[256];
   std::snprintf(title, sizeof title, "%s, tangent + saltation: LE = %.4g 1/s (%.4g p)", o.text("model").c_str(),

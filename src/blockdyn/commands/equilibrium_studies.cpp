@@ -74,8 +74,8 @@ StudyTable landscape_table(const WinklerParams& p, int points) {
   StudyTable t;
   t.columns = {"w", "y_R", "h_R", "arm", "energy", "potential", "corners_below"};
   for (const auto& q : energy_landscape(p, points))
-    t.rows.push_back({cell_text17(q.w), cell_text17(q.h + 0.5), cell_text17(q.h), cell_text17(q.arm),
-                      cell_text17(q.energy), cell_text17(q.potential), std::to_string(q.corners_below)});
+    t.rows.push_back(
+        {Cell(q.w), Cell(q.h + 0.5), Cell(q.h), Cell(q.arm), Cell(q.energy), Cell(q.potential), Cell(q.corners_below)});
   return t;
 }
 
@@ -141,8 +141,8 @@ std::vector<StudyOption> bifurcation_options() {
 void append_diagram(StudyTable& t, const char* panel, const std::vector<BifurcationSample>& d) {
   for (std::size_t i = 0; i < d.size(); ++i)
     for (const auto& e : d[i].equilibria)
-      t.rows.push_back({panel, std::to_string(i), cell_text17(d[i].k), cell_text17(e.w), cell_text17(e.h + 0.5),
-                        std::to_string(int(e.stability == Stability::Stable)), to_string(e.branch)});
+      t.rows.push_back({panel, Cell(i), Cell(d[i].k), Cell(e.w), Cell(e.h + 0.5),
+                        Cell(int(e.stability == Stability::Stable)), to_string(e.branch)});
 }
 
 StudyReport bifurcation_study(const Settings& given, const StudyRequest& request) {
@@ -227,9 +227,8 @@ StudyReport curves_study(const Settings& given, const StudyRequest&) {
     dev_small = std::max(dev_small, std::fabs(sa - c.k_os));
     dev_lin = std::max(dev_lin, std::fabs(k_os_linearized(c.r) - c.k_os) / c.k_os);
     dev_uns = std::max(dev_uns, std::fabs(k_uns_one_corner(c.r) - c.k_uns) / c.k_uns);
-    rep.table.rows.push_back({cell_text17(c.r), cell_text17(c.k_os), cell_text17(c.k_uns), cell_text17(gap),
-                              cell_text17(sa), cell_text17(sa - c.k_os), cell_text17(k_os_linearized(c.r)),
-                              cell_text17(k_uns_one_corner(c.r))});
+    rep.table.rows.push_back({Cell(c.r), Cell(c.k_os), Cell(c.k_uns), Cell(gap), Cell(sa), Cell(sa - c.k_os),
+                              Cell(k_os_linearized(c.r)), Cell(k_uns_one_corner(c.r))});
     append_text(rep.text, "%10.6f %20.10f %20.10f %14.10f %14.3e\n", c.r, c.k_os, c.k_uns, c.k_os - c.k_uns,
                 sa - c.k_os);
   }

@@ -82,8 +82,8 @@ StudyReport flight_time(const Settings& given, const StudyRequest&) {
   int flown = 0, failed = 0;
   double k_first = NAN, k_always = NAN;
   for (const auto& x : runs) {
-    r.table.rows.push_back({cell_text(x.k), x.flew ? "1" : "0", cell_text(x.time), std::to_string(x.upright_passages),
-                            to_string(x.status), cell_text(x.t_final)});
+    r.table.rows.push_back({Cell::shortest(x.k), Cell(x.flew ? 1 : 0), Cell::shortest(x.time), Cell(x.upright_passages),
+                            to_string(x.status), Cell::shortest(x.t_final)});
     flown += x.flew;
     failed += x.status == SimStatus::NumericalFailure;
     if (x.flew && std::isnan(k_first)) k_first = x.k;
@@ -251,9 +251,9 @@ StudyTable boundary_table(const std::vector<double>& rs, const std::vector<Bound
   for (auto c : b.crits) t.columns.push_back(std::string("k_high_") + to_string(c) + "_status");
   for (std::size_t i = 0; i < rs.size(); ++i) {
     const BoundaryRow& row = rows[i];
-    std::vector<std::string> cells{cell_text(rs[i]), cell_text(boundary_cell(row.kmin))};
-    for (const auto& c : row.crit) cells.push_back(cell_text(boundary_cell(c.result)));
-    for (const auto& c : row.hi) cells.push_back(cell_text(boundary_cell(c.result)));
+    CellRow cells{Cell::shortest(rs[i]), Cell::shortest(boundary_cell(row.kmin))};
+    for (const auto& c : row.crit) cells.push_back(Cell::shortest(boundary_cell(c.result)));
+    for (const auto& c : row.hi) cells.push_back(Cell::shortest(boundary_cell(c.result)));
     for (const auto& c : row.crit) cells.push_back(to_string(c.result.status));
     for (const auto& c : row.hi) cells.push_back(to_string(c.result.status));
     t.rows.push_back(cells);
@@ -333,9 +333,9 @@ StudyReport kmin_study(const Settings& given, const StudyRequest&) {
   json curves = json::object();
   for (const auto& ic : ics) curves[ic.name()] = json::array();
   for (std::size_t i = 0; i < rs.size(); ++i) {
-    std::vector<std::string> row{cell_text(rs[i])};
+    CellRow row{Cell::shortest(rs[i])};
     for (std::size_t j = 0; j < ics.size(); ++j) {
-      row.push_back(cell_text(boundary_cell(res[i][j])));
+      row.push_back(Cell::shortest(boundary_cell(res[i][j])));
       json b = boundary_json(res[i][j]);
       b["r"] = rs[i];
       curves[ics[j].name()].push_back(b);
@@ -357,7 +357,7 @@ StudyReport kmin_study(const Settings& given, const StudyRequest&) {
   for (const auto& c : r.table.columns) append_text(r.text, "%-20s", c.c_str());
   r.text += "\n";
   for (const auto& row : r.table.rows) {
-    for (const auto& c : row) append_text(r.text, "%-20.8g", std::strtod(c.c_str(), nullptr));
+    for (const Cell& c : row) append_text(r.text, "%-20.8g", c.number());
     r.text += "\n";
   }
   r.figure = FigureSpec{"flight", {"kmin"}, {}};
@@ -395,8 +395,8 @@ StudyReport flight_map(const Settings& given, const StudyRequest&) {
   r.table.columns = {"r", "k", "flew", "time", "ihor", "status", "t_final"};
   int flown = 0, failed = 0;
   for (const auto& c : cells) {
-    r.table.rows.push_back({cell_text(c.r), cell_text(c.k), c.flew ? "1" : "0", cell_text(c.time),
-                            std::to_string(c.upright_passages), to_string(c.status), cell_text(c.t_final)});
+    r.table.rows.push_back({Cell::shortest(c.r), Cell::shortest(c.k), Cell(c.flew ? 1 : 0), Cell::shortest(c.time),
+                            Cell(c.upright_passages), to_string(c.status), Cell::shortest(c.t_final)});
     flown += c.flew;
     failed += c.status == SimStatus::NumericalFailure;
   }

@@ -164,13 +164,13 @@ std::vector<FragilityRunOutcome> runs_of(const Table& t, std::size_t n_levels) {
   for (const TableRow& r : t.rows) {
     FragilityRunOutcome o;
     o.record = r.index / n_levels;
-    o.level = cell_double(r.cells[cl]);
-    o.record_im = cell_double(r.cells[cr]);
-    o.scale = cell_double(r.cells[cs]);
-    o.overturned = r.cells[co] == "1";
+    o.level = r.cells[cl].number();
+    o.record_im = r.cells[cr].number();
+    o.scale = r.cells[cs].number();
+    o.overturned = !r.cells[co].empty() && r.cells[co].integer() == 1;
     o.invalid = r.cells[co].empty();  // a run that left the model
-    o.max_abs_rotation = cell_double(r.cells[cm]);
-    if (!r.cells[cf].empty()) o.t_failure = cell_double(r.cells[cf]);
+    o.max_abs_rotation = r.cells[cm].number();
+    if (!r.cells[cf].empty()) o.t_failure = r.cells[cf].number();
     runs.push_back(o);
   }
   return runs;
@@ -327,18 +327,21 @@ GridStudy fragility_grid(const Settings& given, const std::string& output) {
       "fragility",
       std::vector<std::string>{"record", "level", "record_im", "scale", "overturned", "max_abs_rotation", "t_failure"},
       fo.levels.size() * suite->names.size(),
-      [suite, fo, fm](std::size_t i, RowBuilder& row) {
+      [suite, fo, fm](std::size_t i, CellRow& row) {
         const FragilityRunOutcome r = fragility_run(*fm, *suite, fo, i);
-        row.add(csv_escape(suite->names[r.record]));
-        row.add(r.level);
-        row.add(r.record_im);
-        row.add(r.scale);
-        row.add(std::string(r.invalid ? "" : r.overturned ? "1" : "0"));  // empty: outside the model
-        row.add(r.max_abs_rotation);
-        if (r.t_failure)
-          row.add(*r.t_failure);
+        row.emplace_back(suite->names[r.record]);
+        row.emplace_back(r.level);
+        row.emplace_back(r.record_im);
+        row.emplace_back(r.scale);
+        if (r.invalid)
+          row.emplace_back();  // outside the model
         else
-          row.empty();
+          row.emplace_back(r.overturned ? 1 : 0);
+        row.emplace_back(r.max_abs_rotation);
+        if (r.t_failure)
+          row.emplace_back(*r.t_failure);
+        else
+          row.emplace_back();
       },
       definition, fm->tolerances, output);
   gs.threads = so.threads();

@@ -134,30 +134,27 @@ HarmonicRun run_harmonic(const HarmonicSetup& h, double t0, int per_period) {
   return r;
 }
 
-void write_samples_csv(std::ostream& os, const ForcedTrace& tr, bool strobe_only, const std::string& extra_header,
-                       const std::function<std::string(double)>& extra, double t_from) {
-  os << "k,t";
+CellTable samples_table(const ForcedTrace& tr, bool strobe_only, const std::string& extra_column,
+                        const std::function<Cell(double)>& extra, double t_from) {
+  CellTable table;
+  table.columns = {"k", "t"};
   for (int b = 0; b < tr.blocks(); ++b)
-    for (const char* c : {"x", "y", "theta", "vx", "vy", "omega"}) os << ',' << c << '_' << b;
-  if (!extra_header.empty()) os << ',' << extra_header;
-  os << '\n';
+    for (const char* c : {"x", "y", "theta", "vx", "vy", "omega"})
+      table.columns.push_back(std::string(c) + "_" + std::to_string(b));
+  if (!extra_column.empty()) table.columns.push_back(extra_column);
   const std::size_t n = strobe_only ? tr.strobes() : tr.samples();
   const std::size_t step = strobe_only ? std::size_t(tr.per_period()) : 1;
-  char buf[64];
   for (std::size_t i = 0; i < n; ++i) {
     const std::size_t j = i * step;
     const double t = tr.sample_t(j);
     if (t < t_from) continue;
-    std::snprintf(buf, sizeof buf, "%zu,%.17g", i, t);
-    os << buf;
+    CellRow row{i, t};
     for (int b = 0; b < tr.blocks(); ++b)
-      for (double v : tr.state(j, b)) {
-        std::snprintf(buf, sizeof buf, ",%.17g", v);
-        os << buf;
-      }
-    if (extra) os << ',' << extra(t);
-    os << '\n';
+      for (double v : tr.state(j, b)) row.emplace_back(v);
+    if (extra) row.push_back(extra(t));
+    table.rows.push_back(std::move(row));
   }
+  return table;
 }
 
 nlohmann::ordered_json forced_summary_head(const ForcedModel& fm) {

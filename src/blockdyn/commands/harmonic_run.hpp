@@ -5,7 +5,6 @@
 // the run's), the run with its ForcedTrace, the CSV of sampled states, the summary's common part.
 #include <functional>
 #include <memory>
-#include <ostream>
 #include <string>
 #include <vector>
 
@@ -48,11 +47,11 @@ struct HarmonicRun {
 };
 HarmonicRun run_harmonic(const HarmonicSetup& h, double t0, int per_period);
 
-// The sampled states as CSV: `k,t` (strobe_only: every per_period-th sample, k its period index)
-// then x,y,theta,vx,vy,omega per block (suffix _b), then the columns of `extra_header` with
-// extra(t) (may be empty); samples before t_from are left out.
-void write_samples_csv(std::ostream& os, const ForcedTrace& tr, bool strobe_only, const std::string& extra_header = "",
-                       const std::function<std::string(double)>& extra = {}, double t_from = -1.0);
+// The sampled states as a table: `k,t` (strobe_only: every per_period-th sample, k its period
+// index) then x,y,theta,vx,vy,omega per block (suffix _b), then a label column `extra_column`
+// with extra(t); samples before t_from are left out.
+CellTable samples_table(const ForcedTrace& tr, bool strobe_only, const std::string& extra_column = "",
+                        const std::function<Cell(double)>& extra = {}, double t_from = -1.0);
 
 // The opening of a forced analysis's summary: run (program, version), model, alpha, p.
 nlohmann::ordered_json forced_summary_head(const ForcedModel& fm);

@@ -5,7 +5,6 @@
 // Fig. 15b, and the forced Poincare map at a forcing phase).
 #include <cmath>
 #include <cstdio>
-#include <sstream>
 #include <stdexcept>
 
 #include "blockdyn/analysis/forced/cycle_detection.hpp"
@@ -108,16 +107,13 @@ StudyReport cycles_study(const Settings& given, const StudyRequest& request) {
   StudyReport rep;
   rep.summary = cycles_summary(h, r, c, cyc, impacts);
   // The cycle label of the segment holding t (the last segment's up to its end).
-  auto label_at = [&](double t) -> std::string {
+  auto label_at = [&](double t) -> Cell {
     for (const CycleSegment& sg : cyc.segments)
-      if (sg.type != "collapse" && t >= sg.t_start && t <= sg.t_end) return '"' + sg.label() + '"';
-    return c.transient > 0 && t < c.transient * h.period ? "transient" : "";
+      if (sg.type != "collapse" && t >= sg.t_start && t <= sg.t_end) return Cell::quoted(sg.label());
+    return c.transient > 0 && t < c.transient * h.period ? Cell("transient") : Cell();
   };
-  if (request.wants("strobe"))
-    rep.series.push_back(
-        {"strobe", table_of([&](std::ostream& os) { write_samples_csv(os, tr, true, "cycle", label_at); })});
-  if (request.wants("trace"))
-    rep.series.push_back({"trace", table_of([&](std::ostream& os) { write_samples_csv(os, tr, false); })});
+  if (request.wants("strobe")) rep.series.push_back({"strobe", samples_table(tr, true, "cycle", label_at)});
+  if (request.wants("trace")) rep.series.push_back({"trace", samples_table(tr, false)});
   rep.figure = FigureSpec{"cycles",
                           {"@csv:strobe", "@plot"},
                           {{"trace", {"@csv:trace"}},
@@ -143,15 +139,11 @@ std::vector<StudyOption> impact_map_options() {
 }
 
 StudyTable impacts_table(const std::vector<ImpactMapPoint>& map) {
-  return table_of([&](std::ostream& os) {
-    os << "i,t,phase,omega_before,omega_after\n";
-    char buf[160];
-    for (std::size_t i = 0; i < map.size(); ++i) {
-      std::snprintf(buf, sizeof buf, "%zu,%.17g,%.17g,%.17g,%.17g\n", i, map[i].t, map[i].phase, map[i].omega_before,
-                    map[i].omega_after);
-      os << buf;
-    }
-  });
+  StudyTable t;
+  t.columns = {"i", "t", "phase", "omega_before", "omega_after"};
+  for (std::size_t i = 0; i < map.size(); ++i)
+    t.rows.push_back({i, map[i].t, map[i].phase, map[i].omega_before, map[i].omega_after});
+  return t;
 }
 
 StudyReport impact_map_study(const Settings& given, const StudyRequest& request) {
@@ -191,12 +183,8 @@ StudyReport impact_map_study(const Settings& given, const StudyRequest& request)
   }
   j["omega_before_range"] = map.empty() ? json(nullptr) : json::array({wmin, wmax});
   if (request.wants("impacts")) rep.series.push_back({"impacts", impacts_table(map)});
-  if (request.wants("poincare"))
-    rep.series.push_back(
-        {"poincare", table_of([&](std::ostream& os) { write_samples_csv(os, tr, true, "", {}, t_from); })});
-  if (request.wants("trace"))
-    rep.series.push_back(
-        {"trace", table_of([&](std::ostream& os) { write_samples_csv(os, tr, false, "", {}, t_from); })});
+  if (request.wants("poincare")) rep.series.push_back({"poincare", samples_table(tr, true, "", {}, t_from)});
+  if (request.wants("trace")) rep.series.push_back({"trace", samples_table(tr, false, "", {}, t_from)});
   rep.figure = FigureSpec{"impact_map",
                           {"@csv:impacts", "@plot"},
                           {{"poincare", {"@csv:poincare"}},

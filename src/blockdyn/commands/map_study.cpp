@@ -140,11 +140,11 @@ MapBoundaries map_boundaries(const Settings& s, int threads) {
   t.columns = {"inv_r",         "r",          "k_stability",       "stability_status", "k_high",
                "k_high_status", "k_critical", "k_critical_status", "k3_stability",     "k3_status"};
   for (const auto& b : rows)
-    t.rows.push_back({cell_text(b.inv_r), cell_text(b.r), cell_text(boundary_cell(b.stability.result)),
-                      to_string(b.stability.result.status), cell_text(boundary_cell(b.high.result)),
-                      to_string(b.high.result.status), cell_text(boundary_cell(b.critical.result)),
+    t.rows.push_back({Cell::shortest(b.inv_r), Cell::shortest(b.r), Cell::shortest(boundary_cell(b.stability.result)),
+                      to_string(b.stability.result.status), Cell::shortest(boundary_cell(b.high.result)),
+                      to_string(b.high.result.status), Cell::shortest(boundary_cell(b.critical.result)),
                       to_string(b.critical.result.status),
-                      b.k3 ? cell_text(boundary_cell(b.k3->point.result)) : cell_text(NAN),
+                      b.k3 ? Cell::shortest(boundary_cell(b.k3->point.result)) : Cell::shortest(NAN),
                       b.k3 ? to_string(b.k3->point.result.status) : "not_applicable"});
   out.meta = {{"run", run_info()},
               {"what", "boundaries of the response map"},

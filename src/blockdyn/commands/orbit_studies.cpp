@@ -5,8 +5,6 @@
 // trajectory, thesis 5.1).
 #include <algorithm>
 #include <cmath>
-#include <iomanip>
-#include <sstream>
 #include <stdexcept>
 
 #include "blockdyn/analysis/winkler/energy_surface.hpp"
@@ -130,8 +128,8 @@ StudyReport response_study(const Settings& given, const StudyRequest& request) {
 
   StudyReport rep;
   if (request.want_table) {
-    rep.series.push_back({"swings", table_of([&](std::ostream& os) { write_swings_csv(os, run.swings); })});
-    rep.series.push_back({"phase", table_of([&](std::ostream& os) { write_phase_csv(os, run.phase); })});
+    rep.series.push_back({"swings", swings_table(run.swings)});
+    rep.series.push_back({"phase", phase_table(run.phase)});
   }
   char title[256];
   std::snprintf(title, sizeof title, "r=%g k=%g mu=%g %s: %s", p.r, p.k, p.mu, orbit.ic.c_str(),
@@ -189,7 +187,7 @@ StudyReport poincare_study(const Settings& given, const StudyRequest&) {
   const auto& pts = col.points();
 
   StudyReport rep;
-  rep.series.push_back({"crossings", table_of([&](std::ostream& os) { write_poincare_csv(os, pts); })});
+  rep.series.push_back({"crossings", poincare_table(pts)});
   char title[256];
   std::snprintf(title, sizeof title, "Poincare map w=0: r=%g k=%g mu=%g %s, t<=%g", orbit.p.r, orbit.p.k, orbit.p.mu,
                 orbit.ic.c_str(), r.t_final);
@@ -225,18 +223,18 @@ std::vector<StudyOption> surface_options() {
                      {"n", "boundary points per projection, in [2, 100000]", "401"}});
 }
 
-StudyTable projections_csv(const std::vector<HeaveBoundaryPoint>& heave) {
-  return table_of([&](std::ostream& os) {
-    os << "y,v_min,vy_max\n" << std::setprecision(17);
-    for (const auto& b : heave) os << b.y << ',' << b.v_min << ',' << b.vy_max << '\n';
-  });
+StudyTable projections_table(const std::vector<HeaveBoundaryPoint>& heave) {
+  StudyTable t;
+  t.columns = {"y", "v_min", "vy_max"};
+  for (const auto& b : heave) t.rows.push_back({b.y, b.v_min, b.vy_max});
+  return t;
 }
 
-StudyTable projections_csv(const std::vector<RockBoundaryPoint>& rock) {
-  return table_of([&](std::ostream& os) {
-    os << "w,u,vw_free,vw_contact\n" << std::setprecision(17);
-    for (const auto& b : rock) os << b.w << ',' << b.u << ',' << b.vw_free << ',' << b.vw_contact << '\n';
-  });
+StudyTable projections_table(const std::vector<RockBoundaryPoint>& rock) {
+  StudyTable t;
+  t.columns = {"w", "u", "vw_free", "vw_contact"};
+  for (const auto& b : rock) t.rows.push_back({b.w, b.u, b.vw_free, b.vw_contact});
+  return t;
 }
 
 StudyReport surface_study(const Settings& given, const StudyRequest& request) {
@@ -267,9 +265,9 @@ StudyReport surface_study(const Settings& given, const StudyRequest& request) {
   }
   StudyReport rep;
   if (request.want_table) {
-    rep.series.push_back({"heave", projections_csv(heave_projection(p, E, int(n)))});
-    rep.series.push_back({"rock", projections_csv(rock_projection(p, E, int(n)))});
-    rep.series.push_back({"phase", table_of([&](std::ostream& os) { write_phase_csv(os, acc.phase()); })});
+    rep.series.push_back({"heave", projections_table(heave_projection(p, E, int(n)))});
+    rep.series.push_back({"rock", projections_table(rock_projection(p, E, int(n)))});
+    rep.series.push_back({"phase", phase_table(acc.phase())});
   }
   char title[256];
   std::snprintf(title, sizeof title, "r=%g k=%g mu=%g %s, E=%.6g, w0=%.4g y0=%.6g y0'=%.6g", p.r, p.k, p.mu,

@@ -157,8 +157,7 @@ StudyReport region_report(const StudyOptions& o, const OrbitSetup& st, const Stu
   rep.summary = orbit_study_header(st.rf, st.type, st.so);
   rep.summary["mode"] = "region";
   merge(rep.summary, r.summary);
-  if (request.wants("table"))
-    rep.series.push_back({"table", table_of([&](std::ostream& os) { write_region_csv(os, st.rf, r.points); })});
+  if (request.wants("table")) rep.series.push_back({"table", region_table(st.rf, r.points)});
   rep.figure = FigureSpec{"periodic_orbits",
                           {"@csv:table", "@plot"},
                           {{"kind", {"region"}}, {"title", {st.title}}, {"linear", {linear_overlay(st, false)}}}};
@@ -173,12 +172,8 @@ StudyReport orbits_report(const OrbitSetup& st, const OrbitsAtPoint& at, const S
   merge(rep.summary, at.summary);
   rep.summary["mode"] = "orbits";
   const auto& orbits = at.orbits;
-  if (request.asked("table"))
-    rep.series.push_back({"table", table_of([&](std::ostream& os) { write_orbits_csv(os, st.rf, orbits); })});
-  if (request.figure)
-    rep.series.push_back({"trajectories", table_of([&](std::ostream& os) {
-                            write_orbit_trajectories_csv(os, st.rf, orbits, st.so.integrator);
-                          })});
+  if (request.asked("table")) rep.series.push_back({"table", orbits_table(st.rf, orbits)});
+  if (request.figure) rep.series.push_back({"trajectories", orbit_trajectories_table(st.rf, orbits, st.so.integrator)});
   char title[256];
   std::snprintf(title, sizeof title, "%s, K_s=%.4g g, omega=%.4g", st.title.c_str(), st.rf.ks, st.rf.omega);
   rep.figure =
@@ -237,8 +232,7 @@ StudyReport continuation_report(const StudyOptions& o, const OrbitSetup& st, con
   merge(rep.summary, at.summary);
   rep.summary["mode"] = "continue";
   merge(rep.summary, b.summary);
-  if (request.wants("table"))
-    rep.series.push_back({"table", table_of([&](std::ostream& os) { write_branches_csv(os, st.rf, b.rows); })});
+  if (request.wants("table")) rep.series.push_back({"table", branches_table(st.rf, b.rows)});
   rep.figure = FigureSpec{"periodic_orbits",
                           {"@csv:table", "@plot"},
                           {{"kind", {"branches"}},

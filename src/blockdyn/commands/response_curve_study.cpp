@@ -115,7 +115,7 @@ std::string curve_title(const ForcedModelChoice& m, const SurvivalOptions& o, co
   return title;
 }
 
-void add_curve_cells(const CurveAxes& a, const SurvivalOptions& o, bool assembly, std::size_t i, RowBuilder& row) {
+void add_curve_cells(const CurveAxes& a, const SurvivalOptions& o, bool assembly, std::size_t i, CellRow& row) {
   const std::size_t nw = std::size_t(o.omega_points), nl = a.phi_l.size(), ns = a.phi_s.size();
   const std::size_t iw = i % nw, il = (i / nw) % nl, is = (i / (nw * nl)) % ns, ib = i / (nw * nl * ns);
   const ForcedModel& m = a.models[is * nl + il];
@@ -123,14 +123,14 @@ void add_curve_cells(const CurveAxes& a, const SurvivalOptions& o, bool assembly
   const SurvivalPoint p = survival_point(m.run, o, m.alpha, m.p, o.betas[ib], omega);
   add_survival_cells(p, row);
   if (assembly) {
-    row.add(a.phi_s[is]);
-    row.add(a.phi_l[il]);
+    row.emplace_back(a.phi_s[is]);
+    row.emplace_back(a.phi_l[il]);
   } else {
-    row.empty();
-    row.empty();
+    row.emplace_back();
+    row.emplace_back();
   }
-  row.add(p.max_abs_rotation / m.alpha);
-  row.add(p.max_sliding / m.width);
+  row.emplace_back(p.max_abs_rotation / m.alpha);
+  row.emplace_back(p.max_sliding / m.width);
 }
 
 GridStudy response_curve_grid(const Settings& given, const std::string& output) {
@@ -160,7 +160,7 @@ GridStudy response_curve_grid(const Settings& given, const std::string& output) 
   GridStudy g;
   g.table = std::make_shared<const GridTable>(
       "response-curve", cols, std::size_t(o.omega_points) * axes->phi_l.size() * axes->phi_s.size() * o.betas.size(),
-      [axes, o, assembly](std::size_t i, RowBuilder& row) { add_curve_cells(*axes, o, assembly, i, row); }, definition,
+      [axes, o, assembly](std::size_t i, CellRow& row) { add_curve_cells(*axes, o, assembly, i, row); }, definition,
       fm.tolerances, output);
   g.threads = o.threads;
   const std::string title = curve_title(choice, o, *axes, versus_phi);

@@ -72,11 +72,11 @@ std::vector<RockingSpectrumPoint> points_of(const Table& t) {
   std::vector<RockingSpectrumPoint> pts;
   for (const TableRow& r : t.rows) {
     RockingSpectrumPoint pt;
-    pt.p = cell_double(r.cells[cp]);
-    pt.scale = cell_double(r.cells[cs]);
-    pt.max_abs_rotation_over_alpha = cell_double(r.cells[cr]);
-    pt.overturned = r.cells[co] == "1";
-    pt.overturn_time = cell_optional_double(r.cells[ct]);
+    pt.p = r.cells[cp].number();
+    pt.scale = r.cells[cs].number();
+    pt.max_abs_rotation_over_alpha = r.cells[cr].number();
+    pt.overturned = r.cells[co].integer() == 1;
+    pt.overturn_time = r.cells[ct].optional_number();
     pts.push_back(pt);
   }
   return pts;
@@ -154,18 +154,18 @@ GridStudy rocking_grid(const Settings& given, const std::string& output) {
       std::vector<std::string>{"p", "scale", "width", "height", "max_abs_rotation_over_alpha", "overturned",
                                "overturn_time"},
       ax.p.size() * ax.scales.size(),
-      [ax, base, &m, rec](std::size_t i, RowBuilder& row) {
+      [ax, base, &m, rec](std::size_t i, CellRow& row) {
         const RockingSpectrumPoint pt = rocking_spectrum_point(m, base, ax, rec, i);
-        row.add(pt.p);
-        row.add(pt.scale);
-        row.add(pt.width);
-        row.add(pt.height);
-        row.add(pt.max_abs_rotation_over_alpha);
-        row.add(std::string(pt.overturned ? "1" : "0"));
+        row.emplace_back(pt.p);
+        row.emplace_back(pt.scale);
+        row.emplace_back(pt.width);
+        row.emplace_back(pt.height);
+        row.emplace_back(pt.max_abs_rotation_over_alpha);
+        row.emplace_back(pt.overturned ? 1 : 0);
         if (pt.overturn_time)
-          row.add(*pt.overturn_time);
+          row.emplace_back(*pt.overturn_time);
         else
-          row.empty();
+          row.emplace_back();
       },
       definition, first.tolerances, output);
   g.threads = so.threads();

@@ -123,7 +123,7 @@ GridStudy spectrum_grid(const Settings& given, const std::string& output) {
   const double alpha = fm->alpha, p = fm->p;
   g.table = std::make_shared<const GridTable>(
       "spectrum", spectrum_columns(), o.durations.size(),
-      [test, o, pulse, alpha, p](std::size_t i, RowBuilder& row) {
+      [test, o, pulse, alpha, p](std::size_t i, CellRow& row) {
         const double d = o.durations[i];
         add_spectrum_cells(spectrum_row(test, o, d),
                            pulse == PulseShape::Rect ? std::optional<double>(rect_pulse_overturning_linear(alpha, p, d))

@@ -138,8 +138,8 @@ StudyReport overturn_study(const Settings& given, const StudyRequest&) {
   int over = 0, failed = 0;
   double k_first_stable = NAN;
   for (const auto& x : runs) {
-    r.table.rows.push_back({cell_text(x.k), x.overturned ? "1" : "0", cell_text(x.time),
-                            std::to_string(x.upright_passages), to_string(x.status)});
+    r.table.rows.push_back({Cell::shortest(x.k), Cell(x.overturned ? 1 : 0), Cell::shortest(x.time),
+                            Cell(x.upright_passages), to_string(x.status)});
     over += x.overturned;
     failed += x.status == SimStatus::NumericalFailure;
     if (!x.overturned && std::isnan(k_first_stable)) k_first_stable = x.k;
@@ -194,8 +194,8 @@ std::string curve_text(const std::vector<double>& rs, const std::vector<std::str
   for (std::size_t i = 0; i < rs.size(); ++i) {
     append_text(s, "%-10.4g", rs[i]);
     for (std::size_t j = 0; j < names.size(); ++j) {
-      const std::string& v = t.rows[i][1 + j];
-      const std::string& st = t.rows[i][1 + names.size() + j];
+      const std::string v = t.rows[i][1 + j].text();
+      const std::string st = t.rows[i][1 + names.size() + j].text();
       append_text(s, " %-16s", st == "found" ? v.substr(0, 12).c_str() : st.c_str());
     }
     s += "\n";
@@ -246,12 +246,12 @@ StudyReport curve_study(const Settings& given, const StudyRequest&) {
   json points_json = json::array();
   for (std::size_t i = 0; i < rs.size(); ++i) {
     const CurveRow& row = rows[i];
-    std::vector<std::string> cells{cell_text(rs[i])};
-    for (const auto& n : names) cells.push_back(cell_text(boundary_cell(row.result(n))));
+    CellRow cells{Cell::shortest(rs[i])};
+    for (const auto& n : names) cells.push_back(Cell::shortest(boundary_cell(row.result(n))));
     for (const auto& n : names) cells.push_back(to_string(row.result(n).status));
-    if (want_k3) cells.push_back(row.k3.coincides_with_k2 ? "1" : "0");
+    if (want_k3) cells.push_back(Cell(row.k3.coincides_with_k2 ? 1 : 0));
     const double k_uns = k_uns_or_nan(rs[i]);
-    cells.push_back(cell_text(k_uns));
+    cells.push_back(Cell::shortest(k_uns));
     t.rows.push_back(cells);
     json p = {{"r", rs[i]}};
     p["k_uns"] = finite_or_null(k_uns);
@@ -291,9 +291,11 @@ std::string blowup_text(const StudyTable& t, std::size_t nw) {
     if (c.find("_status") == std::string::npos) append_text(s, "%-16s", c.c_str());
   s += "\n";
   for (const auto& row : t.rows) {
-    append_text(s, "%-16s", row[0].c_str());
-    for (std::size_t j = 0; j < nw; ++j)
-      append_text(s, "%-16s", row[1 + nw + j] == "found" ? row[1 + j].substr(0, 10).c_str() : row[1 + nw + j].c_str());
+    append_text(s, "%-16s", row[0].text().c_str());
+    for (std::size_t j = 0; j < nw; ++j) {
+      const std::string status = row[1 + nw + j].text();
+      append_text(s, "%-16s", status == "found" ? row[1 + j].text().substr(0, 10).c_str() : status.c_str());
+    }
     s += "\n";
   }
   return s;
@@ -329,8 +331,8 @@ StudyReport blowup_study(const Settings& given, const StudyRequest&) {
   for (auto w : whichs) t.columns.push_back(name(w) + "_status");
   json points = json::array();
   for (std::size_t m = 0; m < mus.size(); ++m) {
-    std::vector<std::string> cells{cell_text(mus[m])};
-    for (std::size_t j = 0; j < nw; ++j) cells.push_back(cell_text(boundary_cell(res[m * nw + j].result)));
+    CellRow cells{Cell::shortest(mus[m])};
+    for (std::size_t j = 0; j < nw; ++j) cells.push_back(Cell::shortest(boundary_cell(res[m * nw + j].result)));
     for (std::size_t j = 0; j < nw; ++j) cells.push_back(to_string(res[m * nw + j].result.status));
     t.rows.push_back(cells);
     json p = {{"mu", mus[m]}};

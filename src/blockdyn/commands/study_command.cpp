@@ -151,35 +151,6 @@ std::string cell_text(double v) {
   return b;
 }
 
-std::string cell_text17(double v) {
-  char b[32];
-  std::snprintf(b, sizeof b, "%.17g", v);
-  return b;
-}
-
-StudyTable table_from_csv(const std::string& text) {
-  // Cells keep their text as written (a quoted cell with its quotes), so that the table writes
-  // back to the same bytes; commas inside quotes do not split.
-  auto split = [](const std::string& line) {
-    std::vector<std::string> cells(1);
-    bool quoted = false;
-    for (char ch : line) {
-      if (ch == '"') quoted = !quoted;
-      if (ch == ',' && !quoted)
-        cells.emplace_back();
-      else
-        cells.back() += ch;
-    }
-    return cells;
-  };
-  StudyTable t;
-  std::istringstream in(text);
-  std::string line;
-  if (std::getline(in, line)) t.columns = split(line);
-  while (std::getline(in, line)) t.rows.push_back(split(line));
-  return t;
-}
-
 void append_text(std::string& to, const char* format, ...) {
   va_list args;
   va_start(args, format);

@@ -6,7 +6,6 @@
 // analysis is written once, in the library, and reaches both front ends by one registration.
 #include <cstddef>
 #include <functional>
-#include <sstream>
 #include <string>
 #include <utility>
 #include <vector>
@@ -18,6 +17,7 @@
 #include "blockdyn/analysis/winkler/study_options.hpp"
 #include "blockdyn/commands/option_spec.hpp"
 #include "blockdyn/commands/settings.hpp"
+#include "blockdyn/io/table_cell.hpp"
 
 namespace blockdyn {
 
@@ -35,10 +35,8 @@ enum class StudyOutputs {
   Series,
 };
 
-struct StudyTable {
-  std::vector<std::string> columns;
-  std::vector<std::vector<std::string>> rows;  // cells as written in the CSV
-};
+// A study's table: cells (numbers, integers, labels), formatted only by the CSV writer.
+using StudyTable = CellTable;
 
 struct NamedTable {
   std::string name;  // the file's suffix: P_<name>.csv
@@ -130,18 +128,9 @@ StudyOption threads_option();
 // `own`, then the run options (study_run_options) and --threads.
 std::vector<StudyOption> with_run_options(std::vector<StudyOption> own, const std::string& default_t_end);
 
-// Cells: the shortest of %.15g / %.17g that reads back exactly ("nan" for NaN); and %.17g.
+// A number as text for reports and titles: the shortest of %.15g / %.17g that reads back exactly
+// ("nan" for NaN); a table's cell is Cell::shortest.
 std::string cell_text(double v);
-std::string cell_text17(double v);
-// A table from CSV text (a header line, then rows; a quoted cell is kept whole, quotes included).
-StudyTable table_from_csv(const std::string& text);
-// The table a CSV writer `write(std::ostream&)` writes.
-template <class Write>
-StudyTable table_of(Write&& write) {
-  std::ostringstream os;
-  write(os);
-  return table_from_csv(os.str());
-}
 // printf into a report's text.
 void append_text(std::string& to, const char* format, ...) __attribute__((format(printf, 2, 3)));
 // {t_end, integrator}

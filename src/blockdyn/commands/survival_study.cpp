@@ -127,22 +127,20 @@ GridStudy survival_grid(const Settings& given, const std::string& output) {
   cols.push_back("level");
   const std::size_t motion_col = 3, mode_col = 4;  // after index, beta, omega
   // Refinement classes points by motion and collapse mode.
-  auto stages = std::make_shared<RefinementPlan>(std::size_t(o.omega_points), std::size_t(o.beta_points), refine,
-                                                 [](const std::string& r) {
-                                                   const auto c = split_csv_line(r.substr(0, r.size() - 1));
-                                                   return c[motion_col] + " " + c[mode_col];
-                                                 });
+  auto stages = std::make_shared<RefinementPlan>(
+      std::size_t(o.omega_points), std::size_t(o.beta_points), refine,
+      [](const CellRow& r) { return r[motion_col].text() + " " + r[mode_col].text(); });
   const std::size_t nxf = stages->nx_fine(), nyf = stages->ny_fine();
   // The table keeps the plan alive (a level per point), whoever holds the table.
   const std::shared_ptr<const RefinementPlan> plan = stages;
   GridStudy g;
   g.table = std::make_shared<const GridTable>(
       "survival", cols, stages->size(),
-      [fm, o, nxf, nyf, plan](std::size_t i, RowBuilder& row) {
+      [fm, o, nxf, nyf, plan](std::size_t i, CellRow& row) {
         const double omega = grid_value(o.omega_min, o.omega_max, int(nxf), int(i % nxf));
         const double beta = grid_value(o.beta_min, o.beta_max, int(nyf), int(i / nxf));
         add_survival_cells(survival_point(fm->run, o, fm->alpha, fm->p, beta, omega), row);
-        row.add(static_cast<long long>(plan->level_of(i)));
+        row.emplace_back(static_cast<long long>(plan->level_of(i)));
       },
       definition, fm->tolerances, output);
   g.plan = stages;

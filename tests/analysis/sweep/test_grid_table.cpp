@@ -30,9 +30,9 @@ SweepRunOptions quiet(int threads) {
 // Drives a plan as the runner does, with rows from a class function of the lattice point; returns
 // the stages.
 std::vector<std::vector<std::size_t>> drive(RefinementPlan& plan, const std::function<int(std::size_t)>& cls) {
-  std::map<std::size_t, std::string> rows;
+  std::map<std::size_t, CellRow> rows;
   std::vector<std::vector<std::size_t>> stages;
-  const FinishedRow lookup = [&](std::size_t i) -> const std::string* {
+  const FinishedRow lookup = [&](std::size_t i) -> const CellRow* {
     const auto it = rows.find(i);
     return it == rows.end() ? nullptr : &it->second;
   };
@@ -40,12 +40,12 @@ std::vector<std::vector<std::size_t>> drive(RefinementPlan& plan, const std::fun
     const auto st = plan.next_stage(lookup);
     if (st.empty()) break;
     stages.push_back(st);
-    for (std::size_t i : st) rows.emplace(i, std::to_string(i) + "," + std::to_string(cls(i)) + "\n");
+    for (std::size_t i : st) rows.emplace(i, CellRow{i, cls(i)});
   }
   return stages;
 }
 
-std::string class_cell(const std::string& row) { return row.substr(row.find(',') + 1); }
+std::string class_cell(const CellRow& row) { return row.at(1).text(); }
 
 }  // namespace
 
@@ -70,10 +70,10 @@ TEST(GridTable, SurvivalPointsAndSpectrumRowsReadBackExactly) {
   s.scan = {0, 0, 1, 0, 1};
   // Two tables: one per codec (their columns differ).
   const GridTable ts(
-      "survival", survival_columns(), 2, [&](std::size_t i, RowBuilder& r) { add_survival_cells(i == 0 ? a : b, r); },
-      {}, {}, tmp.path + "/s.csv");
+      "survival", survival_columns(), 2, [&](std::size_t i, CellRow& r) { add_survival_cells(i == 0 ? a : b, r); }, {},
+      {}, tmp.path + "/s.csv");
   const GridTable tp(
-      "spectrum", spectrum_columns(), 1, [&](std::size_t, RowBuilder& r) { add_spectrum_cells(s, 0.5, r); }, {}, {},
+      "spectrum", spectrum_columns(), 1, [&](std::size_t, CellRow& r) { add_spectrum_cells(s, 0.5, r); }, {}, {},
       tmp.path + "/p.csv");
   run_sweep(ts, quiet(1));
   run_sweep(tp, quiet(1));
@@ -105,7 +105,7 @@ TEST(GridTable, SurvivalPointsAndSpectrumRowsReadBackExactly) {
   // A table read with another header is refused; a row of the wrong width is a programming error.
   EXPECT_THROW(read_table(tmp.path + "/p.csv", ts.header()), std::runtime_error);
   const GridTable bad(
-      "x", {"a", "b"}, 1, [](std::size_t, RowBuilder& r) { r.add(1.0); }, {}, {}, tmp.path + "/x.csv");
+      "x", {"a", "b"}, 1, [](std::size_t, CellRow& r) { r.emplace_back(1.0); }, {}, {}, tmp.path + "/x.csv");
   EXPECT_THROW(bad.row(0), std::logic_error);
 }
 
@@ -157,17 +157,17 @@ TEST(RefinementPlan, RefinedRunIsTheSameForOneAndTwoThreadsAndSparse) {
   auto make = [&](const std::string& out, RefinementPlan& plan) {
     return GridTable(
         "test", {"x", "y", "cls", "level"}, plan.size(),
-        [&plan](std::size_t i, RowBuilder& r) {
+        [&plan](std::size_t i, CellRow& r) {
           const double x = double(i % plan.nx_fine()) / double(plan.nx_fine() - 1);
           const double y = double(i / plan.nx_fine()) / double(plan.ny_fine() - 1);
-          r.add(x);
-          r.add(y);
-          r.add(std::string(y > 0.3 + 0.4 * x * x ? "above" : "below"));
-          r.add(static_cast<long long>(plan.level_of(i)));
+          r.emplace_back(x);
+          r.emplace_back(y);
+          r.emplace_back(y > 0.3 + 0.4 * x * x ? "above" : "below");
+          r.emplace_back(static_cast<long long>(plan.level_of(i)));
         },
         {{"what", "a parabola"}}, {}, out);
   };
-  auto cls = [](const std::string& row) { return split_csv_line(row.substr(0, row.size() - 1))[3]; };
+  auto cls = [](const CellRow& row) { return row.at(3).text(); };
   RefinementPlan p1(6, 6, 3, cls), p2(6, 6, 3, cls);
   const GridTable t1 = make(tmp.path + "/a.csv", p1), t2 = make(tmp.path + "/b.csv", p2);
   const SweepOutcome o1 = run_sweep(t1, quiet(1), &p1);

@@ -36,6 +36,9 @@ SweepRunOptions quiet(int threads) {
   return o;
 }
 
+// A computed row as the CSV writer writes it.
+std::string row_text(const SweepRow& r) { return csv_line(r.cells); }
+
 std::vector<std::string> cells_of(const std::string& line) {
   std::vector<std::string> out(1);
   for (char c : line) {
@@ -66,7 +69,7 @@ TEST(SweepRun, BitIdenticalForOneAndTwoThreads) {
   EXPECT_NE(side.find("\"status\": \"complete\""), std::string::npos);
   EXPECT_NE(side.find("\"rtol\": 1e-10"), std::string::npos);
   EXPECT_NE(side.find("\"point_count\": 16"), std::string::npos);
-  EXPECT_NE(a.find(e1.row(5).text), std::string::npos);
+  EXPECT_NE(a.find(row_text(e1.row(5))), std::string::npos);
   // The outcomes seen in the sweep are varied (the test would be weak otherwise).
   EXPECT_NE(a.find(",overturned,"), std::string::npos);
   EXPECT_NE(a.find(",t_end,"), std::string::npos);
@@ -76,7 +79,7 @@ TEST(SweepRun, RowFieldsMatchSimulate) {
   SweepSpec s = small_spec("/dev/null");
   const SweepEvaluator ev(s);
   const std::size_t idx = 2;  // k = 1e4, inv_r = 2, ic2
-  const auto cells = cells_of(ev.row(idx).text);
+  const auto cells = cells_of(row_text(ev.row(idx)));
   ASSERT_EQ(cells.size(), ev.columns().size());
   const SweepPoint p = sweep_point(s, idx);
   const WinklerResult r = simulate(p.params, {}, sweep_initial_state(s, p), ev.options());
@@ -138,7 +141,7 @@ TEST(SweepRun, MetricsAddColumnsAndSeeTheTrajectory) {
   EXPECT_NE(ev.header().find(",time_contact,time_slide,time_flight,segments,"), std::string::npos);
   const SweepPoint p = sweep_point(s, 3);
   const WinklerResult r = simulate(p.params, {}, sweep_initial_state(s, p), ev.options());
-  const std::string row = ev.row(3).text;
+  const std::string row = row_text(ev.row(3));
   // Quoted text cell (it contains a comma and quotes), last in the row.
   EXPECT_NE(row.find(",\"n,\"\"" + std::to_string(r.events.size()) + "\"\"\"\n"), std::string::npos) << row;
   // Regime times add up to the run time; the counting sink saw the whole run.
@@ -175,12 +178,12 @@ TEST(SweepRun, ResumeKeepsJournalRowsAndRecomputesTheRest) {
   const SweepEvaluator ev(small_spec(dir + "/part.csv"));
   {
     SweepJournal j(dir + "/part.csv.journal", ev.fingerprint(), ev.header(), ev.size(), false);
-    j.append(7, ev.row(7).text);
-    j.append(0, ev.row(0).text);
+    j.append(7, ev.row(7).cells);
+    j.append(0, ev.row(0).cells);
   }
   {
     std::ofstream app(dir + "/part.csv.journal", std::ios::app);
-    const std::string r = ev.row(12).text;
+    const std::string r = row_text(ev.row(12));
     app << r.substr(0, r.size() / 2);  // killed mid-write
   }
   // Without --resume or --overwrite the journal is protected.
@@ -203,11 +206,11 @@ TEST(SweepRun, ResumeTrustsFinishedRows) {
   const sweep_test::TmpDir tmp("sweep-trust");
   const std::string& dir = tmp.path;
   const SweepEvaluator ev(small_spec(dir + "/s.csv"));
-  std::string row = ev.row(4).text;
+  std::string row = row_text(ev.row(4));
   const std::string tampered = row.substr(0, row.size() - 1) + "0\n";  // rhs_evals * 10
   {
     SweepJournal j(dir + "/s.csv.journal", ev.fingerprint(), ev.header(), ev.size(), false);
-    j.append(4, tampered);
+    j.append(4, parse_csv_row(tampered.substr(0, tampered.size() - 1)));
   }
   SweepRunOptions o = quiet(1);
   o.resume = true;
@@ -265,7 +268,7 @@ TEST(SweepRun, AlteredJournalCellsAreRefused) {
   const sweep_test::TmpDir tmp("sweep-altered");
   const std::string& dir = tmp.path;
   const SweepEvaluator ev(small_spec(dir + "/s.csv"));
-  const std::string row = ev.row(4).text;
+  const std::string row = row_text(ev.row(4));
   const std::size_t cut = row.find(',', row.find(',') + 1);  // the second cell
   SweepRunOptions o = quiet(1);
   o.resume = true;
@@ -273,7 +276,7 @@ TEST(SweepRun, AlteredJournalCellsAreRefused) {
     SCOPED_TRACE(cell);
     {
       SweepJournal j(dir + "/s.csv.journal", ev.fingerprint(), ev.header(), ev.size(), false);
-      j.append(4, row);
+      j.append(4, parse_csv_row(row.substr(0, row.size() - 1)));
     }
     std::string text = slurp(dir + "/s.csv.journal");
     const std::size_t at = text.find(row.substr(0, cut));
@@ -291,7 +294,7 @@ TEST(SweepRun, AlteredJournalCellsAreRefused) {
   }
   {
     SweepJournal j(dir + "/s.csv.journal", ev.fingerprint(), ev.header(), ev.size(), false);
-    j.append(4, row);
+    j.append(4, parse_csv_row(row.substr(0, row.size() - 1)));
   }
   EXPECT_EQ(run_sweep(ev, o).resumed, 1u);
   EXPECT_NE(slurp(dir + "/s.csv").find(row), std::string::npos);

@@ -115,21 +115,14 @@ nlohmann::ordered_json chaos_counts_json(const std::vector<ChaosPoint>& pts) {
   return c;
 }
 
-void write_chaos_csv(std::ostream& os, const std::vector<ChaosPoint>& pts) {
-  os << "beta,omega,motion,exponent,exponent_nondim,exponent_second_half,status,impacts,collapse_mode,t_failure\n";
-  char buf[512];
-  for (const ChaosPoint& p : pts) {
-    std::snprintf(buf, sizeof buf, "%.17g,%.17g,%s,%.17g,%.17g,%.17g,%s,%ld,", p.beta, p.omega, p.motion.c_str(),
-                  p.exponent, p.exponent_nondim, p.exponent_second_half, p.status.c_str(), p.impacts);
-    os << buf;
-    if (p.collapse_mode) os << *p.collapse_mode;
-    os << ',';
-    if (p.t_failure) {
-      std::snprintf(buf, sizeof buf, "%.17g", *p.t_failure);
-      os << buf;
-    }
-    os << '\n';
-  }
+CellTable chaos_table(const std::vector<ChaosPoint>& pts) {
+  CellTable t;
+  t.columns = {"beta",   "omega",   "motion",        "exponent", "exponent_nondim", "exponent_second_half",
+               "status", "impacts", "collapse_mode", "t_failure"};
+  for (const ChaosPoint& p : pts)
+    t.rows.push_back({p.beta, p.omega, p.motion, p.exponent, p.exponent_nondim, p.exponent_second_half, p.status,
+                      p.impacts, p.collapse_mode ? Cell(*p.collapse_mode) : Cell(), Cell::maybe(p.t_failure)});
+  return t;
 }
 
 }  // namespace blockdyn

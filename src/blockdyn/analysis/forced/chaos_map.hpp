@@ -14,7 +14,6 @@
 // may call it for any point in any order; chaos_map() runs the grid on threads, each point at
 // its own index, so the map is identical for any thread count.
 #include <functional>
-#include <ostream>
 
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -23,6 +22,7 @@
 
 #include "blockdyn/analysis/forced/forced_lyapunov.hpp"
 #include "blockdyn/analysis/forced/survival_map.hpp"
+#include "blockdyn/io/table_cell.hpp"
 
 namespace blockdyn {
 
@@ -64,8 +64,8 @@ const std::vector<std::string>& chaos_motions();
 // The points as the summary's "points" list, and their count per motion (every motion listed).
 nlohmann::ordered_json chaos_points_json(const std::vector<ChaosPoint>& pts);
 nlohmann::ordered_json chaos_counts_json(const std::vector<ChaosPoint>& pts);
-// CSV: beta, omega, motion, exponent, exponent_nondim, exponent_second_half, status, impacts,
+// The table: beta, omega, motion, exponent, exponent_nondim, exponent_second_half, status, impacts,
 // collapse_mode, t_failure (empty cells where none).
-void write_chaos_csv(std::ostream& os, const std::vector<ChaosPoint>& pts);
+CellTable chaos_table(const std::vector<ChaosPoint>& pts);
 
 }  // namespace blockdyn

@@ -69,17 +69,17 @@ json forced_lyapunov_summary(const ForcedModel& fm, const GroundMotion& g, const
   return j;
 }
 
-void write_twin_csv(std::ostream& os, const ForcedLyapunovOutcome& r) {
+CellTable twin_table(const ForcedLyapunovOutcome& r) {
   const TangentLyapunovResult& tl = r.tangent;
-  os << "t,separation,predicted\n";
-  char buf[96];
+  CellTable t;
+  t.columns = {"t", "separation", "predicted"};
   for (const auto& x : r.twin) {
     const double pred = std::isfinite(tl.exponent) && !r.twin.empty()
                             ? r.twin.front().separation * std::exp(tl.exponent * (x.t - r.twin.front().t))
                             : NAN;
-    const int n = std::snprintf(buf, sizeof buf, "%.17g,%.17g,%.17g\n", x.t, x.separation, pred);
-    os.write(buf, n);
+    t.rows.push_back({x.t, x.separation, pred});
   }
+  return t;
 }
 
 }  // namespace blockdyn

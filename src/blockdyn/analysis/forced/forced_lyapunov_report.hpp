@@ -2,11 +2,11 @@
 #pragma once
 // What a forced Lyapunov run reports: the summary document (model, ground, options, exponent,
 // saltation statistics, coarse history, sensitivity of two nearby orbits) and the twin table.
-#include <ostream>
 
 #include <nlohmann/json.hpp>
 
 #include "blockdyn/analysis/forced/forced_model.hpp"
+#include "blockdyn/io/table_cell.hpp"
 
 namespace blockdyn {
 
@@ -14,7 +14,7 @@ namespace blockdyn {
 nlohmann::ordered_json forced_lyapunov_summary(const ForcedModel& fm, const GroundMotion& g,
                                                const nlohmann::ordered_json& excitation, const ForcedLyapunovOptions& o,
                                                const ForcedLyapunovOutcome& r);
-// CSV t, separation, predicted (the first separation grown at the exponent).
-void write_twin_csv(std::ostream& os, const ForcedLyapunovOutcome& r);
+// The table t, separation, predicted (the first separation grown at the exponent).
+CellTable twin_table(const ForcedLyapunovOutcome& r);
 
 }  // namespace blockdyn

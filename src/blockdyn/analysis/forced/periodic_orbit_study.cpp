@@ -37,12 +37,6 @@ json orbit_json(const PeriodicOrbit& o, const RockingForcing& f) {
 
 bool has_linear_theory(const OrbitType& type) { return type.symmetric && type.m == 1; }
 
-void put(std::ostream& os, const char* fmt, auto... v) {
-  char buf[512];
-  const int n = std::snprintf(buf, sizeof buf, fmt, v...);
-  os.write(buf, n);
-}
-
 }  // namespace
 
 json orbit_study_header(const RockingForcing& f, const OrbitType& type, const ShootingOptions& so) {
@@ -94,25 +88,29 @@ OrbitsAtPoint orbits_at_point(const RockingForcing& f, const OrbitType& type, co
   return r;
 }
 
-void write_orbits_csv(std::ostream& os, const RockingForcing& f, const std::vector<PeriodicOrbit>& orbits) {
-  os << "orbit,phase,velocity,velocity_si,period,max_abs_rotation,mu1_re,mu1_im,mu2_re,mu2_im,stable,lyapunov_"
-        "exponent\n";
+CellTable orbits_table(const RockingForcing& f, const std::vector<PeriodicOrbit>& orbits) {
+  CellTable t;
+  t.columns = {"orbit",  "phase",  "velocity", "velocity_si", "period", "max_abs_rotation",
+               "mu1_re", "mu1_im", "mu2_re",   "mu2_im",      "stable", "lyapunov_exponent"};
   for (std::size_t k = 0; k < orbits.size(); ++k) {
     const auto& o = orbits[k];
-    put(os, "%zu,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%d,%.17g\n", k, o.phase, o.velocity,
-        o.velocity * f.alpha() * f.p(), o.period, o.max_abs_rotation, o.multipliers[0].real(), o.multipliers[0].imag(),
-        o.multipliers[1].real(), o.multipliers[1].imag(), int(o.stable), o.lyapunov_exponent);
+    t.rows.push_back({k, o.phase, o.velocity, o.velocity * f.alpha() * f.p(), o.period, o.max_abs_rotation,
+                      o.multipliers[0].real(), o.multipliers[0].imag(), o.multipliers[1].real(),
+                      o.multipliers[1].imag(), int(o.stable), o.lyapunov_exponent});
   }
+  return t;
 }
 
-void write_orbit_trajectories_csv(std::ostream& os, const RockingForcing& f, const std::vector<PeriodicOrbit>& orbits,
-                                  const IntegratorOptions& integ) {
-  os << "orbit,stable,t,theta,rate\n";
+CellTable orbit_trajectories_table(const RockingForcing& f, const std::vector<PeriodicOrbit>& orbits,
+                                   const IntegratorOptions& integ) {
+  CellTable t;
+  t.columns = {"orbit", "stable", "t", "theta", "rate"};
   for (std::size_t k = 0; k < orbits.size(); ++k) {
     const OrbitSamples sm = orbit_trajectory(f, orbits[k], integ);
     for (std::size_t i = 0; i < sm.t.size(); ++i)
-      put(os, "%zu,%d,%.17g,%.17g,%.17g\n", k, int(orbits[k].stable), sm.t[i], sm.theta[i], sm.rate[i]);
+      t.rows.push_back({k, int(orbits[k].stable), sm.t[i], sm.theta[i], sm.rate[i]});
   }
+  return t;
 }
 
 OrbitBranches continue_orbits(const RockingForcing& f, const OrbitType& type, const std::vector<PeriodicOrbit>& orbits,
@@ -154,15 +152,17 @@ OrbitBranches continue_orbits(const RockingForcing& f, const OrbitType& type, co
   return r;
 }
 
-void write_branches_csv(std::ostream& os, const RockingForcing& f, const std::vector<BranchRow>& rows) {
-  os << "branch,ks,beta,omega,phase,velocity,mu1_abs,mu2_abs,mu1_re,mu1_im,mu2_re,mu2_im,stable,event\n";
+CellTable branches_table(const RockingForcing& f, const std::vector<BranchRow>& rows) {
+  CellTable t;
+  t.columns = {"branch",  "ks",     "beta",   "omega",  "phase",  "velocity", "mu1_abs",
+               "mu2_abs", "mu1_re", "mu1_im", "mu2_re", "mu2_im", "stable",   "event"};
   for (const BranchRow& r : rows) {
     const BranchPoint& p = r.point;
-    put(os, "%d,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%d,%s\n", r.branch, p.ks,
-        p.ks / f.alpha(), p.omega, p.phase, p.velocity, std::abs(p.multipliers[0]), std::abs(p.multipliers[1]),
-        p.multipliers[0].real(), p.multipliers[0].imag(), p.multipliers[1].real(), p.multipliers[1].imag(),
-        int(p.stable), p.event.c_str());
+    t.rows.push_back({r.branch, p.ks, p.ks / f.alpha(), p.omega, p.phase, p.velocity, std::abs(p.multipliers[0]),
+                      std::abs(p.multipliers[1]), p.multipliers[0].real(), p.multipliers[0].imag(),
+                      p.multipliers[1].real(), p.multipliers[1].imag(), int(p.stable), p.event});
   }
+  return t;
 }
 
 OrbitRegion orbit_region(const RockingForcing& f, const OrbitType& type, const OrbitRegionOptions& ro,
@@ -199,11 +199,14 @@ OrbitRegion orbit_region(const RockingForcing& f, const OrbitType& type, const O
   return r;
 }
 
-void write_region_csv(std::ostream& os, const RockingForcing& f, const std::vector<OrbitRegionPoint>& points) {
-  os << "ks,beta,omega,orbits,stable,phase,velocity,max_multiplier,linear_orbits,linear_stable\n";
+CellTable region_table(const RockingForcing& f, const std::vector<OrbitRegionPoint>& points) {
+  CellTable t;
+  t.columns = {"ks",    "beta",     "omega",          "orbits",        "stable",
+               "phase", "velocity", "max_multiplier", "linear_orbits", "linear_stable"};
   for (const auto& p : points)
-    put(os, "%.17g,%.17g,%.17g,%d,%d,%.17g,%.17g,%.17g,%d,%d\n", p.ks, p.ks / f.alpha(), p.omega, p.orbits, p.stable,
-        p.phase, p.velocity, p.max_multiplier, p.linear_orbits, p.linear_stable);
+    t.rows.push_back({p.ks, p.ks / f.alpha(), p.omega, p.orbits, p.stable, p.phase, p.velocity, p.max_multiplier,
+                      p.linear_orbits, p.linear_stable});
+  return t;
 }
 
 }  // namespace blockdyn

@@ -9,7 +9,6 @@
 #include <cstddef>
 #include <functional>
 #include <optional>
-#include <ostream>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -17,6 +16,7 @@
 #include "blockdyn/analysis/forced/housner_periodic_orbits.hpp"
 #include "blockdyn/analysis/forced/orbit_continuation.hpp"
 #include "blockdyn/analysis/forced/orbit_region_map.hpp"
+#include "blockdyn/io/table_cell.hpp"
 
 namespace blockdyn {
 
@@ -30,10 +30,10 @@ struct OrbitsAtPoint {
 // The orbits at (K_s, omega), from `guess` (phase, velocity) or from orbit_guesses().
 OrbitsAtPoint orbits_at_point(const RockingForcing& f, const OrbitType& type, const ShootingOptions& so,
                               const std::optional<std::array<double, 2>>& guess);
-// CSV: one row per orbit; and the orbits' trajectories over one period (orbit, stable, t, theta, rate).
-void write_orbits_csv(std::ostream& os, const RockingForcing& f, const std::vector<PeriodicOrbit>& orbits);
-void write_orbit_trajectories_csv(std::ostream& os, const RockingForcing& f, const std::vector<PeriodicOrbit>& orbits,
-                                  const IntegratorOptions& integ);
+// Tables: one row per orbit; and the orbits' trajectories over one period (orbit, stable, t, theta, rate).
+CellTable orbits_table(const RockingForcing& f, const std::vector<PeriodicOrbit>& orbits);
+CellTable orbit_trajectories_table(const RockingForcing& f, const std::vector<PeriodicOrbit>& orbits,
+                                   const IntegratorOptions& integ);
 
 struct BranchRow {
   int branch;
@@ -47,7 +47,7 @@ struct OrbitBranches {
 // Every orbit continued both ways (co.direction is set per branch).
 OrbitBranches continue_orbits(const RockingForcing& f, const OrbitType& type, const std::vector<PeriodicOrbit>& orbits,
                               ContinuationOptions co);
-void write_branches_csv(std::ostream& os, const RockingForcing& f, const std::vector<BranchRow>& rows);
+CellTable branches_table(const RockingForcing& f, const std::vector<BranchRow>& rows);
 
 struct OrbitRegion {
   std::vector<OrbitRegionPoint> points;
@@ -56,6 +56,6 @@ struct OrbitRegion {
 };
 OrbitRegion orbit_region(const RockingForcing& f, const OrbitType& type, const OrbitRegionOptions& ro,
                          const std::function<void(std::size_t)>& progress = {});
-void write_region_csv(std::ostream& os, const RockingForcing& f, const std::vector<OrbitRegionPoint>& points);
+CellTable region_table(const RockingForcing& f, const std::vector<OrbitRegionPoint>& points);
 
 }  // namespace blockdyn

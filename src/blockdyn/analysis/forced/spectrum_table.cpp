@@ -15,39 +15,39 @@ const std::vector<std::string>& spectrum_columns() {
   return c;
 }
 
-void add_spectrum_cells(const SpectrumRow& r, std::optional<double> linearised_rect, RowBuilder& row) {
-  row.add(r.duration);
+void add_spectrum_cells(const SpectrumRow& r, std::optional<double> linearised_rect, CellRow& row) {
+  row.emplace_back(r.duration);
   if (r.min_overturning_amplitude)
-    row.add(*r.min_overturning_amplitude);
+    row.emplace_back(*r.min_overturning_amplitude);
   else
-    row.empty();
+    row.emplace_back();
   if (linearised_rect)
-    row.add(*linearised_rect);
+    row.emplace_back(*linearised_rect);
   else
-    row.empty();
-  row.add(r.safe_islands.size());
-  row.add(static_cast<long long>(r.at_scan_floor));
+    row.emplace_back();
+  row.emplace_back(r.safe_islands.size());
+  row.emplace_back(static_cast<long long>(r.at_scan_floor));
   std::string isl;
   for (const SpectrumIsland& i : r.safe_islands) {
     if (!isl.empty()) isl.push_back(';');
     isl.append(format_double(i.from)).push_back(':');
     isl.append(format_double(i.to));
   }
-  row.add(isl);
-  row.add(static_cast<long long>(r.runs));
+  row.emplace_back(isl);
+  row.emplace_back(static_cast<long long>(r.runs));
   std::string scan;
   for (char c : r.scan) scan += char('0' + c);
-  row.add(scan);
-  row.add(static_cast<long long>(r.bisection_outside_model));
+  row.emplace_back(scan);
+  row.emplace_back(static_cast<long long>(r.bisection_outside_model));
 }
 
 SpectrumRow spectrum_row_from(const Table& t, const TableRow& r) {
-  auto cell = [&](const char* name) -> const std::string& { return r.cells[t.column(name)]; };
+  auto cell = [&](const char* name) -> const Cell& { return r.cells[t.column(name)]; };
   SpectrumRow s;
-  s.duration = cell_double(cell("duration"));
-  s.min_overturning_amplitude = cell_optional_double(cell("min_overturning_amplitude"));
-  s.at_scan_floor = cell_integer(cell("at_scan_floor")) != 0;
-  const std::string& isl = cell("islands");
+  s.duration = cell("duration").number();
+  s.min_overturning_amplitude = cell("min_overturning_amplitude").optional_number();
+  s.at_scan_floor = cell("at_scan_floor").integer() != 0;
+  const std::string isl = cell("islands").text();
   std::size_t pos = 0;
   while (pos < isl.size()) {
     std::size_t end = isl.find(';', pos);
@@ -55,15 +55,15 @@ SpectrumRow spectrum_row_from(const Table& t, const TableRow& r) {
     const std::string one = isl.substr(pos, end - pos);
     const std::size_t colon = one.find(':');
     if (colon == std::string::npos) throw std::runtime_error("table: island '" + one + "' is not from:to");
-    s.safe_islands.push_back({cell_double(one.substr(0, colon)), cell_double(one.substr(colon + 1))});
+    s.safe_islands.push_back({parse_cell(one.substr(0, colon)).number(), parse_cell(one.substr(colon + 1)).number()});
     pos = end + 1;
   }
-  s.runs = long(cell_integer(cell("runs")));
-  for (char c : cell("scan")) {
+  s.runs = long(cell("runs").integer());
+  for (char c : cell("scan").text()) {
     s.scan.push_back(c == '1' ? kOverturns : c == '2' ? kOutsideModel : kSurvives);
     s.outside_model += c == '2';
   }
-  s.bisection_outside_model = long(cell_integer(cell("bisection_outside_model")));
+  s.bisection_outside_model = long(cell("bisection_outside_model").integer());
   s.outside_model += s.bisection_outside_model;
   s.upper_bound = s.bisection_outside_model > 0;
   for (std::size_t j = 0; j < s.scan.size() && s.scan[j] != kOverturns; ++j)

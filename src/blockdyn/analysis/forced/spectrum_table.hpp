@@ -19,7 +19,7 @@ namespace blockdyn {
 // islands ("from:to;from:to", g), runs, scan (one character per scan amplitude: 1 overturns,
 // 0 survives, 2 outside the model)
 const std::vector<std::string>& spectrum_columns();
-void add_spectrum_cells(const SpectrumRow& r, std::optional<double> linearised_rect, RowBuilder& row);
+void add_spectrum_cells(const SpectrumRow& r, std::optional<double> linearised_rect, CellRow& row);
 SpectrumRow spectrum_row_from(const Table& t, const TableRow& r);
 
 // The finished table's rows, and as the summary's "rows" (duration, min_overturning_amplitude,

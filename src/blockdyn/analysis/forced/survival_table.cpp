@@ -12,36 +12,36 @@ const std::vector<std::string>& survival_columns() {
   return c;
 }
 
-void add_survival_cells(const SurvivalPoint& p, RowBuilder& row) {
-  row.add(p.beta);
-  row.add(p.omega);
-  row.add(csv_escape(p.motion));
+void add_survival_cells(const SurvivalPoint& p, CellRow& row) {
+  row.emplace_back(p.beta);
+  row.emplace_back(p.omega);
+  row.emplace_back(p.motion);
   if (p.collapse_mode)
-    row.add(static_cast<long long>(*p.collapse_mode));
+    row.emplace_back(static_cast<long long>(*p.collapse_mode));
   else
-    row.empty();
+    row.emplace_back();
   if (p.t_failure)
-    row.add(*p.t_failure);
+    row.emplace_back(*p.t_failure);
   else
-    row.empty();
-  row.add(csv_escape(p.t_star_class));
-  row.add(p.max_abs_rotation);
-  row.add(p.max_sliding);
-  row.add(csv_escape(p.cycle));
+    row.emplace_back();
+  row.emplace_back(p.t_star_class);
+  row.emplace_back(p.max_abs_rotation);
+  row.emplace_back(p.max_sliding);
+  row.emplace_back(p.cycle);
 }
 
 SurvivalPoint survival_point_from(const Table& t, const TableRow& r) {
-  auto cell = [&](const char* name) -> const std::string& { return r.cells[t.column(name)]; };
+  auto cell = [&](const char* name) -> const Cell& { return r.cells[t.column(name)]; };
   SurvivalPoint p;
-  p.beta = cell_double(cell("beta"));
-  p.omega = cell_double(cell("omega"));
-  p.motion = cell("motion");
-  if (!cell("collapse_mode").empty()) p.collapse_mode = int(cell_integer(cell("collapse_mode")));
-  p.t_failure = cell_optional_double(cell("t_failure"));
-  p.t_star_class = cell("t_star_class");
-  p.max_abs_rotation = cell_double(cell("max_abs_rotation"));
-  p.max_sliding = cell_double(cell("max_sliding"));
-  p.cycle = cell("cycle");
+  p.beta = cell("beta").number();
+  p.omega = cell("omega").number();
+  p.motion = cell("motion").text();
+  if (!cell("collapse_mode").empty()) p.collapse_mode = int(cell("collapse_mode").integer());
+  p.t_failure = cell("t_failure").optional_number();
+  p.t_star_class = cell("t_star_class").text();
+  p.max_abs_rotation = cell("max_abs_rotation").number();
+  p.max_sliding = cell("max_sliding").number();
+  p.cycle = cell("cycle").text();
   return p;
 }
 
@@ -63,7 +63,7 @@ SurvivalPoints survival_points(const Table& t, bool with_level) {
     x["t_star_class"] = p.t_star_class.empty() ? json(nullptr) : json(p.t_star_class);
     x["max_abs_rotation"] = p.max_abs_rotation;
     x["cycle"] = p.cycle.empty() ? json(nullptr) : json(p.cycle);
-    if (with_level) x["level"] = cell_integer(r.cells[level_col]);
+    if (with_level) x["level"] = r.cells[level_col].integer();
     out.points.push_back(x);
     ++out.counts[p.motion == "rest" ? 0 : p.motion == "stable" ? 1 : p.motion == "collapse" ? 2 : 3];
   }
@@ -77,13 +77,13 @@ nlohmann::ordered_json response_curve_points(const Table& t, bool with_friction)
     const SurvivalPoint p = survival_point_from(t, r);
     json x = {{"beta", p.beta},
               {"omega", p.omega},
-              {"theta_max_over_alpha", cell_double(r.cells[c_theta])},
-              {"max_sliding_over_b", cell_double(r.cells[c_slide])},
+              {"theta_max_over_alpha", r.cells[c_theta].number()},
+              {"max_sliding_over_b", r.cells[c_slide].number()},
               {"motion", p.motion},
               {"t_failure", p.t_failure ? json(*p.t_failure) : json(nullptr)}};
     if (with_friction) {
-      x["phi_s"] = cell_double(r.cells[t.column("phi_s")]);
-      x["phi_l"] = cell_double(r.cells[t.column("phi_l")]);
+      x["phi_s"] = r.cells[t.column("phi_s")].number();
+      x["phi_l"] = r.cells[t.column("phi_l")].number();
     }
     arr.push_back(x);
   }

@@ -17,7 +17,7 @@ namespace blockdyn {
 
 // beta, omega, motion, collapse_mode, t_failure, t_star_class, max_abs_rotation, max_sliding, cycle
 const std::vector<std::string>& survival_columns();
-void add_survival_cells(const SurvivalPoint& p, RowBuilder& row);
+void add_survival_cells(const SurvivalPoint& p, CellRow& row);
 // The point of a row of a table that holds survival_columns() (found by name).
 SurvivalPoint survival_point_from(const Table& t, const TableRow& r);
 

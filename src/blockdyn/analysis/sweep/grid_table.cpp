@@ -1,10 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "blockdyn/analysis/sweep/grid_table.hpp"
 
-#include <cerrno>
-#include <cstdlib>
 #include <fstream>
-#include <sstream>
 #include <stdexcept>
 
 #include "blockdyn/analysis/sweep/point_table.hpp"
@@ -29,38 +26,13 @@ GridTable::GridTable(std::string kind, std::vector<std::string> columns, std::si
 }
 
 SweepRow GridTable::row(std::size_t index) const {
-  RowBuilder b;
-  b.add(index);
-  cells_(index, b);
-  SweepRow r{b.finish(), ""};
-  if (split_csv_line(r.text.substr(0, r.text.size() - 1)).size() != columns_.size())
+  SweepRow r;
+  r.cells.reserve(columns_.size());
+  r.cells.emplace_back(index);
+  cells_(index, r.cells);
+  if (r.cells.size() != columns_.size())
     throw std::logic_error(kind_ + ": point " + std::to_string(index) + " has a row of the wrong width");
   return r;
-}
-
-std::vector<std::string> split_csv_line(const std::string& line) {
-  std::vector<std::string> out(1);
-  bool quoted = false;
-  for (std::size_t i = 0; i < line.size(); ++i) {
-    const char c = line[i];
-    if (quoted) {
-      if (c == '"' && i + 1 < line.size() && line[i + 1] == '"') {
-        out.back() += '"';
-        ++i;
-      } else if (c == '"') {
-        quoted = false;
-      } else {
-        out.back() += c;
-      }
-    } else if (c == '"') {
-      quoted = true;
-    } else if (c == ',') {
-      out.emplace_back();
-    } else {
-      out.back() += c;
-    }
-  }
-  return out;
 }
 
 std::size_t Table::column(const std::string& name) const {
@@ -81,65 +53,20 @@ Table read_table(const std::string& path, const std::string& expected_header) {
   while (std::getline(in, line)) {
     if (line.empty()) continue;
     TableRow r;
-    r.cells = split_csv_line(line);
+    r.cells = parse_csv_row(line);
     if (r.cells.size() != t.columns.size())
       throw std::runtime_error("'" + path + "': a row has " + std::to_string(r.cells.size()) + " cells, the header " +
                                std::to_string(t.columns.size()));
-    r.index = std::size_t(cell_integer(r.cells[0]));
-    t.rows.push_back(std::move(r));
-  }
-  return t;
-}
-
-Table table_of_rows(const std::string& header, const std::vector<const std::string*>& rows) {
-  Table t;
-  t.columns = split_csv_line(header.substr(0, header.size() - 1));
-  for (std::size_t i = 0; i < rows.size(); ++i) {
-    if (!rows[i]) continue;
-    TableRow r;
-    r.cells = split_csv_line(rows[i]->substr(0, rows[i]->size() - 1));
-    r.index = i;
+    r.index = std::size_t(r.cells[0].integer());
     t.rows.push_back(std::move(r));
   }
   return t;
 }
 
 std::string csv_text(const Table& t) {
-  auto line = [](const std::vector<std::string>& cells) {
-    std::string s;
-    for (std::size_t i = 0; i < cells.size(); ++i) {
-      if (i > 0) s += ',';
-      s += csv_escape(cells[i]);
-    }
-    s += '\n';
-    return s;
-  };
-  std::string out = line(t.columns);
-  for (const TableRow& r : t.rows) out += line(r.cells);
+  std::string out = csv_header(t.columns);
+  for (const TableRow& r : t.rows) append_csv_row(out, r.cells);
   return out;
-}
-
-double cell_double(const std::string& cell) {
-  const auto v = cell_optional_double(cell);
-  if (!v) throw std::runtime_error("table: an empty cell where a number is needed");
-  return *v;
-}
-
-std::optional<double> cell_optional_double(const std::string& cell) {
-  if (cell.empty()) return std::nullopt;
-  char* end = nullptr;
-  errno = 0;
-  const double v = std::strtod(cell.c_str(), &end);
-  if (end != cell.c_str() + cell.size()) throw std::runtime_error("table: '" + cell + "' is not a number");
-  return v;
-}
-
-long long cell_integer(const std::string& cell) {
-  char* end = nullptr;
-  const long long v = std::strtoll(cell.c_str(), &end, 10);
-  if (cell.empty() || end != cell.c_str() + cell.size())
-    throw std::runtime_error("table: '" + cell + "' is not an integer");
-  return v;
 }
 
 }  // namespace blockdyn

@@ -1,11 +1,12 @@
 // SPDX-License-Identifier: Apache-2.0
 #pragma once
 // A grid analysis as a PointTable: N points, each computed by a pure function of its index and
-// written as CSV cells after the `index` column. Any grid analysis (spectrum, survival,
+// a row of cells after the `index` column. Any grid analysis (spectrum, survival,
 // response-curve, ...) plugs into the sweep runner this way - threads, MPI, journal, resume,
 // progress and the JSON sidecar come with it - and reads the finished table back (read_table)
-// to build its own JSON and figures: %.17g doubles read back to the same bits, so what it
-// reports is identical for any thread or rank count and after a resume.
+// to build its own JSON and figures from the same cells, in memory or read from the CSV (%.17g
+// doubles read back to the same bits), so what it reports is identical for any thread or rank
+// count and after a resume.
 #include <nlohmann/json.hpp>
 
 #include <cstddef>
@@ -22,7 +23,7 @@ class GridTable final : public PointTable {
  public:
   // Adds the cells of point `index` (one per column, after the index). Thread-safe and pure:
   // the same cells for the same index, whoever computes them and whenever.
-  using Cells = std::function<void(std::size_t index, RowBuilder& row)>;
+  using Cells = std::function<void(std::size_t index, CellRow& row)>;
 
   // `columns`: without the leading "index". `definition` (what the points are: model, axes,
   // options) goes to the sidecar and into the fingerprint that ties a journal to this table.
@@ -48,11 +49,11 @@ class GridTable final : public PointTable {
   std::string output_, header_, fingerprint_;
 };
 
-// A finished table read back: rows in index order (all of them, or those an adaptive plan
-// computed), each cell by column name.
+// A finished table: rows in index order (all of them, or those an adaptive plan computed), each
+// cell by column name.
 struct TableRow {
   std::size_t index = 0;
-  std::vector<std::string> cells;  // cells[0] is the index
+  CellRow cells;  // cells[0] is the index
 };
 class Table {
  public:
@@ -63,19 +64,7 @@ class Table {
 // Reads a CSV written by the sweep runner; throws std::runtime_error if the file is unreadable
 // or its header differs from `expected_header` (with '\n').
 Table read_table(const std::string& path, const std::string& expected_header);
-
-// The same table from rows held in memory (each ending in '\n', in index order; null: not computed):
-// what the runner wrote, without reading its output back (which may be a FIFO or a device).
-Table table_of_rows(const std::string& header, const std::vector<const std::string*>& rows);
-// The table as CSV text (the header and the rows, cells quoted where they need it).
+// The table as CSV text (the header and the rows, through the writer).
 std::string csv_text(const Table& t);
-
-// Splits one CSV line (RFC 4180 quoting; no trailing '\n').
-std::vector<std::string> split_csv_line(const std::string& line);
-
-// Cells as written by RowBuilder: %.17g doubles (empty: absent), integers, flags "0"/"1".
-double cell_double(const std::string& cell);
-std::optional<double> cell_optional_double(const std::string& cell);
-long long cell_integer(const std::string& cell);
 
 }  // namespace blockdyn

@@ -15,10 +15,12 @@
 #include <string>
 #include <vector>
 
+#include "blockdyn/io/table_cell.hpp"
+
 namespace blockdyn {
 
-// The finished row of an index (the CSV line with its '\n'), or nullptr.
-using FinishedRow = std::function<const std::string*(std::size_t index)>;
+// The finished row of an index (its cells), or nullptr.
+using FinishedRow = std::function<const CellRow*(std::size_t index)>;
 
 class PointPlan {
  public:

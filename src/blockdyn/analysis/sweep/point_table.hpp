@@ -12,10 +12,12 @@
 #include <string>
 #include <vector>
 
+#include "blockdyn/io/table_cell.hpp"
+
 namespace blockdyn {
 
 struct SweepRow {
-  std::string text;   // CSV line including the trailing '\n'
+  CellRow cells;      // one per column, the index first
   std::string error;  // non-empty when status is "error" or "outside_model"
 };
 
@@ -34,32 +36,5 @@ class PointTable {
   // progress label.
   virtual std::string kind() const { return "sweep"; }
 };
-
-// Helpers for cell formatting (exposed for tests and metric authors).
-std::string format_double(double v);           // %.17g
-std::string csv_escape(const std::string& s);  // RFC 4180 quoting when needed
-
-// One CSV line built cell by cell.
-class RowBuilder {
- public:
-  void add(const std::string& cell_text) {
-    if (!first_) text_ += ',';
-    first_ = false;
-    text_ += cell_text;
-  }
-  void add(double v) { add(format_double(v)); }
-  void add(long long v) { add(std::to_string(v)); }
-  void add(long v) { add(static_cast<long long>(v)); }
-  void add(std::size_t v) { add(std::to_string(v)); }
-  void empty() { add(std::string()); }
-  std::string finish() { return text_ + '\n'; }
-
- private:
-  std::string text_;
-  bool first_ = true;
-};
-
-// "a,b,c\n" from column names.
-std::string csv_header(const std::vector<std::string>& columns);
 
 }  // namespace blockdyn

@@ -52,7 +52,7 @@ std::vector<std::size_t> RefinementPlan::next_stage(const FinishedRow& row) {
   const std::size_t s = std::size_t(1) << (levels_ - stage_);  // this level's cell size
   const std::size_t sx = span(nxf_, s), sy = span(nyf_, s);
   auto cls = [&](std::size_t ix, std::size_t iy) {
-    const std::string* r = row(ix + nxf_ * iy);
+    const CellRow* r = row(ix + nxf_ * iy);
     if (!r) throw std::logic_error("refinement: a corner of a cell has no row");
     return classify_(*r);
   };

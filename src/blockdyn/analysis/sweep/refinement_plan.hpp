@@ -23,7 +23,7 @@ namespace blockdyn {
 class RefinementPlan final : public PointPlan {
  public:
   // The class of a finished row (e.g. "collapse 1"); equal strings are the same class.
-  using Classify = std::function<std::string(const std::string& row)>;
+  using Classify = std::function<std::string(const CellRow& row)>;
 
   RefinementPlan(std::size_t nx, std::size_t ny, int levels, Classify classify);
 

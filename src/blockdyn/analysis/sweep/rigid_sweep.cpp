@@ -212,48 +212,48 @@ nlohmann::ordered_json RigidSweepEvaluator::tolerances() const { return to_json(
 SweepRow RigidSweepEvaluator::row(std::size_t index) const {
   if (index >= n_) throw std::out_of_range("sweep point index out of range");
   const RigidSweepPoint p = sweep_point(spec_, index);
-  RowBuilder b;
-  b.add(p.index);
-  for (double v : p.values) b.add(v);
+  CellRow b;
+  b.emplace_back(p.index);
+  for (double v : p.values) b.emplace_back(v);
   SweepRow out;
   RigidResult r;
   try {
     r = run_point(spec_, p);
   } catch (const std::exception& e) {
     out.error = e.what();
-    b.add(std::string("error"));
-    for (std::size_t i = 1; i < kResultColumns.size(); ++i) b.empty();
-    out.text = b.finish();
+    b.emplace_back(std::string("error"));
+    for (std::size_t i = 1; i < kResultColumns.size(); ++i) b.emplace_back();
+    out.cells = std::move(b);
     return out;
   }
   auto opt = [&](const std::optional<double>& v) {
     if (v)
-      b.add(*v);
+      b.emplace_back(*v);
     else
-      b.empty();
+      b.emplace_back();
   };
-  b.add(std::string(to_string(r.status)));
-  b.add(r.t_final);
-  b.add(std::string(to_string(r.final_mode)));
-  b.add(r.max_abs_rotation);
-  b.add(r.max_abs_rotation / p.block.shape.alpha());
-  b.add(r.status == SimStatus::Overturned ? 1L : 0L);
+  b.emplace_back(std::string(to_string(r.status)));
+  b.emplace_back(r.t_final);
+  b.emplace_back(std::string(to_string(r.final_mode)));
+  b.emplace_back(r.max_abs_rotation);
+  b.emplace_back(r.max_abs_rotation / p.block.shape.alpha());
+  b.emplace_back(r.status == SimStatus::Overturned ? 1L : 0L);
   opt(r.overturn_time);
   opt(r.first_uplift_time);
   opt(r.first_beyond_alpha_time);
-  b.add(r.impacts);
-  b.add(r.mode_changes);
-  b.add(r.energy_initial);
-  b.add(r.work_impact);
-  b.add(r.work_friction);
+  b.emplace_back(r.impacts);
+  b.emplace_back(r.mode_changes);
+  b.emplace_back(r.energy_initial);
+  b.emplace_back(r.work_impact);
+  b.emplace_back(r.work_friction);
   if (spec_.options.track_energy)
-    b.add(r.max_abs_energy_error);
+    b.emplace_back(r.max_abs_energy_error);
   else
-    b.empty();
-  b.add(r.stats.accepted);
-  b.add(r.stats.rhs_evals);
+    b.emplace_back();
+  b.emplace_back(r.stats.accepted);
+  b.emplace_back(r.stats.rhs_evals);
   if (!r.note.empty()) out.error = r.note;
-  out.text = b.finish();
+  out.cells = std::move(b);
   return out;
 }
 

@@ -57,43 +57,21 @@ class FanOutSink : public WinklerSink {
 };
 
 // A metric's value as a cell.
-void add_value(RowBuilder& b, const MetricValue& v) {
+void add_value(CellRow& b, const MetricValue& v) {
   if (std::holds_alternative<double>(v))
-    b.add(std::get<double>(v));
+    b.emplace_back(std::get<double>(v));
   else if (std::holds_alternative<long long>(v))
-    b.add(std::get<long long>(v));
+    b.emplace_back(std::get<long long>(v));
   else if (std::holds_alternative<std::string>(v))
-    b.add(csv_escape(std::get<std::string>(v)));
+    b.emplace_back(std::get<std::string>(v));
   else
-    b.empty();
+    b.emplace_back();
 }
 
 }  // namespace
 
-std::string format_double(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.17g", v);
-  return buf;
-}
-
-std::string csv_header(const std::vector<std::string>& columns) {
-  std::string h;
-  for (const auto& c : columns) {
-    if (!h.empty()) h += ',';
-    h += csv_escape(c);
-  }
-  return h + '\n';
-}
-
 nlohmann::ordered_json SweepEvaluator::definition() const { return definition_json(spec_); }
 nlohmann::ordered_json SweepEvaluator::tolerances() const { return to_json(options_.integrator); }
-
-std::string csv_escape(const std::string& s) {
-  if (s.find_first_of(",\"\n\r") == std::string::npos) return s;
-  std::string q = "\"";
-  for (char c : s) q += (c == '"') ? std::string("\"\"") : std::string(1, c);
-  return q + "\"";
-}
 
 SweepEvaluator::SweepEvaluator(SweepSpec spec) : SweepEvaluator(std::move(spec), {}) {}
 
@@ -126,13 +104,13 @@ void SweepEvaluator::init() {
 SweepRow SweepEvaluator::row(std::size_t index) const {
   if (index >= n_) throw std::out_of_range("sweep point index out of range");
   const SweepPoint p = sweep_point(spec_, index);
-  RowBuilder b;
-  b.add(p.index);
-  b.add(p.params.k);
-  b.add(p.params.r);
-  b.add(p.inv_r);
-  b.add(p.params.mu);
-  b.add(csv_escape(p.ic));
+  CellRow b;
+  b.emplace_back(p.index);
+  b.emplace_back(p.params.k);
+  b.emplace_back(p.params.r);
+  b.emplace_back(p.inv_r);
+  b.emplace_back(p.params.mu);
+  b.emplace_back(p.ic);
   SweepRow out;
   WinklerResult r;
   WinklerState z0{};
@@ -143,9 +121,9 @@ SweepRow SweepEvaluator::row(std::size_t index) const {
     z0 = sweep_initial_state(spec_, p);
     if (auto why = WinklerBlock(p.params, GroundMotion{}).validity_problem(z0)) {
       out.error = "initial state outside the model: " + *why;  // reported, not integrated
-      b.add(std::string("outside_model"));
-      for (std::size_t i = 7; i < columns_.size(); ++i) b.empty();
-      out.text = b.finish();
+      b.emplace_back(std::string("outside_model"));
+      for (std::size_t i = 7; i < columns_.size(); ++i) b.emplace_back();
+      out.cells = std::move(b);
       return out;
     }
     for (const auto& m : metrics_) {
@@ -156,37 +134,37 @@ SweepRow SweepEvaluator::row(std::size_t index) const {
   } catch (const std::exception& e) {
     // Deterministic for a given point, so the row is still reproducible; details to the caller.
     out.error = e.what();
-    b.add(std::string("error"));
-    for (std::size_t i = 7; i < columns_.size(); ++i) b.empty();
-    out.text = b.finish();
+    b.emplace_back(std::string("error"));
+    for (std::size_t i = 7; i < columns_.size(); ++i) b.emplace_back();
+    out.cells = std::move(b);
     return out;
   }
-  b.add(std::string(to_string(r.status)));
-  b.add(r.t_final);
+  b.emplace_back(std::string(to_string(r.status)));
+  b.emplace_back(r.t_final);
   if (r.first_flight_time) {
-    b.add(*r.first_flight_time);
-    b.add(r.upright_passages_at_first_flight);
+    b.emplace_back(*r.first_flight_time);
+    b.emplace_back(r.upright_passages_at_first_flight);
   } else {
-    b.empty();
-    b.empty();
+    b.emplace_back();
+    b.emplace_back();
   }
-  b.add(r.status == SimStatus::Overturned ? 1L : 0L);
+  b.emplace_back(r.status == SimStatus::Overturned ? 1L : 0L);
   if (r.overturn_time) {
-    b.add(*r.overturn_time);
-    b.add(r.upright_passages_at_overturn);
+    b.emplace_back(*r.overturn_time);
+    b.emplace_back(r.upright_passages_at_overturn);
   } else {
-    b.empty();
-    b.empty();
+    b.emplace_back();
+    b.emplace_back();
   }
-  b.add(r.upright_passages);
-  b.add(r.initial_energy.total());
-  b.add(-r.work_friction());
+  b.emplace_back(r.upright_passages);
+  b.emplace_back(r.initial_energy.total());
+  b.emplace_back(-r.work_friction());
   if (options_.track_energy)
-    b.add(r.max_abs_energy_error);
+    b.emplace_back(r.max_abs_energy_error);
   else
-    b.empty();
-  b.add(r.stats.accepted);
-  b.add(r.stats.rhs_evals);
+    b.emplace_back();
+  b.emplace_back(r.stats.accepted);
+  b.emplace_back(r.stats.rhs_evals);
   std::vector<MetricValue> vals;
   for (std::size_t m = 0; m < metrics_.size(); ++m) {
     vals.clear();
@@ -196,7 +174,7 @@ SweepRow SweepEvaluator::row(std::size_t index) const {
                              std::to_string(metric_width_[m]) + " columns");
     for (const auto& v : vals) add_value(b, v);
   }
-  out.text = b.finish();
+  out.cells = std::move(b);
   return out;
 }
 

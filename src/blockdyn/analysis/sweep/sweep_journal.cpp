@@ -145,9 +145,9 @@ void SweepJournal::load() {
       fail("is corrupt: row " + std::to_string(idx) + " has " + std::to_string(field_count(row)) +
            " fields, the header " + std::to_string(field_count(header_)));
     if (rows_[idx].empty()) {
-      rows_[idx] = std::move(row);
+      rows_[idx] = parse_csv_row(row.substr(0, row.size() - 1));
       ++done_;
-    } else if (rows_[idx] != row) {
+    } else if (csv_line(rows_[idx]) != row) {
       fail("is corrupt: two different rows for index " + std::to_string(idx));
     }
     pos = nl + 1;
@@ -165,13 +165,14 @@ std::vector<std::size_t> SweepJournal::pending() const {
   return out;
 }
 
-void SweepJournal::append(std::size_t index, const std::string& row) {
+void SweepJournal::append(std::size_t index, CellRow row) {
   if (index >= rows_.size()) throw std::out_of_range("sweep row index out of range");
-  if (row.empty() || row.back() != '\n' || row_index(row) != index)
+  if (row.empty() || !row[0].is_number() || row[0].number() != double(index))
     throw std::logic_error("sweep row does not match its index");
   if (!rows_[index].empty()) return;  // already recorded (identical by construction)
-  write_all(fd_, row.substr(0, row.size() - 1) + kChecksumMark + row_checksum(fingerprint_, row) + "\n", path_);
-  rows_[index] = row;
+  const std::string text = csv_line(row);
+  write_all(fd_, text.substr(0, text.size() - 1) + kChecksumMark + row_checksum(fingerprint_, text) + "\n", path_);
+  rows_[index] = std::move(row);
   ++done_;
 }
 
@@ -179,7 +180,13 @@ void SweepJournal::write_csv(const std::string& csv_path, bool sparse) const {
   if (!sparse && done_ != rows_.size()) throw std::logic_error("sweep CSV written before all rows were done");
   AtomicFile f(csv_path);
   f.stream() << header_;
-  for (const auto& r : rows_) f.stream() << r;
+  std::string line;
+  for (const CellRow& r : rows_) {
+    if (r.empty()) continue;
+    line.clear();
+    append_csv_row(line, r);
+    f.stream() << line;
+  }
   f.commit();
 }
 

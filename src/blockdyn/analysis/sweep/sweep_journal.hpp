@@ -6,9 +6,13 @@
 // appended with a single write() (no user-space buffer), so a killed sweep loses only the points
 // in flight. The final CSV (header + rows sorted by index) is written atomically at the end, so
 // its bytes do not depend on the order points finished in, on threads, ranks or interruptions.
+// In memory the rows are cells: text only on disk, written by the CSV writer and read back by its
+// reader on a resume (cells that write the same bytes again).
 #include <cstddef>
 #include <string>
 #include <vector>
+
+#include "blockdyn/io/table_cell.hpp"
 
 namespace blockdyn {
 
@@ -27,11 +31,11 @@ class SweepJournal {
   std::size_t done() const { return done_; }
   std::size_t resumed() const { return resumed_; }  // rows found on opening
   bool has(std::size_t index) const { return !rows_[index].empty(); }
-  const std::string* row(std::size_t index) const { return rows_[index].empty() ? nullptr : &rows_[index]; }
+  const CellRow* row(std::size_t index) const { return rows_[index].empty() ? nullptr : &rows_[index]; }
   std::vector<std::size_t> pending() const;  // indices without a row, ascending
 
-  // Records the row of `index` (must end in '\n' and start with the index). Not thread-safe.
-  void append(std::size_t index, const std::string& row);
+  // Records the row of `index` (its first cell the index). Not thread-safe.
+  void append(std::size_t index, CellRow row);
   // Writes header + all rows sorted by index to csv_path atomically; needs done() == points()
   // unless `sparse` (an adaptive plan computes only some points).
   void write_csv(const std::string& csv_path, bool sparse = false) const;
@@ -42,7 +46,7 @@ class SweepJournal {
  private:
   void load();
   std::string path_, fingerprint_, header_;
-  std::vector<std::string> rows_;
+  std::vector<CellRow> rows_;
   std::size_t done_ = 0, resumed_ = 0;
   int fd_ = -1;
 };

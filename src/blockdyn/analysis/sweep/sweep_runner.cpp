@@ -129,7 +129,7 @@ std::vector<std::size_t> SweepSession::pending() const {
   return journal_ ? journal_->pending() : std::vector<std::size_t>{};
 }
 
-const std::string* SweepSession::row(std::size_t index) const {
+const CellRow* SweepSession::row(std::size_t index) const {
   return journal_ && index < journal_->points() ? journal_->row(index) : nullptr;
 }
 
@@ -154,7 +154,7 @@ std::vector<std::size_t> SweepSession::next_stage(PointPlan& plan) {
 }
 
 void SweepSession::record(std::size_t index, const SweepRow& row) {
-  journal_->append(index, row.text);
+  journal_->append(index, row.cells);
   if (!row.error.empty()) {
     ++errors_;
     std::fprintf(stderr, "%swarning: sweep point %zu: %s\n",
@@ -211,9 +211,9 @@ SweepOutcome SweepSession::finish(int threads, bool sparse) {
   }
   if (progress_) progress_->finish();
   journal_->write_csv(paths_.csv, sparse);
-  std::vector<const std::string*> rows(journal_->points());
-  for (std::size_t i = 0; i < rows.size(); ++i) rows[i] = journal_->row(i);
-  out.table = table_of_rows(ev_.header(), rows);
+  out.table.columns = ev_.columns();
+  for (std::size_t i = 0; i < journal_->points(); ++i)
+    if (const CellRow* r = journal_->row(i)) out.table.rows.push_back(TableRow{i, *r});
   out.resumed = journal_->resumed();
   out.computed = journal_->done() - journal_->resumed();
   out.errors = errors_;

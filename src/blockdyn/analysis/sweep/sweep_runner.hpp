@@ -64,7 +64,7 @@ class SweepSession {
   // The unfinished points of the plan's next stage, and starts that stage's progress report;
   // empty when the plan is complete. A stage already finished (resumed) is passed over.
   std::vector<std::size_t> next_stage(PointPlan& plan);
-  const std::string* row(std::size_t index) const;      // a finished row, or nullptr
+  const CellRow* row(std::size_t index) const;          // a finished row, or nullptr
   void record(std::size_t index, const SweepRow& row);  // not thread-safe
   // Writes the CSV and the final sidecar, removes the journal. `threads`: per rank; `sparse`:
   // the plan left points out (PointPlan::sparse()).

@@ -11,11 +11,11 @@ namespace blockdyn {
 
 Table compute_table(const PointTable& t, int threads, PointPlan* plan,
                     const std::function<void(std::size_t, std::size_t)>& progress) {
-  std::map<std::size_t, std::string> rows;
+  std::map<std::size_t, CellRow> rows;
   AllPoints all(t.size());
   PointPlan& p = plan ? *plan : all;
   std::size_t done = 0;
-  const FinishedRow finished = [&rows](std::size_t i) -> const std::string* {
+  const FinishedRow finished = [&rows](std::size_t i) -> const CellRow* {
     const auto it = rows.find(i);
     return it == rows.end() ? nullptr : &it->second;
   };
@@ -25,19 +25,13 @@ Table compute_table(const PointTable& t, int threads, PointPlan* plan,
       if (!rows.count(i)) todo.push_back(i);
     const std::size_t total = done + todo.size();
     compute_rows(t, todo, threads, [&](std::size_t i, const SweepRow& r) {
-      rows[i] = r.text;
+      rows[i] = r.cells;
       if (progress) progress(++done, total);
     });
   }
   Table out;
-  const std::string& header = t.header();
-  out.columns = split_csv_line(header.substr(0, header.size() - 1));
-  for (const auto& [i, text] : rows) {
-    TableRow r;
-    r.cells = split_csv_line(text.substr(0, text.size() - 1));
-    r.index = i;
-    out.rows.push_back(std::move(r));
-  }
+  out.columns = t.columns();
+  for (auto& [i, cells] : rows) out.rows.push_back(TableRow{i, std::move(cells)});
   return out;
 }
 

@@ -1,8 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "blockdyn/analysis/winkler/poincare.hpp"
 
-#include <iomanip>
-
 namespace blockdyn {
 
 PoincareCollector::PoincareCollector(const WinklerParams& p, CrossingDirection dir, double t_min)
@@ -31,12 +29,14 @@ void PoincareCollector::on_event(const WinklerBlock&, const WinklerEventRecord& 
   points_.push_back(q);
 }
 
-void write_poincare_csv(std::ostream& out, const std::vector<PoincarePoint>& pts) {
-  out << "t,ihor,w,h,y,vy,vw,x,vx,regime,energy,work_friction,work_nonpotential\n" << std::setprecision(17);
+CellTable poincare_table(const std::vector<PoincarePoint>& pts) {
+  CellTable t;
+  t.columns = {
+      "t", "ihor", "w", "h", "y", "vy", "vw", "x", "vx", "regime", "energy", "work_friction", "work_nonpotential"};
   for (const auto& q : pts)
-    out << q.t << ',' << q.upright_passages << ',' << q.w << ',' << q.h << ',' << q.y << ',' << q.vy << ',' << q.vw
-        << ',' << q.x << ',' << q.vx << ',' << to_string(q.regime) << ',' << q.energy << ',' << q.work_friction << ','
-        << q.work_nonpotential << '\n';
+    t.rows.push_back({q.t, q.upright_passages, q.w, q.h, q.y, q.vy, q.vw, q.x, q.vx, to_string(q.regime), q.energy,
+                      q.work_friction, q.work_nonpotential});
+  return t;
 }
 
 }  // namespace blockdyn

@@ -3,9 +3,9 @@
 // Poincare section w = 0 (thesis sec. 5.2.1): the states at the w_zero events, which the
 // integrator locates on the dense output to machine precision. Records (y, y', w', x, x') and the
 // energy there (for mu = 0 all points must lie on the energy surface E = E0).
-#include <ostream>
 #include <vector>
 
+#include "blockdyn/io/table_cell.hpp"
 #include "blockdyn/model/winkler/energy.hpp"
 #include "blockdyn/simulation/winkler_simulation.hpp"
 
@@ -40,6 +40,6 @@ class PoincareCollector : public WinklerSink {
   std::vector<PoincarePoint> points_;
 };
 
-void write_poincare_csv(std::ostream& out, const std::vector<PoincarePoint>& pts);
+CellTable poincare_table(const std::vector<PoincarePoint>& pts);
 
 }  // namespace blockdyn

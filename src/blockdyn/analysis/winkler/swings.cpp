@@ -5,7 +5,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <iomanip>
 #include <stdexcept>
 #include <string>
 
@@ -214,25 +213,25 @@ void SwingAccumulator::on_event(const WinklerBlock&, const WinklerEventRecord& e
   }
 }
 
-void write_swings_csv(std::ostream& out, const std::vector<SwingRecord>& swings) {
-  out << "index,t_start,t_end,length,max_abs_w,flight_time,ave_kinetic_x,ave_kinetic_y,ave_rotation,"
-         "ave_gravity,ave_springs,ave_total\n";
-  out << std::setprecision(17);
+CellTable swings_table(const std::vector<SwingRecord>& swings) {
+  CellTable t;
+  t.columns = {"index",         "t_start",       "t_end",        "length",      "max_abs_w",   "flight_time",
+               "ave_kinetic_x", "ave_kinetic_y", "ave_rotation", "ave_gravity", "ave_springs", "ave_total"};
   for (std::size_t i = 0; i < swings.size(); ++i) {
     const SwingRecord& s = swings[i];
     const Energy& e = s.average;
-    out << i << ',' << s.t_start << ',' << s.t_end << ',' << s.length() << ',' << s.max_abs_w << ',' << s.flight_time
-        << ',' << e.kinetic_x << ',' << e.kinetic_y << ',' << e.rotation << ',' << e.gravity << ',' << e.springs << ','
-        << e.total() << '\n';
+    t.rows.push_back({i, s.t_start, s.t_end, s.length(), s.max_abs_w, s.flight_time, e.kinetic_x, e.kinetic_y,
+                      e.rotation, e.gravity, e.springs, e.total()});
   }
+  return t;
 }
 
-void write_phase_csv(std::ostream& out, const std::vector<PhaseSample>& phase) {
-  out << "t,x,y,w,vx,vy,vw,regime\n";
-  out << std::setprecision(17);
+CellTable phase_table(const std::vector<PhaseSample>& phase) {
+  CellTable t;
+  t.columns = {"t", "x", "y", "w", "vx", "vy", "vw", "regime"};
   for (const PhaseSample& p : phase)
-    out << p.t << ',' << p.s.x << ',' << p.s.y << ',' << p.s.w << ',' << p.s.vx << ',' << p.s.vy << ',' << p.s.vw << ','
-        << to_string(p.regime) << '\n';
+    t.rows.push_back({p.t, p.s.x, p.s.y, p.s.w, p.s.vx, p.s.vy, p.s.vw, to_string(p.regime)});
+  return t;
 }
 
 }  // namespace blockdyn

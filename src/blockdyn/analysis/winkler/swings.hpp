@@ -6,9 +6,9 @@
 // quadrature_dt apart; divided by the length, reported at the swing end). Also samples the phase
 // portraits (y, y'), (w, w'), (x, x') at constant time intervals (Figs. 4.41-4.56) and keeps the
 // flight statistics the response classification needs.
-#include <ostream>
 #include <vector>
 
+#include "blockdyn/io/table_cell.hpp"
 #include "blockdyn/model/winkler/energy.hpp"
 #include "blockdyn/simulation/winkler_simulation.hpp"
 
@@ -99,8 +99,8 @@ class SwingAccumulator : public WinklerSink {
   double late_energy_ = 0, late_work_friction_ = 0;
 };
 
-// CSV with a header row, full precision (one row per swing / per phase sample).
-void write_swings_csv(std::ostream& out, const std::vector<SwingRecord>& swings);
-void write_phase_csv(std::ostream& out, const std::vector<PhaseSample>& phase);
+// Tables: one row per swing / per phase sample.
+CellTable swings_table(const std::vector<SwingRecord>& swings);
+CellTable phase_table(const std::vector<PhaseSample>& phase);
 
 }  // namespace blockdyn
