@@ -81,6 +81,19 @@ BodyOnGroundOptions body3d_friction_from(const Settings& s) {
   require_in_range("mu-s", f.mu_s, 0, 1e6);
   f.mu_k = s.number("mu-k", f.mu_s);
   require_in_range("mu-k", f.mu_k, 0, 1e6);
+  if (s.has("impact")) {
+    const std::string law = s.text("impact");
+    if (law == "housner")
+      f.impact = Body3dImpactLaw::Housner;
+    else if (law != "newton")
+      throw std::invalid_argument("`impact` = '" + law + "' is not one of: newton, housner");
+  }
+  if (s.has("restitution")) {
+    if (f.impact == Body3dImpactLaw::Housner)
+      throw std::invalid_argument("`restitution` is Newton's e: Housner's law in 3D has none (give `impact` newton)");
+    f.restitution = s.number("restitution", 0);
+    require_in_range("restitution", f.restitution, 0, 1);
+  }
   return f;
 }
 
@@ -263,7 +276,14 @@ json summary_json(const Rigid3dSetup& s, const BodyOnGround& m, const Body3dResu
             {"contacts",
              "a box's base slides on its four corners (Coulomb, mu_k, each against its own slip: twisting "
              "included); edges, corners and a cylinder's base stick (the run stops where they would slide)"}}},
-          {"impact_law", "angular momentum about the new contact conserved (Housner's law in 3D)"},
+          {"impact_law",
+           s.model.impact == Body3dImpactLaw::Newton && s.body.shape == BodyShape3d::Box
+               ? "newton: the touching corners' velocity-level problem, normal velocity -e times the one before, "
+                 "Coulomb's cone on the impulses (a corner friction cannot hold leaves slipping; Housner's where no "
+                 "impulses in the cones solve it)"
+               : "housner: angular momentum about the new contact conserved (Housner's law in 3D)"},
+          {"restitution", s.model.impact == Body3dImpactLaw::Newton ? nlohmann::ordered_json(s.model.restitution)
+                                                                    : nlohmann::ordered_json(nullptr)},
           {"ground",
            {{"azimuth_deg", s.ground.azimuth},
             {"h", to_json(s.ground.h)},
@@ -360,8 +380,9 @@ const std::vector<StudyOption>& rigid3d_options() {
 
 const std::vector<std::string>& rigid3d_option_names() {
   static const std::vector<std::string> names = [] {
-    std::vector<std::string> n{"model", "width", "height", "radius", "mass",   "density",        "g", "tilt", "mu-s",
-                               "mu-k",  "t-end", "rtol",   "atol",   "method", "output-interval"};
+    std::vector<std::string> n{"model", "width", "height", "radius", "mass",           "density",
+                               "g",     "tilt",  "mu-s",   "mu-k",   "impact",         "restitution",
+                               "t-end", "rtol",  "atol",   "method", "output-interval"};
     for (const StudyOption& o : rigid3d_options()) n.push_back(o.name);
     for (const std::string& g : ground_option_names()) n.push_back(g);
     return n;

@@ -296,7 +296,10 @@ TEST(Rigid3dContact, ALandingWhereStickingWouldPullSlipsInstead) {
   blockdyn::GroundMotion3d g;
   g.h.record = rec;
   g.h.scale = 2.0;
-  const BodyOnGround m(blockdyn::box_body(0.3, 0.3, 1.2, 500), g);
+  // Housner's law at the impacts (the landing this test is about follows from it).
+  blockdyn::BodyOnGroundOptions o;
+  o.impact = blockdyn::Body3dImpactLaw::Housner;
+  const BodyOnGround m(blockdyn::box_body(0.3, 0.3, 1.2, 500), g, o);
   const Body3dResult r = run(m, {}, 60.0);
   EXPECT_STREQ(to_string(r.status), "overturned") << r.note;
   bool landed_slipping = false;
@@ -319,6 +322,7 @@ TEST(Rigid3dContact, PainleveStopsTheRunWithItsReason) {
   blockdyn::BodyOnGroundOptions o;
   o.mu_s = 0.5;
   o.mu_k = 0.4;
+  o.impact = blockdyn::Body3dImpactLaw::Housner;  // the run this test follows (Newton's stops elsewhere)
   const BodyOnGround m(blockdyn::box_body(0.4, 0.4, 1.2, 300), g, o);
   const Body3dResult r = run(m, {}, 30.0);
   EXPECT_STREQ(to_string(r.status), "invalid");

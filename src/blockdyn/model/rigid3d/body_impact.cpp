@@ -101,6 +101,11 @@ Tr BodyOnGround::impact(double t, const Mode& from, State& z, int event) const {
 }
 
 Tr BodyOnGround::contact_after_impact(double t, const Mode& from, State& z, int) const {
+  if (opt_.impact == Body3dImpactLaw::Newton && body_.shape == BodyShape3d::Box) return newton_impact(t, from, z);
+  return housner_impact(t, from, z);
+}
+
+Tr BodyOnGround::housner_impact(double t, const Mode& from, State& z) const {
   const Mat3 r = rotation(quat_at(z, S::kQw));
   const Vec3 x = vec_at(z, kX);
   const double ke = energy(z) - body_.mass * body_.g * z[kZ];
@@ -150,6 +155,10 @@ Tr BodyOnGround::contact_after_impact(double t, const Mode& from, State& z, int)
   }
   z[kWorkImpact] += energy(z) - body_.mass * body_.g * z[kZ] - ke;
   complete(next, z);
+  return after_impact(t, from, next, z, w_before);
+}
+
+Tr BodyOnGround::after_impact(double t, const Mode& from, const Mode& next, State& z, double w_before) const {
   if (pulls_away(t, next, z)) {
     // Sticking would pull on the ground: the body flies if the contact point (at rest after the
     // impact) rises in flight, else the contact slips if a slip is consistent (a box); neither:

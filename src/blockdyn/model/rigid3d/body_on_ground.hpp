@@ -9,8 +9,10 @@
 // mu_s (it slips; a point carrying less than 1 % of the load is not checked: it is about to lift,
 // and the friction so small a load could give is not what keeps it), a slip ending (it sticks, or
 // slips on the other way), no load being consistent with the slip (Painleve: the run stops), the
-// base standing vertical (overturn). At an impact the angular momentum about the new contact is conserved
-// (Housner's law in 3D); a sequence of impacts that accumulates ends at rest. The exit from rest
+// base standing vertical (overturn). An impact is a velocity-level problem on the base points that
+// touch (body_newton_impact.cpp: Newton's restitution and Coulomb's cone on the impulses, the
+// default), or the angular momentum about the new contact conserved (Housner's law in 3D, an
+// option); a sequence of impacts that accumulates ends at rest. The exit from rest
 // is found on the ground motion itself (excitation/rest_exit.hpp) at its first crossing.
 // State in the ground's frame: as BodyFlight's, then the ground's work and the impacts' loss (J).
 #include <array>
@@ -73,11 +75,17 @@ enum class Body3dEventKind : int {
 };
 const char* to_string(Body3dEventKind k);
 
+// Newton: the touching base points' velocity-level problem (normal restitution e, Coulomb's cone
+// on the impulses); Housner: the angular momentum about the new contact conserved (it sticks).
+enum class Body3dImpactLaw : unsigned char { Newton, Housner };
+
 struct BodyOnGroundOptions {
-  double mu_s = 1e6;    // static friction coefficient (large: sticking throughout)
-  double mu_k = -1;     // kinetic friction coefficient of a sliding base (< 0: mu_s)
-  double rest_yaw = 0;  // rad: the yaw the body rests at (its exit from rest under a record is
-                        // prepared for it; at another yaw it is searched from scratch)
+  double mu_s = 1e6;  // static friction coefficient (large: sticking throughout)
+  double mu_k = -1;   // kinetic friction coefficient of a sliding base (< 0: mu_s)
+  Body3dImpactLaw impact = Body3dImpactLaw::Newton;
+  double restitution = 0;  // Newton's e in [0, 1] (the box; a cylinder's rim impact is Housner's)
+  double rest_yaw = 0;     // rad: the yaw the body rests at (its exit from rest under a record is
+                           // prepared for it; at another yaw it is searched from scratch)
 };
 
 class BodyOnGround {
@@ -189,6 +197,14 @@ class BodyOnGround {
   Transition<Mode> mode_change(double t, const Mode& m, State& z, int event) const;
   Transition<Mode> impact(double t, const Mode& from, State& z, int event) const;
   Transition<Mode> contact_after_impact(double t, const Mode& from, State& z, int event) const;
+  // Newton's and Coulomb's impact of a box (body_newton_impact.cpp): the impulses at the base
+  // points that touch, then the contact they leave (its points sticking or slipping).
+  Transition<Mode> newton_impact(double t, const Mode& from, State& z) const;
+  // Housner's law in 3D: the new contact sticks, the angular momentum about it conserved.
+  Transition<Mode> housner_impact(double t, const Mode& from, State& z) const;
+  // After an impact: the contact's consistency (a pull: flight or a slip, else Painleve), the
+  // accumulation of impacts, then sticking or slipping as friction decides.
+  Transition<Mode> after_impact(double t, const Mode& from, const Mode& next, State& z, double w_before) const;
   Transition<Mode> after_load_zero(double t, const Mode& m, State& z, int event) const;
   Transition<Mode> settle(double t, State& z) const;
   Transition<Mode> landed_flat(double t, State& z) const;

@@ -1,0 +1,130 @@
+// SPDX-License-Identifier: Apache-2.0
+// A box's impact by Newton's and Coulomb's laws (body_on_ground.hpp): the base corners that touch
+// the ground (the one that hits and those still in contact) take impulses p_i with
+//   u_i+ = u_i- + sum_j W_ij p_j,  W_ij = I/m - [a_i]x J^-1 [a_j]x  (a_i the corner's arm, J the
+// inertia in the world's axes), each corner's normal velocity after the impact -e times the one
+// before where it hits (at least zero where it stays), each impulse in Coulomb's cone: sticking
+// within mu_s, slipping against its slip with mu_k (numerics/spatial_contact.hpp). With e = 0 and
+// friction enough, a corner or an edge that hits sticks and the body turns about it: Housner's law
+// in 3D. A corner whose impulse friction cannot hold leaves the impact slipping; the contact goes
+// on with its points moving as the impulses left them. Where no impulses in the cones solve the
+// problem (Painleve at the impulse level: a slender body's edge landing sliding) the impulses are
+// the normal ones alone, the slip going on under Coulomb's friction at the acceleration level.
+#include <cmath>
+
+#include "blockdyn/model/rigid3d/body_on_ground.hpp"
+#include "blockdyn/model/rigid3d/body_state.hpp"
+#include "blockdyn/numerics/spatial_contact.hpp"
+
+namespace blockdyn {
+
+namespace {
+
+using S = BodyOnGround;
+using Tr = Transition<BodyOnGroundMode>;
+
+// A base corner this close to the ground (in body sizes) takes part in the impact.
+constexpr double kNewtonTouch = 1e-12;
+// A corner leaving faster than this (relative to the impact's velocity scale) has left the ground.
+constexpr double kNewtonLeaving = 1e-9;
+// A touch where no corner moves into the ground, the body this slow (relative to sqrt(g size)):
+// an accumulation ended.
+constexpr double kNewtonStill = 1e-6;
+
+// [a]x M [b]x as the product of the cross-product matrices.
+Mat3 cross_matrix(const Vec3& a) { return {Vec3{0, -a[2], a[1]}, Vec3{a[2], 0, -a[0]}, Vec3{-a[1], a[0], 0}}; }
+
+Mat3 product(const Mat3& a, const Mat3& b) {
+  Mat3 c{};
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) c[i][j] = a[i][0] * b[0][j] + a[i][1] * b[1][j] + a[i][2] * b[2][j];
+  return c;
+}
+
+}  // namespace
+
+Tr BodyOnGround::newton_impact(double t, const Mode& from, State& z) const {
+  const Mat3 r = rotation(quat_at(z, S::kQw));
+  const Vec3 x = vec_at(z, kX), v = vec_at(z, kVx), w = vec_at(z, kWx);
+  int touching[4], n = 0;
+  for (int i = 0; i < 4; ++i)
+    if (z[kZ] + dot(r[2], corner(i)) <= kNewtonTouch * size_) touching[n++] = i;
+  // A base landing flat from flight: plastic, at rest (as Housner's law has it).
+  if (n == 0 || (n >= 3 && from.contact == BodyContact::Flight)) return landed_flat(t, z);
+  // J^-1 in the world's axes: R diag(1/I) R^T.
+  Mat3 inv{};
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      for (int k = 0; k < 3; ++k) inv[i][j] += r[i][k] * r[j][k] / inertia_[std::size_t(k)];
+  Vec3 arm[4];
+  SpatialContactProblem pr;
+  pr.n = n;
+  pr.mu_s = opt_.mu_s;
+  pr.mu_k = mu_k_;
+  for (int i = 0; i < n; ++i) {
+    arm[i] = r * corner(touching[i]);
+    const Vec3 u = plus(v, cross(w, arm[i]));
+    for (int c = 0; c < 3; ++c) pr.q[std::size_t(3 * i + c)] = u[std::size_t(c)];
+    pr.v_normal[std::size_t(i)] = u[2] < 0 ? -opt_.restitution * u[2] : 0.0;
+  }
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) {
+      const Mat3 k = product(cross_matrix(arm[i]), product(inv, cross_matrix(arm[j])));
+      for (int a = 0; a < 3; ++a)
+        for (int b = 0; b < 3; ++b)
+          pr.w[std::size_t((3 * i + a) * 3 * n + 3 * j + b)] = (a == b ? 1.0 / body_.mass : 0.0) - k[a][b];
+    }
+  // No corner moving into the ground: a touch at the end of an accumulation (the swings at a
+  // rounding's size), at rest; else a graze, the motion goes on.
+  double speed = 0;
+  bool hits = false;
+  for (int i = 0; i < n; ++i) hits = hits || pr.q[std::size_t(3 * i + 2)] < 0;
+  for (int k = 0; k < 3 * n; ++k) speed = std::fmax(speed, std::fabs(pr.q[std::size_t(k)]));
+  if (!hits)
+    return speed <= kNewtonStill * std::sqrt(body_.g * size_) ? settle(t, z)
+                                                              : Tr{from, false, int(Body3dEventKind::Mode)};
+  SpatialContactSolution sol = solve_spatial_contact(pr);
+  if (!sol.solved) {
+    // No impulses in Coulomb's cones (Painleve at the impulse level, seen where a slender body's
+    // edge lands sliding): the normal impulses alone, the slip going on under Coulomb's friction
+    // at the acceleration level.
+    SpatialContactProblem frictionless = pr;
+    frictionless.mu_s = frictionless.mu_k = 0;
+    sol = solve_spatial_contact(frictionless);
+  }
+  if (!sol.solved) return housner_impact(t, from, z);  // not even the normal impulses: Housner's
+  const double ke = energy(z) - body_.mass * body_.g * z[kZ];
+  const double w_before = std::sqrt(dot(w, w));
+  Vec3 force{}, moment{};
+  for (int i = 0; i < n; ++i) {
+    const Vec3 p{sol.p[std::size_t(3 * i)], sol.p[std::size_t(3 * i + 1)], sol.p[std::size_t(3 * i + 2)]};
+    force = plus(force, p);
+    moment = plus(moment, cross(arm[i], p));
+  }
+  set_vec_at(z, kVx, plus(v, scaled(force, 1.0 / body_.mass)));
+  set_vec_at(z, kWx, plus(w, inv * moment));
+  // The corners that stay: those left at rest along the normal (pressed with e = 0, or in contact
+  // and not pulled away); a corner that bounces (e > 0) or lifts leaves.
+  const double scale = std::fmax(std::sqrt(dot(v, v)), w_before * size_);
+  int stay[4], m = 0;
+  for (int i = 0; i < n; ++i)
+    if (sol.u[std::size_t(3 * i + 2)] <= kNewtonLeaving * scale) stay[m++] = touching[i];
+  if (m >= 3) return landed_flat(t, z);  // the base stays flat: at rest
+  if (m == 0) {
+    z[kWorkImpact] += energy(z) - body_.mass * body_.g * z[kZ] - ke;
+    return {Mode{BodyContact::Flight}, false, int(Body3dEventKind::Impact)};
+  }
+  Mode c = m == 2 ? line_mode(r, x, corner(stay[0]), corner(stay[1]), stay[0], stay[1])
+                  : point_mode(r, x, corner(stay[0]), stay[0]);
+  if (m == 1 && from.contact == BodyContact::Line && (from.corner_a == stay[0] || from.corner_b == stay[0])) {
+    c.released = from.corner_a == stay[0] ? from.corner_b : from.corner_a;
+    c.released_t = t;
+  }
+  // Its points slipping the way the impulses left them moving (at rest: sticking).
+  const Mode next = moving_contact(c, z);
+  complete(next, z);
+  z[kWorkImpact] += energy(z) - body_.mass * body_.g * z[kZ] - ke;
+  return after_impact(t, from, next, z, w_before);
+}
+
+}  // namespace blockdyn

@@ -1,0 +1,125 @@
+// SPDX-License-Identifier: Apache-2.0
+// The rigid3d box's impact by Newton's and Coulomb's laws (body_newton_impact.cpp), checked
+// against what defines it, on a corner landing whose state before the impact is known in closed
+// form (a box in flight without spin keeps its orientation; its centroid falls freely): the
+// impulse P = m (v+ - v-) acts at the corner, so the angular momentum about the corner is kept
+// (J w+ = a x P); the corner's normal velocity after is -e times the one before; P lies in
+// Coulomb's cone, on its edge and against the corner's slip when it slips.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "blockdyn/model/rigid3d/body_state.hpp"
+#include "model/rigid3d/body3d_run.hpp"
+
+namespace blockdyn::rigid3d_newton_test {
+
+struct CornerLanding {
+  Body3dResult run;
+  Body3dEventRecord impact;
+  double t_touch = 0;  // closed form
+  Vec3 v_before{};     // closed form
+  Body3d body;
+};
+
+CornerLanding land_on_corner(double mu, double e) {
+  Body3d b = box_body(0.4, 0.3, 1.0, 400);
+  BodyOnGroundOptions o;
+  o.mu_s = o.mu_k = mu;
+  o.restitution = e;
+  const BodyOnGround m(b, {}, o);
+  Body3dStart s;
+  s.tilt = 0.15;
+  s.tilt_azimuth = std::atan2(0.3, 0.4);  // towards the (+x, +y) corner: it alone lowest
+  s.lift = 0.02;
+  s.velocity = {0.8, -0.5, 0.0};
+  CornerLanding c;
+  c.body = m.body();
+  c.run = test::run_body(m, s, 0.2);
+  for (const auto& ev : c.run.events)
+    if (ev.kind == Body3dEventKind::Impact) {
+      c.impact = ev;
+      break;
+    }
+  c.t_touch = std::sqrt(2 * s.lift / b.g);
+  c.v_before = {0.8, -0.5, -b.g * c.t_touch};
+  return c;
+}
+
+void expect_newton_coulomb(const CornerLanding& c, double mu, double e, bool slips) {
+  using S = BodyOnGround;
+  ASSERT_EQ(c.impact.kind, Body3dEventKind::Impact);
+  EXPECT_EQ(c.impact.from, BodyContact::Flight);
+  EXPECT_NEAR(c.impact.t, c.t_touch, 1e-12);
+  const auto& z = c.impact.z;
+  const Mat3 r = rotation(quat_at(z, S::kQw));
+  const Vec3 corner{0.2, 0.15, -0.5};
+  const Vec3 a = r * corner;  // the corner's arm (the orientation does not jump)
+  const Vec3 v{z[S::kVx], z[S::kVy], z[S::kVz]}, w{z[S::kWx], z[S::kWy], z[S::kWz]};
+  const double m = c.body.mass;
+  const Vec3 p = scaled(minus(v, c.v_before), m);
+  // J w+ = a x P, J = R diag(I) R^T (no spin before).
+  const Vec3 in = c.body.inertia(), wb = transposed_times(r, w);
+  const Vec3 jw = r * Vec3{in[0] * wb[0], in[1] * wb[1], in[2] * wb[2]};
+  const Vec3 axp = cross(a, p);
+  const double hs = m * std::sqrt(dot(c.v_before, c.v_before)) * 0.5;
+  for (int k = 0; k < 3; ++k) EXPECT_NEAR(jw[std::size_t(k)], axp[std::size_t(k)], 1e-12 * hs) << k;
+  const Vec3 u = plus(v, cross(w, a));
+  const double un_before = c.v_before[2], speed = std::fabs(un_before);
+  EXPECT_GT(p[2], 0.0);
+  EXPECT_NEAR(u[2], -e * un_before, 1e-12 * speed);
+  const double pt = std::hypot(p[0], p[1]), ut = std::hypot(u[0], u[1]);
+  EXPECT_LE(pt, mu * p[2] * (1 + 1e-12));
+  if (slips) {
+    EXPECT_GT(ut, 1e-3 * speed);
+    EXPECT_NEAR(pt, mu * p[2], 1e-12 * p[2]);
+    EXPECT_NEAR(p[0] * ut + pt * u[0], 0.0, 1e-11 * pt * speed);  // P_t = -|P_t| u_t / |u_t|
+    EXPECT_NEAR(p[1] * ut + pt * u[1], 0.0, 1e-11 * pt * speed);
+  } else {
+    EXPECT_LT(ut, 1e-12 * speed);
+  }
+  EXPECT_LT(c.run.max_abs_energy_error, 1e-9 * m * c.body.g * c.body.height);
+}
+
+TEST(Rigid3dNewton, ACornerLandingSlipsWhereFrictionCannotStopIt) {
+  const double mu = 0.1, e = 0.4;
+  const CornerLanding c = land_on_corner(mu, e);
+  expect_newton_coulomb(c, mu, e, true);
+}
+
+TEST(Rigid3dNewton, ACornerLandingSticksOnLargeFriction) {
+  const double mu = 5.0, e = 0.0;
+  const CornerLanding c = land_on_corner(mu, e);
+  expect_newton_coulomb(c, mu, e, false);
+  // Plastic and sticking: Housner's law in 3D (the angular momentum about the corner kept and the
+  // corner at rest) - the same state as the Housner option gives.
+  Body3d b = c.body;
+  BodyOnGroundOptions o;
+  o.mu_s = o.mu_k = mu;
+  o.impact = Body3dImpactLaw::Housner;
+  const BodyOnGround m(b, {}, o);
+  Body3dStart s;
+  s.tilt = 0.15;
+  s.tilt_azimuth = std::atan2(0.3, 0.4);
+  s.lift = 0.02;
+  s.velocity = {0.8, -0.5, 0.0};
+  const Body3dResult h = test::run_body(m, s, 0.2);
+  const Body3dEventRecord* hi = nullptr;
+  for (const auto& ev : h.events)
+    if (ev.kind == Body3dEventKind::Impact) {
+      hi = &ev;
+      break;
+    }
+  ASSERT_NE(hi, nullptr);
+  for (std::size_t k = BodyOnGround::kVx; k <= BodyOnGround::kWz; ++k) EXPECT_NEAR(c.impact.z[k], hi->z[k], 1e-12) << k;
+}
+
+TEST(Rigid3dNewton, RestitutionBouncesTheCornerOff) {
+  // e > 0: the corner leaves the ground at e times its approach speed - the body flies on.
+  const double mu = 5.0, e = 0.5;
+  const CornerLanding c = land_on_corner(mu, e);
+  expect_newton_coulomb(c, mu, e, false);
+  EXPECT_EQ(c.impact.to, BodyContact::Flight);
+}
+
+}  // namespace blockdyn::rigid3d_newton_test
