@@ -143,14 +143,12 @@ const ForcedFamily& assembly_forced() {
 // The 3D body: the planar analyses' motion along `incidence`; its runs start at rest (no --w0),
 // and it has no tangent (no Lyapunov exponent) nor a cycle trace yet.
 const ForcedFamily& rigid3d_forced() {
-  static const ForcedFamily f{.refused = {{not_body3d_options(), kNotBlock},
-                                          {{"impact", "restitution"},
-                                           "applies to `model` housner|rigid|assembly (the 3D body's impacts "
-                                           "conserve the angular momentum about the new contact)"}},
+  static const ForcedFamily f{.refused = {{not_body3d_options(), kNotBlock}},
                               .build = body3d_model,
                               .lyapunov_rtol = 1e-10,
                               .lyapunov_atol = 1e-12,
-                              .initial_state = false};
+                              .initial_state = false,
+                              .spatial = true};
   return f;
 }
 

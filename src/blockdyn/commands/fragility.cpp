@@ -14,6 +14,7 @@
 #include "blockdyn/base/number_text.hpp"
 #include "blockdyn/base/range_check.hpp"
 #include "blockdyn/commands/harmonic_run.hpp"
+#include "blockdyn/commands/record_suite.hpp"
 #include "blockdyn/excitation/intensity_measures.hpp"
 #include "blockdyn/excitation/response_spectrum.hpp"
 #include "blockdyn/io/file_glob.hpp"
@@ -104,50 +105,6 @@ std::string studied_object(const json& model) {
   return family;
 }
 
-// A suite's record files: h1 (or the records), and h2 and v where it has those components.
-struct SuiteRecords {
-  std::vector<std::string> h1, h2, v;
-  std::vector<std::string> component_names() const {
-    std::vector<std::string> c{"h1"};
-    if (!h2.empty()) c.push_back("h2");
-    if (!v.empty()) c.push_back("v");
-    return c;
-  }
-};
-SuiteRecords suite_records(const std::string& dir) {
-  json j;
-  std::ifstream file(dir + "/motions.json");
-  try {
-    if (!file) throw std::runtime_error("cannot open it");
-    j = json::parse(file);
-  } catch (const std::exception& e) {
-    throw std::invalid_argument("suite = '" + dir + "': no readable motions.json (" + e.what() + ")");
-  }
-  if (!j.contains("records") || !j["records"].is_array() || j["records"].empty())
-    throw std::invalid_argument("suite = '" + dir + "': its motions.json lists no records");
-  SuiteRecords s;
-  for (const json& r : j["records"]) {
-    if (!r.contains("components")) {
-      s.h1.push_back(dir + "/" + r.at("file").get<std::string>());
-      continue;
-    }
-    const json& c = r["components"];
-    s.h1.push_back(dir + "/" + c.at("h1").at("file").get<std::string>());
-    if (c.contains("h2")) s.h2.push_back(dir + "/" + c["h2"].at("file").get<std::string>());
-    if (c.contains("v")) s.v.push_back(dir + "/" + c["v"].at("file").get<std::string>());
-  }
-  if ((!s.h2.empty() && s.h2.size() != s.h1.size()) || (!s.v.empty() && s.v.size() != s.h1.size()))
-    throw std::invalid_argument("suite = '" + dir + "': its records do not all have the same components");
-  return s;
-}
-
-// `incidence` as one angle or A:B:N / a list (rigid3d; degrees); one 0 where not given.
-std::vector<double> incidences_of(const Settings& given) {
-  if (!given.has("incidence")) return {0.0};
-  const std::vector<double> v = parse_axis("incidence", given.text("incidence"), AxisSpacing::Linear).values;
-  for (double a : v) require_in_range("incidence", a, -360, 360);
-  return v;
-}
 // The forced model with `incidence` one angle of the study's.
 ForcedModel model_at_incidence(const Settings& given, double incidence) {
   Settings s = given;

@@ -24,8 +24,13 @@ using json = nlohmann::ordered_json;
 namespace {
 
 std::vector<StudyOption> rocking_spectrum_options() {
-  return {{"model", "housner (default) or rigid (3 DOF, Coulomb friction)", "housner"},
+  return {{"model", "housner (default), rigid (3 DOF, Coulomb friction) or rigid3d (a box in space)", "housner"},
           {"record", "the ground motion: PEER .AT2 (g) or CSV 't, a' (s, g)"},
+          {"suite",
+           "rigid3d: a directory written by `motion generate` (one to three components: h1 along `incidence`, h2 "
+           "across it, v vertical), instead of `record`"},
+          {"incidence", "rigid3d: h1's direction from the box's width axis, degrees: one angle, A:B:N or a list", "0"},
+          {"depth-ratio", "rigid3d: the box's depth over its width (its width b = 2 R sin alpha)", "1"},
           {"scale", "factor on the record", "1"},
           {"scales", "record scale factors, comma separated (a second axis; instead of `scale`)", "", false, true},
           {"alpha", "slenderness angle alpha = atan(b/h) [rad], in (0, pi/4]"},
@@ -37,14 +42,16 @@ std::vector<StudyOption> rocking_spectrum_options() {
           {"t-after", "simulated time after the record's end [s]", "5"},
           {"mass", "block mass [kg]", "1"},
           {"g", "gravity [m/s^2]", "9.81"},
-          {"restitution", "housner: rocking restitution (default Housner's); rigid: Newton's e_n"},
+          {"restitution", "housner: rocking restitution (default Housner's); rigid, rigid3d: Newton's e_n"},
           {"mu-s", "rigid: static friction", "0.7"},
           {"mu-k", "rigid: kinetic friction (default mu-s)"},
-          {"impact", "rigid: impact law housner or newton", "housner"},
+          {"impact", "rigid: impact law housner or newton (rigid3d: newton, its default)", "housner"},
           {"threads", "worker threads (0: all cores)", "0"}};
 }
 
-std::vector<double> p_values(const StudyOptions& o) {
+}  // namespace
+
+std::vector<double> rocking_p_values(const StudyOptions& o) {
   const bool list = o.given("p-values");
   const bool range = o.given("p-min") || o.given("p-max") || o.given("p-points");
   if (list == range)
@@ -64,6 +71,8 @@ std::vector<double> p_values(const StudyOptions& o) {
   for (double x : p) require_in_range("p-values", x, 0, 1e4, false);
   return p;
 }
+
+namespace {
 
 // The spectrum's points as the runner's table holds them.
 std::vector<RockingSpectrumPoint> points_of(const Table& t) {
@@ -103,15 +112,20 @@ json overturning_scales_json(const std::vector<OverturningScale>& s) {
 GridStudy rocking_grid(const Settings& given, const std::string& output) {
   const StudyOptions so(given, rocking_spectrum_options());
   const std::string model = so.text("model");
-  const RigidGroundModel& m =
-      *family_named("model", model, [](const Family& f) { return f.rigid_ground != nullptr; }).rigid_ground;
+  const Family& family = family_named(
+      "model", model, [](const Family& f) { return f.rigid_ground != nullptr || (f.forced && f.forced->spatial); });
+  if (!family.rigid_ground) return rocking_grid_3d(so, family, output);
+  for (const char* n : {"suite", "incidence", "depth-ratio"})
+    if (so.given(n))
+      throw std::invalid_argument(std::string("`") + n + "` applies to a body in space (`model` rigid3d)");
+  const RigidGroundModel& m = *family.rigid_ground;
   if (!so.given("alpha")) throw std::invalid_argument("alpha: give the slenderness angle [rad]");
   const double alpha = so.number("alpha");
   require_in_range("alpha", alpha, 0, M_PI / 4, false);
   if (so.given("scale") && so.given("scales")) throw std::invalid_argument("`scale` and `scales`: give only one");
   RockingSpectrumOptions ax;
   ax.alpha = alpha;
-  ax.p = p_values(so);
+  ax.p = rocking_p_values(so);
   ax.scales = so.given("scales") ? so.numbers("scales") : std::vector<double>{so.number("scale")};
   for (double x : ax.scales) require_in_range("scales", x, 0, 1e3, false);
   const double t_after = so.number("t-after");

@@ -40,6 +40,9 @@ struct ForcedFamily {
   bool initial_state = true;
   // Friction is given per interface by angles (--phi-s, --phi-l), not by coefficients.
   bool friction_angles = false;
+  // A body in space (ForcedModel::run3: three ground components, an incidence), its size set by
+  // --width, --depth and --height: the rocking spectrum's 3D family.
+  bool spatial = false;
 };
 
 struct Family {

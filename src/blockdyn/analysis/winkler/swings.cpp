@@ -9,6 +9,7 @@
 #include <string>
 
 #include "blockdyn/integrate/root_bracket.hpp"
+#include "blockdyn/model/common/coulomb.hpp"  // sign_of
 
 namespace blockdyn {
 
@@ -24,8 +25,6 @@ void validate(const SwingOptions& o) {
 }
 
 namespace {
-
-int sign_of(double v) { return (v > 0) - (v < 0); }
 
 // acc += w (a + sb b), component by component.
 void add_scaled(Energy& acc, const Energy& a, const Energy& b, double w, double sb = 1.0) {
