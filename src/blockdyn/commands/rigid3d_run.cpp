@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "blockdyn/commands/rigid3d_run.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
@@ -419,6 +420,47 @@ const std::vector<std::string>& rigid3d_columns() {
                                           "energy_error",
                                           "event"};
   return c;
+}
+
+const std::vector<std::string>& rigid3d_result_keys() {
+  static const std::vector<std::string> k{"status",
+                                          "t_final",
+                                          "max_tilt",
+                                          "max_tilt_azimuth",
+                                          "overturn_time",
+                                          "overturn_azimuth",
+                                          "first_uplift_time",
+                                          "first_slide_time",
+                                          "max_slide",
+                                          "impacts",
+                                          "max_abs_energy_error",
+                                          "stop_reason"};
+  return k;
+}
+
+std::vector<std::pair<std::string, std::string>> rigid3d_sweep_axes() {
+  std::vector<std::pair<std::string, std::string>> a = {{"width", "box width along e1 [m]"},
+                                                        {"depth", "box depth along e2 [m]"},
+                                                        {"height", "height [m]"},
+                                                        {"radius", "cylinder radius [m]"},
+                                                        {"mass", "mass [kg]"},
+                                                        {"mu_s", "static friction"},
+                                                        {"mu_k", "kinetic friction"},
+                                                        {"restitution", "Newton's restitution e"},
+                                                        {"tilt", "initial tilt [rad]"},
+                                                        {"tilt_azimuth", "the side it leans to [deg]"},
+                                                        {"yaw", "the body's e1 from x [deg]"},
+                                                        {"lift", "start in flight this high [m]"}};
+  // The ground's numbers (not its kinds or record files).
+  for (const StudyOption& g : ground_3d_options())
+    for (const char* part : {"constant", "amplitude", "frequency", "phase", "duration", "start", "scale", "azimuth"})
+      if (g.name.find(part) != std::string::npos) {
+        std::string n = g.name;
+        std::replace(n.begin(), n.end(), '-', '_');
+        a.emplace_back(n, g.help);
+        break;
+      }
+  return a;
 }
 
 std::unique_ptr<PreparedRun> prepare_rigid3d(const Settings& s) {

@@ -23,6 +23,9 @@ std::unique_ptr<PreparedRun> prepare_rigid3d(const Settings& s);
 
 // The trajectory's columns, in order.
 const std::vector<std::string>& rigid3d_columns();
+// A sweep's result columns (summary keys) and its axes (the numeric options) for `list-axes`.
+const std::vector<std::string>& rigid3d_result_keys();
+std::vector<std::pair<std::string, std::string>> rigid3d_sweep_axes();
 
 // The body and its friction from options by name (the forced analyses' rigid3d model).
 struct Body3d;

@@ -3,6 +3,7 @@
 
 #include "blockdyn/simulation/run_options.hpp"
 
+#include <algorithm>
 #include <sstream>
 #include <stdexcept>
 
@@ -195,10 +196,10 @@ SweepDefinition rigid_sweep(const Settings& s, const Family& family) {
 const std::vector<StudyOption>& sweep_options() {
   static const std::vector<StudyOption> options = [] {
     std::vector<StudyOption> o = {
-        {"model", "model family: winkler (default), housner, rigid"},
+        {"model", "model family: winkler (default), housner, rigid, rigid3d"},
         {"axis",
-         "housner/rigid: an axis NAME=SPEC (repeatable; the first varies fastest), e.g. ground_h_amplitude=0.1:1:20 "
-         "(see `list-axes`)",
+         "housner/rigid/rigid3d: an axis NAME=SPEC (repeatable; the first varies fastest), e.g. "
+         "ground_h_amplitude=0.1:1:20 (see `list-axes`)",
          "", false, true},
         {"width", "housner/rigid: block width [m]"},
         {"height", "housner/rigid: block height [m]"},
@@ -234,6 +235,14 @@ const std::vector<StudyOption>& sweep_options() {
         {"plot", "plot (PNG, SVG beside it): 1-D line or 2-D map of `plot-column`"},
         {"plot-column", "column to plot (default first_flight_time; housner/rigid max_abs_rotation_over_alpha)"}};
     o.insert(o.end(), rest.begin(), rest.end());
+    // A settings sweep's families (rigid3d): their own options, where the list has no such name.
+    for (const Family& f : families()) {
+      if (!f.result_keys || !f.own_options) continue;
+      for (const StudyOption& x : f.own_options()) {
+        const bool listed = std::any_of(o.begin(), o.end(), [&](const StudyOption& y) { return y.name == x.name; });
+        if (!listed) o.push_back({x.name, std::string(f.name) + ": " + x.help, "", x.is_flag, x.is_list, x.aliases});
+      }
+    }
     return o;
   }();
   return options;

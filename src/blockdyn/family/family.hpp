@@ -62,6 +62,9 @@ struct Family {
   SweepDefinition (*sweep)(const Settings&, const Family&) = nullptr;
   // The sweep's axes (name, what it sets) for --list-axes.
   std::vector<std::pair<std::string, std::string>> (*sweep_axes)() = nullptr;
+  // The summary's keys a settings sweep's row carries (commands/settings_sweep.hpp), the first the
+  // run's status; null: the family's sweep has its own rows.
+  const std::vector<std::string>& (*result_keys)() = nullptr;
   const ForcedFamily* forced = nullptr;  // null: not a model of the forced analyses
   // `lyapunov` of the free (unforced) model; null: the forced study only.
   StudyReport (*free_lyapunov)(const StudyOptions&, const StudyRequest&) = nullptr;

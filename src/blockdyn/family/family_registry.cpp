@@ -9,6 +9,7 @@
 #include "blockdyn/commands/forced_model_settings.hpp"
 #include "blockdyn/commands/rigid3d_run.hpp"
 #include "blockdyn/commands/scenario_settings.hpp"
+#include "blockdyn/commands/settings_sweep.hpp"
 #include "blockdyn/commands/simulate_run.hpp"
 #include "blockdyn/commands/study_command.hpp"
 #include "blockdyn/commands/sweep_settings.hpp"
@@ -63,6 +64,9 @@ const std::vector<Family>& families() {
        .prepare = prepare_rigid3d,
        .own_options = rigid3d_options,
        .state_columns = "x,y,z,qw,qx,qy,qz,vx,vy,vz,wx,wy,wz",
+       .sweep = settings_sweep,
+       .sweep_axes = rigid3d_sweep_axes,
+       .result_keys = rigid3d_result_keys,
        .forced = &rigid3d_forced()},
   };
   return rows;
