@@ -143,13 +143,7 @@ std::vector<StudyOption> with_run_options(std::vector<StudyOption> own, const st
 
 StudyOption threads_option() { return {"threads", "worker threads (0: all cores); output does not depend on it", "0"}; }
 
-std::string cell_text(double v) {
-  if (std::isnan(v)) return "nan";
-  char b[32];
-  std::snprintf(b, sizeof b, "%.15g", v);
-  if (std::strtod(b, nullptr) != v) std::snprintf(b, sizeof b, "%.17g", v);
-  return b;
-}
+std::string cell_text(double v) { return csv_cell(Cell::shortest(v)); }
 
 void append_text(std::string& to, const char* format, ...) {
   va_list args;

@@ -14,6 +14,23 @@ std::array<double, 3> GroundMotion3d::at(double t) const {
   return {c * x - s * y, s * x + c * y, v.at(t)};
 }
 
+GroundMotion3d record_components(std::shared_ptr<const Accelerogram> h, std::shared_ptr<const Accelerogram> h2,
+                                 std::shared_ptr<const Accelerogram> v, double scale, double azimuth) {
+  GroundMotion3d g;
+  g.azimuth = azimuth;
+  g.h.record = std::move(h);
+  g.h.scale = scale;
+  if (h2) {
+    g.h2.record = std::move(h2);
+    g.h2.scale = scale;
+  }
+  if (v) {
+    g.v.record = std::move(v);
+    g.v.scale = scale;
+  }
+  return g;
+}
+
 void validate(const GroundMotion3d& g) {
   validate(g.h, "ground.h");
   validate(g.h2, "ground.h2");

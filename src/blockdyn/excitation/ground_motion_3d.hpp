@@ -6,6 +6,7 @@
 // pulses, records), in g.
 #include <array>
 #include <cmath>
+#include <memory>
 #include <string>
 
 #include "blockdyn/excitation/ground_motion.hpp"
@@ -21,6 +22,11 @@ struct GroundMotion3d {
   // The ground's acceleration in the world frame (x, y, z), in g.
   std::array<double, 3> at(double t) const;
 };
+
+// A record in up to three components (h2 and v may be null), every one at `scale`, h along
+// `azimuth` degrees.
+GroundMotion3d record_components(std::shared_ptr<const Accelerogram> h, std::shared_ptr<const Accelerogram> h2,
+                                 std::shared_ptr<const Accelerogram> v, double scale, double azimuth);
 
 // Checks every component (ground.h.<field>, ground.h2.<field>, ground.v.<field>) and the azimuth.
 void validate(const GroundMotion3d& g);

@@ -100,19 +100,10 @@ FragilityRunOutcome fragility_run(const ForcedModel& m, const FragilitySuite& s,
   SurvivalOutcome out;
   if (s.three_dimensional()) {
     if (!m.run3) throw std::invalid_argument("suite: records in components or at incidences need a 3D body (rigid3d)");
-    GroundMotion3d g3;
-    g3.h.record = s.records[r.record];
-    g3.h.scale = r.scale;
-    if (!s.records_h2.empty()) {
-      g3.h2.record = s.records_h2[r.record];
-      g3.h2.scale = r.scale;
-    }
-    if (!s.records_v.empty()) {
-      g3.v.record = s.records_v[r.record];
-      g3.v.scale = r.scale;
-    }
-    g3.azimuth = s.incidence[r.record];
-    out = m.run3(g3, t_end);
+    out =
+        m.run3(record_components(s.records[r.record], s.records_h2.empty() ? nullptr : s.records_h2[r.record],
+                                 s.records_v.empty() ? nullptr : s.records_v[r.record], r.scale, s.incidence[r.record]),
+               t_end);
   } else {
     GroundMotion gm;
     gm.horizontal.record = s.records[r.record];

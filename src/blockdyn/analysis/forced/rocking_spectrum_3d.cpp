@@ -24,18 +24,9 @@ RockingSpectrum3dPoint rocking_spectrum_3d_point(const SpatialModelAt& model, co
   pt.incidence = o.incidences[(i / (np * ns)) % na];
   pt.record = i / (np * ns * na);
   pt.size = box_of_slenderness(o.alpha, pt.p, o.depth_ratio, o.g);
-  GroundMotion3d g3;
-  g3.azimuth = pt.incidence;
-  g3.h.record = records.h1[pt.record];
-  g3.h.scale = pt.scale;
-  if (!records.h2.empty()) {
-    g3.h2.record = records.h2[pt.record];
-    g3.h2.scale = pt.scale;
-  }
-  if (!records.v.empty()) {
-    g3.v.record = records.v[pt.record];
-    g3.v.scale = pt.scale;
-  }
+  const GroundMotion3d g3 =
+      record_components(records.h1[pt.record], records.h2.empty() ? nullptr : records.h2[pt.record],
+                        records.v.empty() ? nullptr : records.v[pt.record], pt.scale, pt.incidence);
   const double t_end = o.t_end ? *o.t_end : records.h1[pt.record]->t_last() + o.t_after;
   const SurvivalOutcome out = model(pt.size).run3(g3, t_end);
   pt.max_tilt_over_alpha = out.max_abs_rotation / o.alpha;
