@@ -14,7 +14,7 @@ declare -A GROUP=(
            libtomlplusplus-dev nlohmann-json3-dev libfmt-dev"
   [plot]="python3-numpy python3-matplotlib python3-pil"
   [test]="libgtest-dev libgmock-dev libbenchmark-dev libopenmpi-dev openmpi-bin python3-scipy python3-pytest
-          python3-dev pybind11-dev ffmpeg dpkg-dev file clang libclang-rt-14-dev clang-format"
+          python3-dev pybind11-dev ffmpeg dpkg-dev file clang libclang-rt-14-dev clang-format libbullet-dev"
   [docs]="mkdocs mkdocs-material chromium"
 )
 groups=("$@")

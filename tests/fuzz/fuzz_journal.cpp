@@ -24,8 +24,15 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   try {
     blockdyn::SweepJournal j(path, "0123456789abcdef", "index,a\n", 4, true);
     if (j.done() > j.points()) std::abort();
+    // Every kept row: the header's width, its index first, written back to one line.
     for (std::size_t i = 0; i < j.points(); ++i)
-      if (const std::string* r = j.row(i); r && (r->empty() || r->back() != '\n')) std::abort();
+      if (const blockdyn::CellRow* r = j.row(i)) {
+        if (r->size() != 2 || r->front().kind() != blockdyn::Cell::Kind::integer ||
+            r->front().integer() != static_cast<long long>(i))
+          std::abort();
+        const std::string line = blockdyn::csv_line(*r);
+        if (line.empty() || line.back() != '\n') std::abort();
+      }
   } catch (const std::invalid_argument&) {
   }
   std::remove(path.c_str());

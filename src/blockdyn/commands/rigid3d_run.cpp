@@ -11,6 +11,7 @@
 #include "blockdyn/commands/ground_settings.hpp"
 #include "blockdyn/commands/simulate_run.hpp"
 #include "blockdyn/io/json_io.hpp"
+#include "blockdyn/model/rigid_ground/rigid_params.hpp"
 #include "blockdyn/simulation/rigid3d_simulation.hpp"
 #include "blockdyn/simulation/run_options.hpp"
 
@@ -83,11 +84,10 @@ BodyOnGroundOptions body3d_friction_from(const Settings& s) {
   f.mu_k = s.number("mu-k", f.mu_s);
   require_in_range("mu-k", f.mu_k, 0, 1e6);
   if (s.has("impact")) {
-    const std::string law = s.text("impact");
-    if (law == "housner")
-      f.impact = Body3dImpactLaw::Housner;
-    else if (law != "newton")
-      throw std::invalid_argument("`impact` = '" + law + "' is not one of: newton, housner");
+    // The impact laws' names are the planar block's (one vocabulary).
+    const auto law = impact_law_from_string(s.text("impact"));
+    if (!law) throw std::invalid_argument("`impact` = '" + s.text("impact") + "' is not one of: newton, housner");
+    f.impact = *law == ImpactLaw::Housner ? Body3dImpactLaw::Housner : Body3dImpactLaw::Newton;
   }
   if (s.has("restitution")) {
     if (f.impact == Body3dImpactLaw::Housner)

@@ -47,7 +47,7 @@ ForcedModel forced_body3d_model(const Body3d& body, const BodyOnGroundOptions& f
                     {"g", body.g},
                     {"mu_s", friction.mu_s},
                     {"mu_k", mu_k},
-                    {"impact", friction.impact == Body3dImpactLaw::Newton ? "newton" : "housner"},
+                    {"impact", to_string(friction.impact)},
                     {"incidence_deg", incidence_deg},
                     {"alpha", fm.alpha},
                     {"p", fm.p}};

@@ -145,7 +145,11 @@ void SweepJournal::load() {
       fail("is corrupt: row " + std::to_string(idx) + " has " + std::to_string(field_count(row)) +
            " fields, the header " + std::to_string(field_count(header_)));
     if (rows_[idx].empty()) {
-      rows_[idx] = parse_csv_row(row.substr(0, row.size() - 1));
+      CellRow cells = parse_csv_row(row.substr(0, row.size() - 1));
+      // The index as the writer writes it ("01" is not how index 1 is written).
+      if (cells.empty() || cells[0].kind() != Cell::Kind::integer || cells[0].integer() != static_cast<long long>(idx))
+        fail("is corrupt: row " + std::to_string(idx) + " does not start with its index");
+      rows_[idx] = std::move(cells);
       ++done_;
     } else if (csv_line(rows_[idx]) != row) {
       fail("is corrupt: two different rows for index " + std::to_string(idx));

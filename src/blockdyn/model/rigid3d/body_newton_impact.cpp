@@ -43,6 +43,8 @@ Mat3 product(const Mat3& a, const Mat3& b) {
 
 }  // namespace
 
+const char* to_string(Body3dImpactLaw l) { return l == Body3dImpactLaw::Housner ? "housner" : "newton"; }
+
 Tr BodyOnGround::newton_impact(double t, const Mode& from, State& z) const {
   const Mat3 r = rotation(quat_at(z, S::kQw));
   const Vec3 x = vec_at(z, kX), v = vec_at(z, kVx), w = vec_at(z, kWx);

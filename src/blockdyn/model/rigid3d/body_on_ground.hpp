@@ -78,6 +78,7 @@ const char* to_string(Body3dEventKind k);
 // Newton: the touching base points' velocity-level problem (normal restitution e, Coulomb's cone
 // on the impulses); Housner: the angular momentum about the new contact conserved (it sticks).
 enum class Body3dImpactLaw : unsigned char { Newton, Housner };
+const char* to_string(Body3dImpactLaw l);  // "newton", "housner" (the planar block's names)
 
 struct BodyOnGroundOptions {
   double mu_s = 1e6;  // static friction coefficient (large: sticking throughout)
