@@ -121,8 +121,8 @@ int main(int argc, char** argv) {
   if (scales.empty()) scales = {1.0, 1.2, 1.4, 1.5};
   for (double scale : scales) {
     const Outcome b = run_blockdyn(rec, scale);
-    std::printf("%-7.1f %-22s %12.3f %14.6g %11s %10ld %14s\n", scale, "blockdyn (events)", 1e3 * b.seconds,
-                b.max_tilt, b.overturned ? "yes" : "no", b.steps, "-");
+    std::printf("%-7.1f %-22s %12.3f %14.6g %11s %10ld %14s\n", scale, "blockdyn (events)", 1e3 * b.seconds, b.max_tilt,
+                b.overturned ? "yes" : "no", b.steps, "-");
     for (double hz : {240.0, 1000.0, 4000.0, 16000.0}) {
       const Outcome u = run_bullet(rec, scale, 1.0 / hz);
       char label[32], agree[32];
