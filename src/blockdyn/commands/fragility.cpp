@@ -231,6 +231,7 @@ GridStudy fragility_grid(const Settings& given, const std::string& output) {
   if (fo.bootstrap < 0 || fo.bootstrap > 100000) throw std::invalid_argument("bootstrap: must be in [0, 100000]");
   if (seed < 0) throw std::invalid_argument("seed: must be >= 0");
   fo.seed = std::uint64_t(seed);
+  fo.threads = so.threads();  // the bootstrap's fits (the band does not depend on it)
   fo.t_after = so.number("t-after");
   require_in_range("t-after", fo.t_after, 0, 1e4);
   if (so.given("t-end")) fo.t_end = so.number("t-end");

@@ -100,4 +100,10 @@ TEST(FragilityFit, BootstrapBandCoversTheFitAndReproduces) {
   }
   EXPECT_EQ(std::tie(b.median_lo, b.median_hi, b.beta_lo, b.beta_hi),
             std::tie(again.median_lo, again.median_hi, again.beta_lo, again.beta_hi));
+  // Fitted on two threads: the same resamples, the same fits in the same order, bit for bit.
+  const FragilityBand two = bootstrap_fragility(groups, 300, 5, 2);
+  EXPECT_EQ(two.fits, b.fits);
+  EXPECT_EQ(two.failed, b.failed);
+  EXPECT_EQ(std::tie(b.median_lo, b.median_hi, b.beta_lo, b.beta_hi),
+            std::tie(two.median_lo, two.median_hi, two.beta_lo, two.beta_hi));
 }

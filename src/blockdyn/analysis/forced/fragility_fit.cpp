@@ -5,6 +5,8 @@
 #include <cmath>
 #include <random>
 
+#include "blockdyn/analysis/sweep/parallel_map.hpp"
+
 namespace blockdyn {
 namespace {
 
@@ -100,20 +102,26 @@ FragilityFit fit_fragility(const std::vector<FragilityRun>& runs) {
   return f;
 }
 
-FragilityBand bootstrap_fragility(const std::vector<std::vector<FragilityRun>>& groups, int samples,
-                                  std::uint64_t seed) {
+FragilityBand bootstrap_fragility(const std::vector<std::vector<FragilityRun>>& groups, int samples, std::uint64_t seed,
+                                  int threads) {
   FragilityBand band;
   band.samples = samples;
   std::seed_seq ss{std::uint32_t(seed), std::uint32_t(seed >> 32), std::uint32_t(0xb007)};
   std::mt19937_64 rng(ss);
-  std::vector<double> medians, betas;
-  for (int s = 0; s < samples; ++s) {
+  // The resamples drawn in order from the one stream, then fitted on the threads: the same fits
+  // in the same order whatever the thread count.
+  std::vector<std::size_t> picks(std::size_t(samples) * groups.size());
+  for (std::size_t& p : picks) p = std::size_t(rng() % groups.size());
+  const std::vector<FragilityFit> fits = parallel_map<FragilityFit>(std::size_t(samples), threads, [&](std::size_t s) {
     std::vector<FragilityRun> runs;
     for (std::size_t k = 0; k < groups.size(); ++k) {
-      const auto& g = groups[std::size_t(rng() % groups.size())];
+      const auto& g = groups[picks[s * groups.size() + k]];
       runs.insert(runs.end(), g.begin(), g.end());
     }
-    const FragilityFit f = fit_fragility(runs);
+    return fit_fragility(runs);
+  });
+  std::vector<double> medians, betas;
+  for (const FragilityFit& f : fits) {
     if (!f.ok) {
       ++band.failed;
       continue;

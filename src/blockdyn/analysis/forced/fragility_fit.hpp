@@ -26,15 +26,16 @@ struct FragilityFit {
 FragilityFit fit_fragility(const std::vector<FragilityRun>& runs);
 
 // Percentiles (5 %, 95 %) of the median and beta over `samples` bootstrap resamples of the groups
-// (records: every run of a group goes in or out together), from a seeded stream. Resamples with
-// no finite fit are left out (counted).
+// (records: every run of a group goes in or out together), from a seeded stream, fitted on
+// `threads` (0: all cores; the band does not depend on it). Resamples with no finite fit are left
+// out (counted).
 struct FragilityBand {
   double median_lo = 0, median_hi = 0, beta_lo = 0, beta_hi = 0;
   int samples = 0, failed = 0;
   std::vector<std::pair<double, double>> fits;  // (median, beta) of each resample that fitted
 };
-FragilityBand bootstrap_fragility(const std::vector<std::vector<FragilityRun>>& groups, int samples,
-                                  std::uint64_t seed);
+FragilityBand bootstrap_fragility(const std::vector<std::vector<FragilityRun>>& groups, int samples, std::uint64_t seed,
+                                  int threads = 1);
 
 double normal_cdf(double x);
 

@@ -160,7 +160,7 @@ FragilityResult fragility_result(std::vector<FragilityRunOutcome> runs, const Fr
     res.levels[i % nl].n_overturned += r.overturned;
   }
   res.fit = fit_fragility(all);
-  if (res.fit.ok && o.bootstrap > 0) res.band = bootstrap_fragility(groups, int(o.bootstrap), o.seed);
+  if (res.fit.ok && o.bootstrap > 0) res.band = bootstrap_fragility(groups, int(o.bootstrap), o.seed, o.threads);
   const double lo = *std::min_element(o.levels.begin(), o.levels.end()),
                hi = *std::max_element(o.levels.begin(), o.levels.end());
   res.curve = fragility_curve(res.fit, res.band, lo * 0.5, hi * 1.5);
