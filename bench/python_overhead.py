@@ -3,7 +3,7 @@
 most 0.5 ms of overhead for a 0.1 s Housner run). Run with the build's package:
     PYTHONPATH=build/python /usr/bin/python3 bench/python_overhead.py build/blockdyn
 Prints the medians of the library call, of a prepared Simulator's run, of the command-line path
-(the earlier implementation: in-process command line, temporary CSV and JSON) and the integration,
+(the earlier implementation: the in-process command line, its JSON through a file) and the integration,
 and a small sweep in memory against the same sweep through its files (the earlier path)."""
 import json
 import os
@@ -32,7 +32,16 @@ def main():
     library = median(lambda: blockdyn.simulate(**OPTS), 500)
     sim = blockdyn.Simulator(**OPTS)
     prepared = median(sim.run, 500)
-    via_cli = median(lambda: blockdyn.Simulation(*blockdyn._with_trajectory("simulate", None, OPTS)), 100)
+    # The command line in this process (blockdyn.run), its JSON to a file read back: the earlier path.
+    with tempfile.TemporaryDirectory() as tmp:
+        out = os.path.join(tmp, "s.json")
+        cli_args = ["simulate", *blockdyn._args("simulate", OPTS)[1:], "--json-out", out, "--quiet"]
+
+        def via_command_line():
+            blockdyn.run(*cli_args)
+            with open(out) as f:
+                json.load(f)
+        via_cli = median(via_command_line, 100)
     args = [program, "simulate", "--model", "housner", "--width", "0.3", "--height", "1.5", "--w0", "0.1",
             "--t-end", "0.1", "--json", "--timing", "--timing-repeat", "200"]
     integration = json.loads(subprocess.run(args, capture_output=True, text=True, check=True).stdout)["timing"]
