@@ -98,7 +98,7 @@ TEST(CliRigid3d, UsageErrorsNameTheOption) {
   const std::vector<std::string> m{"simulate", "--model", "rigid3d"};
   expect_usage_errors({{joined(m, {"--shape", "sphere"}), "--shape"},
                        {joined(m, {"--radius", "0.3"}), "--radius"},
-                       {joined(m, {"--velocity", "1,0,0"}), "--velocity"},
+                       {joined(m, {"--velocity", "1,0,nan"}), "--velocity"},
                        {joined(m, {"--lift", "0.1", "--velocity", "1,0"}), "--velocity"},
                        {joined(m, {"--tilt", "2"}), "tilt"},
                        {joined(m, {"--width", "-1"}), "width"},

@@ -110,12 +110,9 @@ Body3dStart start_from(const Settings& s) {
   require_in_range("tilt", st.tilt, 0, 0.5 * M_PI, true, false);
   require_in_range("tilt-azimuth", st.tilt_azimuth / kDeg, -360, 360);
   require_in_range("lift", st.lift, 0, 1e3);
-  if (s.has("velocity")) {
-    if (!(st.lift > 0))
-      throw std::invalid_argument(
-          "`velocity` needs `lift` > 0: in contact the velocity follows from the rotation about the contact");
-    st.velocity = vec3_option(s, "velocity");
-  }
+  // In contact: a corner moving into the ground starts with Newton's impact; otherwise the contact
+  // takes the velocities it allows (BodyOnGround::start).
+  if (s.has("velocity")) st.velocity = vec3_option(s, "velocity");
   if (s.has("angular-velocity")) st.angular_velocity = vec3_option(s, "angular-velocity");
   return st;
 }

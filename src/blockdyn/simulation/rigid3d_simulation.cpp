@@ -157,7 +157,10 @@ Body3dResult simulate_body3d(const BodyOnGround& model, BodyOnGround::State z, c
                                 " gives more than 1e8 rows: at least t-end / 1e8");
   Body3dResult res;
   double t = 0;
-  Model::Mode mode = model.mode_of(t, z);
+  // A start whose contact points move into the ground begins with an impact (its loss booked in
+  // the state's impact work, the balance taken after it).
+  const Transition<Model::Mode> first = model.start(t, z);
+  Model::Mode mode = first.next;
   model.complete(mode, z);
   res.initial_energy = model.balance(z);
   Body3dWatch watch{model, o, res};
@@ -166,7 +169,8 @@ Body3dResult simulate_body3d(const BodyOnGround& model, BodyOnGround::State z, c
   watch.next_row = o.output_interval;
   // A body standing where rest fails leaves it at once (the transition the breakpoint would make).
   Transition<Model::Mode> start{mode, false, int(Body3dEventKind::Mode)};
-  if (mode.contact == BodyContact::Rest) start = model.transition(t, mode, z, kBreakpoint);
+  if (first.stop) start = first;
+  if (!first.stop && mode.contact == BodyContact::Rest) start = model.transition(t, mode, z, kBreakpoint);
   if (start.stop) {
     res.status = SimStatus::Invalid;
     res.note = Model::stop_reason(mode, kBreakpoint, Body3dEventKind(start.kind));

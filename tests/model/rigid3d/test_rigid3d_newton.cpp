@@ -122,4 +122,46 @@ TEST(Rigid3dNewton, RestitutionBouncesTheCornerOff) {
   EXPECT_EQ(c.impact.to, BodyContact::Flight);
 }
 
+TEST(Rigid3dNewton, AStartWithACornerMovingIntoTheGroundIsAnImpact) {
+  // On a corner, the body moving down: the start is an impact at the corner - the angular momentum
+  // about it kept, the corner at rest after it (e = 0, friction enough), or slipping on it
+  // against the friction's impulse (little friction).
+  Body3d b = box_body(0.4, 0.3, 1.0, 400);
+  for (const double mu : {5.0, 0.05}) {
+    SCOPED_TRACE(mu);
+    BodyOnGroundOptions o;
+    o.mu_s = o.mu_k = mu;
+    const BodyOnGround m(b, {}, o);
+    Body3dStart s;
+    s.tilt = 0.15;
+    s.tilt_azimuth = std::atan2(0.3, 0.4);
+    s.velocity = {0.4, -0.1, -0.5};
+    BodyOnGround::State z = initial_state(b, s);
+    const BodyOnGround::State before = z;
+    const auto tr = m.start(0.0, z);
+    ASSERT_FALSE(tr.stop);
+    using S = BodyOnGround;
+    const Mat3 r = rotation(quat_at(z, S::kQw));
+    const Vec3 a = r * Vec3{0.2, 0.15, -0.5};
+    auto h_corner = [&](const BodyOnGround::State& y) {
+      const Vec3 v{y[S::kVx], y[S::kVy], y[S::kVz]}, w{y[S::kWx], y[S::kWy], y[S::kWz]};
+      const Vec3 in = b.inertia(), wb = transposed_times(r, w);
+      const Vec3 jw = r * Vec3{in[0] * wb[0], in[1] * wb[1], in[2] * wb[2]};
+      return minus(jw, scaled(cross(a, v), b.mass));  // J w + m (G - C) x v
+    };
+    const Vec3 h0 = h_corner(before), h1 = h_corner(z);
+    for (int k = 0; k < 3; ++k) EXPECT_NEAR(h1[std::size_t(k)], h0[std::size_t(k)], 1e-12 * b.mass) << k;
+    const Vec3 u = plus(Vec3{z[S::kVx], z[S::kVy], z[S::kVz]}, cross(Vec3{z[S::kWx], z[S::kWy], z[S::kWz]}, a));
+    EXPECT_NEAR(u[2], 0.0, 1e-12);
+    if (mu > 1) {
+      EXPECT_LT(std::hypot(u[0], u[1]), 1e-12);
+      EXPECT_EQ(tr.next.contact, BodyContact::Point);
+      EXPECT_FALSE(tr.next.slips());
+    } else {
+      EXPECT_GT(std::hypot(u[0], u[1]), 1e-3);
+      EXPECT_TRUE(tr.next.slips());
+    }
+  }
+}
+
 }  // namespace blockdyn::rigid3d_newton_test

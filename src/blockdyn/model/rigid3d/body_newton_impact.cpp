@@ -14,6 +14,7 @@
 
 #include "blockdyn/model/rigid3d/body_on_ground.hpp"
 #include "blockdyn/model/rigid3d/body_state.hpp"
+#include "blockdyn/model/rigid3d/slip_reference.hpp"  // kSlipNoise
 #include "blockdyn/numerics/spatial_contact.hpp"
 
 namespace blockdyn {
@@ -42,6 +43,28 @@ Mat3 product(const Mat3& a, const Mat3& b) {
 }
 
 }  // namespace
+
+Tr BodyOnGround::start(double t, State& z) const {
+  const Mode m = mode_of(t, z);
+  const bool on_points = m.contact == BodyContact::Line || m.contact == BodyContact::Point;
+  if (opt_.impact != Body3dImpactLaw::Newton || body_.shape != BodyShape3d::Box || !on_points)
+    return {m, false, int(Body3dEventKind::Mode)};
+  // A touching corner moving into the ground: the start is an impact at t (from flight: every
+  // touching corner takes part). Otherwise the contact takes the velocities it allows (mode_of):
+  // a start sliding along the ground would need a tangential impulse that Coulomb's law without
+  // a normal one does not give, and its slip under a large friction is too stiff to follow.
+  const Mat3 r = rotation(quat_at(z, S::kQw));
+  const Vec3 v = vec_at(z, kVx), w = vec_at(z, kWx);
+  double approach = 0;
+  for (int i = 0; i < 4; ++i) {
+    const Vec3 a = r * corner(i);
+    if (z[kZ] + a[2] <= kNewtonTouch * size_) approach = std::fmin(approach, plus(v, cross(w, a))[2]);
+  }
+  if (approach >= -kSlipNoise * std::sqrt(body_.g * size_)) return {m, false, int(Body3dEventKind::Mode)};
+  Tr tr = newton_impact(t, Mode{BodyContact::Flight}, z);
+  if (!tr.stop) tr.kind = int(Body3dEventKind::Mode);
+  return tr;
+}
 
 const char* to_string(Body3dImpactLaw l) { return l == Body3dImpactLaw::Housner ? "housner" : "newton"; }
 

@@ -177,6 +177,9 @@ class BodyOnGround {
   // flight; a tilted body's lowest points decide). Throws std::invalid_argument for a body
   // below the ground.
   Mode mode_of(double t, const State& z) const;
+  // The start: the mode of z; where a box starts on an edge or a corner with a corner moving into
+  // the ground (Newton's law), an impact at t first (body_newton_impact.cpp: z jumps).
+  Transition<Mode> start(double t, State& z) const;
 
   const Body3d& body() const { return body_; }
   const GroundMotion3d& ground() const { return ground_; }
