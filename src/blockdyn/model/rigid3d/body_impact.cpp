@@ -18,13 +18,6 @@ namespace {
 using S = BodyOnGround;
 using Tr = Transition<BodyOnGroundMode>;
 
-// Base points this close to the ground (in body sizes) touch it at an impact: a base landing
-// flat brings its far corners down at one instant up to rounding.
-constexpr double kImpactTouch = 1e-12;
-// An old contact point leaving slower than this (relative to the impact's |omega| size) stays in
-// contact: the new contact takes it in, rather than the two points taking turns at one instant.
-constexpr double kSeparation = 1e-9;
-
 bool holds(const BodyOnGroundMode& m, int corner) { return corner == m.corner_a || corner == m.corner_b; }
 
 }  // namespace
@@ -129,7 +122,7 @@ Tr BodyOnGround::housner_impact(double t, const Mode& from, State& z) const {
   const State before = z;
   conserve_momentum_about(next, z);
   // An old contact that the new motion drives into the ground joins the new contact.
-  const double v_tol = kSeparation * w_before * size_;
+  const double v_tol = kImpactLeaving * w_before * size_;
   auto sinking = [&]() {
     for (int i : others)
       if (!holds(next, i) && (z[kVz] + cross(vec_at(z, kWx), r * corner(i))[2]) < v_tol) return i;

@@ -24,10 +24,6 @@ namespace {
 using S = BodyOnGround;
 using Tr = Transition<BodyOnGroundMode>;
 
-// A base corner this close to the ground (in body sizes) takes part in the impact.
-constexpr double kNewtonTouch = 1e-12;
-// A corner leaving faster than this (relative to the impact's velocity scale) has left the ground.
-constexpr double kNewtonLeaving = 1e-9;
 // A touch where no corner moves into the ground, the body this slow (relative to sqrt(g size)):
 // an accumulation ended.
 constexpr double kNewtonStill = 1e-6;
@@ -58,7 +54,7 @@ Tr BodyOnGround::start(double t, State& z) const {
   double approach = 0;
   for (int i = 0; i < 4; ++i) {
     const Vec3 a = r * corner(i);
-    if (z[kZ] + a[2] <= kNewtonTouch * size_) approach = std::fmin(approach, plus(v, cross(w, a))[2]);
+    if (z[kZ] + a[2] <= kImpactTouch * size_) approach = std::fmin(approach, plus(v, cross(w, a))[2]);
   }
   if (approach >= -kSlipNoise * std::sqrt(body_.g * size_)) return {m, false, int(Body3dEventKind::Mode)};
   Tr tr = newton_impact(t, Mode{BodyContact::Flight}, z);
@@ -73,7 +69,7 @@ Tr BodyOnGround::newton_impact(double t, const Mode& from, State& z) const {
   const Vec3 x = vec_at(z, kX), v = vec_at(z, kVx), w = vec_at(z, kWx);
   int touching[4], n = 0;
   for (int i = 0; i < 4; ++i)
-    if (z[kZ] + dot(r[2], corner(i)) <= kNewtonTouch * size_) touching[n++] = i;
+    if (z[kZ] + dot(r[2], corner(i)) <= kImpactTouch * size_) touching[n++] = i;
   // A base landing flat from flight: plastic, at rest (as Housner's law has it).
   if (n == 0 || (n >= 3 && from.contact == BodyContact::Flight)) return landed_flat(t, z);
   // J^-1 in the world's axes: R diag(1/I) R^T.
@@ -133,7 +129,7 @@ Tr BodyOnGround::newton_impact(double t, const Mode& from, State& z) const {
   const double scale = std::fmax(std::sqrt(dot(v, v)), w_before * size_);
   int stay[4], m = 0;
   for (int i = 0; i < n; ++i)
-    if (sol.u[std::size_t(3 * i + 2)] <= kNewtonLeaving * scale) stay[m++] = touching[i];
+    if (sol.u[std::size_t(3 * i + 2)] <= kImpactLeaving * scale) stay[m++] = touching[i];
   if (m >= 3) return landed_flat(t, z);  // the base stays flat: at rest
   if (m == 0) {
     z[kWorkImpact] += energy(z) - body_.mass * body_.g * z[kZ] - ke;

@@ -143,6 +143,12 @@ class BodyOnGround {
   // instant; more than kMaxRapid of them in a row stop the run (a corner sequence that does not
   // end) instead of looping. An accumulation's impacts stay farther apart (kAccumulationTime).
   static constexpr double kInstant = 1e-13;
+  // Base points this close to the ground (in body sizes) touch it at an impact (a base landing
+  // flat brings its far corners down at one instant up to rounding), and a contact point leaving
+  // slower than kImpactLeaving (relative to the impact's velocity scale) stays in contact: both
+  // impact laws.
+  static constexpr double kImpactTouch = 1e-12;
+  static constexpr double kImpactLeaving = 1e-9;
   static constexpr int kMaxRapid = 64;
 
   BodyOnGround(const Body3d& body, const GroundMotion3d& ground = {}, const BodyOnGroundOptions& opt = {});
