@@ -14,15 +14,16 @@ inline Body3dResult run_body(const BodyOnGround& m, const Body3dStart& s, double
   return simulate_body3d(m, initial_state(m.body(), s), o);
 }
 
-// The planar 3-DOF block of a b x h section (mass, friction) under g from init, at the same
-// tight tolerances: the planar limit's reference.
+// The planar 3-DOF block of a b x h section (mass, friction, impact law) under g from init, at
+// the same tight tolerances: the planar limit's reference.
 inline RigidResult planar_block_run(double b, double h, double mass, double mu_s, double mu_k, const GroundMotion& g,
-                                    const RigidInitial& init, double t_end) {
+                                    const RigidInitial& init, double t_end, ImpactLaw impact = ImpactLaw::Housner) {
   RigidBlockParams p;
   p.shape.width = b;
   p.shape.height = h;
   p.shape.mass = mass;
   p.interface = {mu_s, mu_k};
+  p.impact = impact;
   RigidRunOptions o;
   o.t_end = t_end;
   o.integrator.rtol = 1e-12;

@@ -33,6 +33,15 @@ std::shared_ptr<const blockdyn::Accelerogram> fixture_record() {
   return rec;
 }
 
+// The fixture along 30 degrees (times h_scale) and, once, across it: two components.
+blockdyn::GroundMotion3d fixture_along_30_and_across(double h_scale) {
+  blockdyn::GroundMotion3d g;
+  g.azimuth = 30;
+  g.h.record = g.h2.record = fixture_record();
+  g.h.scale = h_scale;
+  return g;
+}
+
 Body3dResult run(const BodyOnGround& m, const blockdyn::Body3dStart& s, double t_end) {
   return blockdyn::test::run_body(m, s, t_end);
 }
@@ -216,11 +225,7 @@ TEST(Rigid3dContact, TwoRecordComponentsRunThroughCornerSequencesWithTheBalanceC
   // A square column under one record along 30 degrees (x 2) and across it (x 1): rocking on edges,
   // pivoting on corners and corner impacts in quick succession (once a zero-time loop of two
   // corners taking turns); the run must end at t_end with the energy balance closed.
-  const auto rec = fixture_record();
-  blockdyn::GroundMotion3d g;
-  g.azimuth = 30;
-  g.h.record = g.h2.record = rec;
-  g.h.scale = 2.0;
+  const blockdyn::GroundMotion3d g = fixture_along_30_and_across(2.0);
   const Body3d b = box(0.4, 0.4, 1.2);
   blockdyn::BodyOnGroundOptions o;
   o.mu_s = 100;
@@ -314,11 +319,7 @@ TEST(Rigid3dContact, PainleveStopsTheRunWithItsReason) {
   // A square column under three times the fixture along 30 degrees and across: an edge slipping
   // at both ends reaches a state where no load is consistent with its slip (Painleve's paradox of
   // the rigid contact); the run stops there with the reason, its balance closed up to it.
-  const auto rec = fixture_record();
-  blockdyn::GroundMotion3d g;
-  g.azimuth = 30;
-  g.h.record = g.h2.record = rec;
-  g.h.scale = 3.0;
+  const blockdyn::GroundMotion3d g = fixture_along_30_and_across(3.0);
   blockdyn::BodyOnGroundOptions o;
   o.mu_s = 0.5;
   o.mu_k = 0.4;

@@ -76,19 +76,10 @@ TEST(Rigid3dSlip, PlanarLimitIsTheThreeDofBlocksSlideRock) {
     const Body3dResult r = released(m, tilt, 0.0, t_end);
     ASSERT_EQ(r.status, blockdyn::SimStatus::TEnd) << r.note;
 
-    blockdyn::RigidBlockParams p;
-    p.shape.width = b;
-    p.shape.height = h;
-    p.shape.mass = 400;
-    p.interface = {mu, mu};
-    p.impact = newton ? blockdyn::ImpactLaw::Newton : blockdyn::ImpactLaw::Housner;
-    blockdyn::RigidRunOptions ro;
-    ro.t_end = t_end;
-    ro.integrator.rtol = 1e-12;
-    ro.integrator.atol = 1e-14;
     blockdyn::RigidInitial init;
     init.w0 = tilt;
-    const blockdyn::RigidResult planar = blockdyn::simulate_rigid(p, {}, init, ro);
+    const blockdyn::RigidResult planar = blockdyn::test::planar_block_run(
+        b, h, 400, mu, mu, {}, init, t_end, newton ? blockdyn::ImpactLaw::Newton : blockdyn::ImpactLaw::Housner);
     ASSERT_EQ(planar.status, blockdyn::SimStatus::TEnd);
 
     double onset = -1, onset3 = -1;

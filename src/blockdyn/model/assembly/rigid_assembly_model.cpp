@@ -197,25 +197,6 @@ typename RigidAssemblyModel<MaxBlocks>::Energy RigidAssemblyModel<MaxBlocks>::en
 }
 
 template <int MaxBlocks>
-typename RigidAssemblyModel<MaxBlocks>::PointForce RigidAssemblyModel<MaxBlocks>::point_force(const Mode& m,
-                                                                                              const State& z, double t,
-                                                                                              int p) const {
-  Geometry geo;
-  geo_.geometry(z, geo);
-  std::array<PointRows, kPoints> r;
-  Mode mm = m;
-  if (m.rest) mm.rest = false;
-  rows(z, geo, mm, r);
-  PointForce f;
-  f.c = r[p].c;
-  if (!is_closed(mm.point[p])) return f;
-  const Solution s = solve(t, mm, z, r);
-  f.fn = s.fn[p];
-  f.ft = s.ft[p];
-  return f;
-}
-
-template <int MaxBlocks>
 void RigidAssemblyModel<MaxBlocks>::point_forces(const Mode& m, const State& z, double t,
                                                  std::array<PointForce, kPoints>& out) const {
   Geometry geo;
@@ -235,13 +216,6 @@ void RigidAssemblyModel<MaxBlocks>::point_forces(const Mode& m, const State& z, 
     out[p].fn = s.fn[p];
     out[p].ft = s.ft[p];
   }
-}
-
-template <int MaxBlocks>
-typename RigidAssemblyModel<MaxBlocks>::PointForce RigidAssemblyModel<MaxBlocks>::point_force(const Mode& m,
-                                                                                              const State& z,
-                                                                                              int p) const {
-  return point_force(m, z, 0.0, p);
 }
 
 }  // namespace blockdyn

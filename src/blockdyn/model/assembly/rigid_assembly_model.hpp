@@ -120,11 +120,8 @@ class RigidAssemblyModel {
   Energy energy_terms(const Mode& m, const State& z) const;
   double energy(const Mode& m, const State& z) const { return energy_terms(m, z).total(); }
   double work(const State& z) const { return z[kWGround] + z[kWNormal] + z[kWFriction] + z[kWSwitch]; }
-  // The contact forces of a point in a mode (the acceleration-level problem's solution at t; at
-  // rest the least-norm distribution that holds the blocks).
-  PointForce point_force(const Mode& m, const State& z, int p) const;
-  PointForce point_force(const Mode& m, const State& z, double t, int p) const;
-  // Every point's force from one solve of the mode's contact problem (a trajectory row).
+  // Every point's contact force in a mode from one solve of its contact problem (the
+  // acceleration-level solution at t; at rest the least-norm distribution that holds the blocks).
   void point_forces(const Mode& m, const State& z, double t, std::array<PointForce, kPoints>& out) const;
 
   // The static limits of the configuration z (every contact closed): a_H / (g + a_V) at which rest

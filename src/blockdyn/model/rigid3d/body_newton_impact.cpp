@@ -15,6 +15,7 @@
 #include "blockdyn/model/rigid3d/body_on_ground.hpp"
 #include "blockdyn/model/rigid3d/body_state.hpp"
 #include "blockdyn/model/rigid3d/slip_reference.hpp"  // kSlipNoise
+#include "blockdyn/model/rigid_ground/rigid_params.hpp"
 #include "blockdyn/numerics/spatial_contact.hpp"
 
 namespace blockdyn {
@@ -62,7 +63,9 @@ Tr BodyOnGround::start(double t, State& z) const {
   return tr;
 }
 
-const char* to_string(Body3dImpactLaw l) { return l == Body3dImpactLaw::Housner ? "housner" : "newton"; }
+const char* to_string(Body3dImpactLaw l) {
+  return to_string(l == Body3dImpactLaw::Housner ? ImpactLaw::Housner : ImpactLaw::Newton);  // one vocabulary
+}
 
 Tr BodyOnGround::newton_impact(double t, const Mode& from, State& z) const {
   const Mat3 r = rotation(quat_at(z, S::kQw));

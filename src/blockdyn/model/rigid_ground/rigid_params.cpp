@@ -9,11 +9,19 @@
 
 namespace blockdyn {
 
-const char* to_string(ImpactLaw l) { return l == ImpactLaw::Housner ? "housner" : "newton"; }
+const char* to_string(ImpactLaw l) {
+  switch (l) {
+    case ImpactLaw::Housner:
+      return "housner";
+    case ImpactLaw::Newton:
+      break;
+  }
+  return "newton";
+}
 
 std::optional<ImpactLaw> impact_law_from_string(const std::string& s) {
-  if (s == "housner") return ImpactLaw::Housner;
-  if (s == "newton") return ImpactLaw::Newton;
+  for (const ImpactLaw l : {ImpactLaw::Housner, ImpactLaw::Newton})
+    if (s == to_string(l)) return l;
   return std::nullopt;
 }
 
