@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "blockdyn/excitation/stochastic_motion.hpp"
+#include "blockdyn/model/rigid3d/body_pivot.hpp"
 #include "blockdyn/simulation/rigid3d_simulation.hpp"
 #include "blockdyn/simulation/rigid_simulation.hpp"
 #include "model/rigid3d/body3d_run.hpp"
@@ -260,6 +261,57 @@ TEST(Rigid3dSlip, AStickNearedOffItsReferenceDoesNotChatter) {
   EXPECT_LT(r.stats.accepted, 20000);
   EXPECT_TRUE(std::any_of(r.events.begin(), r.events.end(), slips));
   EXPECT_LT(balance_error(r, m), 1e-9);
+}
+
+// An edge's two end reactions (axis x, ends at +-L): the total force and the moment about the
+// midpoint they make, and each end's friction margin mu N - |T|.
+struct EdgeEnds {
+  blockdyn::Vec3 plus, minus;
+};
+double margin(const blockdyn::Vec3& f, double mu) { return mu * f[2] - std::hypot(f[0], f[1]); }
+blockdyn::LineLoads split_of(const EdgeEnds& e, double half_length, double mu) {
+  const blockdyn::Vec3 axis{1, 0, 0};
+  const blockdyn::Vec3 force = blockdyn::plus(e.plus, e.minus);
+  const blockdyn::Vec3 moment = blockdyn::cross(blockdyn::scaled(axis, half_length), blockdyn::minus(e.plus, e.minus));
+  return blockdyn::split_line_reaction(force, moment, axis, half_length, mu);
+}
+
+TEST(Rigid3dSlip, AnEdgeSplitsItsForceAlongItSoBothEndsHoldWhereAnySplitWould) {
+  // The force along a sticking edge can be carried in any split (a rigid edge's ends cannot move
+  // apart); the split kept leaves the most friction to spare at the worse end. Closed forms:
+  // ends loaded alike with tangential forces 0.3 and 0.5 normal to the edge and 0.6 along it:
+  // x^2 + 0.3^2 = (0.6 - x)^2 + 0.5^2 gives x = 0.52 / 1.2 at the first end, margins equal.
+  const double mu = 0.7, l = 0.2;
+  const blockdyn::LineLoads even = split_of({{0.3, 0.3, 1}, {0.3, -0.5, 1}}, l, mu);
+  EXPECT_NEAR(even.plus[0], 0.52 / 1.2, 1e-14);
+  EXPECT_NEAR(even.minus[0], 0.6 - 0.52 / 1.2, 1e-14);
+  EXPECT_NEAR(margin(even.plus, mu), margin(even.minus, mu), 1e-14);
+  for (int k = 0; k <= 1000; ++k) {  // no split leaves more at the worse end
+    const double x = 0.6 * k / 1000;
+    const double worse = std::fmin(margin({x, 0.3, 1}, mu), margin({0.6 - x, -0.5, 1}, mu));
+    EXPECT_LE(worse, margin(even.plus, mu) + 1e-15);
+  }
+  // The second end near its limit by its normal part alone (0.69 of mu 0.7): sharing the 0.5
+  // along the edge by the loads (0.25 each) would need 0.734 there; the first end takes it all.
+  const blockdyn::LineLoads uneven = split_of({{0.25, 0.1, 1}, {0.25, 0.69, 1}}, l, mu);
+  EXPECT_DOUBLE_EQ(uneven.plus[0], 0.5);
+  EXPECT_EQ(uneven.minus[0], 0.0);
+  EXPECT_GT(margin(uneven.plus, mu), 0.18);
+  EXPECT_NEAR(margin(uneven.minus, mu), 0.01, 1e-14);
+  // Whatever the split, the ends carry the total force and the moment given, and the loads and
+  // the forces normal to the edge are the given ones (planar: nothing along the edge).
+  for (const EdgeEnds& e : {EdgeEnds{{0.3, 0.3, 1}, {0.3, -0.5, 1}}, EdgeEnds{{0.25, 0.1, 1}, {0.25, 0.69, 1}},
+                            EdgeEnds{{0, 0.2, 0.4}, {0, 0.1, 0.6}}}) {
+    const blockdyn::LineLoads s = split_of(e, l, mu);
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(s.plus[c] + s.minus[c], e.plus[c] + e.minus[c], 1e-15);
+    for (int c = 1; c < 3; ++c) {
+      EXPECT_NEAR(s.plus[c], e.plus[c], 1e-15);
+      EXPECT_NEAR(s.minus[c], e.minus[c], 1e-15);
+    }
+  }
+  const blockdyn::LineLoads planar = split_of({{0, 0.2, 0.4}, {0, 0.1, 0.6}}, l, mu);
+  EXPECT_EQ(planar.plus[0], 0.0);
+  EXPECT_EQ(planar.minus[0], 0.0);
 }
 
 }  // namespace slip_test

@@ -153,7 +153,7 @@ void BodyOnGround::events(double t, const Mode& m, const State& z, std::array<do
     return (opt_.mu_s * load[2] - std::hypot(load[0], load[1])) / weight;
   };
   if (m.contact == BodyContact::Line && m.half_length > 0) {
-    const LineLoads ll = split_line_reaction(pm.force, pm.moment, m.axis, m.half_length);
+    const LineLoads ll = split_line_reaction(pm.force, pm.moment, m.axis, m.half_length, opt_.mu_s);
     g[kEvLoadA] = ll.plus[2] / weight;
     g[kEvLoadB] = ll.minus[2] / weight;
     g[kEvSlipA] = slip(ll.plus, pm.force[2]);
@@ -250,7 +250,7 @@ std::array<Vec3, 2> BodyOnGround::contact_forces(double t, const Mode& m, const 
   if (m.contact == BodyContact::Point) return {point_pivot_motion(inertia_, body_.mass, r, s, w, f).force, Vec3{}};
   const PivotMotion pm = line_pivot_motion(inertia_, body_.mass, r, s, m.axis, w, f);
   if (m.half_length == 0) return {pm.force, Vec3{}};
-  const LineLoads ll = split_line_reaction(pm.force, pm.moment, m.axis, m.half_length);
+  const LineLoads ll = split_line_reaction(pm.force, pm.moment, m.axis, m.half_length, opt_.mu_s);
   return {ll.plus, ll.minus};
 }
 

@@ -77,18 +77,52 @@ Vec3 angular_momentum_about(const Vec3& inertia, double mass, const Mat3& r, con
   return plus(lg, scaled(cross(arm, v), mass));
 }
 
-LineLoads split_line_reaction(const Vec3& force, const Vec3& moment, const Vec3& axis, double half_length) {
-  // F+ + F- = F and L e x (F+ - F-) = M fix the difference normal to e: (M x e) / L. The force
-  // along e is shared in proportion to the ends' normal loads (the same friction ratio at both:
-  // an end that is about to lift needs none), equally when either load is not positive.
+namespace {
+
+// The force x along the axis at the plus end (fe - x at the minus end) that leaves the most
+// friction to spare at the worse end: the largest min(mu n_p - |(t_p, x)|, mu n_m - |(t_m, fe - x)|),
+// t_i the end's tangential force normal to the axis. From x = 0 to x = fe the plus end's margin
+// falls and the minus end's rises, so the best is where they meet (a Newton step safeguarded by
+// the bracket), or an end of that path.
+double friction_split(double np, double tp, double nm, double tm, double fe, double mu) {
+  auto gap = [&](double x) { return (mu * np - std::hypot(tp, x)) - (mu * nm - std::hypot(tm, fe - x)); };
+  if (fe == 0 || gap(0) <= 0) return 0;
+  if (gap(fe) >= 0) return fe;
+  double a = 0, b = fe, x = fe * 0.5;  // gap(a) > 0 > gap(b)
+  const double close = 1e-15 * mu * (np + nm);
+  for (int it = 0; it < 100; ++it) {
+    const double g = gap(x);
+    if (std::fabs(g) <= close) break;
+    (g > 0 ? a : b) = x;
+    const double hp = std::hypot(tp, x), hm = std::hypot(tm, fe - x);
+    const double slope = -(hp > 0 ? x / hp : 0.0) - (hm > 0 ? (fe - x) / hm : 0.0);
+    double next = slope != 0 ? x - g / slope : 0.5 * (a + b);
+    if (!((next - a) * (next - b) < 0)) next = 0.5 * (a + b);
+    if (next == x) break;
+    x = next;
+  }
+  return x;
+}
+
+}  // namespace
+
+LineLoads split_line_reaction(const Vec3& force, const Vec3& moment, const Vec3& axis, double half_length, double mu) {
+  // F+ + F- = F and L e x (F+ - F-) = M fix everything but the split of the force along e (the
+  // axis is horizontal): a rigid edge sticking at both ends carries any split its ends' friction
+  // allows. It takes the one that leaves the most friction to spare at the worse end, so that the
+  // edge slips only where no split holds it; equally when either load is not positive.
   const Vec3 d = half_length > 0 ? scaled(cross(moment, axis), 1.0 / half_length) : Vec3{0, 0, 0};
   const double fe = dot(force, axis);
   const Vec3 normal_part = minus(force, scaled(axis, fe));
   LineLoads l{scaled(plus(normal_part, d), 0.5), scaled(minus(normal_part, d), 0.5)};
   const double np = l.plus[2], nm = l.minus[2];
-  const double share = np > 0 && nm > 0 ? np / (np + nm) : 0.5;
-  l.plus = plus(l.plus, scaled(axis, share * fe));
-  l.minus = plus(l.minus, scaled(axis, (1 - share) * fe));
+  double x = 0.5 * fe;
+  if (np > 0 && nm > 0) {
+    const double tp = std::hypot(l.plus[0], l.plus[1]), tm = std::hypot(l.minus[0], l.minus[1]);
+    x = friction_split(np, tp, nm, tm, fe, mu);
+  }
+  l.plus = plus(l.plus, scaled(axis, x));
+  l.minus = plus(l.minus, scaled(axis, fe - x));
   return l;
 }
 

@@ -38,11 +38,12 @@ Vec3 angular_momentum_about(const Vec3& inertia, double mass, const Mat3& r, con
 
 // The reaction of a line contact shared by its two end points at pivot +- half_length * axis:
 // the total force and the moment about the pivot (perpendicular to the axis) fix everything but
-// the split of the force along the axis, which follows the ends' normal loads.
+// the split of the force along the (horizontal) axis: the one leaving the most friction (mu) to
+// spare at the worse end.
 struct LineLoads {
   Vec3 plus, minus;  // at pivot + half_length axis, pivot - half_length axis
 };
-LineLoads split_line_reaction(const Vec3& force, const Vec3& moment, const Vec3& axis, double half_length);
+LineLoads split_line_reaction(const Vec3& force, const Vec3& moment, const Vec3& axis, double half_length, double mu);
 
 Mat3 solve_matrix(const Mat3& a);  // the inverse of a 3x3 matrix (Cramer)
 inline Vec3 scaled(const Vec3& v, double s) { return {v[0] * s, v[1] * s, v[2] * s}; }

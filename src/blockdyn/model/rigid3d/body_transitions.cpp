@@ -124,8 +124,9 @@ std::string BodyOnGround::stop_reason(const Mode& from, int event, Body3dEventKi
   if (kind == Body3dEventKind::Painleve)
     return from.slips() ? "Painleve: no normal load is consistent with the slipping contact (a rigid contact with "
                           "this much friction has no solution there)"
-                        : "Painleve: at the new contact sticking would pull on the ground and lifting would sink into "
-                          "it";
+                        : "Painleve: no state of the contact is consistent at the acceleration level (sticking "
+                          "needs more than mu_s or pulls on the ground, slipping or lifting a point makes a load "
+                          "negative or sinks it)";
   if (kind != Body3dEventKind::NotModelled) return "";
   if (event < 0)
     return "the contact alternates between an edge and a corner at one instant: it would slide (not modelled "
