@@ -39,6 +39,7 @@ void run_box(benchmark::State& state, double h2_share, Body3dImpactLaw law = Bod
   o.t_end = 60;
   o.output_interval = 0;
   o.track_energy = false;
+  o.track_tilt = false;
   auto ignore = [](const Body3dEventRecord&) {};
   blockdyn::EventCallback<Body3dEventRecord, decltype(ignore)> sink(ignore);
   o.events = &sink;  // counted, not kept

@@ -59,8 +59,9 @@ class Body3dWatch final : public Observer<Model> {
   void row(double t, const Model::Mode& m, const Model::State& z, const char* event = nullptr) const {
     if (o.on_sample) o.on_sample({t, m, z, event});
   }
-  void track(double t, const Model::State& z) {
-    res.max_abs_energy_error = std::fmax(res.max_abs_energy_error, std::fabs(model.balance(z) - res.initial_energy));
+  void track(double t, const Model::State& z, bool energy = true) {
+    if (energy)
+      res.max_abs_energy_error = std::fmax(res.max_abs_energy_error, std::fabs(model.balance(z) - res.initial_energy));
     if (slipping(current)) {
       const Vec3 c = slip_point(current, z);
       res.max_slide =
@@ -85,14 +86,16 @@ class Body3dWatch final : public Observer<Model> {
         next_row += o.output_interval;
       }
     }
-    if (o.track_energy) {
+    if (o.track_energy || o.track_tilt) {
       Model::State a;
-      seg.eval(t0, a);
-      model.complete(m, a);
       seg.eval(t1, y);
       model.complete(m, y);
+      if (o.track_tilt) {
+        seg.eval(t0, a);
+        model.complete(m, a);
+      }
       // The tilt's largest value inside the step, where its rate changes sign from rising.
-      const double ra = tilt_rate_sign(a), rb = tilt_rate_sign(y);
+      const double ra = o.track_tilt ? tilt_rate_sign(a) : 0.0, rb = tilt_rate_sign(y);
       if (ra > 0 && rb < 0) {
         auto f = [&](double t) {
           Model::State z;
@@ -103,9 +106,9 @@ class Body3dWatch final : public Observer<Model> {
         Model::State z;
         seg.eval(locate_root(f, t0, t1, ra, rb), z);
         model.complete(m, z);
-        track(t0, z);
+        track(t0, z, false);
       }
-      track(t1, y);
+      track(t1, y, o.track_energy);
     }
     return true;
   }

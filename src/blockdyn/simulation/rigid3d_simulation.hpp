@@ -32,7 +32,8 @@ struct Body3dRunOptions {
   double t_end = 10;           // s
   double output_interval = 0;  // s between trajectory rows (0: events only)
   IntegratorOptions integ{};
-  bool track_energy = true;  // the balance (and the largest tilt) at every step end; false: at events only
+  bool track_energy = true;                            // the balance at every step end; false: at events only
+  bool track_tilt = true;                              // the largest tilt inside every step; false: at events only
   std::function<void(const Body3dSample&)> on_sample;  // rows (null: none)
   EventSink<Body3dEventRecord>* events = nullptr;      // as they happen (null: kept in the result)
 };
