@@ -9,11 +9,13 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <vector>
 
 #include "blockdyn/excitation/stochastic_motion.hpp"
 #include "blockdyn/model/rigid3d/body_pivot.hpp"
+#include "blockdyn/model/rigid3d/contact_slip.hpp"
 #include "blockdyn/simulation/rigid3d_simulation.hpp"
 #include "blockdyn/simulation/rigid_simulation.hpp"
 #include "model/rigid3d/body3d_run.hpp"
@@ -312,6 +314,39 @@ TEST(Rigid3dSlip, AnEdgeSplitsItsForceAlongItSoBothEndsHoldWhereAnySplitWould) {
   const blockdyn::LineLoads planar = split_of({{0, 0.2, 0.4}, {0, 0.1, 0.6}}, l, mu);
   EXPECT_EQ(planar.plus[0], 0.0);
   EXPECT_EQ(planar.minus[0], 0.0);
+}
+
+// The closed form (docs/3d.md, derived from the Delassus matrix of the end B with the end A
+// held): an upright box of half sizes a (normal to the edge), b (along it), c (height) on an
+// edge, A sticking and B slipping outwards (normal to the edge, the only slip a rigid edge lets
+// one end make), has a consistent load at B only below
+//   mu* = (16 a^4 + 16 a^2 b^2 + 16 a^2 c^2 + 7 b^2 c^2) / (3 a c (4 a^2 + 3 b^2 + 4 c^2)).
+double one_end_critical_friction(double a, double b, double c) {
+  return (16 * a * a * a * a + 16 * a * a * b * b + 16 * a * a * c * c + 7 * b * b * c * c) /
+         (3 * a * c * (4 * a * a + 3 * b * b + 4 * c * c));
+}
+
+TEST(Rigid3dSlip, OneEndSlippingOffAnEdgeIsConsistentBelowItsClosedFormFriction) {
+  const double mass = 2.0;
+  for (const auto& half : {std::array<double, 3>{0.2, 0.2, 0.6}, std::array<double, 3>{0.15, 0.4, 0.5},
+                           std::array<double, 3>{0.3, 0.1, 1.5}}) {
+    const double a = half[0], b = half[1], c = half[2];
+    const blockdyn::Vec3 inertia{mass * (b * b + c * c) / 3, mass * (a * a + c * c) / 3, mass * (a * a + b * b) / 3};
+    blockdyn::ContactPoints p;
+    p.n = 2;
+    p.arm = {blockdyn::Vec3{-a, -b, -c}, blockdyn::Vec3{-a, b, -c}};
+    p.sticks = {true, false};
+    p.dir = {blockdyn::Vec3{0, 0, 0}, blockdyn::Vec3{-1, 0, 0}};
+    const blockdyn::Mat3 upright{blockdyn::Vec3{1, 0, 0}, blockdyn::Vec3{0, 1, 0}, blockdyn::Vec3{0, 0, 1}};
+    auto consistency = [&](double mu) {
+      return blockdyn::slipping_contact_motion(inertia, mass, upright, p, {0, 0, 0}, {0, 0, -kG}, mu).consistency;
+    };
+    const double mu_star = one_end_critical_friction(a, b, c);
+    EXPECT_GT(consistency(mu_star * (1 - 1e-8)), 0) << a << " " << b << " " << c;
+    EXPECT_LT(consistency(mu_star * (1 + 1e-8)), 0) << a << " " << b << " " << c;
+    EXPECT_GT(consistency(0.0), 0);
+  }
+  EXPECT_NEAR(one_end_critical_friction(0.2, 0.2, 0.6), 0.6175710594315245, 1e-15);  // the census's column
 }
 
 }  // namespace slip_test
