@@ -152,7 +152,7 @@ const char* mode_name(const Body3d& b, const BodyOnGroundMode& m) {
     case BodyContact::Slide:
       return "slide";
     case BodyContact::Roll:
-      return "roll";
+      return m.slips() ? "rim_slip" : "roll";
   }
   return "?";
 }

@@ -42,7 +42,8 @@ class Body3dWatch final : public Observer<Model> {
   Vec3 slid{}, slip_from{};
   static bool slipping(const Model::Mode& m) {
     return m.contact == BodyContact::Slide ||
-           ((m.contact == BodyContact::Line || m.contact == BodyContact::Point) && m.slips());
+           ((m.contact == BodyContact::Line || m.contact == BodyContact::Point || m.contact == BodyContact::Roll) &&
+            m.slips());
   }
   Vec3 slip_point(const Model::Mode& m, const Model::State& z) const {
     return m.contact == BodyContact::Slide ? base_centre(model, z) : model.contact_point(m, z);

@@ -24,14 +24,9 @@ using namespace slip_reference;
 // A slip below this (m/s) has no direction of its own.
 constexpr double kPointNoSlip = 1e-300;
 // Starting directions of points that start slipping together are found in turn, the others
-// held, to this agreement, at most kStartIterations times; each on kDirectionSamples angles of
-// the circle, refined by kBisections halvings.
+// held, to this agreement, at most kStartIterations times (each by slip_start_root).
 constexpr double kStartAgreement = 1e-14;
 constexpr int kStartIterations = 30;
-constexpr int kDirectionSamples = 72;
-constexpr int kBisections = 60;
-// A root's direction and acceleration agree to this sine (a pole's do not).
-constexpr double kRootSine = 1e-6;
 // Both ends of an edge starting to slip: Newton's method on both angles from kJointStarts starts
 // (the best of a kJointGrid x kJointGrid grid), kNewtonSteps steps with difference kNewtonDelta.
 constexpr int kJointStarts = 6, kJointGrid = 24, kNewtonSteps = 40;
@@ -76,18 +71,7 @@ BodyOnGround::ContactSlip BodyOnGround::contact_slip_of(const Mode& m, const Sta
     c.slip[i] = ground_part(plus(v, cross(w, p.arm[i])));
     p.sticks[i] = !(m.slipping & bit(i));
     if (p.sticks[i]) continue;
-    // Against the friction's own slip; past its reversal (only past a stick, which the event
-    // ends) it keeps its direction, the slip's smooth continuation. Below half the noise it takes
-    // the reference's (a start from rest, a stick reached along it); between, it turns from one
-    // to the other continuously: a direction that jumped at one size would make a slip that
-    // nears its stick off its reference chatter there.
-    const Vec3& ref = reference_of(m, i);
-    const double sense = dot(c.slip[i], ref) < 0 ? -1.0 : 1.0, size = length_of(c.slip[i]);
-    const double share = std::fmin(1.0, std::fmax(0.0, 2 * size / noise - 1));
-    p.dir[i] = share >= 1 ? scaled(unit_or_zero(c.slip[i]), sense)
-               : share <= 0
-                   ? ref
-                   : unit_or_zero(plus(scaled(unit_or_zero(c.slip[i]), sense * share), scaled(ref, 1 - share)));
+    p.dir[i] = friction_direction(c.slip[i], reference_of(m, i), noise);
   }
   return c;
 }
@@ -191,51 +175,13 @@ void BodyOnGround::contact_slip_complete(const Mode& m, State& z) const {
 }
 
 Vec3 BodyOnGround::slip_start_direction(double t, const Mode& m, const State& z, int i) const {
-  // The direction d (angle phi) in which point i, starting to slip along d, accelerates along d:
-  // a root of d x a(d) with a . d > 0 (Coulomb's friction opposes the slip it makes), the one
-  // nearest the current reference, found on a sampled circle and refined by bisection.
-  const Vec3 ref = reference_of(m, i);
-  const double phi0 = std::atan2(ref[1], ref[0]);
+  // The direction point i starts slipping in: its slip accelerating along it (slip_reference.hpp).
   Mode probe = m;
-  double size_a = 0;  // |a| at the last angle evaluated
-  auto at = [&](double phi, double& along_d) {
-    const Vec3 d = {std::cos(phi), std::sin(phi), 0};
+  auto accel_of = [&](const Vec3& d) {
     reference_of(probe, i) = d;
-    const Vec3 a = contact_slip_rates(t, probe, z)[i];
-    along_d = dot(a, d);
-    size_a = length_of(a);
-    return d[0] * a[1] - d[1] * a[0];
+    return contact_slip_rates(t, probe, z)[i];
   };
-  double best = NAN, best_gap = INFINITY, c = 0;
-  double phi_lo = phi0, f_lo = at(phi_lo, c);
-  for (int k = 1; k <= kDirectionSamples; ++k) {
-    const double phi_hi = phi0 + 2 * M_PI * k / kDirectionSamples;
-    const double f_hi = at(phi_hi, c);
-    if ((f_lo <= 0) != (f_hi <= 0)) {
-      double lo = phi_lo, hi = phi_hi, flo = f_lo;
-      for (int b = 0; b < kBisections && hi - lo > 1e-16; ++b) {
-        const double mid = 0.5 * (lo + hi), fm = at(mid, c);
-        if ((fm <= 0) == (flo <= 0)) {
-          lo = mid;
-          flo = fm;
-        } else {
-          hi = mid;
-        }
-      }
-      const double root = 0.5 * (lo + hi);
-      const double f_root = at(root, c);
-      const double gap = std::fmin(root - phi0, phi0 + 2 * M_PI - root);
-      // A sign change through a pole (the loads' system singular there) is no root.
-      if (c > 0 && std::fabs(f_root) <= kRootSine * size_a && gap < best_gap) {
-        best = root;
-        best_gap = gap;
-      }
-    }
-    phi_lo = phi_hi;
-    f_lo = f_hi;
-  }
-  if (std::isnan(best)) return ref;
-  return {std::cos(best), std::sin(best), 0};
+  return slip_start_root(accel_of, reference_of(m, i));
 }
 
 BodyOnGroundMode BodyOnGround::slipping_contact(double t, const Mode& base, const State& z, unsigned mask) const {
@@ -382,8 +328,11 @@ bool BodyOnGround::flat_corners_rise(double t, const Mode& m, const State& z) co
 }
 
 Tr BodyOnGround::stick_or_slip(double t, const Mode& stick, const State& z, int kind, bool may_stick) const {
-  if (body_.shape != BodyShape3d::Box || (stick.contact != BodyContact::Line && stick.contact != BodyContact::Point))
-    return {stick, false, kind};
+  if (body_.shape != BodyShape3d::Box) {
+    const bool rim = stick.contact == BodyContact::Roll || (stick.contact == BodyContact::Line && !stick.slips());
+    return rim ? rim_contact_holds_or_slips(t, stick, z, kind, may_stick) : Tr{stick, false, kind};
+  }
+  if (stick.contact != BodyContact::Line && stick.contact != BodyContact::Point) return {stick, false, kind};
   const int slip_kind = kind == int(Body3dEventKind::Mode) ? int(Body3dEventKind::Slip) : kind;
   if (may_stick && consistent_contact(t, stick, z, -1)) return {stick, false, kind};
   // The candidates, in order: the points friction cannot hold slipping (with any loaded alike,

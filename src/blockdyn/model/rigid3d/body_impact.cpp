@@ -48,6 +48,7 @@ Tr BodyOnGround::landed_flat(double t, State& z) const {
 
 Tr BodyOnGround::transition(double t, const Mode& m, State& z, int event) const {
   Tr tr = mode_change(t, m, z, event);
+  if (!tr.stop && tr.next.contact == BodyContact::Roll) lower_onto_rim(tr.next, z);
   const bool impact_event =
       m.contact != BodyContact::Slide && ((event >= kEvTouch0 && event <= kEvTouch3) || event == kEvTouchdown);
   if (!impact_event) {
@@ -61,8 +62,8 @@ Tr BodyOnGround::transition(double t, const Mode& m, State& z, int event) const 
 Tr BodyOnGround::mode_change(double t, const Mode& m, State& z, int event) const {
   if (m.contact == BodyContact::Slide)
     return event == kBreakpoint ? Tr{m, false, int(Body3dEventKind::GroundBreak)} : slide_change(t, m, z, event);
+  if (m.contact == BodyContact::Roll) return m.slips() ? rim_slip_change(t, m, z, event) : roll_change(t, m, z, event);
   if (m.slips()) return contact_slip_change(t, m, z, event);
-  if (m.contact == BodyContact::Roll) return roll_change(t, m, z, event);
   switch (event) {
     case kBreakpoint:
       if (m.contact == BodyContact::Rest && !rest_holds(t, m.yaw)) return leave_rest(t, z);
@@ -75,8 +76,9 @@ Tr BodyOnGround::mode_change(double t, const Mode& m, State& z, int event) const
       return {m, true, int(Body3dEventKind::Overturn)};
     case kEvSlipA:
     case kEvSlipB:
-      // A box's edge or corner slips; a rim point's slip is not modelled yet.
-      if (body_.shape != BodyShape3d::Box) return {m, true, int(Body3dEventKind::SlipOnset)};
+      // A box's edge or corner slips, or a cylinder's rim point.
+      if (body_.shape != BodyShape3d::Box)
+        return rim_contact_holds_or_slips(t, m, z, int(Body3dEventKind::Slip), false);
       return stick_or_slip(t, m, z, int(Body3dEventKind::Slip), false);
     default:
       return impact(t, m, z, event);

@@ -111,7 +111,7 @@ void BodyOnGround::rhs(double t, const Mode& m, const State& z, State& dz) const
   dz.fill(0.0);
   if (m.contact == BodyContact::Rest) return;
   if (m.contact == BodyContact::Slide) return slide_rhs(t, m, z, dz);
-  if (m.contact == BodyContact::Roll) return roll_rhs(t, z, dz);
+  if (m.contact == BodyContact::Roll) return m.slips() ? rim_slip_rhs(t, m, z, dz) : roll_rhs(t, z, dz);
   if (m.slips()) return contact_slip_rhs(t, m, z, dz);
   const Mat3 r = rotation(quat_at(z, S::kQw));
   const Vec3 w = vec_at(z, kWx), f = specific_force(t);
@@ -132,7 +132,7 @@ void BodyOnGround::events(double t, const Mode& m, const State& z, std::array<do
   g.fill(1.0);
   if (m.contact == BodyContact::Rest) return;
   if (m.contact == BodyContact::Slide) return slide_events(t, m, z, g);
-  if (m.contact == BodyContact::Roll) return roll_events(t, z, g);
+  if (m.contact == BodyContact::Roll) return m.slips() ? rim_slip_events(t, m, z, g) : roll_events(t, m, z, g);
   if (m.slips()) return contact_slip_events(t, m, z, g);
   const Mat3 r = rotation(quat_at(z, S::kQw));
   if (m.contact == BodyContact::Flight) {
@@ -179,8 +179,8 @@ void BodyOnGround::events(double t, const Mode& m, const State& z, std::array<do
 }
 
 void BodyOnGround::complete(const Mode& m, State& z) const {
+  if (m.contact == BodyContact::Roll) return m.slips() ? rim_slip_complete(m, z) : roll_complete(z);
   if (m.slips()) return contact_slip_complete(m, z);
-  if (m.contact == BodyContact::Roll) return roll_complete(z);
   Quat q = quat_at(z, S::kQw);
   if (m.contact == BodyContact::Slide) q.x = q.y = 0;  // flat: turned about the vertical only
   q = normalized(q);
@@ -240,11 +240,11 @@ std::array<Vec3, 2> BodyOnGround::contact_forces(double t, const Mode& m, const 
       total = plus(total, {s.motion.friction[i][0], s.motion.friction[i][1], s.motion.load[i]});
     return {total, Vec3{}};
   }
+  if (m.contact == BodyContact::Roll) return {m.slips() ? rim_slipping(t, m, z).force : rolling(t, z).force, Vec3{}};
   if (m.slips()) {
     const SlipContactMotion sm = contact_slip_motion(t, m, z);
     return {sm.force[0], m.contact == BodyContact::Line ? sm.force[1] : Vec3{}};
   }
-  if (m.contact == BodyContact::Roll) return {rolling(t, z).force, Vec3{}};
   const Mat3 r = rotation(quat_at(z, S::kQw));
   const Vec3 s = pivot_to_centroid(m), w = vec_at(z, kWx);
   if (m.contact == BodyContact::Point) return {point_pivot_motion(inertia_, body_.mass, r, s, w, f).force, Vec3{}};
@@ -255,7 +255,12 @@ std::array<Vec3, 2> BodyOnGround::contact_forces(double t, const Mode& m, const 
 }
 
 Vec3 BodyOnGround::contact_point(const Mode& m, const State& z) const {
-  if (m.contact == BodyContact::Roll) return plus(vec_at(z, kX), rolling(0, z).arm);
+  if (m.contact == BodyContact::Roll) {
+    // The rim's lowest point; with the base flat, the side it touched last.
+    const Mat3 r = rotation(quat_at(z, S::kQw));
+    const bool flat = std::hypot(r[2][0], r[2][1]) < kRimFlat;
+    return plus(vec_at(z, kX), r * (flat ? m.point_a : rim_lowest_point(body_.radius, body_.half_height(), r)));
+  }
   if (m.contact != BodyContact::Line && m.contact != BodyContact::Point) return {NAN, NAN, NAN};
   if (!m.slips()) return m.pivot;
   const Vec3 mid = m.contact == BodyContact::Line ? scaled(plus(m.point_a, m.point_b), 0.5) : m.point_a;

@@ -64,7 +64,7 @@ enum class Body3dEventKind : int {
   LiftOff,      // the body leaves the ground
   Rest,         // an accumulation of impacts ends at rest
   Overturn,     // the base stands vertical
-  SlipOnset,    // a rim contact needs more than mu_s: its slip is not modelled yet (the run stops)
+  SlipOnset,    // a cylinder's base needs more than mu_s: its sliding is not modelled yet (the run stops)
   NotModelled,  // rolling on the rim, a chatter it cannot resolve (the run stops)
   GroundBreak,  // a breakpoint of the ground motion
   Invalid,      // the ground pulls down faster than g
@@ -237,9 +237,37 @@ class BodyOnGround {
   // A cylinder rolling on its rim (rim_rolling.hpp): motion, events, completion, mode changes.
   RimRolling rolling(double t, const State& z) const;
   void roll_rhs(double t, const State& z, State& dz) const;
-  void roll_events(double t, const State& z, std::array<double, kNumEvents>& g) const;
+  void roll_events(double t, const Mode& m, const State& z, std::array<double, kNumEvents>& g) const;
   void roll_complete(State& z) const;
   Transition<Mode> roll_change(double t, const Mode& m, State& z, int event) const;
+  // A cylinder on its rim, rolling or slipping: the mode, its contact point (body frame) kept in
+  // point_a as the reference side. The base lands where the tilt passes through zero: the height
+  // of the rim point opposite the reference (signed: it changes sign there, where 2 a sin(tilt)
+  // only touches zero); the reference is renewed where the contact has travelled 60 degrees
+  // along the rim from it (kEvTouch0 + 1; not at a tilt below 1e-8 rad, where the base lands). The rim point that
+  // touched just before the landing.
+  Mode roll_mode(const State& z, bool slipping) const;
+  void rim_side_events(const Mode& m, const Mat3& r, std::array<double, kNumEvents>& g) const;
+  Transition<Mode> rim_side_change(double t, const Mode& m, State& z, int event) const;
+  Vec3 rim_point_before_landing(const State& z) const;
+  void lower_onto_rim(const Mode& m, State& z) const;
+  // A cylinder slipping on its rim (rim_rolling.hpp, body_rim_slip.cpp): a Roll mode with
+  // `slipping` set, its slip followed against slip_ref; the motion under the friction along -d, or
+  // as the state's slip gives it.
+  RimSlip rim_slipping(double t, const Vec3& d, const State& z, const Vec3& side) const;
+  RimSlip rim_slipping(double t, const Mode& m, const State& z) const;
+  void rim_slip_rhs(double t, const Mode& m, const State& z, State& dz) const;
+  void rim_slip_events(double t, const Mode& m, const State& z, std::array<double, kNumEvents>& g) const;
+  void rim_slip_complete(const Mode& m, State& z) const;
+  double rim_slip_kink_ahead(double t, const Mode& m, const State& z) const;
+  Transition<Mode> rim_slip_change(double t, const Mode& m, State& z, int event) const;
+  // The rim's contact at rest on the ground starting to slip, first against `ref` (flight where
+  // no slip is consistent and the contact rises, else Painleve).
+  Transition<Mode> start_rim_slip(double t, const State& z, const Vec3& ref, const Vec3& side, int kind) const;
+  // A rim contact at rest (rocking on a rim point, or rolling): held if mu_s holds it (and
+  // may_stick), else slipping.
+  Transition<Mode> rim_contact_holds_or_slips(double t, const Mode& stick, const State& z, int kind,
+                                              bool may_stick) const;
   // Contact c with its points slipping the way they move (those at rest: as c has them).
   Mode moving_contact(const Mode& c, const State& z) const;
   // A box's edge or corner with a point slipping (contact_slip.hpp, body_contact_slip.cpp): the

@@ -13,6 +13,13 @@ namespace blockdyn {
 namespace {
 using S = BodyOnGround;
 using Tr = Transition<BodyOnGroundMode>;
+// The contact's travel along the rim is not followed below this tilt (sin): near the vertical its
+// direction turns fast for a path that misses the vertical by a rounding, and the base lands
+// where the tilt towards the reference side falls to kRimLanding (its rim then within
+// 2 a kRimLanding of the ground): rolling or slipping on a rim point of a base that flat would
+// follow a contact racing round the rim.
+constexpr double kRimTurnFloor = 1e-6;
+constexpr double kRimLanding = 1e-7;
 // A contact carrying less than this share of the weight is about to lift: not checked for slip.
 constexpr double kRollUncheckedShare = 1e-2;
 }  // namespace
@@ -29,17 +36,77 @@ void BodyOnGround::roll_rhs(double t, const State& z, State& dz) const {
   set_vec_at(dz, kWx, rr.domega);
 }
 
-void BodyOnGround::roll_events(double t, const State& z, std::array<double, kNumEvents>& g) const {
+void BodyOnGround::roll_events(double t, const Mode& m, const State& z, std::array<double, kNumEvents>& g) const {
   const RimRolling rr = rolling(t, z);
   const double weight = body_.mass * body_.g;
   g[kEvLiftOff] = rr.force[2] / weight;
   g[kEvSlipA] = rr.force[2] < kRollUncheckedShare * weight
                     ? 1.0
                     : (opt_.mu_s * rr.force[2] - std::hypot(rr.force[0], rr.force[1])) / weight;
-  // The opposite rim point's height above the contact (2 a sin(tilt)): zero where the base lands.
   const Mat3 r = rotation(quat_at(z, S::kQw));
-  g[kEvTouch0] = dot(r[2], {-2 * rr.contact_body[0], -2 * rr.contact_body[1], 0});
+  rim_side_events(m, r, g);
   g[kEvOverturn] = r[2][2];
+}
+
+BodyOnGroundMode BodyOnGround::roll_mode(const State& z, bool slipping) const {
+  Mode m{BodyContact::Roll};
+  m.slipping = slipping ? 1 : 0;
+  const Mat3 r = rotation(quat_at(z, S::kQw));
+  if (std::hypot(r[2][0], r[2][1]) >= kRimFlat) m.point_a = rim_lowest_point(body_.radius, body_.half_height(), r);
+  return m;
+}
+
+void BodyOnGround::rim_side_events(const Mode& m, const Mat3& r, std::array<double, kNumEvents>& g) const {
+  // r[2] is the world's up in the body frame, (w, u_z); the contact lies along -w, the reference
+  // side along point_a: 2 a |w| cos(angle between them) (the opposite point's height), and
+  // |w| (cos(angle) - cos 60 degrees), offset below kRimTurnFloor.
+  const Vec3 w{r[2][0], r[2][1], 0};
+  const double along = -dot(w, m.point_a) / body_.radius;
+  g[kEvTouch0] = 2 * body_.radius * (along - kRimLanding);
+  g[kEvTouch0 + 1] = along - 0.5 * std::sqrt(dot(w, w)) + kRimTurnFloor;
+}
+
+void BodyOnGround::lower_onto_rim(const Mode& m, State& z) const {
+  // A rim point rocked on since a landing at kRimLanding stands up to 2 a kRimLanding above the
+  // ground; rolling or slipping, the rim's lowest point is on it: the body is lowered there, the
+  // potential energy it gives up booked with the impacts' loss (the landing's approximation).
+  State on = z;
+  complete(m, on);
+  const double drop = z[kZ] - on[kZ];
+  if (!(drop > 0)) return;
+  z[kZ] = on[kZ];
+  z[kWorkImpact] -= body_.mass * body_.g * drop;
+}
+
+Vec3 BodyOnGround::rim_point_before_landing(const State& z) const {
+  // Near the landing w = R^T Z passes through zero at the rate dw/dt = -Omega x u: the contact was
+  // on the side the axis came from, along dw/dt.
+  const Mat3 r = rotation(quat_at(z, S::kQw));
+  const Vec3 u{r[2][0], r[2][1], r[2][2]}, om = transposed_times(r, vec_at(z, kWx));
+  const Vec3 dw = scaled(cross(om, u), -1.0);
+  const double n = std::hypot(dw[0], dw[1]);
+  if (!(n > 0)) return rim_lowest_point(body_.radius, body_.half_height(), r);
+  return {body_.radius * dw[0] / n, body_.radius * dw[1] / n, -body_.half_height()};
+}
+
+Tr BodyOnGround::rim_side_change(double t, const Mode& m, State& z, int event) const {
+  const Mat3 r = rotation(quat_at(z, S::kQw));
+  const Vec3 w{r[2][0], r[2][1], 0};
+  const double rho = std::sqrt(dot(w, w)), along = -dot(w, m.point_a) / body_.radius;
+  if (event == kEvTouch0 + 1 && along > 0 && along < 0.75 * rho) {
+    // The contact has travelled 60 degrees along the rim (cos = 0.5; where the tilt passes
+    // through zero both functions vanish with the contact still on the reference side, cos = 1):
+    // a new reference side (no event).
+    Mode next = m;
+    next.point_a = rim_lowest_point(body_.radius, body_.half_height(), r);
+    return {next, false, int(Body3dEventKind::SlipTurn)};
+  }
+  // Rising through the landing's tilt (after a landing, or slipping up from flat): no event.
+  const Vec3 u{r[2][0], r[2][1], r[2][2]}, om = transposed_times(r, vec_at(z, kWx));
+  const Vec3 dw = scaled(cross(om, u), -1.0);
+  if (-dot(dw, m.point_a) > 0) return {m, false, int(Body3dEventKind::SlipTurn)};
+  // The tilt falls through it: the base lands about the rim point opposite the contact.
+  return impact(t, rim_mode(r, vec_at(z, kX), rim_point_before_landing(z)), z, kEvTouch0);
 }
 
 void BodyOnGround::roll_complete(State& z) const {
@@ -62,15 +129,11 @@ Tr BodyOnGround::roll_change(double t, const Mode& m, State& z, int event) const
     case kEvLiftOff:
       return {Mode{BodyContact::Flight}, false, int(Body3dEventKind::LiftOff)};
     case kEvSlipA:
-      return {m, true, int(Body3dEventKind::SlipOnset)};
+      return rim_contact_holds_or_slips(t, m, z, int(Body3dEventKind::Slip), false);
     case kEvOverturn:
       return {m, true, int(Body3dEventKind::Overturn)};
-    default: {
-      // The base lands: the impact about the opposite rim point, as from rocking on this one.
-      const Mat3 r = rotation(quat_at(z, S::kQw));
-      const Mode rim = rim_mode(r, vec_at(z, kX), rim_lowest_point(body_.radius, body_.half_height(), r));
-      return impact(t, rim, z, kEvTouch0);
-    }
+    default:
+      return rim_side_change(t, m, z, event);
   }
 }
 

@@ -82,6 +82,7 @@ void BodyOnGround::slide_events(double t, const Mode& m, const State& z, std::ar
 }
 
 double BodyOnGround::kink_ahead(double t, const Mode& m, const State& z, const State& dz) const {
+  if (m.contact == BodyContact::Roll) return m.slips() ? rim_slip_kink_ahead(t, m, z) : INFINITY;
   if (m.slips()) {
     // The first of the slipping points' sticks ahead.
     const ContactSlip c = contact_slip_of(m, z);

@@ -76,7 +76,6 @@ bool BodyOnGround::pulls_away(double t, const Mode& m, const State& z) const {
 }
 
 BodyOnGroundMode BodyOnGround::mode_of(double t, const State& z) const {
-  (void)t;
   const Mat3 r = rotation(quat_at(z, S::kQw));
   const Vec3 x = vec_at(z, kX);
   const double tol = kTouchTolerance * size_, lowest = z[kZ] - lowest_point(body_, r).depth;
@@ -93,7 +92,10 @@ BodyOnGroundMode BodyOnGround::mode_of(double t, const State& z) const {
     // Turning about more than the rim point's tangent (a spin, a wobble): it rolls.
     const Mode rim = rim_mode(r, x, lowest_point(body_, r).body);
     const Vec3 w = vec_at(z, kWx), off = minus(w, scaled(rim.axis, dot(rim.axis, w)));
-    return std::sqrt(dot(off, off)) > kRollStart * std::sqrt(body_.g / size_) ? Mode{BodyContact::Roll} : rim;
+    const Mode held = std::sqrt(dot(off, off)) > kRollStart * std::sqrt(body_.g / size_) ? roll_mode(z, false) : rim;
+    // It slips from the start if friction cannot hold it.
+    const Tr tr = rim_contact_holds_or_slips(t, held, z, int(Body3dEventKind::Mode), true);
+    return tr.stop ? held : tr.next;
   }
   std::vector<int> touching;
   for (int i = 0; i < 4; ++i)
@@ -119,8 +121,7 @@ std::string BodyOnGround::stop_reason(const Mode& from, int event, Body3dEventKi
   if (kind == Body3dEventKind::Invalid)
     return "the ground accelerates downwards faster than g: the body resting on it would leave it";
   if (kind == Body3dEventKind::SlipOnset)
-    return "a contact of the cylinder needs more friction than mu_s: the slip of its rim or base is not modelled "
-           "yet";
+    return "the cylinder's base needs more friction than mu_s: its sliding is not modelled yet";
   if (kind == Body3dEventKind::Painleve)
     return from.slips() ? "Painleve: no normal load is consistent with the slipping contact (a rigid contact with "
                           "this much friction has no solution there)"
@@ -129,8 +130,8 @@ std::string BodyOnGround::stop_reason(const Mode& from, int event, Body3dEventKi
                           "negative or sinks it)";
   if (kind != Body3dEventKind::NotModelled) return "";
   if (event < 0)
-    return "the contact alternates between an edge and a corner at one instant: it would slide (not modelled "
-           "yet)";
+    return "the contact changes mode repeatedly at one instant (an edge and a corner, or a rim point, taking turns: "
+           "it would need the contact problem of both at once, not modelled yet)";
   return "impacts accumulate at one instant (a sequence of corner impacts that does not end)";
 }
 
@@ -183,7 +184,7 @@ Tr BodyOnGround::settle(double t, State& z) const {
 Tr BodyOnGround::after_load_zero(double t, const Mode& m, State& z, int event) const {
   if (event == kEvLiftOff) return {Mode{BodyContact::Flight}, false, int(Body3dEventKind::LiftOff)};
   // A rim point that would need a moment: the contact starts rolling along the rim.
-  if (m.half_length == 0) return {Mode{BodyContact::Roll}, false, int(Body3dEventKind::Mode)};
+  if (m.half_length == 0) return {roll_mode(z, false), false, int(Body3dEventKind::Mode)};
   // One end of the line lifts: the body pivots on the other, unless that one pulls away too.
   const Mat3 r = rotation(quat_at(z, S::kQw));
   const Vec3 x = vec_at(z, kX);

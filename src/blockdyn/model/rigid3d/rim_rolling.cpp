@@ -58,4 +58,29 @@ RimRolling rim_rolling_motion(const Vec3& inertia, double mass, double a, double
   return m;
 }
 
+RimSlip rim_slip_motion(const Vec3& inertia, double mass, double a, double c, const Mat3& r, const Vec3& v,
+                        const Vec3& omega, const Vec3& f, double mu_k, const Vec3& d, const Vec3& side) {
+  RimSlip m;
+  const bool flat = std::hypot(r[2][0], r[2][1]) < kRimFlat;
+  m.contact_body = flat ? side : rim_lowest_point(a, c, r);
+  const Vec3 arm = r * m.contact_body;
+  m.arm = arm;
+  const Vec3 spin = inertia_times(inertia, r, omega, false);
+  const Vec3 alpha0 = scaled(inertia_times(inertia, r, cross(omega, spin), true), -1.0);
+  const Vec3 travel = flat ? Vec3{0, 0, 0} : r * rim_point_rate(a, r, omega);
+  // The contact's acceleration without a reaction, and per unit load along u = Z - mu_k d.
+  const Vec3 free = plus(plus(f, cross(alpha0, arm)), plus(cross(omega, cross(omega, arm)), cross(omega, travel)));
+  const Vec3 u{-mu_k * d[0], -mu_k * d[1], 1.0};
+  const Vec3 per_load = plus(scaled(u, 1.0 / mass), cross(inertia_times(inertia, r, cross(arm, u), true), arm));
+  m.consistency = per_load[2] * mass;
+  const double load = -free[2] / per_load[2];
+  m.force = scaled(u, load);
+  m.accel = plus(f, scaled(m.force, 1.0 / mass));
+  m.domega = plus(alpha0, inertia_times(inertia, r, cross(arm, m.force), true));
+  const Vec3 s = plus(v, cross(omega, arm)), rate = plus(free, scaled(per_load, load));
+  m.slip = {s[0], s[1], 0};
+  m.slip_rate = {rate[0], rate[1], 0};
+  return m;
+}
+
 }  // namespace blockdyn

@@ -51,4 +51,73 @@ inline double stick_ahead(const Vec3& u, const Vec3& du) {
   return dot(closest, closest) <= kStickAhead * kStickAhead * dot(u, u) ? tau : INFINITY;
 }
 
+// The friction's direction for a slip u followed against ref: against the slip (past its
+// reversal, which only a stick's event ends, along ref: the slip's smooth continuation); below
+// half the noise the reference's (a start from rest, a stick reached along it); between, turning
+// from one to the other continuously (a direction that jumped at one size would make a slip that
+// nears its stick off its reference chatter there).
+inline Vec3 friction_direction(const Vec3& u, const Vec3& ref, double noise) {
+  auto unit = [](const Vec3& v) {
+    const double n = std::sqrt(dot(v, v));
+    const double inv = 1.0 / n;
+    return n > 1e-300 ? Vec3{v[0] * inv, v[1] * inv, v[2] * inv} : Vec3{0, 0, 0};
+  };
+  const double sense = dot(u, ref) < 0 ? -1.0 : 1.0, size = std::sqrt(dot(u, u));
+  const double share = std::fmin(1.0, std::fmax(0.0, 2 * size / noise - 1));
+  const Vec3 d = unit(u);
+  if (share >= 1) return {sense * d[0], sense * d[1], sense * d[2]};
+  if (share <= 0) return ref;
+  return unit({sense * share * d[0] + (1 - share) * ref[0], sense * share * d[1] + (1 - share) * ref[1],
+               sense * share * d[2] + (1 - share) * ref[2]});
+}
+
+// The direction d (horizontal, unit) a point at rest starts slipping in: where its slip's
+// acceleration under the friction d gives, accel_of(d), is along d (a root of d x a(d) with
+// a . d > 0: Coulomb's friction opposes the slip it makes), the root nearest ref, found on
+// kDirectionSamples angles of the circle and refined by bisection; ref where there is none. A
+// sign change through a pole (the loads' system singular there) is no root.
+constexpr int kDirectionSamples = 72;
+constexpr int kDirectionBisections = 60;
+constexpr double kRootSine = 1e-6;
+template <class AccelOf>
+Vec3 slip_start_root(AccelOf&& accel_of, const Vec3& ref) {
+  const double phi0 = std::atan2(ref[1], ref[0]);
+  double size_a = 0, along_d = 0;  // |a| and a . d at the last angle evaluated
+  auto at = [&](double phi) {
+    const Vec3 d = {std::cos(phi), std::sin(phi), 0};
+    const Vec3 a = accel_of(d);
+    along_d = dot(a, d);
+    size_a = std::sqrt(dot(a, a));
+    return d[0] * a[1] - d[1] * a[0];
+  };
+  double best = NAN, best_gap = INFINITY;
+  double phi_lo = phi0, f_lo = at(phi_lo);
+  for (int k = 1; k <= kDirectionSamples; ++k) {
+    const double phi_hi = phi0 + 2 * M_PI * k / kDirectionSamples;
+    const double f_hi = at(phi_hi);
+    if ((f_lo <= 0) != (f_hi <= 0)) {
+      double lo = phi_lo, hi = phi_hi, flo = f_lo;
+      for (int b = 0; b < kDirectionBisections && hi - lo > 1e-16; ++b) {
+        const double mid = 0.5 * (lo + hi), fm = at(mid);
+        if ((fm <= 0) == (flo <= 0)) {
+          lo = mid;
+          flo = fm;
+        } else {
+          hi = mid;
+        }
+      }
+      const double root = 0.5 * (lo + hi), f_root = at(root);
+      const double gap = std::fmin(root - phi0, phi0 + 2 * M_PI - root);
+      if (along_d > 0 && std::fabs(f_root) <= kRootSine * size_a && gap < best_gap) {
+        best = root;
+        best_gap = gap;
+      }
+    }
+    phi_lo = phi_hi;
+    f_lo = f_hi;
+  }
+  if (std::isnan(best)) return ref;
+  return {std::cos(best), std::sin(best), 0};
+}
+
 }  // namespace blockdyn::slip_reference
