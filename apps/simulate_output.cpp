@@ -67,17 +67,18 @@ SimulateReport run_and_write(const PreparedRun& run, const SimulateOutputFlags& 
     };
   out.timing_repeat = f.timing_repeat;
   const SimulateReport rep = run.run(out);
-  std::vector<std::string> animate_args = figure_arguments(rep.figure.animation);
+  const SimulateFigure& figure = rep.figure.get();
+  std::vector<std::string> animate_args = figure_arguments(figure.animation);
   animate_args.insert(animate_args.end(), {"--frames", std::to_string(f.animate_frames)});
-  target.figures_and_clean({{plot_script(rep.figure.plot), plot, figure_arguments(rep.figure.plot)},
-                            {animation_script(rep.figure.animation), f.animate, animate_args}});
+  target.figures_and_clean({{plot_script(figure.plot), plot, figure_arguments(figure.plot)},
+                            {animation_script(figure.animation), f.animate, animate_args}});
   if (spool) {
-    nlohmann::ordered_json j = rep.summary;
+    nlohmann::ordered_json j = rep.summary.get();
     if (f.timing) j["timing"] = to_json(rep.timing);
     if (!f.json_out.empty()) emit_json(j, f.json_out, *spool);
     if (f.json) emit_json(j, "-", *spool);
   }
-  if (!f.json && !f.quiet) std::fputs(rep.text.c_str(), stdout);
+  if (!f.json && !f.quiet) std::fputs(rep.text.get().c_str(), stdout);
   if (f.timing && !f.json && !f.quiet)
     std::printf("integration: %.6g s CPU, %.6g s wall\n", rep.timing.cpu_s, rep.timing.wall_s);
   return rep;

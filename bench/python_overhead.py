@@ -4,7 +4,8 @@ most 0.5 ms of overhead for a 0.1 s Housner run). Run with the build's package:
     PYTHONPATH=build/python /usr/bin/python3 bench/python_overhead.py build/blockdyn
 Prints the medians of the library call, of a prepared Simulator's run, of the command-line path
 (the earlier implementation: the in-process command line, its JSON through a file) and the integration,
-and a small sweep in memory against the same sweep through its files (the earlier path)."""
+a small sweep in memory against the same sweep through its files (the earlier path), and
+simulate_many on 1 and 2 threads."""
 import json
 import os
 import subprocess
@@ -51,7 +52,14 @@ def main():
     with tempfile.TemporaryDirectory() as tmp:
         out = os.path.join(tmp, "s.csv")
         sweep_files = median(lambda: blockdyn.sweep(**dict(sweep, output=out, overwrite=True)), 50)
+    # simulate_many: 200 Housner runs of 10 s (harmonic ground), 1 and 2 threads, in one run.
+    many = [dict(model="housner", width=0.3, height=1.5, ground_h_amplitude=0.3 + 0.001 * i,
+                 ground_h_frequency=1.5, t_end=10) for i in range(200)]
+    many_1 = median(lambda: blockdyn.simulate_many(many, threads=1), 7)
+    many_2 = median(lambda: blockdyn.simulate_many(many, threads=2), 7)
     print(json.dumps({"simulate_ms": library * 1e3, "simulator_run_ms": prepared * 1e3,
+                      "simulate_many_200_1_thread_ms": many_1 * 1e3, "simulate_many_200_2_threads_ms": many_2 * 1e3,
+                      "simulate_many_speedup": many_1 / many_2,
                       "command_line_path_ms": via_cli * 1e3,
                       "integration_ms": integration["integration_cpu_s"] * 1e3,
                       "sweep_20_points_in_memory_ms": sweep_memory * 1e3,

@@ -62,6 +62,8 @@ def _options(options):
 def _columns(cols):
     """Text columns as object arrays; a text column with every cell empty reads as NaN numbers, as
     from the CSV."""
+    if not any(isinstance(col, list) for col in cols.values()):
+        return cols  # the module's arrays (text as object arrays) as they are
     data = {}
     for name, col in cols.items():
         if isinstance(col, list):

@@ -11,9 +11,15 @@ from ._marshal import _columns
 STATE_COLUMNS = ("x", "y", "w", "vx", "vy", "vw")
 
 
+_FAMILY_STATE_COLUMNS = []  # the families' state columns, longest first (read once)
+
+
 def _state_columns(data):
     """The state columns of the family whose trajectory `data` is (each family registers them)."""
-    for cols in sorted({tuple(f["state_columns"]) for f in _core.families()}, key=len, reverse=True):
+    if not _FAMILY_STATE_COLUMNS:
+        _FAMILY_STATE_COLUMNS.extend(
+            sorted({tuple(f["state_columns"]) for f in _core.families()}, key=len, reverse=True))
+    for cols in _FAMILY_STATE_COLUMNS:
         if all(c in data for c in cols):
             return cols
     return STATE_COLUMNS
@@ -30,16 +36,27 @@ class Simulation:
         self._summary = summary  # a dict, or the JSON text: parsed when first read (most runs never are)
         empty = np.zeros(0)
         self.t = data.get("t", empty)
-        self.state_columns = _state_columns(data) if data else STATE_COLUMNS
-        self.state = (np.column_stack([data[c] for c in self.state_columns]) if data
-                      else np.zeros((0, len(self.state_columns))))
+        self._state_columns = self._state = None  # found and stacked when first read
         self.mode = data.get("mode", empty)
         self.event = data.get("event", empty)
 
     @property
+    def state_columns(self):
+        if self._state_columns is None:
+            self._state_columns = _state_columns(self.data) if self.data else STATE_COLUMNS
+        return self._state_columns
+
+    @property
+    def state(self):
+        if self._state is None:
+            self._state = (np.column_stack([self.data[c] for c in self.state_columns]) if self.data
+                           else np.zeros((0, len(self.state_columns))))
+        return self._state
+
+    @property
     def summary(self):
-        if isinstance(self._summary, str):
-            self._summary = json.loads(self._summary)
+        if not isinstance(self._summary, dict):
+            self._summary = json.loads(_summary_text(self._summary))
         return self._summary
 
     @property
@@ -55,12 +72,18 @@ class Simulation:
                 f"t_final={s.get('t_final')} rows={len(self.t)} events={len(self.events)}>")
 
 
+def _summary_text(summary):
+    """The JSON text of a run's summary: given, or printed by the module when first read."""
+    return summary if isinstance(summary, str) else summary.text()
+
+
 def _simulation(result):
-    """A Simulation (its summary parsed when first read), or an Assembly for the assembly family."""
+    """A Simulation (its summary printed and parsed when first read), or an Assembly for the
+    assembly family (its table has the blocks' columns)."""
     cols, summary = result
     data = _columns(cols)
-    if "theta_0" in data or not data:  # an assembly, or no table to tell by: read the summary now
-        return _simulation_of(data, json.loads(summary))
+    if "theta_0" in data:  # an assembly's table, or a block's: the summary tells
+        return _simulation_of(data, json.loads(_summary_text(summary)))
     return Simulation(data, summary)
 
 

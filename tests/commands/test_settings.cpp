@@ -100,8 +100,8 @@ TEST(Settings, ScenarioRunEqualsTheDirectRun) {
   RigidRunOptions o;
   o.t_end = 4;
   const RigidResult r = simulate_rigid(p, g, RigidInitial{}, o);
-  EXPECT_EQ(rep.summary["t_final"].get<double>(), r.t_final);
-  EXPECT_EQ(rep.summary["max_abs_rotation"].get<double>(), r.max_abs_rotation);
+  EXPECT_EQ(rep.summary.get()["t_final"].get<double>(), r.t_final);
+  EXPECT_EQ(rep.summary.get()["max_abs_rotation"].get<double>(), r.max_abs_rotation);
   EXPECT_EQ(events, long(r.events.size()));
   EXPECT_GT(events, 2);
   ASSERT_GE(table.data().size(), 9u);
@@ -109,7 +109,7 @@ TEST(Settings, ScenarioRunEqualsTheDirectRun) {
   EXPECT_EQ(table.data()[7].name, "mode");
   EXPECT_TRUE(table.data()[7].is_text);
   EXPECT_EQ(table.data()[3].numbers.back(), r.final_state[2]);  // w at the end
-  EXPECT_EQ(rep.figure.plot.kind, "rigid");
+  EXPECT_EQ(rep.figure.get().plot.kind, "rigid");
 }
 
 TEST(Settings, TooLongATrajectoryIsRefusedBeforeRunning) {

@@ -337,18 +337,20 @@ class PreparedRigid3d final : public PreparedRun {
     rep.text = summary_text(r);
     const std::string title = body_phrase(s_.body) + motion_phrase(s_.ground) + ": " + to_string(r.status) +
                               " at t = " + number_text(r.t_final, 6) + " s";
-    rep.figure.plot = FigureSpec{"rigid3d",
-                                 {},
-                                 {{"title", {title}},
-                                  {"weight", {number_text(s_.body.mass * s_.body.g)}},
-                                  {"height", {number_text(s_.body.height)}}}};
-    rep.figure.animation = FigureSpec{"rigid3d",
-                                      {},
-                                      {{"title", {title}},
-                                       {"shape", {s_.body.shape == BodyShape3d::Box ? "box" : "cylinder"}},
-                                       {"size",
-                                        {number_text(s_.body.width) + "," + number_text(s_.body.depth) + "," +
-                                         number_text(s_.body.height) + "," + number_text(s_.body.radius)}}}};
+    SimulateFigure fig;
+    fig.plot = FigureSpec{"rigid3d",
+                          {},
+                          {{"title", {title}},
+                           {"weight", {number_text(s_.body.mass * s_.body.g)}},
+                           {"height", {number_text(s_.body.height)}}}};
+    fig.animation = FigureSpec{"rigid3d",
+                               {},
+                               {{"title", {title}},
+                                {"shape", {s_.body.shape == BodyShape3d::Box ? "box" : "cylinder"}},
+                                {"size",
+                                 {number_text(s_.body.width) + "," + number_text(s_.body.depth) + "," +
+                                  number_text(s_.body.height) + "," + number_text(s_.body.radius)}}}};
+    rep.figure = std::move(fig);
     return rep;
   }
 

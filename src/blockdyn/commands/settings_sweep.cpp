@@ -78,7 +78,7 @@ class SettingsSweepTable final : public PointTable {
       i /= a.values.size();
     }
     try {
-      const json summary = prepare_run(settings_at(index))->run({}).summary;
+      const json summary = prepare_run(settings_at(index))->run({}).summary.take();
       for (const std::string& k : family_.result_keys()) out.cells.push_back(cell_of(summary.value(k, json())));
       if (summary.contains("stop_reason") && summary["stop_reason"].is_string())
         out.error = summary["stop_reason"].get<std::string>();

@@ -117,19 +117,23 @@ SimulateReport run_winkler(const Scenario& given, const SimulateOutputs& out) {
   for (int i = 1; i < out.timing_repeat; ++i)
     r.timing = fastest(r.timing, simulate(sc.params, sc.ground, z0, sc.options).timing);
   SimulateReport rep;
-  rep.summary = result_json(sc.params, sc.ground, sc.options, r, sc.physical ? &*sc.physical : nullptr);
-  rep.text = winkler_text(r, sc.physical ? scales_of(*sc.physical).time : 0.0);
+  rep.summary.defer([params = sc.params, ground = sc.ground, options = sc.options, r, physical = sc.physical] {
+    return result_json(params, ground, options, r, physical ? &*physical : nullptr);
+  });
+  rep.text.defer([r, tau_s = sc.physical ? scales_of(*sc.physical).time : 0.0] { return winkler_text(r, tau_s); });
   rep.timing = r.timing;
-  char head[160];
-  std::snprintf(head, sizeof head, "winkler block r = %.4g, mu = %.4g, k = %.4g", sc.params.r, sc.params.mu,
-                sc.params.k);
-  char tail[96];
-  std::snprintf(tail, sizeof tail, ": %s at t = %.6g", to_string(r.status), r.t_final);
-  const std::string title =
-      head + motion_phrase(sc.ground, sc.physical ? "Hz" : "/t_ref", sc.physical ? "s" : "t_ref") + tail;
-  rep.figure.plot = FigureSpec{"trajectory", {}, {{"alpha", {arg(sc.params.alpha())}}, {"title", {title}}}};
-  rep.figure.animation = FigureSpec{
-      "block", {}, {{"model", {"winkler"}}, {"width", {arg(sc.params.r)}}, {"height", {"1"}}, {"title", {title}}}};
+  rep.figure.defer([params = sc.params, ground = sc.ground, physical = sc.physical.has_value(), r] {
+    char head[160];
+    std::snprintf(head, sizeof head, "winkler block r = %.4g, mu = %.4g, k = %.4g", params.r, params.mu, params.k);
+    char tail[96];
+    std::snprintf(tail, sizeof tail, ": %s at t = %.6g", to_string(r.status), r.t_final);
+    const std::string title = head + motion_phrase(ground, physical ? "Hz" : "/t_ref", physical ? "s" : "t_ref") + tail;
+    SimulateFigure fig;
+    fig.plot = FigureSpec{"trajectory", {}, {{"alpha", {arg(params.alpha())}}, {"title", {title}}}};
+    fig.animation = FigureSpec{
+        "block", {}, {{"model", {"winkler"}}, {"width", {arg(params.r)}}, {"height", {"1"}}, {"title", {title}}}};
+    return fig;
+  });
   return rep;
 }
 
@@ -171,22 +175,35 @@ SimulateReport run_rigid_family(const Scenario& sc, const SimulateOutputs& out, 
   for (int i = 1; i < out.timing_repeat; ++i)
     r.timing = fastest(r.timing, sim(p, sc.ground, init, o, nullptr, nullptr).timing);
   SimulateReport rep;
-  rep.summary = rigid_result_json(p, m, sc.ground, o, r);
-  rep.text = rigid_text(r, p.shape.alpha());
   rep.timing = r.timing;
-  const std::string title = block_title(m, p) + motion_phrase(sc.ground);
-  rep.figure.plot = FigureSpec{"rigid",
+  // What the summary, the text and the figure are built from when read: kept once, shared.
+  struct Kept {
+    RigidBlockParams p;
+    RigidGroundModel m;
+    GroundMotion ground;
+    RigidRunOptions o;
+    RigidResult r;
+    std::string model;
+  };
+  const auto k = std::make_shared<const Kept>(Kept{p, m, sc.ground, o, std::move(r), sc.model});
+  rep.summary.defer([k] { return rigid_result_json(k->p, k->m, k->ground, k->o, k->r); });
+  rep.text.defer([k] { return rigid_text(k->r, k->p.shape.alpha()); });
+  rep.figure.defer([k] {
+    const std::string title = block_title(k->m, k->p) + motion_phrase(k->ground);
+    const std::string status = to_string(k->r.status);
+    SimulateFigure fig;
+    fig.plot = FigureSpec{
+        "rigid",
+        {},
+        {{"alpha", {arg(k->p.shape.alpha())}}, {"model", {k->model}}, {"status", {status}}, {"title", {title}}}};
+    fig.animation = FigureSpec{"block",
                                {},
-                               {{"alpha", {arg(p.shape.alpha())}},
-                                {"model", {sc.model}},
-                                {"status", {to_string(r.status)}},
-                                {"title", {title}}}};
-  rep.figure.animation = FigureSpec{"block",
-                                    {},
-                                    {{"model", {sc.model}},
-                                     {"width", {arg(p.shape.width)}},
-                                     {"height", {arg(p.shape.height)}},
-                                     {"title", {title + ": " + to_string(r.status)}}}};
+                               {{"model", {k->model}},
+                                {"width", {arg(k->p.shape.width)}},
+                                {"height", {arg(k->p.shape.height)}},
+                                {"title", {title + ": " + status}}}};
+    return fig;
+  });
   return rep;
 }
 
@@ -284,8 +301,9 @@ class PreparedAssembly final : public PreparedRun {
       std::snprintf(buf, sizeof buf, "%s%.17g,%.17g", sizes.empty() ? "" : ",", b.width, b.height);
       sizes += buf;
     }
-    rep.figure.plot = FigureSpec{"assembly", {}, {{"title", {title}}}};
-    rep.figure.animation = FigureSpec{"assembly", {}, {{"title", {title}}, {"sizes", {sizes}}}};
+    SimulateFigure fig;
+    fig.plot = FigureSpec{"assembly", {}, {{"title", {title}}}};
+    fig.animation = FigureSpec{"assembly", {}, {{"title", {title}}, {"sizes", {sizes}}}};
     std::string polygons;
     bool any_polygon = false;
     for (const AssemblyBlock& b : a.blocks) {
@@ -299,9 +317,8 @@ class PreparedAssembly final : public PreparedRun {
       }
       polygons += one;
     }
-    if (any_polygon) {
-      rep.figure.animation.options.push_back({"polygons", {polygons}});
-    }
+    if (any_polygon) fig.animation.options.push_back({"polygons", {polygons}});
+    rep.figure = std::move(fig);
     return rep;
   }
 

@@ -6,6 +6,7 @@
 // (families(), family/family.hpp) with its run function.
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -35,10 +36,38 @@ struct SimulateFigure {
   FigureSpec plot, animation;
 };
 
+// A value given, or built when first read from what the run kept (a caller that never reads it,
+// as most of Python's runs, does not pay for building it).
+template <class T>
+class Lazy {
+ public:
+  Lazy& operator=(T v) {
+    value_ = std::move(v);
+    build_ = nullptr;
+    return *this;
+  }
+  void defer(std::function<T()> build) {
+    build_ = std::move(build);
+    value_.reset();
+  }
+  const T& get() const {
+    if (!value_) value_ = build_ ? build_() : T{};
+    return *value_;
+  }
+  T take() {
+    get();
+    return std::move(*value_);
+  }
+
+ private:
+  mutable std::optional<T> value_;
+  std::function<T()> build_;
+};
+
 struct SimulateReport {
-  nlohmann::ordered_json summary;  // the JSON summary; its "events" member is left empty
-  std::string text;                // the summary for a person, a few lines
-  SimulateFigure figure;
+  Lazy<nlohmann::ordered_json> summary;  // the JSON summary; its "events" member is left empty
+  Lazy<std::string> text;                // the summary for a person, a few lines
+  Lazy<SimulateFigure> figure;
   RunTiming timing;
 };
 

@@ -57,7 +57,14 @@ class ColumnTable final : public TrajectoryTable {
   void row(const TableCell* cells) override {
     for (std::size_t i = 0; i < cols_.size(); ++i) {
       Column& c = cols_[i];
-      if (rows_ == 0) c.is_text = cells[i].text != nullptr;
+      if (rows_ == 0) {
+        c.is_text = cells[i].text != nullptr;
+        // Room for a short run's rows at once (growing cell by cell costs a short run most).
+        if (c.is_text)
+          c.texts.reserve(kFirstRows);
+        else
+          c.numbers.reserve(kFirstRows);
+      }
       if (c.is_text)
         c.texts.emplace_back(cells[i].text ? cells[i].text : "");
       else
@@ -66,9 +73,11 @@ class ColumnTable final : public TrajectoryTable {
     ++rows_;
   }
   const std::vector<Column>& data() const { return cols_; }
+  std::vector<Column>& data() { return cols_; }  // to move the columns out (the table is then empty)
   std::size_t rows() const { return rows_; }
 
  private:
+  static constexpr std::size_t kFirstRows = 64;
   std::vector<Column> cols_;
   std::size_t rows_ = 0;
 };
