@@ -258,7 +258,7 @@ Vec3 BodyOnGround::contact_point(const Mode& m, const State& z) const {
   if (m.contact == BodyContact::Roll) {
     // The rim's lowest point; with the base flat, the side it touched last.
     const Mat3 r = rotation(quat_at(z, S::kQw));
-    const bool flat = std::hypot(r[2][0], r[2][1]) < kRimFlat;
+    const bool flat = rim_on_side(body_.radius, body_.half_height(), r, m.point_a);
     return plus(vec_at(z, kX), r * (flat ? m.point_a : rim_lowest_point(body_.radius, body_.half_height(), r)));
   }
   if (m.contact != BodyContact::Line && m.contact != BodyContact::Point) return {NAN, NAN, NAN};

@@ -70,7 +70,7 @@ void BodyOnGround::rim_slip_complete(const Mode& m, State& z) const {
   z[kQy] = q.y;
   z[kQz] = q.z;
   const Mat3 r = rotation(q);
-  const bool flat = std::hypot(r[2][0], r[2][1]) < kRimFlat;
+  const bool flat = rim_on_side(body_.radius, body_.half_height(), r, m.point_a);
   const Vec3 arm = r * (flat ? m.point_a : rim_lowest_point(body_.radius, body_.half_height(), r));
   z[kZ] = -arm[2];
   z[kVz] = -cross(vec_at(z, kWx), arm)[2];
@@ -85,7 +85,7 @@ Tr BodyOnGround::start_rim_slip(double t, const State& z, const Vec3& ref, const
   // The direction the slip accelerates in under the friction it makes (slip_reference.hpp).
   auto accel_of = [&](const Vec3& d) { return rim_slipping(t, d, z, side).slip_rate; };
   Mode m = roll_mode(z, true);
-  if (std::hypot(rotation(quat_at(z, S::kQw))[2][0], rotation(quat_at(z, S::kQw))[2][1]) < kRimFlat) m.point_a = side;
+  if (rim_on_side(body_.radius, body_.half_height(), rotation(quat_at(z, S::kQw)), side)) m.point_a = side;
   m.slip_ref = slip_start_root(accel_of, unit_horizontal(ref));
   const RimSlip rs = rim_slipping(t, m.slip_ref, z, m.point_a);
   const double weight = body_.mass * body_.g;

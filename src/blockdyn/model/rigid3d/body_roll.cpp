@@ -104,7 +104,9 @@ Tr BodyOnGround::rim_side_change(double t, const Mode& m, State& z, int event) c
   // Rising through the landing's tilt (after a landing, or slipping up from flat): no event.
   const Vec3 u{r[2][0], r[2][1], r[2][2]}, om = transposed_times(r, vec_at(z, kWx));
   const Vec3 dw = scaled(cross(om, u), -1.0);
-  if (-dot(dw, m.point_a) > 0) return {m, false, int(Body3dEventKind::SlipTurn)};
+  // At the landing's own instant the new contact starts below the landing's tilt: no event either.
+  if (-(dw[0] * m.point_a[0] + dw[1] * m.point_a[1]) > 0 || t == m.impact_t)
+    return {m, false, int(Body3dEventKind::SlipTurn)};
   // The tilt falls through it: the base lands about the rim point opposite the contact.
   return impact(t, rim_mode(r, vec_at(z, kX), rim_point_before_landing(z)), z, kEvTouch0);
 }

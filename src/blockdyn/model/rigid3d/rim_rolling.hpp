@@ -15,6 +15,8 @@
 // lowest point stays on the ground), which gives the normal load N from one equation. Its
 // coefficient (in units of 1/m) is the slip's consistency: where it is not positive no load is
 // consistent (Painleve).
+#include <cmath>
+
 #include "blockdyn/model/rigid3d/quaternion.hpp"
 
 namespace blockdyn {
@@ -52,6 +54,13 @@ RimRolling rim_rolling_motion(const Vec3& inertia, double mass, double a, double
 // base this close to flat (sin(tilt) below kRimFlat) its lowest point is the reference rim point
 // `side` (body frame: where it touched last) and does not travel.
 inline constexpr double kRimFlat = 1e-9;
+// The rim point a rim contact bears on: its lowest point, or the reference `side` where the base
+// is that close to flat or the lowest point lies on the far half from it (just after the base
+// landed about `side`, its tilt still below the landing's towards the other side).
+inline bool rim_on_side(double a, double c, const Mat3& r, const Vec3& side) {
+  const double ux = r[2][0], uy = r[2][1];
+  return std::hypot(ux, uy) < kRimFlat || ux * side[0] + uy * side[1] > 0;
+}
 RimSlip rim_slip_motion(const Vec3& inertia, double mass, double a, double c, const Mat3& r, const Vec3& v,
                         const Vec3& omega, const Vec3& f, double mu_k, const Vec3& d, const Vec3& side);
 
