@@ -157,10 +157,7 @@ void BodyOnGround::contact_slip_complete(const Mode& m, State& z) const {
     const Vec3 w = vec_at(z, kWx);
     set_vec_at(z, kWx, minus(w, scaled(n, dot(w, n))));
   }
-  z[kQw] = q.w;
-  z[kQx] = q.x;
-  z[kQy] = q.y;
-  z[kQz] = q.z;
+  set_quat_at(z, kQw, q);
   const Mat3 r = rotation(q);
   const bool a_sticks = !(m.slipping & 1u), b_sticks = m.contact == BodyContact::Line && !(m.slipping & 2u);
   if (a_sticks || b_sticks) {

@@ -55,10 +55,7 @@ void BodyFlight::events(double, const Mode&, const State& z, std::array<double, 
 
 void BodyFlight::complete(const Mode&, State& z) const {
   const Quat q = normalized(orientation(z));
-  z[kQw] = q.w;
-  z[kQx] = q.x;
-  z[kQy] = q.y;
-  z[kQz] = q.z;
+  set_quat_at(z, kQw, q);
 }
 
 Transition<BodyFlight::Mode> BodyFlight::transition(double, const Mode& m, State&, int) const {

@@ -184,10 +184,7 @@ void BodyOnGround::complete(const Mode& m, State& z) const {
   Quat q = quat_at(z, S::kQw);
   if (m.contact == BodyContact::Slide) q.x = q.y = 0;  // flat: turned about the vertical only
   q = normalized(q);
-  z[kQw] = q.w;
-  z[kQx] = q.x;
-  z[kQy] = q.y;
-  z[kQz] = q.z;
+  set_quat_at(z, kQw, q);
   if (m.contact == BodyContact::Slide) {
     z[kVz] = z[kWx] = z[kWy] = 0;
     return;

@@ -65,10 +65,7 @@ void BodyOnGround::rim_slip_events(double t, const Mode& m, const State& z, std:
 void BodyOnGround::rim_slip_complete(const Mode& m, State& z) const {
   // The rim's lowest point on the ground, its material point not moving vertically.
   const Quat q = normalized(quat_at(z, S::kQw));
-  z[kQw] = q.w;
-  z[kQx] = q.x;
-  z[kQy] = q.y;
-  z[kQz] = q.z;
+  set_quat_at(z, kQw, q);
   const Mat3 r = rotation(q);
   const bool flat = rim_on_side(body_.radius, body_.half_height(), r, m.point_a);
   const Vec3 arm = r * (flat ? m.point_a : rim_lowest_point(body_.radius, body_.half_height(), r));

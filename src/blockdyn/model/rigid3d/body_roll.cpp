@@ -114,10 +114,7 @@ Tr BodyOnGround::rim_side_change(double t, const Mode& m, State& z, int event) c
 void BodyOnGround::roll_complete(State& z) const {
   // On the ground at its rim's lowest point, that point's material velocity zero.
   const Quat q = normalized(quat_at(z, S::kQw));
-  z[kQw] = q.w;
-  z[kQx] = q.x;
-  z[kQy] = q.y;
-  z[kQz] = q.z;
+  set_quat_at(z, kQw, q);
   const Mat3 r = rotation(q);
   const Vec3 arm = r * rim_lowest_point(body_.radius, body_.half_height(), r);
   z[kZ] = -arm[2];

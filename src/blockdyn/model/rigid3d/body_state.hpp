@@ -14,6 +14,13 @@ Quat quat_at(const std::array<double, N>& z, std::size_t qw) {
   return {z[qw], z[qw + 1], z[qw + 2], z[qw + 3]};
 }
 template <std::size_t N>
+void set_quat_at(std::array<double, N>& z, std::size_t qw, const Quat& q) {
+  z[qw] = q.w;
+  z[qw + 1] = q.x;
+  z[qw + 2] = q.y;
+  z[qw + 3] = q.z;
+}
+template <std::size_t N>
 Vec3 vec_at(const std::array<double, N>& z, std::size_t i) {
   return {z[i], z[i + 1], z[i + 2]};
 }

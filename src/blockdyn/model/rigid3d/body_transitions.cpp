@@ -165,10 +165,7 @@ Tr BodyOnGround::settle(double t, State& z) const {
                     0.5 * (inertia_[0] * om[0] * om[0] + inertia_[1] * om[1] * om[1] + inertia_[2] * om[2] * om[2]);
   const double yaw = std::atan2(r[1][0], r[0][0]);
   const Quat q = axis_angle({0, 0, 1}, yaw);
-  z[kQw] = q.w;
-  z[kQx] = q.x;
-  z[kQy] = q.y;
-  z[kQz] = q.z;
+  set_quat_at(z, kQw, q);
   // The centroid stays where it is: on the ground to within the rounding the contacts gathered
   // (moving it would change the potential energy at the event).
   set_vec_at(z, kVx, {0, 0, 0});
