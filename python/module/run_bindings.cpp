@@ -173,7 +173,7 @@ py::list run_many(std::size_t count, int threads, const std::function<void(std::
     if (errors[i]) return;
     py::gil_scoped_acquire hold;
     made[i] = to_python(outs[i]);
-    outs[i] = Outcome{};  // the columns are in the arrays now
+    outs[i].table = ColumnTable{};  // the columns are in the arrays now
   };
   {
     py::gil_scoped_release release;

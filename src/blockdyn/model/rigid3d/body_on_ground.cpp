@@ -255,8 +255,7 @@ Vec3 BodyOnGround::contact_point(const Mode& m, const State& z) const {
   if (m.contact == BodyContact::Roll) {
     // The rim's lowest point; with the base flat, the side it touched last.
     const Mat3 r = rotation(quat_at(z, S::kQw));
-    const bool flat = rim_on_side(body_.radius, body_.half_height(), r, m.point_a);
-    return plus(vec_at(z, kX), r * (flat ? m.point_a : rim_lowest_point(body_.radius, body_.half_height(), r)));
+    return plus(vec_at(z, kX), r * rim_contact_point(body_.radius, body_.half_height(), r, m.point_a));
   }
   if (m.contact != BodyContact::Line && m.contact != BodyContact::Point) return {NAN, NAN, NAN};
   if (!m.slips()) return m.pivot;

@@ -36,9 +36,12 @@ RimSlip BodyOnGround::rim_slipping(double t, const Vec3& d, const State& z, cons
 }
 
 RimSlip BodyOnGround::rim_slipping(double t, const Mode& m, const State& z) const {
-  // The friction's direction from the slip the state has (slip_reference.hpp).
-  const RimSlip probe = rim_slipping(t, m.slip_ref, z, m.point_a);
-  const Vec3 d = friction_direction(probe.slip, m.slip_ref, kSlipNoise * std::sqrt(body_.g * size_));
+  // The friction's direction from the slip the state has (slip_reference.hpp): the contact's
+  // material velocity, as rim_slip_motion finds it.
+  const Mat3 r = rotation(quat_at(z, S::kQw));
+  const Vec3 arm = r * rim_contact_point(body_.radius, body_.half_height(), r, m.point_a);
+  const Vec3 s = plus(vec_at(z, kVx), cross(vec_at(z, kWx), arm));
+  const Vec3 d = friction_direction({s[0], s[1], 0}, m.slip_ref, kSlipNoise * std::sqrt(body_.g * size_));
   return rim_slipping(t, d, z, m.point_a);
 }
 
@@ -67,8 +70,7 @@ void BodyOnGround::rim_slip_complete(const Mode& m, State& z) const {
   const Quat q = normalized(quat_at(z, S::kQw));
   set_quat_at(z, kQw, q);
   const Mat3 r = rotation(q);
-  const bool flat = rim_on_side(body_.radius, body_.half_height(), r, m.point_a);
-  const Vec3 arm = r * (flat ? m.point_a : rim_lowest_point(body_.radius, body_.half_height(), r));
+  const Vec3 arm = r * rim_contact_point(body_.radius, body_.half_height(), r, m.point_a);
   z[kZ] = -arm[2];
   z[kVz] = -cross(vec_at(z, kWx), arm)[2];
 }
@@ -82,7 +84,7 @@ Tr BodyOnGround::start_rim_slip(double t, const State& z, const Vec3& ref, const
   // The direction the slip accelerates in under the friction it makes (slip_reference.hpp).
   auto accel_of = [&](const Vec3& d) { return rim_slipping(t, d, z, side).slip_rate; };
   Mode m = roll_mode(z, true);
-  if (rim_on_side(body_.radius, body_.half_height(), rotation(quat_at(z, S::kQw)), side)) m.point_a = side;
+  if (rim_on_side(rotation(quat_at(z, S::kQw)), side)) m.point_a = side;
   m.slip_ref = slip_start_root(accel_of, unit_horizontal(ref));
   const RimSlip rs = rim_slipping(t, m.slip_ref, z, m.point_a);
   const double weight = body_.mass * body_.g;

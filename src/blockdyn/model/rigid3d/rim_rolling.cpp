@@ -61,7 +61,7 @@ RimRolling rim_rolling_motion(const Vec3& inertia, double mass, double a, double
 RimSlip rim_slip_motion(const Vec3& inertia, double mass, double a, double c, const Mat3& r, const Vec3& v,
                         const Vec3& omega, const Vec3& f, double mu_k, const Vec3& d, const Vec3& side) {
   RimSlip m;
-  const bool flat = rim_on_side(a, c, r, side);
+  const bool flat = rim_on_side(r, side);  // the contact does not travel
   m.contact_body = flat ? side : rim_lowest_point(a, c, r);
   const Vec3 arm = r * m.contact_body;
   m.arm = arm;

@@ -54,12 +54,15 @@ RimRolling rim_rolling_motion(const Vec3& inertia, double mass, double a, double
 // base this close to flat (sin(tilt) below kRimFlat) its lowest point is the reference rim point
 // `side` (body frame: where it touched last) and does not travel.
 inline constexpr double kRimFlat = 1e-9;
-// The rim point a rim contact bears on: its lowest point, or the reference `side` where the base
-// is that close to flat or the lowest point lies on the far half from it (just after the base
-// landed about `side`, its tilt still below the landing's towards the other side).
-inline bool rim_on_side(double a, double c, const Mat3& r, const Vec3& side) {
+// The rim point a rim contact bears on (body frame): its lowest point, or the reference `side`
+// where the base is that close to flat or the lowest point lies on the far half from it (just
+// after the base landed about `side`, its tilt still below the landing's towards the other side).
+inline bool rim_on_side(const Mat3& r, const Vec3& side) {
   const double ux = r[2][0], uy = r[2][1];
   return std::hypot(ux, uy) < kRimFlat || ux * side[0] + uy * side[1] > 0;
+}
+inline Vec3 rim_contact_point(double a, double c, const Mat3& r, const Vec3& side) {
+  return rim_on_side(r, side) ? side : rim_lowest_point(a, c, r);
 }
 RimSlip rim_slip_motion(const Vec3& inertia, double mass, double a, double c, const Mat3& r, const Vec3& v,
                         const Vec3& omega, const Vec3& f, double mu_k, const Vec3& d, const Vec3& side);
