@@ -273,7 +273,8 @@ json summary_json(const Rigid3dSetup& s, const BodyOnGround& m, const Body3dResu
             {"mu_k", s.model.mu_k < 0 ? s.model.mu_s : s.model.mu_k},
             {"contacts",
              "a box's base slides on its four corners (Coulomb, mu_k, each against its own slip: twisting "
-             "included); edges, corners and a cylinder's base stick (the run stops where they would slide)"}}},
+             "included), a cylinder's on its disc (uniform pressure, the tilting moment's share on one rim point); "
+             "edges, corners and the rim stick within mu_s and slip against mu_k"}}},
           {"impact_law",
            s.model.impact == Body3dImpactLaw::Newton && s.body.shape == BodyShape3d::Box
                ? "newton: the touching corners' velocity-level problem, normal velocity -e times the one before, "

@@ -44,8 +44,6 @@ const char* to_string(Body3dEventKind k) {
       return "rest";
     case Body3dEventKind::Overturn:
       return "overturn";
-    case Body3dEventKind::SlipOnset:
-      return "slip_onset";
     case Body3dEventKind::NotModelled:
       return "not_modelled";
     case Body3dEventKind::GroundBreak:
@@ -79,7 +77,7 @@ BodyOnGround::BodyOnGround(const Body3d& body, const GroundMotion3d& ground, con
   mu_k_ = opt_.mu_k < 0 ? opt_.mu_s : opt_.mu_k;
   if (!(mu_k_ >= 0 && std::isfinite(mu_k_)))
     throw std::invalid_argument("mu-k = " + number_text(opt_.mu_k) + " is out of range: finite and >= 0");
-  if (body_.shape == BodyShape3d::Box) reach_ = base_reach(body_.width, body_.depth);
+  reach_ = body_.shape == BodyShape3d::Box ? base_reach(body_.width, body_.depth) : body_.radius;
   forced_ = !ground_.is_zero();
   rest_search_ = BodyRestSearch(body_, opt_.mu_s, ground_, opt_.rest_yaw);
 }
@@ -230,6 +228,10 @@ std::array<Vec3, 2> BodyOnGround::contact_forces(double t, const Mode& m, const 
   const Vec3 f = specific_force(t);
   if (m.contact == BodyContact::Flight) return {};
   if (m.contact == BodyContact::Rest) return {scaled(f, -body_.mass), Vec3{0, 0, 0}};
+  if (m.contact == BodyContact::Slide && body_.shape == BodyShape3d::Cylinder) {
+    const DiscSlide s = disc_slide_state(t, m, z);
+    return {Vec3{s.friction[0], s.friction[1], s.load}, Vec3{}};
+  }
   if (m.contact == BodyContact::Slide) {
     const SlideState s = slide_state(t, m, z);
     Vec3 total{};

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The rigid3d body on rigid ground (docs/3d.md), one hybrid model over its contact modes: at
-// rest on its base; sliding on it (a box); rocking about a base edge (two corners) or, for a
+// rest on its base; sliding on it; rocking about a base edge (two corners) or, for a
 // cylinder, about a rim point and its tangent; pivoting on one corner; a box's edge or corner
 // sticking or slipping (Coulomb, contact_slip.hpp); in flight. Each mode's events are located on
 // the dense output: a contact point's load reaching zero (a corner lifts, the body takes off), a
@@ -25,6 +25,7 @@
 #include "blockdyn/model/rigid3d/body_rest.hpp"
 #include "blockdyn/model/rigid3d/body_shape.hpp"
 #include "blockdyn/model/rigid3d/contact_slip.hpp"
+#include "blockdyn/model/rigid3d/disc_slide.hpp"
 #include "blockdyn/model/rigid3d/rim_rolling.hpp"
 
 namespace blockdyn {
@@ -55,6 +56,9 @@ struct BodyOnGroundMode {
   // seen in (slip_reference.hpp): the slide ends where its component along it reaches zero. A
   // slipping point a (b): the direction of its slip velocity, likewise.
   Vec3 slip_ref{}, slip_ref_b{};
+  // roll: tipped up from flat at rest (a sliding base's rim): its tilt starts below the base's
+  // landing, which is looked for once the tilt has risen past twice it (kEvTouch0 + 2).
+  bool lifting = false;
   bool slips() const { return slipping != 0; }
 };
 
@@ -64,7 +68,6 @@ enum class Body3dEventKind : int {
   LiftOff,      // the body leaves the ground
   Rest,         // an accumulation of impacts ends at rest
   Overturn,     // the base stands vertical
-  SlipOnset,    // a cylinder's base needs more than mu_s: its sliding is not modelled yet (the run stops)
   NotModelled,  // rolling on the rim, a chatter it cannot resolve (the run stops)
   GroundBreak,  // a breakpoint of the ground motion
   Invalid,      // the ground pulls down faster than g
@@ -120,7 +123,7 @@ class BodyOnGround {
     kEvLoadA,    // a line's end loads (box edge), or the moment a rim point cannot carry
     kEvLoadB,
     kEvTouch0,                  // the heights of the base points not in contact (box: 4; rim: the opposite point);
-    kEvTouch3 = kEvTouch0 + 3,  // slide: the four corners' loads
+    kEvTouch3 = kEvTouch0 + 3,  // slide: the four corners' loads (a cylinder: 1 - the rim point's share)
     kEvOverturn,                // R33: the base vertical
     kEvSlipA,                   // mu_s N - |T| at each sticking contact point (a, b); a slipping point: its
     kEvSlipB,                   // slip along its reference; slide: the slip along its reference, its turn
@@ -229,6 +232,17 @@ class BodyOnGround {
   void slide_rhs(double t, const Mode& m, const State& z, State& dz) const;
   void slide_events(double t, const Mode& m, const State& z, std::array<double, kNumEvents>& g) const;
   Transition<Mode> slide_change(double t, const Mode& m, State& z, int event) const;
+  // The slide's slip ends (a stick: rest, or sliding on the other way) or turns (a new reference).
+  Transition<Mode> slide_ends_or_turns(double t, const Mode& m, State& z, int event) const;
+  // The rates of position and yaw of the base sliding flat.
+  void set_slide_kinematics(const State& z, State& dz) const;
+  // The cylinder's base sliding flat (disc_slide.hpp, body_disc_slide.cpp): its motion, its events
+  // (the load, the resultant reaching the rim, the slip's stick and turn), and the tip onto the
+  // rim point the resultant reaches, slipping (or held) as the rim does.
+  DiscSlide disc_slide_state(double t, const Mode& m, const State& z) const;
+  void disc_slide_rhs(double t, const Mode& m, const State& z, State& dz) const;
+  void disc_slide_events(double t, const Mode& m, const State& z, std::array<double, kNumEvents>& g) const;
+  Transition<Mode> tip_disc_from_slide(double t, const Mode& m, const State& z) const;
   Transition<Mode> start_slide(double t, const State& z, const Vec3& towards) const;
   // The base sliding flat, corner k's load reaches zero: it bears on the other three, or tips onto
   // the edge or corner still loaded, its points slipping as they move.
@@ -320,7 +334,7 @@ class BodyOnGround {
   BodyOnGroundOptions opt_;
   Vec3 inertia_;
   double size_, step_, window_;
-  double mu_k_ = 0, reach_ = 0;  // the kinetic friction; the base's half diagonal (box)
+  double mu_k_ = 0, reach_ = 0;  // the kinetic friction; the base's half diagonal (box) or radius
   State scale_;
   bool forced_ = false;
   BodyRestSearch rest_search_;

@@ -141,6 +141,7 @@ Tr BodyOnGround::rim_slip_change(double t, const Mode& m, State& z, int event) c
   z[kWorkFriction] += energy(z) - ke;
   Mode roll = roll_mode(z, false);
   roll.point_a = m.point_a;
+  roll.lifting = m.lifting;
   Tr tr = rim_contact_holds_or_slips(t, roll, z, int(Body3dEventKind::Stick), true);
   if (!tr.stop && tr.next.slips()) tr.kind = int(Body3dEventKind::Slip);
   return tr;

@@ -64,6 +64,11 @@ void BodyOnGround::rim_side_events(const Mode& m, const Mat3& r, std::array<doub
   const double along = -dot(w, m.point_a) / body_.radius;
   g[kEvTouch0] = 2 * body_.radius * (along - kRimLanding);
   g[kEvTouch0 + 1] = along - 0.5 * std::sqrt(dot(w, w)) + kRimTurnFloor;
+  if (m.lifting) {
+    // Tipped up from flat at rest: the landing is looked for once the tilt has risen past it.
+    g[kEvTouch0] = 1;
+    g[kEvTouch0 + 2] = 2 * body_.radius * (2 * kRimLanding - along);
+  }
 }
 
 void BodyOnGround::lower_onto_rim(const Mode& m, State& z) const {
@@ -93,6 +98,11 @@ Tr BodyOnGround::rim_side_change(double t, const Mode& m, State& z, int event) c
   const Mat3 r = rotation(quat_at(z, S::kQw));
   const Vec3 w{r[2][0], r[2][1], 0};
   const double rho = std::sqrt(dot(w, w)), along = -dot(w, m.point_a) / body_.radius;
+  if (m.lifting && event == kEvTouch0 + 2) {
+    Mode next = m;
+    next.lifting = false;
+    return {next, false, int(Body3dEventKind::SlipTurn)};
+  }
   if (event == kEvTouch0 + 1 && along > 0 && along < 0.75 * rho) {
     // The contact has travelled 60 degrees along the rim (cos = 0.5; where the tilt passes
     // through zero both functions vanish with the contact still on the reference side, cos = 1):

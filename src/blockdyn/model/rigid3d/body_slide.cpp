@@ -44,7 +44,18 @@ BodyOnGround::SlideState BodyOnGround::slide_state(double t, const Mode& m, cons
 }
 
 void BodyOnGround::slide_rhs(double t, const Mode& m, const State& z, State& dz) const {
+  if (body_.shape == BodyShape3d::Cylinder) return disc_slide_rhs(t, m, z, dz);
   const SlideState s = slide_state(t, m, z);
+  set_slide_kinematics(z, dz);
+  const Vec3 v = vec_at(z, kVx);
+  dz[kVx] = s.motion.accel[0];
+  dz[kVy] = s.motion.accel[1];
+  dz[kWz] = s.motion.spin_accel;
+  dz[kWorkGround] = body_.mass * (s.f[0] * v[0] + s.f[1] * v[1]);
+  dz[kWorkFriction] = s.motion.friction_power;
+}
+
+void BodyOnGround::set_slide_kinematics(const State& z, State& dz) const {
   const Vec3 v = vec_at(z, kVx);
   const Quat dq = Quat{0, 0, 0, z[kWz]} * quat_at(z, S::kQw);
   dz[kX] = v[0];
@@ -53,14 +64,10 @@ void BodyOnGround::slide_rhs(double t, const Mode& m, const State& z, State& dz)
   dz[kQx] = 0.5 * dq.x;
   dz[kQy] = 0.5 * dq.y;
   dz[kQz] = 0.5 * dq.z;
-  dz[kVx] = s.motion.accel[0];
-  dz[kVy] = s.motion.accel[1];
-  dz[kWz] = s.motion.spin_accel;
-  dz[kWorkGround] = body_.mass * (s.f[0] * v[0] + s.f[1] * v[1]);
-  dz[kWorkFriction] = s.motion.friction_power;
 }
 
 void BodyOnGround::slide_events(double t, const Mode& m, const State& z, std::array<double, kNumEvents>& g) const {
+  if (body_.shape == BodyShape3d::Cylinder) return disc_slide_events(t, m, z, g);
   const SlideState s = slide_state(t, m, z);
   const double weight = body_.mass * body_.g, vs = std::sqrt(body_.g * size_);
   double load = 0;
@@ -107,12 +114,17 @@ Tr BodyOnGround::start_slide(double t, const State& z, const Vec3& towards) cons
 
 Tr BodyOnGround::slide_change(double t, const Mode& m, State& z, int event) const {
   if (event == kEvLiftOff) return {m, true, int(Body3dEventKind::Invalid)};
+  if (body_.shape == BodyShape3d::Cylinder && event == kEvTouch0) return tip_disc_from_slide(t, m, z);
   if (event >= kEvTouch0 && event <= kEvTouch3) return unload_in_slide(t, m, z, event - kEvTouch0);
   if (event == kEvLoadA) {
     Mode four = m;
     four.unloaded = -1;
     return {four, false, int(Body3dEventKind::Mode)};
   }
+  return slide_ends_or_turns(t, m, z, event);
+}
+
+Tr BodyOnGround::slide_ends_or_turns(double t, const Mode& m, State& z, int event) const {
   const Vec3 u = slip_of(z);
   // A turn located with the slip at its noise (a stick) is the stick.
   const double vs = std::sqrt(body_.g * size_);

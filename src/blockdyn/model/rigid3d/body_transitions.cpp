@@ -88,7 +88,11 @@ BodyOnGroundMode BodyOnGround::mode_of(double t, const State& z) const {
     return rest;
   }
   if (body_.shape == BodyShape3d::Cylinder) {
-    if (r[2][2] >= 1 - 1e-15) return rest;
+    if (r[2][2] >= 1 - 1e-15) {
+      // Standing flat and moving along the ground: sliding.
+      const Vec3 u = slip_of(z);
+      return dot(u, u) > 0 ? slide_mode(z, scaled(u, 1.0 / std::sqrt(dot(u, u)))) : rest;
+    }
     // Turning about more than the rim point's tangent (a spin, a wobble): it rolls.
     const Mode rim = rim_mode(r, x, lowest_point(body_, r).body);
     const Vec3 w = vec_at(z, kWx), off = minus(w, scaled(rim.axis, dot(rim.axis, w)));
@@ -101,9 +105,9 @@ BodyOnGroundMode BodyOnGround::mode_of(double t, const State& z) const {
   for (int i = 0; i < 4; ++i)
     if (z[kZ] + dot(r[2], corner(i)) <= tol) touching.push_back(i);
   if (touching.size() >= 3) {
-    // Standing flat and moving along the ground (a box): sliding.
+    // Standing flat and moving along the ground: sliding.
     const Vec3 u = slip_of(z);
-    if (body_.shape == BodyShape3d::Box && dot(u, u) > 0) return slide_mode(z, scaled(u, 1.0 / std::sqrt(dot(u, u))));
+    if (dot(u, u) > 0) return slide_mode(z, scaled(u, 1.0 / std::sqrt(dot(u, u))));
     return rest;
   }
   const Mode contact = touching.size() == 2
@@ -120,8 +124,6 @@ BodyOnGroundMode BodyOnGround::mode_of(double t, const State& z) const {
 std::string BodyOnGround::stop_reason(const Mode& from, int event, Body3dEventKind kind) {
   if (kind == Body3dEventKind::Invalid)
     return "the ground accelerates downwards faster than g: the body resting on it would leave it";
-  if (kind == Body3dEventKind::SlipOnset)
-    return "the cylinder's base needs more friction than mu_s: its sliding is not modelled yet";
   if (kind == Body3dEventKind::Painleve)
     return from.slips() ? "Painleve: no normal load is consistent with the slipping contact (a rigid contact with "
                           "this much friction has no solution there)"
@@ -141,8 +143,7 @@ Tr BodyOnGround::leave_rest(double t, const State& z) const {
   m.yaw = std::atan2(r[1][0], r[0][0]);
   const RestFailure f = rest_search_.failure(t, m.yaw);
   if (f.way == RestExitWay::Lifts) return stop(m, Body3dEventKind::Invalid);
-  if (f.way == RestExitWay::Slides)
-    return body_.shape == BodyShape3d::Box ? start_slide(t, z, f.towards) : stop(m, Body3dEventKind::SlipOnset);
+  if (f.way == RestExitWay::Slides) return start_slide(t, z, f.towards);
   if (f.way == RestExitWay::None) return {m, false, int(Body3dEventKind::GroundBreak)};
   // The ground accelerating towards u tips the body towards -u.
   const Vec3 x = vec_at(z, kX), ab = transposed_times(r, f.towards);  // body frame
