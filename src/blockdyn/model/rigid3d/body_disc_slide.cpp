@@ -63,7 +63,6 @@ Tr BodyOnGround::tip_disc_from_slide(double t, const Mode& m, const State& z) co
   Mode next = roll_mode(z, true);
   next.point_a = side;
   next.slip_ref = scaled(slip, 1 / speed);
-  next.lifting = true;
   const RimSlip rs = rim_slipping(t, next, z);
   if (rs.consistency > 0 && rs.force[2] >= -kTipTie * body_.mass * body_.g)
     return {next, false, int(Body3dEventKind::Mode)};

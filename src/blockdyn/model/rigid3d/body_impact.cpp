@@ -48,7 +48,10 @@ Tr BodyOnGround::landed_flat(double t, State& z) const {
 
 Tr BodyOnGround::transition(double t, const Mode& m, State& z, int event) const {
   Tr tr = mode_change(t, m, z, event);
-  if (!tr.stop && tr.next.contact == BodyContact::Roll) lower_onto_rim(tr.next, z);
+  if (!tr.stop && tr.next.contact == BodyContact::Roll) {
+    lower_onto_rim(tr.next, z);
+    tr.next.lifting = tr.next.slips() && rim_below_landing(tr.next, z);
+  }
   const bool impact_event =
       m.contact != BodyContact::Slide && ((event >= kEvTouch0 && event <= kEvTouch3) || event == kEvTouchdown);
   if (!impact_event) {

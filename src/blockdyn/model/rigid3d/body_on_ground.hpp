@@ -56,8 +56,9 @@ struct BodyOnGroundMode {
   // seen in (slip_reference.hpp): the slide ends where its component along it reaches zero. A
   // slipping point a (b): the direction of its slip velocity, likewise.
   Vec3 slip_ref{}, slip_ref_b{};
-  // roll: tipped up from flat at rest (a sliding base's rim): its tilt starts below the base's
-  // landing, which is looked for once the tilt has risen past twice it (kEvTouch0 + 2).
+  // roll, slipping: started with its tilt below the base's landing (after a landing, or tipped
+  // up from flat): the landing is looked for once the tilt has risen past twice it (kEvTouch0 +
+  // 2), a fall back meanwhile, and a stick before lands the base.
   bool lifting = false;
   bool slips() const { return slipping != 0; }
 };
@@ -264,6 +265,7 @@ class BodyOnGround {
   void rim_side_events(const Mode& m, const Mat3& r, std::array<double, kNumEvents>& g) const;
   Transition<Mode> rim_side_change(double t, const Mode& m, State& z, int event) const;
   Vec3 rim_point_before_landing(const State& z) const;
+  bool rim_below_landing(const Mode& m, const State& z) const;
   void lower_onto_rim(const Mode& m, State& z) const;
   // A cylinder slipping on its rim (rim_rolling.hpp, body_rim_slip.cpp): a Roll mode with
   // `slipping` set, its slip followed against slip_ref; the motion under the friction along -d, or

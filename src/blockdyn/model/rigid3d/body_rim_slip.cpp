@@ -139,9 +139,10 @@ Tr BodyOnGround::rim_slip_change(double t, const Mode& m, State& z, int event) c
   const double ke = energy(z);
   set_vec_at(z, kVx, minus(vec_at(z, kVx), s));
   z[kWorkFriction] += energy(z) - ke;
+  // Still below the landing's tilt (the rim's rolling is singular that flat): the base lands.
+  if (m.lifting) return landed_flat(t, z);
   Mode roll = roll_mode(z, false);
   roll.point_a = m.point_a;
-  roll.lifting = m.lifting;
   Tr tr = rim_contact_holds_or_slips(t, roll, z, int(Body3dEventKind::Stick), true);
   if (!tr.stop && tr.next.slips()) tr.kind = int(Body3dEventKind::Slip);
   return tr;

@@ -65,10 +65,16 @@ void BodyOnGround::rim_side_events(const Mode& m, const Mat3& r, std::array<doub
   g[kEvTouch0] = 2 * body_.radius * (along - kRimLanding);
   g[kEvTouch0 + 1] = along - 0.5 * std::sqrt(dot(w, w)) + kRimTurnFloor;
   if (m.lifting) {
-    // Tipped up from flat at rest: the landing is looked for once the tilt has risen past it.
-    g[kEvTouch0] = 1;
+    // Started below the landing's tilt (after a landing, or tipped up from flat): the landing is
+    // looked for once the tilt has risen past twice it, a fall back below the start meanwhile.
+    g[kEvTouch0] = 2 * body_.radius * (along + kRimLanding);
     g[kEvTouch0 + 2] = 2 * body_.radius * (2 * kRimLanding - along);
   }
+}
+
+bool BodyOnGround::rim_below_landing(const Mode& m, const State& z) const {
+  const Mat3 r = rotation(quat_at(z, S::kQw));
+  return -(r[2][0] * m.point_a[0] + r[2][1] * m.point_a[1]) / body_.radius < kRimLanding;
 }
 
 void BodyOnGround::lower_onto_rim(const Mode& m, State& z) const {
@@ -114,9 +120,11 @@ Tr BodyOnGround::rim_side_change(double t, const Mode& m, State& z, int event) c
   // Rising through the landing's tilt (after a landing, or slipping up from flat): no event.
   const Vec3 u{r[2][0], r[2][1], r[2][2]}, om = transposed_times(r, vec_at(z, kWx));
   const Vec3 dw = scaled(cross(om, u), -1.0);
-  // At the landing's own instant the new contact starts below the landing's tilt: no event either.
-  if (-(dw[0] * m.point_a[0] + dw[1] * m.point_a[1]) > 0 || t == m.impact_t)
-    return {m, false, int(Body3dEventKind::SlipTurn)};
+  if (-(dw[0] * m.point_a[0] + dw[1] * m.point_a[1]) > 0) return {m, false, int(Body3dEventKind::SlipTurn)};
+  // Falling through it at the landing's own instant with the new contact slipping: the landing
+  // about the opposite point left the other side coming down too (a base landing all but flat):
+  // the base lands flat. Rolling, the new contact starts below the landing's tilt: no event.
+  if (t == m.impact_t) return m.slips() ? landed_flat(t, z) : Tr{m, false, int(Body3dEventKind::SlipTurn)};
   // The tilt falls through it: the base lands about the rim point opposite the contact.
   return impact(t, rim_mode(r, vec_at(z, kX), rim_point_before_landing(z)), z, kEvTouch0);
 }
