@@ -93,6 +93,23 @@ TEST(CliRigid3d, APulseOverturnsASlenderBoxAndTheRunRepeatsBitForBit) {
   EXPECT_GT(j["first_uplift_time"].get<double>(), 0.0);
 }
 
+TEST(CliRigid3d, ACylinderThrownAlongTheGroundSlidesToItsClosedFormStop) {
+  // Before, a cylinder started with a velocity on its base stayed where it was, velocity kept.
+  TmpDir d("rigid3d_throw");
+  const auto r = run_cli({"simulate", "--model", "rigid3d", "--shape", "cylinder", "--radius", "0.2", "--height", "1",
+                          "--velocity", "0.3,0.4,0", "--mu-s", "0.3", "--t-end", "1", "--json"},
+                         d.path);
+  ASSERT_EQ(r.code, 0) << r.err;
+  const json j = json::parse(r.out);
+  EXPECT_EQ(j["status"], "t_end");
+  EXPECT_EQ(j["final_mode"], "rest");
+  EXPECT_NEAR(j["max_slide"].get<double>(), 0.25 / (2 * 0.3 * 9.81), 1e-9);
+  ASSERT_EQ(j["events"].size(), 1u);
+  EXPECT_EQ(j["events"][0]["kind"], "stick");
+  EXPECT_NEAR(j["events"][0]["t"].get<double>(), 0.5 / (0.3 * 9.81), 1e-9);
+  EXPECT_NEAR(j["energy"]["work_friction"].get<double>(), -0.5 * 100 * 0.25, 1e-9);
+}
+
 TEST(CliRigid3d, UsageErrorsNameTheOption) {
   TmpDir d("rigid3d_usage");
   const std::vector<std::string> m{"simulate", "--model", "rigid3d"};
