@@ -4,7 +4,29 @@
 #include "blockdyn/simulation/rigid3d_simulation.hpp"
 #include "blockdyn/simulation/rigid_simulation.hpp"
 
+#include <vector>
+
 namespace blockdyn::test {
+
+inline BodyOnGroundOptions friction(double mu_s, double mu_k) {
+  BodyOnGroundOptions o;
+  o.mu_s = mu_s;
+  o.mu_k = mu_k;
+  return o;
+}
+
+// The times of the run's events of kind k.
+inline std::vector<double> times_of(const Body3dResult& r, Body3dEventKind k) {
+  std::vector<double> t;
+  for (const auto& e : r.events)
+    if (e.kind == k) t.push_back(e.t);
+  return t;
+}
+
+// The closed balance's largest drift, in m g (size).
+inline double balance_error(const Body3dResult& r, const BodyOnGround& m) {
+  return r.max_abs_energy_error / (m.body().mass * m.body().g * m.size());
+}
 
 inline Body3dResult run_body(const BodyOnGround& m, const Body3dStart& s, double t_end) {
   Body3dRunOptions o;

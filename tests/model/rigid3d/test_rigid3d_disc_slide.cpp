@@ -26,25 +26,11 @@ using blockdyn::Vec3;
 
 namespace disc_slide_test {
 
+using blockdyn::test::balance_error;
+using blockdyn::test::friction;
+using blockdyn::test::times_of;
+
 constexpr double kG = 9.81;
-
-BodyOnGroundOptions friction(double mu_s, double mu_k) {
-  BodyOnGroundOptions o;
-  o.mu_s = mu_s;
-  o.mu_k = mu_k;
-  return o;
-}
-
-std::vector<double> times_of(const Body3dResult& r, Body3dEventKind k) {
-  std::vector<double> t;
-  for (const auto& e : r.events)
-    if (e.kind == k) t.push_back(e.t);
-  return t;
-}
-
-double balance_error(const Body3dResult& r, const BodyOnGround& m) {
-  return r.max_abs_energy_error / (m.body().mass * kG * m.size());
-}
 
 // The mean friction direction and twist over the unit disc by a midpoint sum on a polar grid about
 // its centre (n rings): independent of the closed forms, accurate to about 1/n^2 away from the

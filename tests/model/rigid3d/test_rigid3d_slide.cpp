@@ -25,17 +25,14 @@ using blockdyn::GroundMotion3d;
 
 namespace slide_test {
 
+using blockdyn::test::balance_error;
+using blockdyn::test::friction;
+using blockdyn::test::times_of;
+
 constexpr double kG = 9.81;
 
 Body3dResult slide_run(const BodyOnGround& m, const blockdyn::Body3dStart& s, double t_end) {
   return blockdyn::test::run_body(m, s, t_end);
-}
-
-BodyOnGroundOptions friction(double mu_s, double mu_k) {
-  BodyOnGroundOptions o;
-  o.mu_s = mu_s;
-  o.mu_k = mu_k;
-  return o;
 }
 
 GroundMotion3d rect_pulse(double a, double duration, double azimuth_deg) {
@@ -45,18 +42,6 @@ GroundMotion3d rect_pulse(double a, double duration, double azimuth_deg) {
   g.h.pulse = blockdyn::PulseShape::Rect;
   g.azimuth = azimuth_deg;
   return g;
-}
-
-std::vector<double> times_of(const Body3dResult& r, Body3dEventKind k) {
-  std::vector<double> t;
-  for (const auto& e : r.events)
-    if (e.kind == k) t.push_back(e.t);
-  return t;
-}
-
-// The closed balance's largest drift, in m g (size).
-double balance_error(const Body3dResult& r, const BodyOnGround& m) {
-  return r.max_abs_energy_error / (m.body().mass * kG * m.size());
 }
 
 }  // namespace slide_test

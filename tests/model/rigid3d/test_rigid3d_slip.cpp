@@ -28,16 +28,11 @@ using blockdyn::BodyOnGroundOptions;
 
 namespace slip_test {
 
+using blockdyn::test::friction;
+
 using blockdyn::operator*;
 
 constexpr double kG = 9.81;
-
-BodyOnGroundOptions friction(double mu_s, double mu_k) {
-  BodyOnGroundOptions o;
-  o.mu_s = mu_s;
-  o.mu_k = mu_k;
-  return o;
-}
 
 Body3dResult released(const BodyOnGround& m, double tilt, double azimuth, double t_end, double rtol = 1e-12) {
   blockdyn::Body3dStart s;
