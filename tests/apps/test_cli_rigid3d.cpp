@@ -67,6 +67,25 @@ TEST(CliRigid3d, TrajectoryColumnsAndFirstRow) {
   EXPECT_EQ(cells[16], "edge");
 }
 
+TEST(CliRigid3d, OutputIntervalZeroWritesARowAtEveryStep) {
+  // As the planar families: 0 is every step (before, rigid3d refused it).
+  TmpDir d("rigid3d_every");
+  const auto r = run_cli(
+      joined(box(), {"--tilt", "0.1", "--t-end", "1", "--output-interval", "0", "--trajectory", "t.csv", "--json"}),
+      d.path);
+  ASSERT_EQ(r.code, 0) << r.err;
+  const json j = json::parse(r.out);
+  std::istringstream in(slurp(d.path + "/t.csv"));
+  std::string line;
+  std::getline(in, line);
+  std::vector<double> t;
+  while (std::getline(in, line)) t.push_back(std::stod(line.substr(0, line.find(','))));
+  // The start, every step's end, and the events' rows (before and after).
+  EXPECT_GE(t.size(), j["steps"].get<std::size_t>() + 1);
+  for (std::size_t i = 1; i < t.size(); ++i) EXPECT_LE(t[i - 1], t[i]);
+  EXPECT_EQ(t.back(), 1.0);
+}
+
 TEST(CliRigid3d, APulseOverturnsASlenderBoxAndTheRunRepeatsBitForBit) {
   TmpDir d("rigid3d_pulse");
   const std::vector<std::string> args{"simulate", "--model",

@@ -132,7 +132,8 @@ Rigid3dSetup rigid3d_from(const Settings& s) {
   check.t_end = r.run.t_end;
   check.integrator = r.run.integ;
   validate(check);
-  require_in_range("output-interval", r.run.output_interval, 0, r.run.t_end, false);
+  require_in_range("output-interval", r.run.output_interval, 0, r.run.t_end);
+  r.run.rows_every_step = r.run.output_interval == 0;  // 0: every step, as the planar families
   return r;
 }
 

@@ -87,6 +87,11 @@ class Body3dWatch final : public Observer<Model> {
         next_row += o.output_interval;
       }
     }
+    if (o.rows_every_step && o.on_sample) {
+      seg.eval(t1, y);
+      model.complete(m, y);
+      row(t1, m, y);
+    }
     if (o.track_energy || o.track_tilt) {
       Model::State a;
       seg.eval(t1, y);

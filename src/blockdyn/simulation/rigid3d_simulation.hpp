@@ -29,8 +29,9 @@ struct Body3dSample {
 };
 
 struct Body3dRunOptions {
-  double t_end = 10;           // s
-  double output_interval = 0;  // s between trajectory rows (0: events only)
+  double t_end = 10;             // s
+  double output_interval = 0;    // s between trajectory rows (0: events only)
+  bool rows_every_step = false;  // a row at every step's end as well (the CLI's output-interval 0)
   IntegratorOptions integ{};
   bool track_energy = true;                            // the balance at every step end; false: at events only
   bool track_tilt = true;                              // the largest tilt inside every step; false: at events only
