@@ -240,4 +240,12 @@ TEST(Rigid3dDiscSlide, TwoComponentsSlideAndTwistWithTheBalanceClosed) {
   const Body3dResult coarse = blockdyn::simulate_body3d(m, blockdyn::initial_state(m.body(), {}), o);
   EXPECT_NEAR(coarse.z[BodyOnGround::kX], r.z[BodyOnGround::kX], 1e-7);
   EXPECT_NEAR(coarse.z[BodyOnGround::kY], r.z[BodyOnGround::kY], 1e-7);
+  // A square box's base on the same motion slides the same way (pure translations), and gets
+  // through the slip's passage near zero off its reference (which once chattered without end).
+  const BodyOnGround box(blockdyn::box_body(1.0, 1.0, 0.6, 300), g, ds::friction(0.5, 0.45));
+  const Body3dResult rb = blockdyn::test::run_body(box, {}, 4.0);
+  ASSERT_EQ(rb.status, blockdyn::SimStatus::TEnd) << rb.note;
+  EXPECT_NEAR(rb.z[BodyOnGround::kX], r.z[BodyOnGround::kX], 1e-9);
+  EXPECT_NEAR(rb.z[BodyOnGround::kY], r.z[BodyOnGround::kY], 1e-9);
+  EXPECT_NEAR(rb.max_slide, r.max_slide, 1e-9);
 }

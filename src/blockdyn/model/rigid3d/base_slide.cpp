@@ -3,6 +3,8 @@
 
 #include <utility>
 
+#include "blockdyn/model/rigid3d/slip_reference.hpp"
+
 namespace blockdyn {
 
 namespace {
@@ -39,10 +41,10 @@ std::array<double, 4> solve4(std::array<std::array<double, 4>, 4> a, std::array<
 BaseSlide base_slide(double b, double d, double c, double mass, double inertia_z, double mu_k, double yaw,
                      const Vec3& v, double omega_z, const Vec3& f, const Vec3& reference, double noise, int unloaded) {
   const double cy = std::cos(yaw), sy = std::sin(yaw), reach = base_reach(b, d);
-  // Past the slip's reversal (its generalised velocity against the reference: only past a stick,
-  // which the slide's event ends) the friction keeps its direction.
-  const double sense = v[0] * reference[0] + v[1] * reference[1] + reach * omega_z * reference[2] < 0 ? -1.0 : 1.0;
-  const bool at_stick = std::hypot(v[0], v[1], reach * omega_z) < noise;
+  // The slip field whose directions the corners' friction takes (slip_reference.hpp): the
+  // generalised slip's, reversed past its reversal (which only a stick's event ends), turning to
+  // the reference's within the noise (a direction that jumped there would chatter at its edge).
+  const Vec3 field = slip_reference::friction_direction({v[0], v[1], reach * omega_z}, reference, noise);
   std::array<Vec3, 4> r{}, slip{}, dir{}, dir_body{};
   std::array<double, 4> px{}, py{};
   for (int i = 0; i < 4; ++i) {
@@ -50,14 +52,9 @@ BaseSlide base_slide(double b, double d, double c, double mass, double inertia_z
     py[i] = (i & 2 ? 0.5 : -0.5) * d;
     r[i] = {cy * px[i] - sy * py[i], sy * px[i] + cy * py[i], 0};
     slip[i] = {v[0] - omega_z * r[i][1], v[1] + omega_z * r[i][0], 0};
-    const double n = std::hypot(slip[i][0], slip[i][1]);
-    if (!at_stick && n > kNoSlip) {
-      dir[i] = {sense * slip[i][0] / n, sense * slip[i][1] / n, 0};
-    } else {
-      const Vec3 s = {reference[0] - reference[2] / reach * r[i][1], reference[1] + reference[2] / reach * r[i][0], 0};
-      const double ns = std::hypot(s[0], s[1]);
-      if (ns > kNoSlip) dir[i] = {s[0] / ns, s[1] / ns, 0};
-    }
+    const Vec3 s = {field[0] - field[2] / reach * r[i][1], field[1] + field[2] / reach * r[i][0], 0};
+    const double ns = std::hypot(s[0], s[1]);
+    if (ns > kNoSlip) dir[i] = {s[0] / ns, s[1] / ns, 0};
     dir_body[i] = {cy * dir[i][0] + sy * dir[i][1], -sy * dir[i][0] + cy * dir[i][1], 0};
   }
   // The weight, no tilting moment about the centroid (x and y, body frame; the friction acts at

@@ -26,13 +26,12 @@ struct BaseSlide {
 // The box of base b x d, centroid c above the base, mass, principal inertia about the vertical
 // inertia_z, turned by `yaw` about the vertical, its centroid moving at v (horizontal) and
 // spinning at omega_z, under the specific force f (gravity and the ground's acceleration
-// reversed, m/s^2). A corner at rest against the ground (a slip below 1e-300) takes its
-// friction's direction from the slip the generalised reference (vx, vy, L omega_z) would give it,
-// L the base's half diagonal: the direction a slide starts or goes on in. So does every corner
-// while the generalised slip is below `noise` (m/s): its direction there is the integration's
-// rounding, and a slip that small is at its stick, reached along the reference. A slip against
-// the reference (past a stick) keeps the friction's direction: the slide's smooth continuation,
-// which the integrator steps across to locate the stick.
+// reversed, m/s^2). The corners' friction takes its directions from the slip field of the
+// generalised slip (vx, vy, L omega_z) (L the base's half diagonal) as
+// slip_reference::friction_direction gives it: against the slip, reversed past its reversal
+// (the slide's smooth continuation, which the integrator steps across to locate the stick), and
+// turning to the reference's within `noise` (m/s), where the slip's direction is the integration's
+// rounding (a direction that jumped there would chatter at its edge).
 // With `unloaded` >= 0 that corner carries nothing and the other three bear the base (three
 // unknowns, three equations: determinate); the linear pressure's condition is dropped.
 BaseSlide base_slide(double b, double d, double c, double mass, double inertia_z, double mu_k, double yaw,

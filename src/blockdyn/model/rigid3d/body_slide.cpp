@@ -85,7 +85,7 @@ void BodyOnGround::slide_events(double t, const Mode& m, const State& z, std::ar
   }
   const Vec3 u = slip_of(z);
   g[kEvSlipA] = along(u, m.slip_ref, vs);
-  g[kEvSlipB] = turn(u, m.slip_ref, vs);
+  g[kEvSlipB] = turn_near_stick(u, m.slip_ref, vs);
 }
 
 double BodyOnGround::kink_ahead(double t, const Mode& m, const State& z, const State& dz) const {
