@@ -81,6 +81,9 @@ run $B simulate --model rigid3d --width 0.4 --depth 0.3 --height 1.2 --mass 250 
   --plot "$F/rigid3d_wobble.png" --animate "$F/rigid3d_wobble.gif" --animate-frames 80
 run $B simulate --model rigid3d --shape cylinder --radius 0.15 --height 0.1 --mass 5 --tilt 0.3 \
   --angular-velocity=-4,0.5,6 --mu-s 5 --t-end 3 --output-interval 0.005 --plot "$F/rigid3d_roll.png"
+run $B simulate --model rigid3d --shape cylinder --radius 0.5 --height 0.6 --mass 300 --mu-s 0.5 --mu-k 0.45 \
+  --ground-azimuth 25 --ground-h-amplitude 0.6 --ground-h-frequency 1.3 --ground-h2-amplitude 0.45 \
+  --ground-h2-frequency 2.1 --t-end 4 --output-interval 0.005 --plot "$F/rigid3d_drum_slide.png"
 run $B motion generate --model rezaeian --arias 3.888 --d5-95 12 --t-mid 10 --f-mid 2.5 --f-slope -0.05 --t-end 40 \
   --seed 2026 --count 2 --out "$D/bidirectional" --overwrite --quiet
 run $B simulate --model rigid3d --width 0.35 --depth 0.35 --height 1.2 --mass 250 --mu-s 100 --t-end 40 \
