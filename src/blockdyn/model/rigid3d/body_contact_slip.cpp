@@ -375,15 +375,8 @@ Tr BodyOnGround::contact_slip_change(double t, const Mode& m, State& z, int even
   const Mat3 r = rotation(quat_at(z, S::kQw));
   const Vec3 x = vec_at(z, kX);
   const double vs = std::sqrt(body_.g * size_);
+  if (const auto tr = moving_contact_ends(m, event)) return *tr;
   switch (event) {
-    case kBreakpoint:
-      return {m, false, int(Body3dEventKind::GroundBreak)};
-    case kEvLiftOff:
-      return {Mode{BodyContact::Flight}, false, int(Body3dEventKind::LiftOff)};
-    case kEvOverturn:
-      return {m, true, int(Body3dEventKind::Overturn)};
-    case kEvPainleve:
-      return {m, true, int(Body3dEventKind::Painleve)};
     case kEvLoadA:
     case kEvLoadB: {
       // One end of the edge lifts: the body goes on on the other corner, slipping or sticking.

@@ -255,6 +255,9 @@ class BodyOnGround {
   void roll_events(double t, const Mode& m, const State& z, std::array<double, kNumEvents>& g) const;
   void roll_complete(State& z) const;
   Transition<Mode> roll_change(double t, const Mode& m, State& z, int event) const;
+  // The changes every moving contact (rolling, a slipping rim, edge or corner) makes alike: a
+  // breakpoint of the ground (no change), take-off, overturn, Painleve; none for other events.
+  std::optional<Transition<Mode>> moving_contact_ends(const Mode& m, int event) const;
   // A cylinder on its rim, rolling or slipping: the mode, its contact point (body frame) kept in
   // point_a as the reference side. The base lands where the tilt passes through zero: the height
   // of the rim point opposite the reference (signed: it changes sign there, where 2 a sin(tilt)

@@ -113,15 +113,8 @@ Tr BodyOnGround::rim_contact_holds_or_slips(double t, const Mode& stick, const S
 
 Tr BodyOnGround::rim_slip_change(double t, const Mode& m, State& z, int event) const {
   const double vs = std::sqrt(body_.g * size_);
+  if (const auto tr = moving_contact_ends(m, event)) return *tr;
   switch (event) {
-    case kBreakpoint:
-      return {m, false, int(Body3dEventKind::GroundBreak)};
-    case kEvLiftOff:
-      return {Mode{BodyContact::Flight}, false, int(Body3dEventKind::LiftOff)};
-    case kEvOverturn:
-      return {m, true, int(Body3dEventKind::Overturn)};
-    case kEvPainleve:
-      return {m, true, int(Body3dEventKind::Painleve)};
     case kEvSlipA:
     case kEvTurnA:
       break;

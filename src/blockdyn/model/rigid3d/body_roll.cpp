@@ -3,6 +3,7 @@
 // its motion, its events (take-off, the friction it needs reaching mu_s, the base landing flat,
 // overturn) and its mode changes.
 #include <cmath>
+#include <optional>
 
 #include "blockdyn/model/rigid3d/body_on_ground.hpp"
 #include "blockdyn/model/rigid3d/body_pivot.hpp"
@@ -22,6 +23,9 @@ constexpr double kRimTurnFloor = 1e-6;
 constexpr double kRimLanding = 1e-7;
 // A contact carrying less than this share of the weight is about to lift: not checked for slip.
 constexpr double kRollUncheckedShare = 1e-2;
+// sin(tilt) towards the reference rim point `side` (body frame) of a rim of radius a: the
+// world's up seen in the base plane (r[2]) against the side.
+double tilt_towards(const Mat3& r, const Vec3& side, double a) { return -(r[2][0] * side[0] + r[2][1] * side[1]) / a; }
 }  // namespace
 
 RimRolling BodyOnGround::rolling(double t, const State& z) const {
@@ -61,7 +65,7 @@ void BodyOnGround::rim_side_events(const Mode& m, const Mat3& r, std::array<doub
   // side along point_a: 2 a |w| cos(angle between them) (the opposite point's height), and
   // |w| (cos(angle) - cos 60 degrees), offset below kRimTurnFloor.
   const Vec3 w{r[2][0], r[2][1], 0};
-  const double along = -dot(w, m.point_a) / body_.radius;
+  const double along = tilt_towards(r, m.point_a, body_.radius);
   g[kEvTouch0] = 2 * body_.radius * (along - kRimLanding);
   g[kEvTouch0 + 1] = along - 0.5 * std::sqrt(dot(w, w)) + kRimTurnFloor;
   if (m.lifting) {
@@ -74,7 +78,7 @@ void BodyOnGround::rim_side_events(const Mode& m, const Mat3& r, std::array<doub
 
 bool BodyOnGround::rim_below_landing(const Mode& m, const State& z) const {
   const Mat3 r = rotation(quat_at(z, S::kQw));
-  return -(r[2][0] * m.point_a[0] + r[2][1] * m.point_a[1]) / body_.radius < kRimLanding;
+  return tilt_towards(r, m.point_a, body_.radius) < kRimLanding;
 }
 
 void BodyOnGround::lower_onto_rim(const Mode& m, State& z) const {
@@ -103,7 +107,7 @@ Vec3 BodyOnGround::rim_point_before_landing(const State& z) const {
 Tr BodyOnGround::rim_side_change(double t, const Mode& m, State& z, int event) const {
   const Mat3 r = rotation(quat_at(z, S::kQw));
   const Vec3 w{r[2][0], r[2][1], 0};
-  const double rho = std::sqrt(dot(w, w)), along = -dot(w, m.point_a) / body_.radius;
+  const double rho = std::sqrt(dot(w, w)), along = tilt_towards(r, m.point_a, body_.radius);
   if (m.lifting && event == kEvTouch0 + 2) {
     Mode next = m;
     next.lifting = false;
@@ -139,19 +143,25 @@ void BodyOnGround::roll_complete(State& z) const {
   set_vec_at(z, kVx, cross(arm, vec_at(z, kWx)));
 }
 
-Tr BodyOnGround::roll_change(double t, const Mode& m, State& z, int event) const {
+std::optional<Tr> BodyOnGround::moving_contact_ends(const Mode& m, int event) const {
   switch (event) {
     case kBreakpoint:
-      return {m, false, int(Body3dEventKind::GroundBreak)};
+      return Tr{m, false, int(Body3dEventKind::GroundBreak)};
     case kEvLiftOff:
-      return {Mode{BodyContact::Flight}, false, int(Body3dEventKind::LiftOff)};
-    case kEvSlipA:
-      return rim_contact_holds_or_slips(t, m, z, int(Body3dEventKind::Slip), false);
+      return Tr{Mode{BodyContact::Flight}, false, int(Body3dEventKind::LiftOff)};
     case kEvOverturn:
-      return {m, true, int(Body3dEventKind::Overturn)};
+      return Tr{m, true, int(Body3dEventKind::Overturn)};
+    case kEvPainleve:
+      return Tr{m, true, int(Body3dEventKind::Painleve)};
     default:
-      return rim_side_change(t, m, z, event);
+      return std::nullopt;
   }
+}
+
+Tr BodyOnGround::roll_change(double t, const Mode& m, State& z, int event) const {
+  if (const auto tr = moving_contact_ends(m, event)) return *tr;
+  if (event == kEvSlipA) return rim_contact_holds_or_slips(t, m, z, int(Body3dEventKind::Slip), false);
+  return rim_side_change(t, m, z, event);
 }
 
 }  // namespace blockdyn

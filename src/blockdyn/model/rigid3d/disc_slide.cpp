@@ -76,10 +76,9 @@ Vec3 unit_or_zero(const Vec3& v) {
   return n > 0 ? Vec3{v[0] / n, v[1] / n, 0} : Vec3{0, 0, 0};
 }
 
-// The friction's direction at the base point p for the slip field (v, omega).
-Vec3 point_direction(const Vec3& v, double omega, const Vec3& p) {
-  return unit_or_zero({v[0] - omega * p[1], v[1] + omega * p[0], 0});
-}
+// The slip at the base point p for the slip field (v, omega), and its direction.
+Vec3 slip_at(const Vec3& v, double omega, const Vec3& p) { return {v[0] - omega * p[1], v[1] + omega * p[0], 0}; }
+Vec3 point_direction(const Vec3& v, double omega, const Vec3& p) { return unit_or_zero(slip_at(v, omega, p)); }
 
 }  // namespace
 
@@ -110,26 +109,21 @@ Vec3 resultant_offset(double a, double k, const Vec3& g, const Vec3& v, double o
   for (int it = 0; it < 50; ++it) {
     const double w = std::hypot(e[0], e[1]);
     const Vec3 eh = {e[0] / w, e[1] / w, 0};
-    const Vec3 p = {a * eh[0], a * eh[1], 0};
-    const Vec3 slip = {v[0] - omega * p[1], v[1] + omega * p[0], 0};
+    const Vec3 slip = slip_at(v, omega, scaled(eh, a));
     const double sn = std::hypot(slip[0], slip[1]);
-    const Vec3 u = sn > 0 ? Vec3{slip[0] / sn, slip[1] / sn, 0} : Vec3{0, 0, 0};
+    const Vec3 u = unit_or_zero(slip);
     const double rx = k * ((1 - w) * g[0] + w * u[0]) - e[0];
     const double ry = k * ((1 - w) * g[1] + w * u[1]) - e[1];
-    // d(residual)/dE = k ((u - g) eh^T + a omega (I - u u^T) J (I - eh eh^T) / |slip|) - I,
-    // J = Z x (the rim point's direction turning with E).
+    // d(residual)/dE = k ((u - g) eh^T + a omega (I - u u^T) J (I - eh eh^T) / |slip|) - I, J = Z x;
+    // in 2D I - u u^T = n n^T (n = J u) and J (I - eh eh^T) = -eh t^T (t = J eh): the second term
+    // is -(a omega / |slip|) (n . eh) n t^T.
     double j[2][2] = {{k * (u[0] - g[0]) * eh[0], k * (u[0] - g[0]) * eh[1]},
                       {k * (u[1] - g[1]) * eh[0], k * (u[1] - g[1]) * eh[1]}};
     if (sn > 0) {
-      const double pu[2][2] = {{1 - u[0] * u[0], -u[0] * u[1]}, {-u[1] * u[0], 1 - u[1] * u[1]}};
-      const double pe[2][2] = {{1 - eh[0] * eh[0], -eh[0] * eh[1]}, {-eh[1] * eh[0], 1 - eh[1] * eh[1]}};
-      const double jz[2][2] = {{0, -1}, {1, 0}};
-      double jp[2][2];
+      const double n[2] = {-u[1], u[0]}, t[2] = {-eh[1], eh[0]};
+      const double f = -k * a * omega / sn * (n[0] * eh[0] + n[1] * eh[1]);
       for (int r = 0; r < 2; ++r)
-        for (int s = 0; s < 2; ++s) jp[r][s] = jz[r][0] * pe[0][s] + jz[r][1] * pe[1][s];
-      const double f = k * a * omega / sn;
-      for (int r = 0; r < 2; ++r)
-        for (int s = 0; s < 2; ++s) j[r][s] += f * (pu[r][0] * jp[0][s] + pu[r][1] * jp[1][s]);
+        for (int c = 0; c < 2; ++c) j[r][c] += f * n[r] * t[c];
     }
     j[0][0] -= 1;
     j[1][1] -= 1;
