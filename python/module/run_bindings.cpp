@@ -163,8 +163,9 @@ py::tuple to_python(Outcome& o) {
 }
 
 // Runs n blocks on `threads` threads without the GIL, run(i, outcome) doing run i (preparing it
-// too, where it is given as options); each run's arrays are made (with the GIL) as soon as it is
-// done, while the workers go on with the next ones: the conversion overlaps the runs.
+// too, where it is given as options). The calling thread is one of the n: it makes each finished
+// run's arrays (with the GIL) as soon as it is done and otherwise takes runs itself, so n threads
+// are busy on n cores, the conversion overlapping the other workers' runs.
 py::list run_many(std::size_t count, int threads, const std::function<void(std::size_t, Outcome&)>& run) {
   std::vector<Outcome> outs(count);
   std::vector<std::exception_ptr> errors(count);
@@ -178,44 +179,43 @@ py::list run_many(std::size_t count, int threads, const std::function<void(std::
   {
     py::gil_scoped_release release;
     const std::size_t n = std::max<std::size_t>(1, std::min<std::size_t>(std::size_t(resolve_threads(threads)), count));
+    std::mutex lock;
+    std::condition_variable finished;
+    std::vector<std::size_t> ready;    // done, not converted yet
+    std::atomic<std::size_t> next{0};  // the next run to take: the runs' costs differ
     auto run_one = [&](std::size_t i) {
       try {
         run(i, outs[i]);
       } catch (...) {
         errors[i] = std::current_exception();
       }
+      {
+        const std::lock_guard<std::mutex> g(lock);
+        ready.push_back(i);
+      }
+      finished.notify_one();
     };
-    if (n == 1) {
-      for (std::size_t i = 0; i < count; ++i) {
-        run_one(i);
-        convert(i);
+    std::vector<std::thread> pool;
+    for (std::size_t w = 1; w < n; ++w)
+      pool.emplace_back([&] {
+        for (std::size_t i = next++; i < count; i = next++) run_one(i);
+      });
+    std::vector<std::size_t> batch;
+    for (std::size_t converted = 0; converted < count;) {
+      {
+        std::unique_lock<std::mutex> g(lock);
+        if (ready.empty() && next.load() >= count) finished.wait(g, [&] { return !ready.empty(); });
+        batch.swap(ready);
       }
-    } else {
-      std::mutex lock;
-      std::condition_variable finished;
-      std::vector<char> done(count, 0);
-      std::vector<std::thread> pool;
-      std::atomic<std::size_t> next{0};  // the next run to take: the runs' costs differ
-      for (std::size_t w = 0; w < n; ++w)
-        pool.emplace_back([&] {
-          for (std::size_t i = next++; i < count; i = next++) {
-            run_one(i);
-            {
-              const std::lock_guard<std::mutex> g(lock);
-              done[i] = 1;
-            }
-            finished.notify_all();
-          }
-        });
-      for (std::size_t i = 0; i < count; ++i) {
-        {
-          std::unique_lock<std::mutex> g(lock);
-          finished.wait(g, [&] { return done[i] != 0; });
-        }
-        convert(i);
+      for (std::size_t i : batch) convert(i);
+      converted += batch.size();
+      batch.clear();
+      if (converted < count) {
+        const std::size_t i = next++;
+        if (i < count) run_one(i);
       }
-      for (auto& t : pool) t.join();
     }
+    for (auto& t : pool) t.join();
   }
   py::list result;
   for (std::size_t i = 0; i < count; ++i) {

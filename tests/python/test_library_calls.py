@@ -64,7 +64,7 @@ def test_simulate_many_on_threads_equals_serial_calls():
                  ground_h_frequency=2.0, t_end=5) for i in range(6)]
     runs.append(dict(r=0.2, mu=0.3, k=1e4, ic="ic1", t_end=3))
     serial = [blockdyn.simulate(**o) for o in runs]
-    for threads in (1, 3):
+    for threads in (1, 2, 3):
         for a, b in zip(blockdyn.simulate_many(runs, threads=threads), serial):
             assert_same(a, b)
     with pytest.raises(ValueError, match="mu-k"):
