@@ -323,44 +323,74 @@ TEST(Rigid3dContact, ARecordsListedRestExitsEqualTheFullSearch) {
   EXPECT_GT(finite, 10);
 }
 
-TEST(Rigid3dContact, ALandingWhereStickingWouldPullSlipsInstead) {
-  // A slender square column under twice the fixture along x flies and lands on an edge where
-  // sticking would pull on the ground and lifting would sink into it (once a Painleve stop, once
-  // a loop): the edge slips (Coulomb's friction, however large, admits it with a light load) and
-  // the column topples on, the balance closed.
+TEST(Rigid3dContact, ALoadReachingZeroWhereFlightWouldSinkSlipsInstead) {
+  // A slender square column under twice the fixture along x, past its balance point: the edge's
+  // load falls to zero while friction (1e6) still holds it, but without the friction's force the
+  // edge would sink (a lift-off there flew for 1e-9 s and landed again, once a Painleve stop):
+  // the edge slips at that instant (Coulomb's friction admits it with a light load) and the
+  // column topples on without leaving the ground, the balance closed.
   const auto rec = fixture_record();
   blockdyn::GroundMotion3d g;
   g.h.record = rec;
   g.h.scale = 2.0;
-  // Housner's law at the impacts (the landing this test is about follows from it).
   blockdyn::BodyOnGroundOptions o;
   o.impact = blockdyn::Body3dImpactLaw::Housner;
   const BodyOnGround m(blockdyn::box_body(0.3, 0.3, 1.2, 500), g, o);
   const Body3dResult r = run(m, {}, 60.0);
   EXPECT_STREQ(to_string(r.status), "overturned") << r.note;
-  bool landed_slipping = false;
-  for (const auto& e : r.events)
-    landed_slipping = landed_slipping || (e.kind == Body3dEventKind::Impact && e.from == BodyContact::Flight &&
-                                          e.to == BodyContact::Line && e.to_slipping == 3);
-  EXPECT_TRUE(landed_slipping);
+  std::size_t slips = r.events.size();
+  for (std::size_t k = 0; k < r.events.size(); ++k) {
+    const auto& e = r.events[k];
+    if (e.kind == Body3dEventKind::Slip && e.from == BodyContact::Line && e.from_slipping == 0 && e.to_slipping == 3)
+      slips = k;
+  }
+  ASSERT_LT(slips, r.events.size());
+  // From there on it stays on the ground.
+  for (std::size_t k = slips; k < r.events.size(); ++k) EXPECT_NE(r.events[k].to, BodyContact::Flight) << k;
+  EXPECT_EQ(r.events.back().kind, Body3dEventKind::Overturn);
   EXPECT_LT(r.max_abs_energy_error, 1e-9 * m.body().mass * m.body().g * m.body().height);
 }
 
-TEST(Rigid3dContact, PainleveStopsTheRunWithItsReason) {
-  // A square column under three times the fixture along 30 degrees and across: an edge slipping
-  // at both ends reaches a state where no load is consistent with its slip (Painleve's paradox of
-  // the rigid contact); the run stops there with the reason, its balance closed up to it.
+TEST(Rigid3dContact, AnEdgeSlippingAlikeAtBothEndsSticksAtBothAtOnce) {
+  // A square column under three times the fixture along 30 degrees and across: its edge slips at
+  // both ends alike and reaches its stick at both at one instant. Taken one end first, the other
+  // slipped about it, where no load is consistent (a Painleve stop at 4.18 s); both stick and the
+  // column rocks on and overturns, the balance closed.
   const blockdyn::GroundMotion3d g = fixture_along_30_and_across(3.0);
   blockdyn::BodyOnGroundOptions o;
   o.mu_s = 0.5;
   o.mu_k = 0.4;
-  o.impact = blockdyn::Body3dImpactLaw::Housner;  // the run this test follows (Newton's stops elsewhere)
+  o.impact = blockdyn::Body3dImpactLaw::Housner;
+  const BodyOnGround m(blockdyn::box_body(0.4, 0.4, 1.2, 300), g, o);
+  const Body3dResult r = run(m, {}, 30.0);
+  EXPECT_STREQ(to_string(r.status), "overturned") << r.note;
+  bool both = false;
+  for (const auto& e : r.events)
+    both = both || (e.kind == Body3dEventKind::Stick && e.from == BodyContact::Line && e.from_slipping == 3 &&
+                    e.to_slipping == 0);
+  EXPECT_TRUE(both);
+  EXPECT_LT(r.max_abs_energy_error, 1e-9 * m.body().mass * m.body().g * m.body().height);
+}
+
+TEST(Rigid3dContact, PainleveStopsTheRunWithItsReason) {
+  // A square column under 2.5 times the fixture along 30 degrees and across, mu 0.7: its edge,
+  // sticking, reaches the friction limit at one end where no state of the contact is consistent
+  // (either end or both slipping make a load negative or accelerate against their slip, either
+  // corner alone lets the other sink): Painleve's paradox of the rigid contact. The run stops
+  // there with the reason, its balance closed up to it.
+  const blockdyn::GroundMotion3d g = fixture_along_30_and_across(2.5);
+  blockdyn::BodyOnGroundOptions o;
+  o.mu_s = 0.7;
+  o.mu_k = 0.7;
+  o.impact = blockdyn::Body3dImpactLaw::Housner;
   const BodyOnGround m(blockdyn::box_body(0.4, 0.4, 1.2, 300), g, o);
   const Body3dResult r = run(m, {}, 30.0);
   EXPECT_STREQ(to_string(r.status), "invalid");
   EXPECT_NE(r.note.find("Painleve"), std::string::npos) << r.note;
   ASSERT_FALSE(r.events.empty());
   EXPECT_EQ(r.events.back().kind, Body3dEventKind::Painleve);
+  EXPECT_EQ(r.events.back().from, BodyContact::Line);
+  EXPECT_EQ(r.events.back().from_slipping, 0);
   EXPECT_LT(r.max_abs_energy_error, 1e-9 * m.body().mass * m.body().g * m.body().height);
 }
 

@@ -73,6 +73,28 @@ TEST(Rigid3dSlide, RectangularPulseSlidesInClosedForm) {
   }
 }
 
+TEST(Rigid3dSlide, APulseBeyondTheRockingThresholdOnLowFrictionSlidesFlat) {
+  // A at 0.9 g exceeds both b/h = 0.83 (rocking fails first) and mu 0.3, but the friction's
+  // tipping moment mu < b/h cannot lift the base: the edge the rocking would pivot on cannot
+  // stick and its slip would press the other corners into the ground, so the base slides flat,
+  // as the closed form above (before: the run stopped at t = 0, the edge and the rest taking
+  // turns). Along x and at 30 degrees (about a corner).
+  const double A = 0.9, T = 0.5, mu = 0.3;
+  for (double az : {0.0, 30.0}) {
+    const BodyOnGround m(blockdyn::box_body(1.0, 1.0, 1.2, 500), rect_pulse(A, T, az), friction(mu, mu));
+    const Body3dResult r = slide_run(m, {}, 4.0);
+    ASSERT_EQ(r.status, blockdyn::SimStatus::TEnd) << r.note;
+    const auto sticks = times_of(r, Body3dEventKind::Stick);
+    ASSERT_EQ(sticks.size(), 1u) << az;
+    EXPECT_NEAR(sticks[0], A * T / mu, 1e-12) << az;
+    const double d = kG * T * T * (A - mu) * A / (2 * mu), a = az * M_PI / 180;
+    EXPECT_NEAR(r.z[BodyOnGround::kX], -d * std::cos(a), 1e-12) << az;
+    EXPECT_NEAR(r.z[BodyOnGround::kY], -d * std::sin(a), 1e-12) << az;
+    EXPECT_EQ(r.max_tilt, 0.0) << az;
+    EXPECT_LT(balance_error(r, m), 1e-12) << az;
+  }
+}
+
 TEST(Rigid3dSlide, PlanarLimitIsTheThreeDofBlock) {
   // A squat box under a harmonic motion along its x axis slides and sticks (mu_s < b/h: it never
   // rocks) as the planar 3-DOF block of the same section does.

@@ -34,9 +34,6 @@ constexpr double kNewtonDelta = 1e-7;
 // Friction margins (in m g) this close to zero at a point's slip onset count as reached: both
 // ends of an edge loaded alike (a planar motion) start slipping together.
 constexpr double kMarginTie = 1e-9;
-// Loads, friction margins (in m g) and a lifted corner's acceleration (in g) this far below zero
-// still count as consistent (the rounding of a switch).
-constexpr double kLoadTie = 1e-9;
 // A point carrying less than this share of the weight is not checked for sticking (as the
 // sticking contacts' rule: it is about to lift).
 constexpr double kUncheckedShare = 1e-2;
@@ -413,7 +410,12 @@ Tr BodyOnGround::contact_slip_change(double t, const Mode& m, State& z, int even
   // Point i's slip ends: it stops where it is (what is left of its slip, the event's rounding,
   // is lost to friction), and sticks if friction holds it.
   const double ke = energy(z);
-  const unsigned rest = m.slipping & ~bit(i);
+  unsigned rest = m.slipping & ~bit(i);
+  // An edge slipping alike at both ends reaches its stick at both at one instant: the other end
+  // sticks with it (taken one end first, the other would slip about it, where no load is consistent).
+  const int o = 1 - i;
+  if (m.contact == BodyContact::Line && (rest & bit(o)) && length_of(contact_slip_of(m, z).slip[o]) <= kStickSlip * vs)
+    rest = 0;
   Mode stick;
   if (rest == 0) {
     stick = m.contact == BodyContact::Line ? line_mode(r, x, m.point_a, m.point_b, m.corner_a, m.corner_b)

@@ -152,6 +152,9 @@ class BodyOnGround {
   // slower than kImpactLeaving (relative to the impact's velocity scale) stays in contact: both
   // impact laws.
   static constexpr double kImpactTouch = 1e-12;
+  // Loads, friction margins (in m g) and a lifted corner's acceleration (in g) this far below zero
+  // still count as consistent (the rounding of a switch).
+  static constexpr double kLoadTie = 1e-9;
   static constexpr double kImpactLeaving = 1e-9;
   static constexpr int kMaxRapid = 64;
 
@@ -333,6 +336,9 @@ class BodyOnGround {
   void conserve_momentum_about(const Mode& m, State& z) const;
   void set_contact_velocity(const Mode& m, State& z) const;
   bool pulls_away(double t, const Mode& m, const State& z) const;
+  // Whether a corner of the contact m would move into the ground in flight (its acceleration
+  // without the contact's forces pointing down).
+  bool sinks_in_flight(double t, const Mode& m, const State& z) const;
 
   Body3d body_;
   GroundMotion3d ground_;

@@ -75,6 +75,20 @@ bool BodyOnGround::pulls_away(double t, const Mode& m, const State& z) const {
   return g[kEvLiftOff] < 0;
 }
 
+bool BodyOnGround::sinks_in_flight(double t, const Mode& m, const State& z) const {
+  State dz{};
+  rhs(t, Mode{BodyContact::Flight}, z, dz);
+  const Mat3 r = rotation(quat_at(z, S::kQw));
+  const Vec3 w = vec_at(z, kWx);
+  for (int i : {m.corner_a, m.corner_b}) {
+    if (i < 0) continue;
+    const Vec3 arm = r * corner(i);
+    const Vec3 a = plus(vec_at(dz, kVx), plus(cross(vec_at(dz, kWx), arm), cross(w, cross(w, arm))));
+    if (a[2] < -kLoadTie * body_.g) return true;
+  }
+  return false;
+}
+
 BodyOnGroundMode BodyOnGround::mode_of(double t, const State& z) const {
   const Mat3 r = rotation(quat_at(z, S::kQw));
   const Vec3 x = vec_at(z, kX);
@@ -153,9 +167,14 @@ Tr BodyOnGround::leave_rest(double t, const State& z) const {
             int(Body3dEventKind::Mode)};
   const int bx = f.x_side > 0 ? 0 : 1, by = f.y_side > 0 ? 0 : 2;
   const int mode = int(Body3dEventKind::Mode);
-  if (f.x_side != 0 && f.y_side != 0) return stick_or_slip(t, point_mode(r, x, corner(bx | by), bx | by), z, mode);
-  if (f.x_side != 0) return stick_or_slip(t, line_mode(r, x, corner(bx), corner(bx | 2), bx, bx | 2), z, mode);
-  return stick_or_slip(t, line_mode(r, x, corner(by), corner(by | 1), by, by | 1), z, mode);
+  const Mode pivot = f.x_side != 0 && f.y_side != 0 ? point_mode(r, x, corner(bx | by), bx | by)
+                     : f.x_side != 0                ? line_mode(r, x, corner(bx), corner(bx | 2), bx, bx | 2)
+                                                    : line_mode(r, x, corner(by), corner(by | 1), by, by | 1);
+  const Tr tr = stick_or_slip(t, pivot, z, mode);
+  // A pivot that cannot hold and whose slip would press the other corners into the ground: the
+  // base slides flat instead (the slide's own events tip it where its loads say so).
+  if (!tr.stop && tr.next.slips() && !flat_corners_rise(t, tr.next, z)) return start_slide(t, z, f.towards);
+  return tr;
 }
 
 Tr BodyOnGround::settle(double t, State& z) const {
@@ -180,7 +199,15 @@ Tr BodyOnGround::settle(double t, State& z) const {
 }
 
 Tr BodyOnGround::after_load_zero(double t, const Mode& m, State& z, int event) const {
-  if (event == kEvLiftOff) return {Mode{BodyContact::Flight}, false, int(Body3dEventKind::LiftOff)};
+  if (event == kEvLiftOff) {
+    // The load reaches zero while friction still holds the contact (the slip check is off near
+    // zero load): where the corners would sink without friction, the contact slips instead.
+    if (body_.shape == BodyShape3d::Box && !m.slips() && sinks_in_flight(t, m, z)) {
+      const Tr tr = stick_or_slip(t, m, z, int(Body3dEventKind::Mode), false);
+      if (!tr.stop) return tr;
+    }
+    return {Mode{BodyContact::Flight}, false, int(Body3dEventKind::LiftOff)};
+  }
   // A rim point that would need a moment: the contact starts rolling along the rim.
   if (m.half_length == 0) return {roll_mode(z, false), false, int(Body3dEventKind::Mode)};
   // One end of the line lifts: the body pivots on the other, unless that one pulls away too.
