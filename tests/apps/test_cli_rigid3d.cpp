@@ -129,6 +129,30 @@ TEST(CliRigid3d, ACylinderThrownAlongTheGroundSlidesToItsClosedFormStop) {
   EXPECT_NEAR(j["energy"]["work_friction"].get<double>(), -0.5 * 100 * 0.25, 1e-9);
 }
 
+TEST(CliRigid3d, AVelocityGivenOnAnEdgeSlipsARotationGivenPivots) {
+  // A box resting tilted on an edge: `--velocity` across the edge is the body's own, its edge slips
+  // from t = 0 and sticks as the planar 3-DOF block's (`simulate --model rigid --w0 0.1 --vx0 -0.3`:
+  // 0.056112946826 s); `--angular-velocity` alone turns it about the edge, which holds (mu 0.7:
+  // at 0.3 the rotation's own friction would need more, and the edge slips from rest).
+  TmpDir d("rigid3d_edge_throw");
+  const std::vector<std::string> start{"--tilt", "0.1", "--mu-s", "0.3", "--t-end", "0.3", "--json"};
+  const auto thrown = run_cli(joined(joined(box(), start), {"--velocity", "0.3,0,0"}), d.path);
+  ASSERT_EQ(thrown.code, 0) << thrown.err;
+  const json a = json::parse(thrown.out);
+  ASSERT_FALSE(a["events"].empty());
+  EXPECT_EQ(a["events"][0]["kind"], "stick");
+  EXPECT_EQ(a["events"][0]["from"], "edge_slip");
+  EXPECT_NEAR(a["events"][0]["t"].get<double>(), 0.056112946826, 1e-9);
+  EXPECT_GT(a["max_slide"].get<double>(), 1e-3);
+  const auto turned = run_cli(
+      joined(box(), {"--tilt", "0.1", "--mu-s", "0.7", "--t-end", "0.3", "--json", "--angular-velocity", "0,0.5,0"}),
+      d.path);
+  ASSERT_EQ(turned.code, 0) << turned.err;
+  const json b = json::parse(turned.out);
+  EXPECT_EQ(b["max_slide"].get<double>(), 0.0);
+  for (const json& e : b["events"]) EXPECT_NE(e["to"], "edge_slip");
+}
+
 TEST(CliRigid3d, UsageErrorsNameTheOption) {
   TmpDir d("rigid3d_usage");
   const std::vector<std::string> m{"simulate", "--model", "rigid3d"};

@@ -110,8 +110,8 @@ Body3dStart start_from(const Settings& s) {
   require_in_range("tilt", st.tilt, 0, 0.5 * M_PI, true, false);
   require_in_range("tilt-azimuth", st.tilt_azimuth / kDeg, -360, 360);
   require_in_range("lift", st.lift, 0, 1e3);
-  // In contact: a corner moving into the ground starts with Newton's impact; otherwise the contact
-  // takes the velocities it allows (BodyOnGround::start).
+  // In contact: a corner moving into the ground starts with Newton's impact; points moving along it
+  // slip (BodyOnGround::start, Body3dRunOptions::slip_start).
   if (s.has("velocity")) st.velocity = vec3_option(s, "velocity");
   if (s.has("angular-velocity")) st.angular_velocity = vec3_option(s, "angular-velocity");
   return st;
@@ -134,6 +134,9 @@ Rigid3dSetup rigid3d_from(const Settings& s) {
   validate(check);
   require_in_range("output-interval", r.run.output_interval, 0, r.run.t_end);
   r.run.rows_every_step = r.run.output_interval == 0;  // 0: every step, as the planar families
+  // A velocity given is the body's own: contact points it moves along the ground slip from t = 0
+  // (as the planar families' vx0); without one the contact takes the velocities it allows.
+  r.run.slip_start = s.has("velocity");
   return r;
 }
 

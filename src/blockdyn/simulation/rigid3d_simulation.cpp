@@ -168,7 +168,7 @@ Body3dResult simulate_body3d(const BodyOnGround& model, BodyOnGround::State z, c
   double t = 0;
   // A start whose contact points move into the ground begins with an impact (its loss booked in
   // the state's impact work, the balance taken after it).
-  const Transition<Model::Mode> first = model.start(t, z);
+  const Transition<Model::Mode> first = model.start(t, z, o.slip_start);
   Model::Mode mode = first.next;
   model.complete(mode, z);
   res.initial_energy = model.balance(z);

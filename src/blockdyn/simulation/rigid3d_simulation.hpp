@@ -33,8 +33,11 @@ struct Body3dRunOptions {
   double output_interval = 0;    // s between trajectory rows (0: events only)
   bool rows_every_step = false;  // a row at every step's end as well (the CLI's output-interval 0)
   IntegratorOptions integ{};
-  bool track_energy = true;                            // the balance at every step end; false: at events only
-  bool track_tilt = true;                              // the largest tilt inside every step; false: at events only
+  bool track_energy = true;  // the balance at every step end; false: at events only
+  bool track_tilt = true;    // the largest tilt inside every step; false: at events only
+  // In contact, contact points that the start's velocities move along the ground slip from t = 0
+  // (a velocity given); false: the contact takes the velocities it allows (a rotation given).
+  bool slip_start = false;
   std::function<void(const Body3dSample&)> on_sample;  // rows (null: none)
   EventSink<Body3dEventRecord>* events = nullptr;      // as they happen (null: kept in the result)
 };

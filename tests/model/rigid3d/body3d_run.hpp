@@ -28,9 +28,10 @@ inline double balance_error(const Body3dResult& r, const BodyOnGround& m) {
   return r.max_abs_energy_error / (m.body().mass * m.body().g * m.size());
 }
 
-inline Body3dResult run_body(const BodyOnGround& m, const Body3dStart& s, double t_end) {
+inline Body3dResult run_body(const BodyOnGround& m, const Body3dStart& s, double t_end, bool slip_start = false) {
   Body3dRunOptions o;
   o.t_end = t_end;
+  o.slip_start = slip_start;
   o.integ.rtol = 1e-12;
   o.integ.atol = 1e-14;
   return simulate_body3d(m, initial_state(m.body(), s), o);

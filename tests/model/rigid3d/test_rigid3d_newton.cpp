@@ -138,7 +138,7 @@ TEST(Rigid3dNewton, AStartWithACornerMovingIntoTheGroundIsAnImpact) {
     s.velocity = {0.4, -0.1, -0.5};
     BodyOnGround::State z = initial_state(b, s);
     const BodyOnGround::State before = z;
-    const auto tr = m.start(0.0, z);
+    const auto tr = m.start(0.0, z, true);
     ASSERT_FALSE(tr.stop);
     using S = BodyOnGround;
     const Mat3 r = rotation(quat_at(z, S::kQw));

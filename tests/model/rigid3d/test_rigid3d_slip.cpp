@@ -108,6 +108,39 @@ TEST(Rigid3dSlip, PlanarLimitIsTheThreeDofBlocksSlideRock) {
   }
 }
 
+TEST(Rigid3dSlip, AThrownStartOnAnEdgeSlipsAsThePlanarBlock) {
+  // A box resting tilted on an edge and thrown across it, either way: the edge slips from t = 0
+  // (both ends alike) until friction stops it, then the box rocks and lands; the planar 3-DOF
+  // block started with the mirrored velocity does the same at the same instants. Before, the start
+  // took the velocities the edge allows (the throw's slip was dropped).
+  const double b = 0.4, d = 0.3, h = 1.2, tilt = 0.1, mu = 0.3, t_end = 1.0;
+  for (const double v : {0.3, -0.3}) {
+    SCOPED_TRACE(v);
+    const BodyOnGround m(blockdyn::box_body(b, d, h, 400), {}, friction(mu, mu));
+    blockdyn::Body3dStart s;
+    s.tilt = tilt;
+    s.velocity = {v, 0, 0};
+    const Body3dResult r = blockdyn::test::run_body(m, s, t_end, true);
+    ASSERT_EQ(r.status, blockdyn::SimStatus::TEnd) << r.note;
+    blockdyn::RigidInitial init;
+    init.w0 = tilt;
+    init.vx0 = -v;
+    const blockdyn::RigidResult planar = blockdyn::test::planar_block_run(b, h, 400, mu, mu, {}, init, t_end);
+    ASSERT_EQ(planar.status, blockdyn::SimStatus::TEnd);
+    ASSERT_EQ(r.events.size(), planar.events.size());
+    ASSERT_GE(r.events.size(), 3u);
+    // The slip's end, then the impacts.
+    EXPECT_EQ(r.events[0].kind, Body3dEventKind::Stick);
+    EXPECT_EQ(r.events[0].from_slipping, 3u);
+    EXPECT_EQ(planar.events[0].from, blockdyn::Mechanism::SlideRock);
+    for (std::size_t i = 0; i < r.events.size(); ++i) EXPECT_NEAR(r.events[i].t, planar.events[i].t, 1e-9) << i;
+    EXPECT_NEAR(r.z[BodyOnGround::kX], -planar.final_state[blockdyn::RigidBlock::kX], 1e-9);
+    EXPECT_NEAR(r.z[BodyOnGround::kVx], -planar.final_state[blockdyn::RigidBlock::kVX], 1e-9);
+    EXPECT_NEAR(r.z[BodyOnGround::kY], 0.0, 1e-13);
+    EXPECT_LT(balance_error(r, m), 1e-11);
+  }
+}
+
 TEST(Rigid3dSlip, FrictionlessGroundLetsTheCentroidFallStraightDown) {
   // Without friction the ground pushes only upwards: the centroid's horizontal position and
   // velocity and the vertical angular momentum stay as they started, here zero; the edge and the

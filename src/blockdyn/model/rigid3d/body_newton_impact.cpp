@@ -41,10 +41,12 @@ Mat3 product(const Mat3& a, const Mat3& b) {
 
 }  // namespace
 
-Tr BodyOnGround::start(double t, State& z) const {
-  const Mode m = mode_of(t, z);
+Tr BodyOnGround::start(double t, State& z, bool slipping) const {
+  const Mode m = mode_of(t, z, slipping);
   const bool on_points = m.contact == BodyContact::Line || m.contact == BodyContact::Point;
-  if (opt_.impact != Body3dImpactLaw::Newton || body_.shape != BodyShape3d::Box || !on_points)
+  // Without a velocity of its own (`slipping` false) the contact takes the velocities it allows:
+  // its points are at rest, none moves into the ground.
+  if (!slipping || opt_.impact != Body3dImpactLaw::Newton || body_.shape != BodyShape3d::Box || !on_points)
     return {m, false, int(Body3dEventKind::Mode)};
   // A touching corner moving into the ground: the start is an impact at t (from flight: every
   // touching corner takes part). Otherwise the contact takes the velocities it allows (mode_of):

@@ -187,12 +187,14 @@ class BodyOnGround {
   double tilt(const State& z) const;  // rad: e3 from Z
 
   // The mode of a body at state z touching the ground where it does (rest, a line, a corner or
-  // flight; a tilted body's lowest points decide). Throws std::invalid_argument for a body
-  // below the ground.
-  Mode mode_of(double t, const State& z) const;
+  // flight; a tilted body's lowest points decide; `slipping`: contact points moving along the
+  // ground slip, else the contact takes the velocities it allows). Throws std::invalid_argument
+  // for a body below the ground.
+  Mode mode_of(double t, const State& z, bool slipping = false) const;
   // The start: the mode of z; where a box starts on an edge or a corner with a corner moving into
-  // the ground (Newton's law), an impact at t first (body_newton_impact.cpp: z jumps).
-  Transition<Mode> start(double t, State& z) const;
+  // the ground (Newton's law, `slipping`: a velocity given), an impact at t first
+  // (body_newton_impact.cpp: z jumps).
+  Transition<Mode> start(double t, State& z, bool slipping = false) const;
 
   const Body3d& body() const { return body_; }
   const GroundMotion3d& ground() const { return ground_; }
@@ -268,6 +270,13 @@ class BodyOnGround {
   // along the rim from it (kEvTouch0 + 1; not at a tilt below 1e-8 rad, where the base lands). The rim point that
   // touched just before the landing.
   Mode roll_mode(const State& z, bool slipping) const;
+  // A rim contact at rest at z on the rim point `point` (body frame): rocking on it, or rolling if
+  // the body turns about more than its tangent (above kRollStart sqrt(g / size)).
+  Mode rim_or_roll(const State& z, const Vec3& point) const;
+  // The time the rim's tilt towards m's reference side, extrapolated linearly, takes to reach
+  // zero (the base flat, where the contact jumps sides: a kink), or infinity.
+  double rim_flat_ahead(const Mode& m, const State& z) const;
+  static constexpr double kRollStart = 1e-12;
   void rim_side_events(const Mode& m, const Mat3& r, std::array<double, kNumEvents>& g) const;
   Transition<Mode> rim_side_change(double t, const Mode& m, State& z, int event) const;
   Vec3 rim_point_before_landing(const State& z) const;
@@ -339,6 +348,13 @@ class BodyOnGround {
   // Whether a corner of the contact m would move into the ground in flight (its acceleration
   // without the contact's forces pointing down).
   bool sinks_in_flight(double t, const Mode& m, const State& z) const;
+  // Whether friction would stop a start's slipping contact m at once (a sticking contact's limit).
+  bool slip_stops_at_once(const Mode& m, const State& z) const;
+  // A start on the rim with its rim point moving along the ground: the rim slipping that way, if
+  // that is consistent and friction would not stop it at once.
+  std::optional<Mode> moving_rim(double t, const State& z) const;
+  // A start's slip that friction would stop within this time (in sqrt(size / g)) stops at once.
+  static constexpr double kInstantSlip = 1e-6;
 
   Body3d body_;
   GroundMotion3d ground_;

@@ -5,6 +5,7 @@
 // corner's; where it ends the rim rolls on if mu_s holds it, else slips the other way. A rolling
 // or rocking rim whose friction reaches mu_s starts slipping the way its slip accelerates.
 #include <cmath>
+#include <optional>
 
 #include "blockdyn/model/rigid3d/body_on_ground.hpp"
 #include "blockdyn/model/rigid3d/body_pivot.hpp"
@@ -77,7 +78,7 @@ void BodyOnGround::rim_slip_complete(const Mode& m, State& z) const {
 
 double BodyOnGround::rim_slip_kink_ahead(double t, const Mode& m, const State& z) const {
   const RimSlip rs = rim_slipping(t, m, z);
-  return stick_ahead(rs.slip, rs.slip_rate);
+  return std::fmin(stick_ahead(rs.slip, rs.slip_rate), rim_flat_ahead(m, z));
 }
 
 Tr BodyOnGround::start_rim_slip(double t, const State& z, const Vec3& ref, const Vec3& side, int kind) const {
@@ -98,6 +99,18 @@ Tr BodyOnGround::start_rim_slip(double t, const State& z, const Vec3& ref, const
   const double rising = -free.force[2];  // the load it would need, reversed: the free contact's rise
   if (rising >= 0) return {Mode{BodyContact::Flight}, false, int(Body3dEventKind::LiftOff)};
   return {m, true, int(Body3dEventKind::Painleve)};
+}
+
+std::optional<BodyOnGroundMode> BodyOnGround::moving_rim(double t, const State& z) const {
+  Mode m = roll_mode(z, true);
+  m.slip_ref = {1, 0, 0};
+  const Vec3 u = rim_slipping(t, m, z).slip;
+  const double speed = std::sqrt(dot(u, u));
+  if (speed < kInstantSlip * std::sqrt(size_ / body_.g) * mu_k_ * body_.g) return std::nullopt;
+  m.slip_ref = scaled(u, 1.0 / speed);
+  const RimSlip rs = rim_slipping(t, m, z);
+  if (!(rs.consistency > 0) || rs.force[2] < -kRimTie * body_.mass * body_.g) return std::nullopt;
+  return m;
 }
 
 Tr BodyOnGround::rim_contact_holds_or_slips(double t, const Mode& stick, const State& z, int kind,
@@ -134,9 +147,7 @@ Tr BodyOnGround::rim_slip_change(double t, const Mode& m, State& z, int event) c
   z[kWorkFriction] += energy(z) - ke;
   // Still below the landing's tilt (the rim's rolling is singular that flat): the base lands.
   if (m.lifting) return landed_flat(t, z);
-  Mode roll = roll_mode(z, false);
-  roll.point_a = m.point_a;
-  Tr tr = rim_contact_holds_or_slips(t, roll, z, int(Body3dEventKind::Stick), true);
+  Tr tr = rim_contact_holds_or_slips(t, rim_or_roll(z, m.point_a), z, int(Body3dEventKind::Stick), true);
   if (!tr.stop && tr.next.slips()) tr.kind = int(Body3dEventKind::Slip);
   return tr;
 }

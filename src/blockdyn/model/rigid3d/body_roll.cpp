@@ -52,6 +52,31 @@ void BodyOnGround::roll_events(double t, const Mode& m, const State& z, std::arr
   g[kEvOverturn] = r[2][2];
 }
 
+double BodyOnGround::rim_flat_ahead(const Mode& m, const State& z) const {
+  // The rim's contact jumps to the other side where the base passes flat (the landing's event
+  // comes just before): its tilt towards the reference side, d/dt of R^T Z = -Omega x R^T Z,
+  // extrapolated linearly.
+  const Mat3 r = rotation(quat_at(z, S::kQw));
+  const Vec3 up{r[2][0], r[2][1], r[2][2]}, du = scaled(cross(transposed_times(r, vec_at(z, kWx)), up), -1.0);
+  const double along = tilt_towards(r, m.point_a, body_.radius);
+  const double rate = -(du[0] * m.point_a[0] + du[1] * m.point_a[1]) / body_.radius;
+  // Aimed at half the landing's tilt: the step ends before the kink, the landing in the next.
+  const double ahead = along - 0.5 * kRimLanding;
+  return ahead > 0 && rate < 0 ? ahead / -rate : INFINITY;
+}
+
+BodyOnGroundMode BodyOnGround::rim_or_roll(const State& z, const Vec3& point) const {
+  // Turning about more than the rim point's tangent (a spin, a wobble): it rolls; else it rocks
+  // on that rim point.
+  const Mat3 r = rotation(quat_at(z, S::kQw));
+  const Mode rim = rim_mode(r, vec_at(z, kX), point);
+  const Vec3 w = vec_at(z, kWx), off = minus(w, scaled(rim.axis, dot(rim.axis, w)));
+  if (std::sqrt(dot(off, off)) <= kRollStart * std::sqrt(body_.g / size_)) return rim;
+  Mode roll = roll_mode(z, false);
+  roll.point_a = point;
+  return roll;
+}
+
 BodyOnGroundMode BodyOnGround::roll_mode(const State& z, bool slipping) const {
   Mode m{BodyContact::Roll};
   m.slipping = slipping ? 1 : 0;
@@ -125,10 +150,11 @@ Tr BodyOnGround::rim_side_change(double t, const Mode& m, State& z, int event) c
   const Vec3 u{r[2][0], r[2][1], r[2][2]}, om = transposed_times(r, vec_at(z, kWx));
   const Vec3 dw = scaled(cross(om, u), -1.0);
   if (-(dw[0] * m.point_a[0] + dw[1] * m.point_a[1]) > 0) return {m, false, int(Body3dEventKind::SlipTurn)};
-  // Falling through it at the landing's own instant with the new contact slipping: the landing
+  // Falling through it at the landing's own instant (to its rounding) with the new contact slipping: the landing
   // about the opposite point left the other side coming down too (a base landing all but flat):
   // the base lands flat. Rolling, the new contact starts below the landing's tilt: no event.
-  if (t == m.impact_t) return m.slips() ? landed_flat(t, z) : Tr{m, false, int(Body3dEventKind::SlipTurn)};
+  if (m.impact_t >= 0 && t - m.impact_t <= kInstant * std::fmax(1.0, std::fabs(t)))
+    return m.slips() ? landed_flat(t, z) : Tr{m, false, int(Body3dEventKind::SlipTurn)};
   // The tilt falls through it: the base lands about the rim point opposite the contact.
   return impact(t, rim_mode(r, vec_at(z, kX), rim_point_before_landing(z)), z, kEvTouch0);
 }

@@ -27,9 +27,6 @@ Tr stop(const BodyOnGroundMode& m, Body3dEventKind k) { return {m, true, int(k)}
 
 // Base points this close to the ground (in body sizes) touch it.
 constexpr double kTouchTolerance = 1e-11;
-// A cylinder starting on its rim with an angular velocity off the rim point's tangent above this
-// (in sqrt(g / size)) rolls.
-constexpr double kRollStart = 1e-12;
 
 }  // namespace
 
@@ -89,7 +86,7 @@ bool BodyOnGround::sinks_in_flight(double t, const Mode& m, const State& z) cons
   return false;
 }
 
-BodyOnGroundMode BodyOnGround::mode_of(double t, const State& z) const {
+BodyOnGroundMode BodyOnGround::mode_of(double t, const State& z, bool slipping) const {
   const Mat3 r = rotation(quat_at(z, S::kQw));
   const Vec3 x = vec_at(z, kX);
   const double tol = kTouchTolerance * size_, lowest = z[kZ] - lowest_point(body_, r).depth;
@@ -107,11 +104,10 @@ BodyOnGroundMode BodyOnGround::mode_of(double t, const State& z) const {
       const Vec3 u = slip_of(z);
       return dot(u, u) > 0 ? slide_mode(z, scaled(u, 1.0 / std::sqrt(dot(u, u)))) : rest;
     }
-    // Turning about more than the rim point's tangent (a spin, a wobble): it rolls.
-    const Mode rim = rim_mode(r, x, lowest_point(body_, r).body);
-    const Vec3 w = vec_at(z, kWx), off = minus(w, scaled(rim.axis, dot(rim.axis, w)));
-    const Mode held = std::sqrt(dot(off, off)) > kRollStart * std::sqrt(body_.g / size_) ? roll_mode(z, false) : rim;
-    // It slips from the start if friction cannot hold it.
+    const Mode held = rim_or_roll(z, lowest_point(body_, r).body);
+    // Its rim point moving along the ground: it slips from the start (unless friction would stop
+    // it at once, as a box's contact below), else it slips if friction cannot hold it.
+    if (const auto moving = slipping ? moving_rim(t, z) : std::nullopt) return *moving;
     const Tr tr = rim_contact_holds_or_slips(t, held, z, int(Body3dEventKind::Mode), true);
     return tr.stop ? held : tr.next;
   }
@@ -127,12 +123,32 @@ BodyOnGroundMode BodyOnGround::mode_of(double t, const State& z) const {
   const Mode contact = touching.size() == 2
                            ? line_mode(r, x, corner(touching[0]), corner(touching[1]), touching[0], touching[1])
                            : point_mode(r, x, corner(touching[0]), touching[0]);
-  // In contact on an edge or a corner the start takes the velocities the contact allows (docs/3d.md:
-  // a slipping start would need a tangential impact first); it slips if friction cannot hold it.
+  // Its points moving along the ground: they slip from the start, on the edge or on either of its
+  // corners (the other rising), the first consistent; unless friction would stop them at once (in
+  // less than kInstantSlip sqrt(size / g) at mu_k g: the limit of a sticking contact, whose slip is
+  // too stiff to follow), where the start takes the velocities the contact allows.
+  const Mode candidates[3] = {contact, point_mode(r, x, contact.point_a, contact.corner_a),
+                              point_mode(r, x, contact.point_b, contact.corner_b)};
+  for (int i = 0; i < (!slipping ? 0 : touching.size() == 2 ? 3 : 1); ++i) {
+    const Mode moving = moving_contact(candidates[i], z);
+    if (!moving.slips() || slip_stops_at_once(moving, z)) break;
+    State on = z;
+    complete(moving, on);
+    const int lifted = i == 0 ? -1 : i == 1 ? contact.corner_b : contact.corner_a;
+    if (consistent_contact(t, moving, on, lifted)) return moving;
+  }
+  // Else (docs/3d.md) it slips if friction cannot hold it.
   State still = z;
   complete(contact, still);
   const Tr tr = stick_or_slip(t, contact, still, int(Body3dEventKind::Mode));
   return tr.stop ? contact : tr.next;
+}
+
+bool BodyOnGround::slip_stops_at_once(const Mode& m, const State& z) const {
+  const ContactSlip c = contact_slip_of(m, z);
+  const double fastest =
+      std::fmax(std::sqrt(dot(c.slip[0], c.slip[0])), c.points.n > 1 ? std::sqrt(dot(c.slip[1], c.slip[1])) : 0.0);
+  return fastest < kInstantSlip * std::sqrt(size_ / body_.g) * mu_k_ * body_.g;
 }
 
 std::string BodyOnGround::stop_reason(const Mode& from, int event, Body3dEventKind kind) {
