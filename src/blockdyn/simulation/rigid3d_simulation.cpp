@@ -139,9 +139,10 @@ class Body3dWatch final : public Observer<Model> {
     if (e.stop) res.note = Model::stop_reason(e.from, e.index, kind);
     slide_changes(e.from, e.to, e.z);
     const Body3dEventRecord rec{{e.t, kind}, e.from.contact, e.to.contact, e.from.slipping, e.to.slipping, e.z};
+    ++res.event_count;
     if (o.events)
       o.events->on_event(rec);
-    else
+    else if (long(res.events.size()) < o.max_events)
       res.events.push_back(rec);
     track(e.t, e.z);
     row(e.t, e.to, e.z, to_string(kind));

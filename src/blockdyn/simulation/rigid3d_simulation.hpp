@@ -40,6 +40,7 @@ struct Body3dRunOptions {
   bool slip_start = false;
   std::function<void(const Body3dSample&)> on_sample;  // rows (null: none)
   EventSink<Body3dEventRecord>* events = nullptr;      // as they happen (null: kept in the result)
+  long max_events = 1'000'000;  // kept in the result's list (a run's memory bounded); further ones counted only
 };
 
 // status: t_end, overturned or invalid (note: why an invalid run stopped).
@@ -52,7 +53,8 @@ struct Body3dResult : RunResult {
   double max_slide = 0;
   double max_tilt_azimuth = 0, overturn_azimuth = 0;  // deg: where the body leans, from x towards y
   double initial_energy = 0;                          // of the closed balance (J)
-  std::vector<Body3dEventRecord> events;              // when no sink is given
+  std::vector<Body3dEventRecord> events;              // when no sink is given (at most max_events)
+  long event_count = 0;                               // all of them, kept or not
 };
 
 // The direction the body leans to (deg from the world's x axis towards y): the azimuth of e3.

@@ -372,6 +372,24 @@ TEST(Rigid3dContact, AnEdgeSlippingAlikeAtBothEndsSticksAtBothAtOnce) {
   EXPECT_LT(r.max_abs_energy_error, 1e-9 * m.body().mass * m.body().g * m.body().height);
 }
 
+TEST(Rigid3dContact, TheEventListKeptIsBoundedAndTheCountComplete) {
+  // A run's memory is bounded whatever its events: max_events are kept, all are counted; the run
+  // itself is the same (its final state bit for bit).
+  const BodyOnGround m(blockdyn::box_body(0.3, 0.3, 1.2, 500), {}, blockdyn::BodyOnGroundOptions{});
+  blockdyn::Body3dStart s;
+  s.tilt = 0.1;
+  blockdyn::Body3dRunOptions o;
+  o.t_end = 3.0;
+  const Body3dResult all = blockdyn::simulate_body3d(m, blockdyn::initial_state(m.body(), s), o);
+  ASSERT_GT(all.events.size(), 5u);
+  EXPECT_EQ(all.event_count, long(all.events.size()));
+  o.max_events = 3;
+  const Body3dResult few = blockdyn::simulate_body3d(m, blockdyn::initial_state(m.body(), s), o);
+  EXPECT_EQ(few.events.size(), 3u);
+  EXPECT_EQ(few.event_count, all.event_count);
+  EXPECT_EQ(few.z, all.z);
+}
+
 TEST(Rigid3dContact, PainleveStopsTheRunWithItsReason) {
   // A square column under 2.5 times the fixture along 30 degrees and across, mu 0.7: its edge,
   // sticking, reaches the friction limit at one end where no state of the contact is consistent
