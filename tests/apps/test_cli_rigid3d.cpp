@@ -153,6 +153,34 @@ TEST(CliRigid3d, AVelocityGivenOnAnEdgeSlipsARotationGivenPivots) {
   for (const json& e : b["events"]) EXPECT_NE(e["to"], "edge_slip");
 }
 
+TEST(CliRigid3d, ACylinderLeavesRestUnderTwoDifferentComponents) {
+  // Two independent components turn the ground's acceleration: the cylinder leaves rest onto a rim
+  // point whose moment the turning motion does not allow, rolls from flat and rocks on. Before,
+  // the rolling contact started below the landing's tilt landed at once and the run stopped at
+  // the rest's exit ("the contact changes mode repeatedly at one instant", tilt 0).
+  TmpDir d("rigid3d_cyl_two");
+  const auto gen = run_cli({"motion",  "generate",   "--components", "2",       "--count", "5",       "--arias",
+                            "1.5",     "--h2-arias", "0.8",          "--d5-95", "8",       "--t-mid", "5",
+                            "--f-mid", "2.5",        "--t-end",      "15",      "--out",   "suite",   "--quiet"},
+                           d.path);
+  ASSERT_EQ(gen.code, 0) << gen.err;
+  for (const char* k : {"0001", "0005"}) {
+    const std::string h1 = std::string("suite/rezaeian_") + k + "_h1.AT2",
+                      h2 = std::string("suite/rezaeian_") + k + "_h2.AT2";
+    const auto r =
+        run_cli({"simulate", "--model",           "rigid3d", "--shape",          "cylinder", "--radius",
+                 "0.2",      "--height",          "1",       "--mass",           "100",      "--mu-s",
+                 "0.5",      "--ground-h-record", h1,        "--ground-h-scale", "1.5",      "--ground-h2-record",
+                 h2,         "--ground-h2-scale", "1.5",     "--t-end",          "15",       "--json"},
+                d.path);
+    ASSERT_EQ(r.code, 0) << r.err;
+    const json j = json::parse(r.out);
+    EXPECT_EQ(j["status"], "overturned") << k << " " << j.value("stop_reason", "");
+    EXPECT_GT(j["first_uplift_time"].get<double>(), 0.0) << k;
+    EXPECT_LT(j["max_abs_energy_error"].get<double>(), 1e-9 * 100 * 9.81 * 1) << k;
+  }
+}
+
 TEST(CliRigid3d, UsageErrorsNameTheOption) {
   TmpDir d("rigid3d_usage");
   const std::vector<std::string> m{"simulate", "--model", "rigid3d"};

@@ -50,7 +50,14 @@ Tr BodyOnGround::transition(double t, const Mode& m, State& z, int event) const 
   Tr tr = mode_change(t, m, z, event);
   if (!tr.stop && tr.next.contact == BodyContact::Roll) {
     lower_onto_rim(tr.next, z);
-    tr.next.lifting = tr.next.slips() && rim_below_landing(tr.next, z);
+    tr.next.lifting = rim_below_landing(tr.next, z);
+  }
+  if (!tr.stop && tr.next.contact != BodyContact::Flight) {
+    // The new contact's constraints applied here, what they change booked with the impacts (near
+    // flat a rim contact moving to the rim's lowest point projects the velocity: an impulse).
+    const double before = energy(z);
+    complete(tr.next, z);
+    z[kWorkImpact] += energy(z) - before;
   }
   const bool impact_event =
       m.contact != BodyContact::Slide && ((event >= kEvTouch0 && event <= kEvTouch3) || event == kEvTouchdown);
@@ -91,6 +98,14 @@ Tr BodyOnGround::mode_change(double t, const Mode& m, State& z, int event) const
 Tr BodyOnGround::impact(double t, const Mode& from, State& z, int event) const {
   const bool rapid = from.impact_t >= 0 && t - from.impact_t <= kInstant * std::fmax(1.0, std::fabs(t));
   const int rapid_impacts = rapid ? from.rapid_impacts + 1 : 0;
+  // Impacts taking turns at one instant with the base flat (a box's opposite edges, each impact
+  // driving the other down): the base lands flat, plastic on the whole base.
+  if (rapid && body_.shape == BodyShape3d::Box) {
+    const Mat3 r = rotation(quat_at(z, S::kQw));
+    int flat = 0;
+    for (int i = 0; i < 4; ++i) flat += z[kZ] + dot(r[2], corner(i)) <= kImpactTouch * size_;
+    if (flat == 4) return landed_flat(t, z);
+  }
   if (rapid_impacts > kMaxRapid) return {from, true, int(Body3dEventKind::NotModelled)};
   Tr tr = contact_after_impact(t, from, z, event);
   tr.next.impact_t = t;

@@ -20,6 +20,10 @@ constexpr double kStickSlip = 1e-9;
 // noise there (the velocities' absolute tolerance is 1e-12 of that scale), and a slip that small
 // is about to stick. The turn's event function is offset by it.
 constexpr double kSlipNoise = 1e-9;
+// A slip this close to its reference (the tangent of the angle between them) has the
+// reference's direction: the rounding off a planar motion's slip, whose direction's stiffness
+// (a rate of mu N / (m |slip|)) would otherwise hold the steps to the slip's size as it starts.
+constexpr double kDeadAngle = 1e-9;
 // A kink predicted closer than this share of the slip's own size (its minimum along the
 // linear extrapolation) is a stick ahead; farther, the slip only curves.
 constexpr double kStickAhead = 1e-3;
@@ -62,9 +66,17 @@ inline Vec3 friction_direction(const Vec3& u, const Vec3& ref, double noise) {
     const double inv = 1.0 / n;
     return n > 1e-300 ? Vec3{v[0] * inv, v[1] * inv, v[2] * inv} : Vec3{0, 0, 0};
   };
-  const double sense = dot(u, ref) < 0 ? -1.0 : 1.0, size = std::sqrt(dot(u, u));
+  const double along = dot(u, ref), sense = along < 0 ? -1.0 : 1.0, size = std::sqrt(dot(u, u));
   const double share = std::fmin(1.0, std::fmax(0.0, 2 * size / noise - 1));
-  const Vec3 d = unit(u);
+  // A slip off its reference by less than kDeadAngle is along it (the rounding of a planar
+  // motion); the part off it is taken in fully from twice that.
+  const Vec3 off = {u[0] - along * ref[0], u[1] - along * ref[1], u[2] - along * ref[2]};
+  const double angle = std::sqrt(dot(off, off)) / std::fabs(along);
+  const double taken = std::fmin(1.0, std::fmax(0.0, angle / kDeadAngle - 1));
+  const Vec3 d =
+      taken >= 1
+          ? unit(u)
+          : unit({along * ref[0] + taken * off[0], along * ref[1] + taken * off[1], along * ref[2] + taken * off[2]});
   if (share >= 1) return {sense * d[0], sense * d[1], sense * d[2]};
   if (share <= 0) return ref;
   return unit({sense * share * d[0] + (1 - share) * ref[0], sense * share * d[1] + (1 - share) * ref[1],
