@@ -95,6 +95,36 @@ TEST(Rigid3dSlide, APulseBeyondTheRockingThresholdOnLowFrictionSlidesFlat) {
   }
 }
 
+TEST(Rigid3dSlide, ABaseLandingFlatWhileMovingSlidesOnWithCoulombsImpulse) {
+  // Dropped flat from 5 cm while moving at 1 m/s: the landing is plastic along the normal (the
+  // impulse m |v_z|, v_z = -g t_land) with Coulomb's friction impulse mu m |v_z| against the slide,
+  // which then decelerates at mu g to its stop: all in closed form (before, a flat landing stopped
+  // the body dead, its horizontal velocity lost).
+  const double lift = 0.05, v0 = 1.0, mu = 0.3, az = 25 * M_PI / 180;
+  const BodyOnGround m(blockdyn::box_body(1.0, 0.8, 0.5, 300), {}, friction(mu, mu));
+  blockdyn::Body3dStart s;
+  s.lift = lift;
+  s.velocity = {v0 * std::cos(az), v0 * std::sin(az), 0};
+  const Body3dResult r = slide_run(m, s, 1.0);
+  ASSERT_EQ(r.status, blockdyn::SimStatus::TEnd) << r.note;
+  const double t_land = std::sqrt(2 * lift / kG), fall = kG * t_land, v1 = v0 - mu * fall;
+  ASSERT_GE(r.events.size(), 2u);
+  EXPECT_EQ(r.events[0].kind, Body3dEventKind::Impact);
+  EXPECT_EQ(r.events[0].to, blockdyn::BodyContact::Slide);
+  EXPECT_NEAR(r.events[0].t, t_land, 1e-12);
+  const auto sticks = times_of(r, Body3dEventKind::Stick);
+  ASSERT_EQ(sticks.size(), 1u);
+  EXPECT_NEAR(sticks[0], t_land + v1 / (mu * kG), 1e-12);
+  const double d = v0 * t_land + v1 * v1 / (2 * mu * kG);
+  EXPECT_NEAR(r.z[BodyOnGround::kX], d * std::cos(az), 1e-12);
+  EXPECT_NEAR(r.z[BodyOnGround::kY], d * std::sin(az), 1e-12);
+  EXPECT_EQ(r.mode.contact, blockdyn::BodyContact::Rest);
+  // The landing's loss: the fall's kinetic energy and what the friction impulse took of the slide.
+  const double loss = 0.5 * 300 * (fall * fall + v0 * v0 - v1 * v1);
+  EXPECT_NEAR(r.z[BodyOnGround::kWorkImpact], -loss, 1e-9 * loss);
+  EXPECT_LT(balance_error(r, m), 1e-12);
+}
+
 TEST(Rigid3dSlide, PlanarLimitIsTheThreeDofBlock) {
   // A squat box under a harmonic motion along its x axis slides and sticks (mu_s < b/h: it never
   // rocks) as the planar 3-DOF block of the same section does.

@@ -40,7 +40,22 @@ void BodyOnGround::conserve_momentum_about(const Mode& m, State& z) const {
 }
 
 Tr BodyOnGround::landed_flat(double t, State& z) const {
-  // The base lands flat: a plastic impact on the whole base, then rest (or the exit from it).
+  // The base lands flat: plastic along the normal on the whole base (the normal impulse m |v_z|
+  // stops its fall and its tilting), with Coulomb's friction impulse, at most mu m |v_z|, against
+  // its slide. Where that cannot stop the slide it slides on flat with what is left, its spin kept
+  // (the twist of the landing's friction neglected); else rest (or the exit from it).
+  const Vec3 v = vec_at(z, kVx);
+  const double fall = std::fmax(0.0, -v[2]), slide = std::hypot(v[0], v[1]);
+  if (slide > opt_.mu_s * fall && slide > kSlipNoise * std::sqrt(body_.g * size_)) {
+    const double before = energy(z), keep = 1 - mu_k_ * fall / slide;
+    const Mat3 r = rotation(quat_at(z, S::kQw));
+    set_quat_at(z, kQw, axis_angle({0, 0, 1}, std::atan2(r[1][0], r[0][0])));
+    set_vec_at(z, kVx, {keep * v[0], keep * v[1], 0});
+    set_vec_at(z, kWx, {0, 0, z[kWz]});
+    z[kWorkImpact] += energy(z) - before;
+    const Vec3 u = slip_of(z);
+    return {slide_mode(z, scaled(u, 1.0 / std::sqrt(dot(u, u)))), false, int(Body3dEventKind::Impact)};
+  }
   Tr tr = settle(t, z);
   if (!tr.stop && tr.kind == int(Body3dEventKind::Rest)) tr.kind = int(Body3dEventKind::Impact);
   return tr;
@@ -100,6 +115,12 @@ Tr BodyOnGround::impact(double t, const Mode& from, State& z, int event) const {
   const int rapid_impacts = rapid ? from.rapid_impacts + 1 : 0;
   // Impacts taking turns at one instant with the base flat (a box's opposite edges, each impact
   // driving the other down): the base lands flat, plastic on the whole base.
+  // A cylinder's rim landing again within kRimAccumulation sqrt(size / g) of its last landing (an
+  // accumulation of landings shrinking geometrically, the base within 1e-7 rad of flat at each):
+  // the base lands flat, the accumulation's last swings (shorter together than that) skipped.
+  if (body_.shape == BodyShape3d::Cylinder && from.impact_t >= 0 &&
+      t - from.impact_t < kRimAccumulation * std::sqrt(size_ / body_.g))
+    return landed_flat(t, z);
   if (rapid && body_.shape == BodyShape3d::Box) {
     const Mat3 r = rotation(quat_at(z, S::kQw));
     int flat = 0;
@@ -114,7 +135,8 @@ Tr BodyOnGround::impact(double t, const Mode& from, State& z, int event) const {
 }
 
 Tr BodyOnGround::contact_after_impact(double t, const Mode& from, State& z, int) const {
-  if (opt_.impact == Body3dImpactLaw::Newton && body_.shape == BodyShape3d::Box) return newton_impact(t, from, z);
+  if (opt_.impact == Body3dImpactLaw::Newton)
+    return body_.shape == BodyShape3d::Box ? newton_impact(t, from, z) : newton_rim_impact(t, from, z);
   return housner_impact(t, from, z);
 }
 

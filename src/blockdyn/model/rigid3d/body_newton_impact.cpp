@@ -69,6 +69,64 @@ const char* to_string(Body3dImpactLaw l) {
   return to_string(l == Body3dImpactLaw::Housner ? ImpactLaw::Housner : ImpactLaw::Newton);  // one vocabulary
 }
 
+Mat3 BodyOnGround::world_inverse_inertia(const Mat3& r) const {
+  Mat3 inv{};
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      for (int k = 0; k < 3; ++k) inv[i][j] += r[i][k] * r[j][k] / inertia_[std::size_t(k)];
+  return inv;
+}
+
+Tr BodyOnGround::newton_rim_impact(double t, const Mode& from, State& z) const {
+  const Mat3 r = rotation(quat_at(z, S::kQw));
+  if (from.contact == BodyContact::Flight && r[2][2] >= 1 - 1e-12) return landed_flat(t, z);
+  // The rim point that lands: the lowest from flight, else the one opposite the contact.
+  const Vec3 p = from.contact == BodyContact::Flight ? lowest_point(body_, r).body
+                                                     : Vec3{-from.point_a[0], -from.point_a[1], from.point_a[2]};
+  const Vec3 v = vec_at(z, kVx), w = vec_at(z, kWx), arm = r * p;
+  const Vec3 u = plus(v, cross(w, arm));
+  if (!(u[2] < 0)) return housner_impact(t, from, z);  // a graze: the contact turns onto the point
+  const Mat3 inv = world_inverse_inertia(r), k = product(cross_matrix(arm), product(inv, cross_matrix(arm)));
+  double wm[9], q[3] = {u[0], u[1], u[2]}, pulse[3];
+  for (int a = 0; a < 3; ++a)
+    for (int b = 0; b < 3; ++b) wm[3 * a + b] = (a == b ? 1.0 / body_.mass : 0.0) - k[a][b];
+  const double v_normal = -opt_.restitution * u[2];
+  // No impulse in the cone (Painleve at the impulse level): the normal impulse alone.
+  if (!solve_contact_3x3(wm, q, v_normal, opt_.mu_s, mu_k_, pulse)) solve_contact_3x3(wm, q, v_normal, 0, 0, pulse);
+  const double before = energy(z), w_before = std::sqrt(dot(w, w));
+  const Vec3 impulse{pulse[0], pulse[1], pulse[2]};
+  // Within the cone and at rest after it (e = 0, friction enough): the point sticks, which is
+  // Housner's law about it (the rim rocking on its tangent, as the impact Housner's law makes).
+  const Vec3 rest = plus(u, {(wm[0] * pulse[0] + wm[1] * pulse[1] + wm[2] * pulse[2]),
+                             (wm[3] * pulse[0] + wm[4] * pulse[1] + wm[5] * pulse[2]),
+                             (wm[6] * pulse[0] + wm[7] * pulse[1] + wm[8] * pulse[2])});
+  if (std::sqrt(dot(rest, rest)) <= kSlipNoise * std::sqrt(body_.g * size_)) return housner_impact(t, from, z);
+  set_vec_at(z, kVx, plus(v, scaled(impulse, 1.0 / body_.mass)));
+  set_vec_at(z, kWx, plus(w, inv * cross(arm, impulse)));
+  const Vec3 after = plus(vec_at(z, kVx), cross(vec_at(z, kWx), arm));
+  const double scale = std::fmax(std::sqrt(dot(v, v)), w_before * size_);
+  if (after[2] > kImpactLeaving * scale) {  // it bounces off (e > 0)
+    z[kWorkImpact] += energy(z) - before;
+    return {Mode{BodyContact::Flight}, false, int(Body3dEventKind::Impact)};
+  }
+  // The point stays: at rest (rocking on it, or rolling), or slipping the way the impulse left it.
+  const Vec3 slip{after[0], after[1], 0};
+  const double speed = std::sqrt(dot(slip, slip));
+  Mode next = rim_or_roll(z, p);
+  if (speed > kSlipNoise * std::sqrt(body_.g * size_)) {
+    next = roll_mode(z, true);
+    next.point_a = p;
+    next.slip_ref = scaled(slip, 1.0 / speed);
+  }
+  complete(next, z);
+  z[kWorkImpact] += energy(z) - before;  // the loss, and the height the contact's rounding gives up
+  if (!next.slips()) return after_impact(t, from, next, z, w_before);
+  const RimSlip rs = rim_slipping(t, next, z);
+  if (rs.force[2] < 0) return {Mode{BodyContact::Flight}, false, int(Body3dEventKind::Impact)};
+  if (!(rs.consistency > 0)) return {from, true, int(Body3dEventKind::Painleve)};
+  return {next, false, int(Body3dEventKind::Impact)};
+}
+
 Tr BodyOnGround::newton_impact(double t, const Mode& from, State& z) const {
   const Mat3 r = rotation(quat_at(z, S::kQw));
   const Vec3 x = vec_at(z, kX), v = vec_at(z, kVx), w = vec_at(z, kWx);
@@ -77,11 +135,7 @@ Tr BodyOnGround::newton_impact(double t, const Mode& from, State& z) const {
     if (z[kZ] + dot(r[2], corner(i)) <= kImpactTouch * size_) touching[n++] = i;
   // A base landing flat from flight: plastic, at rest (as Housner's law has it).
   if (n == 0 || (n >= 3 && from.contact == BodyContact::Flight)) return landed_flat(t, z);
-  // J^-1 in the world's axes: R diag(1/I) R^T.
-  Mat3 inv{};
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j)
-      for (int k = 0; k < 3; ++k) inv[i][j] += r[i][k] * r[j][k] / inertia_[std::size_t(k)];
+  const Mat3 inv = world_inverse_inertia(r);
   Vec3 arm[4];
   SpatialContactProblem pr;
   pr.n = n;

@@ -157,6 +157,7 @@ class BodyOnGround {
   static constexpr double kLoadTie = 1e-9;
   static constexpr double kImpactLeaving = 1e-9;
   static constexpr int kMaxRapid = 64;
+  static constexpr double kRimAccumulation = 1e-9;
 
   BodyOnGround(const Body3d& body, const GroundMotion3d& ground = {}, const BodyOnGroundOptions& opt = {});
 
@@ -219,6 +220,11 @@ class BodyOnGround {
   // Newton's and Coulomb's impact of a box (body_newton_impact.cpp): the impulses at the base
   // points that touch, then the contact they leave (its points sticking or slipping).
   Transition<Mode> newton_impact(double t, const Mode& from, State& z) const;
+  // The same for a cylinder's rim landing on a rim point: one point's impulse in Coulomb's cone
+  // (numerics/spatial_contact.hpp), then the rim point at rest, slipping, or bouncing off.
+  Transition<Mode> newton_rim_impact(double t, const Mode& from, State& z) const;
+  // J^-1 in the world's axes, R diag(1/I) R^T.
+  Mat3 world_inverse_inertia(const Mat3& r) const;
   // Housner's law in 3D: the new contact sticks, the angular momentum about it conserved.
   Transition<Mode> housner_impact(double t, const Mode& from, State& z) const;
   // After an impact: the contact's consistency (a pull: flight or a slip, else Painleve), the

@@ -156,7 +156,10 @@ Tr BodyOnGround::rim_side_change(double t, const Mode& m, State& z, int event) c
   if (m.impact_t >= 0 && t - m.impact_t <= kInstant * std::fmax(1.0, std::fabs(t)))
     return m.slips() ? landed_flat(t, z) : Tr{m, false, int(Body3dEventKind::SlipTurn)};
   // The tilt falls through it: the base lands about the rim point opposite the contact.
-  return impact(t, rim_mode(r, vec_at(z, kX), rim_point_before_landing(z)), z, kEvTouch0);
+  Mode landing = rim_mode(r, vec_at(z, kX), rim_point_before_landing(z));
+  landing.impact_t = m.impact_t;  // an accumulation's count carries through
+  landing.rapid_impacts = m.rapid_impacts;
+  return impact(t, landing, z, kEvTouch0);
 }
 
 void BodyOnGround::roll_complete(State& z) const {
