@@ -10,6 +10,8 @@
 // on with its points moving as the impulses left them. Where no impulses in the cones solve the
 // problem (Painleve at the impulse level: a slender body's edge landing sliding) the impulses are
 // the normal ones alone, the slip going on under Coulomb's friction at the acceleration level.
+// A cylinder's rim landing on a rim point: the same problem for that one point (sticking, it is
+// Housner's rim law; else the rim leaves slipping or bounces).
 #include <cmath>
 
 #include "blockdyn/model/rigid3d/body_on_ground.hpp"
