@@ -373,7 +373,9 @@ const std::vector<StudyOption>& rigid3d_options() {
         {"depth", "rigid3d: the box's depth along its e2 axis [m] (default: `width`)"},
         {"tilt-azimuth", "rigid3d: the side the body leans to at `tilt`, degrees from x towards y (default 0)"},
         {"yaw", "rigid3d: the body's e1 axis from x towards y [deg] (default 0)"},
-        {"velocity", "rigid3d: initial velocity VX,VY,VZ of the centroid [m/s] (with `lift`)"},
+        {"velocity",
+         "rigid3d: initial velocity VX,VY,VZ of the centroid [m/s], its own (in contact: points it moves along the "
+         "ground slip; without it the contact takes the velocities it allows)"},
         {"angular-velocity", "rigid3d: initial angular velocity WX,WY,WZ [rad/s] (world frame)"},
         {"lift", "rigid3d: start in flight this high above the ground [m] (default 0)"},
     };
