@@ -113,14 +113,14 @@ Tr BodyOnGround::mode_change(double t, const Mode& m, State& z, int event) const
 Tr BodyOnGround::impact(double t, const Mode& from, State& z, int event) const {
   const bool rapid = from.impact_t >= 0 && t - from.impact_t <= kInstant * std::fmax(1.0, std::fabs(t));
   const int rapid_impacts = rapid ? from.rapid_impacts + 1 : 0;
-  // Impacts taking turns at one instant with the base flat (a box's opposite edges, each impact
-  // driving the other down): the base lands flat, plastic on the whole base.
   // A cylinder's rim landing again within kRimAccumulation sqrt(size / g) of its last landing (an
   // accumulation of landings shrinking geometrically, the base within 1e-7 rad of flat at each):
   // the base lands flat, the accumulation's last swings (shorter together than that) skipped.
   if (body_.shape == BodyShape3d::Cylinder && from.impact_t >= 0 &&
       t - from.impact_t < kRimAccumulation * std::sqrt(size_ / body_.g))
     return landed_flat(t, z);
+  // Impacts taking turns at one instant with the base flat (a box's opposite edges, each impact
+  // driving the other down): the base lands flat, plastic on the whole base.
   if (rapid && body_.shape == BodyShape3d::Box) {
     const Mat3 r = rotation(quat_at(z, S::kQw));
     int flat = 0;

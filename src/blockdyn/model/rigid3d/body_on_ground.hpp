@@ -157,6 +157,8 @@ class BodyOnGround {
   static constexpr double kLoadTie = 1e-9;
   static constexpr double kImpactLeaving = 1e-9;
   static constexpr int kMaxRapid = 64;
+  // A cylinder's rim landing again this soon after its last landing (in sqrt(size / g)): the
+  // landings accumulate, the base lands flat (body_impact.cpp).
   static constexpr double kRimAccumulation = 1e-9;
 
   BodyOnGround(const Body3d& body, const GroundMotion3d& ground = {}, const BodyOnGroundOptions& opt = {});
@@ -279,8 +281,9 @@ class BodyOnGround {
   // A rim contact at rest at z on the rim point `point` (body frame): rocking on it, or rolling if
   // the body turns about more than its tangent (above kRollStart sqrt(g / size)).
   Mode rim_or_roll(const State& z, const Vec3& point) const;
-  // The time the rim's tilt towards m's reference side, extrapolated linearly, takes to reach
-  // zero (the base flat, where the contact jumps sides: a kink), or infinity.
+  // The time the rim's tilt towards m's reference side, extrapolated linearly, takes to reach half
+  // the landing's tilt (just before the base passes flat, where the contact jumps sides: a kink),
+  // or infinity.
   double rim_flat_ahead(const Mode& m, const State& z) const;
   static constexpr double kRollStart = 1e-12;
   void rim_side_events(const Mode& m, const Mat3& r, std::array<double, kNumEvents>& g) const;
