@@ -8,6 +8,9 @@
 
 namespace blockdyn::test {
 
+// Standard gravity (m/s^2), the bodies' default g.
+inline constexpr double kG = 9.81;
+
 inline BodyOnGroundOptions friction(double mu_s, double mu_k) {
   BodyOnGroundOptions o;
   o.mu_s = mu_s;

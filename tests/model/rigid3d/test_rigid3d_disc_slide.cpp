@@ -30,7 +30,7 @@ using blockdyn::test::balance_error;
 using blockdyn::test::friction;
 using blockdyn::test::times_of;
 
-constexpr double kG = 9.81;
+using blockdyn::test::kG;
 
 // The mean friction direction and twist over the unit disc by a midpoint sum on a polar grid about
 // its centre (n rings): independent of the closed forms, accurate to about 1/n^2 away from the

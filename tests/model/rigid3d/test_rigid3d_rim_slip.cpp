@@ -22,7 +22,7 @@ using blockdyn::BodyContact;
 using blockdyn::BodyOnGround;
 using blockdyn::Vec3;
 
-constexpr double kG = 9.81;
+using blockdyn::test::kG;
 constexpr double kA = 0.2, kH = 1.0, kC = 0.5;  // radius, height, half height (m)
 
 BodyOnGround cylinder(double mu, const blockdyn::GroundMotion3d& g = {}) {

@@ -24,7 +24,7 @@ using blockdyn::Mat3;
 using blockdyn::Vec3;
 using blockdyn::operator*;
 
-constexpr double kG = 9.81;
+using blockdyn::test::kG;
 
 struct Wobble {
   double omega;  // the precession rate (rad/s)

@@ -29,11 +29,8 @@ using blockdyn::test::balance_error;
 using blockdyn::test::friction;
 using blockdyn::test::times_of;
 
-constexpr double kG = 9.81;
-
-Body3dResult slide_run(const BodyOnGround& m, const blockdyn::Body3dStart& s, double t_end) {
-  return blockdyn::test::run_body(m, s, t_end);
-}
+using blockdyn::test::kG;
+using blockdyn::test::run_body;
 
 GroundMotion3d rect_pulse(double a, double duration, double azimuth_deg) {
   GroundMotion3d g;
@@ -54,7 +51,7 @@ TEST(Rigid3dSlide, RectangularPulseSlidesInClosedForm) {
   const double A = 0.4, T = 0.5, mu_s = 0.3, mu_k = 0.25;
   for (double az : {0.0, 37.0, 90.0, -120.0}) {
     const BodyOnGround m(blockdyn::box_body(1.0, 0.8, 1.2, 500), rect_pulse(A, T, az), friction(mu_s, mu_k));
-    const Body3dResult r = slide_run(m, {}, 2.0);
+    const Body3dResult r = run_body(m, {}, 2.0);
     ASSERT_EQ(r.status, blockdyn::SimStatus::TEnd) << r.note;
     const auto sticks = times_of(r, Body3dEventKind::Stick);
     ASSERT_EQ(sticks.size(), 1u) << az;
@@ -82,7 +79,7 @@ TEST(Rigid3dSlide, APulseBeyondTheRockingThresholdOnLowFrictionSlidesFlat) {
   const double A = 0.9, T = 0.5, mu = 0.3;
   for (double az : {0.0, 30.0}) {
     const BodyOnGround m(blockdyn::box_body(1.0, 1.0, 1.2, 500), rect_pulse(A, T, az), friction(mu, mu));
-    const Body3dResult r = slide_run(m, {}, 4.0);
+    const Body3dResult r = run_body(m, {}, 4.0);
     ASSERT_EQ(r.status, blockdyn::SimStatus::TEnd) << r.note;
     const auto sticks = times_of(r, Body3dEventKind::Stick);
     ASSERT_EQ(sticks.size(), 1u) << az;
@@ -105,7 +102,7 @@ TEST(Rigid3dSlide, ABaseLandingFlatWhileMovingSlidesOnWithCoulombsImpulse) {
   blockdyn::Body3dStart s;
   s.lift = lift;
   s.velocity = {v0 * std::cos(az), v0 * std::sin(az), 0};
-  const Body3dResult r = slide_run(m, s, 1.0);
+  const Body3dResult r = run_body(m, s, 1.0);
   ASSERT_EQ(r.status, blockdyn::SimStatus::TEnd) << r.note;
   const double t_land = std::sqrt(2 * lift / kG), fall = kG * t_land, v1 = v0 - mu * fall;
   ASSERT_GE(r.events.size(), 2u);
@@ -133,7 +130,7 @@ TEST(Rigid3dSlide, PlanarLimitIsTheThreeDofBlock) {
   g3.h.amplitude = A;
   g3.h.frequency = f;
   const BodyOnGround m(blockdyn::box_body(b, d, h, 500), g3, friction(mu_s, mu_k));
-  const Body3dResult r = slide_run(m, {}, t_end);
+  const Body3dResult r = run_body(m, {}, t_end);
   ASSERT_EQ(r.status, blockdyn::SimStatus::TEnd) << r.note;
 
   blockdyn::GroundMotion g2;
@@ -169,7 +166,7 @@ TEST(Rigid3dSlide, SpinDecaysAtTheCornersTorque) {
   const BodyOnGround m(blockdyn::box_body(b, b, h, mass), {}, friction(mu, mu));
   blockdyn::Body3dStart s;
   s.angular_velocity = {0, 0, w0};
-  const Body3dResult r = slide_run(m, s, 2.0);
+  const Body3dResult r = run_body(m, s, 2.0);
   ASSERT_EQ(r.status, blockdyn::SimStatus::TEnd) << r.note;
   const double rho = b / std::sqrt(2.0), iz = mass * (b * b + b * b) / 12, t_stop = iz * w0 / (mu * mass * kG * rho);
   const auto sticks = times_of(r, Body3dEventKind::Stick);
@@ -194,9 +191,9 @@ TEST(Rigid3dSlide, SquareBaseRotatedMotionGivesTheRotatedSlide) {
     return g;
   };
   const Body3dResult r0 =
-      slide_run(BodyOnGround(blockdyn::box_body(0.9, 0.9, 1.0, 300), motion(0), friction(0.3, 0.25)), {}, 3);
+      run_body(BodyOnGround(blockdyn::box_body(0.9, 0.9, 1.0, 300), motion(0), friction(0.3, 0.25)), {}, 3);
   const Body3dResult r90 =
-      slide_run(BodyOnGround(blockdyn::box_body(0.9, 0.9, 1.0, 300), motion(90), friction(0.3, 0.25)), {}, 3);
+      run_body(BodyOnGround(blockdyn::box_body(0.9, 0.9, 1.0, 300), motion(90), friction(0.3, 0.25)), {}, 3);
   ASSERT_EQ(r0.status, blockdyn::SimStatus::TEnd) << r0.note;
   ASSERT_EQ(r90.status, blockdyn::SimStatus::TEnd) << r90.note;
   EXPECT_GT(r0.max_slide, 0.05);
@@ -216,7 +213,7 @@ TEST(Rigid3dSlide, CircularMotionSlidesRoundWithItsBalanceClosed) {
   g.h2.frequency = 1.0;
   g.h2.phase = 0.5 * M_PI;
   const BodyOnGround m(blockdyn::box_body(1.0, 0.7, 1.2, 400), g, friction(0.3, 0.25));
-  const Body3dResult r = slide_run(m, {}, 5.0);
+  const Body3dResult r = run_body(m, {}, 5.0);
   ASSERT_EQ(r.status, blockdyn::SimStatus::TEnd) << r.note;
   EXPECT_GT(r.max_slide, 0.1);
   EXPECT_TRUE(times_of(r, Body3dEventKind::Stick).empty());  // it never stops

@@ -32,7 +32,7 @@ using blockdyn::test::friction;
 
 using blockdyn::operator*;
 
-constexpr double kG = 9.81;
+using blockdyn::test::kG;
 
 Body3dResult released(const BodyOnGround& m, double tilt, double azimuth, double t_end, double rtol = 1e-12) {
   blockdyn::Body3dStart s;

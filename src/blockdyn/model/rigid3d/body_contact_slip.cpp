@@ -299,9 +299,7 @@ bool BodyOnGround::consistent_contact(double t, const Mode& m, const State& z, i
     State dz{};
     rhs(t, m, z, dz);
     const Mat3 r = rotation(quat_at(z, S::kQw));
-    const Vec3 arm = r * corner(lifted), w = vec_at(z, kWx);
-    const Vec3 a = plus(vec_at(dz, kVx), plus(cross(vec_at(dz, kWx), arm), cross(w, cross(w, arm))));
-    if (a[2] < -kLoadTie * body_.g) return false;
+    if (point_acceleration(z, dz, r * corner(lifted))[2] < -kLoadTie * body_.g) return false;
   }
   return true;
 }
@@ -310,13 +308,11 @@ bool BodyOnGround::flat_corners_rise(double t, const Mode& m, const State& z) co
   State dz{};
   rhs(t, m, z, dz);
   const Mat3 r = rotation(quat_at(z, S::kQw));
-  const Vec3 w = vec_at(z, kWx);
   for (int i = 0; i < 4; ++i) {
     if (i == m.corner_a || i == m.corner_b) continue;
     const Vec3 arm = r * corner(i);
     if (z[kZ] + arm[2] > kFlatTouch * size_) continue;
-    const Vec3 a = plus(vec_at(dz, kVx), plus(cross(vec_at(dz, kWx), arm), cross(w, cross(w, arm))));
-    if (a[2] < -kLoadTie * body_.g) return false;
+    if (point_acceleration(z, dz, arm)[2] < -kLoadTie * body_.g) return false;
   }
   return true;
 }

@@ -53,8 +53,7 @@ Tr BodyOnGround::landed_flat(double t, State& z) const {
     set_vec_at(z, kVx, {keep * v[0], keep * v[1], 0});
     set_vec_at(z, kWx, {0, 0, z[kWz]});
     z[kWorkImpact] += energy(z) - before;
-    const Vec3 u = slip_of(z);
-    return {slide_mode(z, scaled(u, 1.0 / std::sqrt(dot(u, u)))), false, int(Body3dEventKind::Impact)};
+    return {sliding(z), false, int(Body3dEventKind::Impact)};
   }
   Tr tr = settle(t, z);
   if (!tr.stop && tr.kind == int(Body3dEventKind::Rest)) tr.kind = int(Body3dEventKind::Impact);
@@ -201,9 +200,7 @@ Tr BodyOnGround::after_impact(double t, const Mode& from, const Mode& next, Stat
     Mode flight{BodyContact::Flight};
     State d;
     rhs(t, flight, z, d);
-    const Vec3 arm = minus(next.pivot, vec_at(z, kX));
-    const Vec3 w = vec_at(z, kWx);
-    const double a_contact = (plus(vec_at(d, kVx), plus(cross(vec_at(d, kWx), arm), cross(w, cross(w, arm)))))[2];
+    const double a_contact = point_acceleration(z, d, minus(next.pivot, vec_at(z, kX)))[2];
     if (a_contact >= 0) return {flight, false, int(Body3dEventKind::Impact)};
     const Tr slip = stick_or_slip(t, next, z, int(Body3dEventKind::Impact), false);
     return slip.stop || !slip.next.slips() ? Tr{from, true, int(Body3dEventKind::Painleve)} : slip;

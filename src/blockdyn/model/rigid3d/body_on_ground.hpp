@@ -357,6 +357,14 @@ class BodyOnGround {
   // Whether a corner of the contact m would move into the ground in flight (its acceleration
   // without the contact's forces pointing down).
   bool sinks_in_flight(double t, const Mode& m, const State& z) const;
+  // The acceleration of the body point at `arm` (world, from the centroid) given z and its rates dz.
+  Vec3 point_acceleration(const State& z, const State& dz, const Vec3& arm) const;
+  // The rate of the world's up seen in the body frame, d(R^T Z)/dt = -(R^T omega) x R^T Z.
+  Vec3 up_rate(const Mat3& r, const State& z) const;
+  // A start's slip below this (m/s) friction would stop at once (kInstantSlip sqrt(size / g) at mu_k g).
+  double instant_slip() const;
+  // Flat and moving along the ground: sliding that way (its slip's generalised velocity nonzero).
+  Mode sliding(const State& z) const;
   // Whether friction would stop a start's slipping contact m at once (a sticking contact's limit).
   bool slip_stops_at_once(const Mode& m, const State& z) const;
   // A start on the rim with its rim point moving along the ground: the rim slipping that way, if

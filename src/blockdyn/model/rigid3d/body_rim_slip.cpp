@@ -106,7 +106,7 @@ std::optional<BodyOnGroundMode> BodyOnGround::moving_rim(double t, const State& 
   m.slip_ref = {1, 0, 0};
   const Vec3 u = rim_slipping(t, m, z).slip;
   const double speed = std::sqrt(dot(u, u));
-  if (speed < kInstantSlip * std::sqrt(size_ / body_.g) * mu_k_ * body_.g) return std::nullopt;
+  if (speed < instant_slip()) return std::nullopt;
   m.slip_ref = scaled(u, 1.0 / speed);
   const RimSlip rs = rim_slipping(t, m, z);
   if (!(rs.consistency > 0) || rs.force[2] < -kRimTie * body_.mass * body_.g) return std::nullopt;

@@ -57,7 +57,7 @@ double BodyOnGround::rim_flat_ahead(const Mode& m, const State& z) const {
   // comes just before): its tilt towards the reference side, d/dt of R^T Z = -Omega x R^T Z,
   // extrapolated linearly.
   const Mat3 r = rotation(quat_at(z, S::kQw));
-  const Vec3 up{r[2][0], r[2][1], r[2][2]}, du = scaled(cross(transposed_times(r, vec_at(z, kWx)), up), -1.0);
+  const Vec3 du = up_rate(r, z);
   const double along = tilt_towards(r, m.point_a, body_.radius);
   const double rate = -(du[0] * m.point_a[0] + du[1] * m.point_a[1]) / body_.radius;
   // Aimed at half the landing's tilt: the step ends before the kink, the landing in the next.
@@ -122,8 +122,7 @@ Vec3 BodyOnGround::rim_point_before_landing(const State& z) const {
   // Near the landing w = R^T Z passes through zero at the rate dw/dt = -Omega x u: the contact was
   // on the side the axis came from, along dw/dt.
   const Mat3 r = rotation(quat_at(z, S::kQw));
-  const Vec3 u{r[2][0], r[2][1], r[2][2]}, om = transposed_times(r, vec_at(z, kWx));
-  const Vec3 dw = scaled(cross(om, u), -1.0);
+  const Vec3 dw = up_rate(r, z);
   const double n = std::hypot(dw[0], dw[1]);
   if (!(n > 0)) return rim_lowest_point(body_.radius, body_.half_height(), r);
   return {body_.radius * dw[0] / n, body_.radius * dw[1] / n, -body_.half_height()};
@@ -147,8 +146,7 @@ Tr BodyOnGround::rim_side_change(double t, const Mode& m, State& z, int event) c
     return {next, false, int(Body3dEventKind::SlipTurn)};
   }
   // Rising through the landing's tilt (after a landing, or slipping up from flat): no event.
-  const Vec3 u{r[2][0], r[2][1], r[2][2]}, om = transposed_times(r, vec_at(z, kWx));
-  const Vec3 dw = scaled(cross(om, u), -1.0);
+  const Vec3 dw = up_rate(r, z);
   if (-(dw[0] * m.point_a[0] + dw[1] * m.point_a[1]) > 0) return {m, false, int(Body3dEventKind::SlipTurn)};
   // Falling through it at the landing's own instant (to its rounding) with the new contact slipping: the landing
   // about the opposite point left the other side coming down too (a base landing all but flat):

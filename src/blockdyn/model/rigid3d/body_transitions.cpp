@@ -72,17 +72,29 @@ bool BodyOnGround::pulls_away(double t, const Mode& m, const State& z) const {
   return g[kEvLiftOff] < 0;
 }
 
+Vec3 BodyOnGround::point_acceleration(const State& z, const State& dz, const Vec3& arm) const {
+  const Vec3 w = vec_at(z, kWx);
+  return plus(vec_at(dz, kVx), plus(cross(vec_at(dz, kWx), arm), cross(w, cross(w, arm))));
+}
+
+Vec3 BodyOnGround::up_rate(const Mat3& r, const State& z) const {
+  const Vec3 up{r[2][0], r[2][1], r[2][2]};
+  return scaled(cross(transposed_times(r, vec_at(z, kWx)), up), -1.0);
+}
+
+double BodyOnGround::instant_slip() const { return kInstantSlip * std::sqrt(size_ / body_.g) * mu_k_ * body_.g; }
+
+BodyOnGroundMode BodyOnGround::sliding(const State& z) const {
+  const Vec3 u = slip_of(z);
+  return slide_mode(z, scaled(u, 1.0 / std::sqrt(dot(u, u))));
+}
+
 bool BodyOnGround::sinks_in_flight(double t, const Mode& m, const State& z) const {
   State dz{};
   rhs(t, Mode{BodyContact::Flight}, z, dz);
   const Mat3 r = rotation(quat_at(z, S::kQw));
-  const Vec3 w = vec_at(z, kWx);
-  for (int i : {m.corner_a, m.corner_b}) {
-    if (i < 0) continue;
-    const Vec3 arm = r * corner(i);
-    const Vec3 a = plus(vec_at(dz, kVx), plus(cross(vec_at(dz, kWx), arm), cross(w, cross(w, arm))));
-    if (a[2] < -kLoadTie * body_.g) return true;
-  }
+  for (int i : {m.corner_a, m.corner_b})
+    if (i >= 0 && point_acceleration(z, dz, r * corner(i))[2] < -kLoadTie * body_.g) return true;
   return false;
 }
 
@@ -102,7 +114,7 @@ BodyOnGroundMode BodyOnGround::mode_of(double t, const State& z, bool slipping) 
     if (r[2][2] >= 1 - 1e-15) {
       // Standing flat and moving along the ground: sliding.
       const Vec3 u = slip_of(z);
-      return dot(u, u) > 0 ? slide_mode(z, scaled(u, 1.0 / std::sqrt(dot(u, u)))) : rest;
+      return dot(u, u) > 0 ? sliding(z) : rest;
     }
     const Mode held = rim_or_roll(z, lowest_point(body_, r).body);
     // Its rim point moving along the ground: it slips from the start (unless friction would stop
@@ -117,7 +129,7 @@ BodyOnGroundMode BodyOnGround::mode_of(double t, const State& z, bool slipping) 
   if (touching.size() >= 3) {
     // Standing flat and moving along the ground: sliding.
     const Vec3 u = slip_of(z);
-    if (dot(u, u) > 0) return slide_mode(z, scaled(u, 1.0 / std::sqrt(dot(u, u))));
+    if (dot(u, u) > 0) return sliding(z);
     return rest;
   }
   const Mode contact = touching.size() == 2
@@ -148,7 +160,7 @@ bool BodyOnGround::slip_stops_at_once(const Mode& m, const State& z) const {
   const ContactSlip c = contact_slip_of(m, z);
   const double fastest =
       std::fmax(std::sqrt(dot(c.slip[0], c.slip[0])), c.points.n > 1 ? std::sqrt(dot(c.slip[1], c.slip[1])) : 0.0);
-  return fastest < kInstantSlip * std::sqrt(size_ / body_.g) * mu_k_ * body_.g;
+  return fastest < instant_slip();
 }
 
 std::string BodyOnGround::stop_reason(const Mode& from, int event, Body3dEventKind kind) {
