@@ -173,7 +173,11 @@ py::list run_many(std::size_t count, int threads, const std::function<void(std::
   auto convert = [&](std::size_t i) {
     if (errors[i]) return;
     py::gil_scoped_acquire hold;
-    made[i] = to_python(outs[i]);
+    try {
+      made[i] = to_python(outs[i]);
+    } catch (...) {
+      errors[i] = std::current_exception();  // raised once the workers are joined
+    }
     outs[i].table = ColumnTable{};  // the columns are in the arrays now
   };
   {
