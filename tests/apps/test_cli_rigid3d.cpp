@@ -181,6 +181,83 @@ TEST(CliRigid3d, ACylinderLeavesRestUnderTwoDifferentComponents) {
   }
 }
 
+TEST(CliRigid3d, APainleveSpanIsSteppedAcrossOrStopsTheRun) {
+  // A square column under twice a record along x and across it (mu 0.7): its sticking edge reaches
+  // a state where no contact state is consistent. By default Moreau-Jean steps cross that span and
+  // the run goes on to its end; `--painleve stop` ends it there, invalid, with the reason.
+  TmpDir d("rigid3d_painleve");
+  const std::string rec = std::string(BLOCKDYN_SOURCE_DIR) + "/tests/fixtures/synthetic_60s.AT2";
+  const std::vector<std::string> run{"simulate", "--model",
+                                     "rigid3d",  "--width",
+                                     "0.4",      "--height",
+                                     "1.2",      "--mass",
+                                     "300",      "--mu-s",
+                                     "0.7",      "--impact",
+                                     "housner",  "--t-end",
+                                     "6",        "--ground-azimuth",
+                                     "30",       "--ground-h-record",
+                                     rec,        "--ground-h-scale",
+                                     "2.5",      "--ground-h2-record",
+                                     rec,        "--json"};
+  const auto stepped = run_cli(run, d.path);
+  ASSERT_EQ(stepped.code, 0) << stepped.err;
+  const json a = json::parse(stepped.out);
+  EXPECT_EQ(a["status"], "t_end") << a["stop_reason"];
+  EXPECT_EQ(a["painleve"]["treatment"], "step");
+  EXPECT_GE(a["painleve"]["spans"].get<int>(), 1);
+  EXPECT_GT(a["painleve"]["steps"].get<int>(), 0);
+  EXPECT_LT(a["max_abs_energy_error"].get<double>(), 1e-9 * 300 * 9.81 * 1.2);
+  const auto stopped = run_cli(joined(run, {"--painleve", "stop"}), d.path);
+  ASSERT_EQ(stopped.code, 0) << stopped.err;
+  const json b = json::parse(stopped.out);
+  EXPECT_EQ(b["status"], "invalid");
+  EXPECT_NE(b["stop_reason"].get<std::string>().find("Painleve"), std::string::npos);
+  EXPECT_EQ(b["painleve"]["spans"], 0);
+  EXPECT_EQ(b["painleve"]["step"], nullptr);
+}
+
+TEST(CliRigid3d, AnEdgeAndACornerTakingTurnsAreSteppedAcrossToo) {
+  // A square column under three times a generated two-component record (mu 0.7): a Painleve span at
+  // 2.69 s, then at 3.41 s a slipping corner whose mode changes repeatedly at one instant (the
+  // contact of both at once is not in the events' catalogue: this stopped the run). The time
+  // steps cross both and the run reaches its end, the balance closed.
+  TmpDir d("rigid3d_turns");
+  const auto gen = run_cli({"motion",  "generate",   "--components", "2",       "--count", "8",       "--arias",
+                            "1.5",     "--h2-arias", "0.8",          "--d5-95", "8",       "--t-mid", "5",
+                            "--f-mid", "2.5",        "--t-end",      "15",      "--out",   "suite",   "--quiet"},
+                           d.path);
+  ASSERT_EQ(gen.code, 0) << gen.err;
+  const auto r = run_cli({"simulate",
+                          "--model",
+                          "rigid3d",
+                          "--width",
+                          "0.4",
+                          "--height",
+                          "1.2",
+                          "--mu-s",
+                          "0.7",
+                          "--t-end",
+                          "3.5",
+                          "--ground-h-record",
+                          "suite/rezaeian_0008_h1.AT2",
+                          "--ground-h-scale",
+                          "3",
+                          "--ground-h2-record",
+                          "suite/rezaeian_0008_h2.AT2",
+                          "--ground-h2-scale",
+                          "3",
+                          "--json"},
+                         d.path);
+  ASSERT_EQ(r.code, 0) << r.err;
+  const json j = json::parse(r.out);
+  EXPECT_EQ(j["status"], "t_end") << j["stop_reason"];
+  EXPECT_EQ(j["painleve"]["spans"], 2);
+  int turns = 0;
+  for (const json& e : j["events"]) turns += e["kind"] == "not_modelled";
+  EXPECT_EQ(turns, 1);
+  EXPECT_LT(j["max_abs_energy_error"].get<double>(), 1e-9 * 100 * 9.81 * 1.2);
+}
+
 TEST(CliRigid3d, UsageErrorsNameTheOption) {
   TmpDir d("rigid3d_usage");
   const std::vector<std::string> m{"simulate", "--model", "rigid3d"};
@@ -192,7 +269,11 @@ TEST(CliRigid3d, UsageErrorsNameTheOption) {
                        {joined(m, {"--width", "-1"}), "width"},
                        {joined(m, {"--mu-k", "-0.3"}), "mu-k"},
                        {joined(m, {"--mass", "1", "--density", "2000"}), "--density"},
-                       {joined(m, {"--ground-h2-amplitude", "0.3", "--ground-h2-pulse", "wave"}), "--ground-h2-pulse"}},
+                       {joined(m, {"--ground-h2-amplitude", "0.3", "--ground-h2-pulse", "wave"}), "--ground-h2-pulse"},
+                       {joined(m, {"--painleve", "maybe"}), "--painleve"},
+                       {joined(m, {"--painleve-step", "0"}), "painleve-step"},
+                       {joined(m, {"--painleve", "stop", "--painleve-step", "1e-6"}), "--painleve-step"},
+                       {{"simulate", "--model", "housner", "--painleve", "stop"}, "--painleve"}},
                       d.path);
 }
 

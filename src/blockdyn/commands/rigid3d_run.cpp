@@ -137,6 +137,15 @@ Rigid3dSetup rigid3d_from(const Settings& s) {
   // A velocity given is the body's own: contact points it moves along the ground slip from t = 0
   // (as the planar families' vx0); without one the contact takes the velocities it allows.
   r.run.slip_start = s.has("velocity");
+  if (s.has("painleve")) {
+    const std::string p = s.text("painleve");
+    if (p != "step" && p != "stop") throw std::invalid_argument("`painleve` = '" + p + "' is not one of: step, stop");
+    r.run.painleve_steps = p == "step";
+  }
+  r.run.painleve_step = s.number("painleve-step", 0);
+  if (s.has("painleve-step")) require_in_range("painleve-step", r.run.painleve_step, 0, 1e-2, false);
+  if (s.has("painleve-step") && !r.run.painleve_steps)
+    throw std::invalid_argument("`painleve-step` is the Moreau-Jean step of `painleve` step, not of stop");
   return r;
 }
 
@@ -296,6 +305,14 @@ json summary_json(const Rigid3dSetup& s, const BodyOnGround& m, const Body3dResu
           {"output_interval", s.run.output_interval},
           {"integrator", to_json(s.run.integ)},
           {"steps", r.stats.accepted},
+          {"painleve",
+           {{"treatment", s.run.painleve_steps ? "step" : "stop"},
+            {"step", s.run.painleve_steps ? json(s.run.painleve_step > 0 ? s.run.painleve_step
+                                                                         : kPainleveStep * std::sqrt(m.size() / b.g))
+                                          : json(nullptr)},
+            {"spans", r.painleve_spans},
+            {"time", r.painleve_time},
+            {"steps", r.painleve_steps}}},
           {"events", json::array()},
           {"run", run_info()}};
 }
@@ -378,6 +395,12 @@ const std::vector<StudyOption>& rigid3d_options() {
          "ground slip; without it the contact takes the velocities it allows)"},
         {"angular-velocity", "rigid3d: initial angular velocity WX,WY,WZ [rad/s] (world frame)"},
         {"lift", "rigid3d: start in flight this high above the ground [m] (default 0)"},
+        {"painleve",
+         "rigid3d: where no contact state is consistent (a box: Painleve, or an edge and a corner taking turns at one "
+         "instant): step (Moreau-Jean steps across the span, then the events again) or stop (the run ends there, "
+         "invalid)",
+         "step"},
+        {"painleve-step", "rigid3d: the Moreau-Jean step across a Painleve span [s] (default 1e-6 sqrt(size / g))"},
     };
     for (const StudyOption& g : ground_3d_options()) v.push_back(g);
     return v;

@@ -40,6 +40,9 @@ class Body3dWatch final : public Observer<Model> {
   // where that point was when the current slip began.
   Model::Mode current{};
   Vec3 slid{}, slip_from{};
+  // The last leg stopped where no contact state is consistent: Painleve, or modes taking turns at
+  // one instant (an edge and a corner, impacts that do not end).
+  bool inconsistent = false;
   static bool slipping(const Model::Mode& m) {
     return m.contact == BodyContact::Slide ||
            ((m.contact == BodyContact::Line || m.contact == BodyContact::Point || m.contact == BodyContact::Roll) &&
@@ -59,6 +62,13 @@ class Body3dWatch final : public Observer<Model> {
 
   void row(double t, const Model::Mode& m, const Model::State& z, const char* event = nullptr) const {
     if (o.on_sample) o.on_sample({t, m, z, event});
+  }
+  // A time step's end (Moreau-Jean): a row where the output clock or every step asks for one.
+  void step_rows(double t, const Model::Mode& m, const Model::State& z) {
+    if (!o.on_sample) return;
+    bool due = o.rows_every_step;
+    for (; o.output_interval > 0 && next_row <= t; next_row += o.output_interval) due = true;
+    if (due) row(t, m, z);
   }
   void track(double t, const Model::State& z, bool energy = true) {
     if (energy)
@@ -137,6 +147,7 @@ class Body3dWatch final : public Observer<Model> {
       res.overturn_azimuth = tilt_azimuth_deg(e.z);
     }
     if (e.stop) res.note = Model::stop_reason(e.from, e.index, kind);
+    inconsistent = e.stop && (kind == Body3dEventKind::Painleve || kind == Body3dEventKind::NotModelled);
     slide_changes(e.from, e.to, e.z);
     const Body3dEventRecord rec{{e.t, kind}, e.from.contact, e.to.contact, e.from.slipping, e.to.slipping, e.z};
     ++res.event_count;
@@ -149,6 +160,69 @@ class Body3dWatch final : public Observer<Model> {
     return true;
   }
 };
+
+// Steps with the same corners loaded before the contact they make may take over (not inside a
+// sequence of the steps' own contact changes).
+constexpr long kPainleveQuietSteps = 10;
+
+void add(StepperStats& a, const StepperStats& b) {
+  a.accepted += b.accepted;
+  a.rejected += b.rejected;
+  a.rhs_evals += b.rhs_evals;
+  a.stiff_steps += b.stiff_steps;
+  a.rejected_at_restart += b.rejected_at_restart;
+}
+
+// Moreau-Jean steps from the Painleve state (t, mode, z) until the contact they leave loaded is
+// consistent (true: the events take over from (t, mode, z)); false where the run ends inside the
+// span: at t_end, overturned, or (invalid, res.note says why) the steps fail or the span's limit.
+bool cross_painleve_span(const Model& model, const Body3dRunOptions& o, Body3dWatch& watch, Body3dResult& res,
+                         double& t, Model::Mode& mode, Model::State& z) {
+  const double unit = std::sqrt(model.size() / model.body().g);
+  const double h = o.painleve_step > 0 ? o.painleve_step : kPainleveStep * unit;
+  const double t0 = t;
+  const std::string why = res.note;
+  res.note.clear();
+  ++res.painleve_spans;
+  auto event = [&](Body3dEventKind kind, const Model::Mode& to, bool stop) {
+    const EventInfo<Model::Mode, Model::kDim> e{t, z, z, mode, to, -1, int(kind), stop};
+    watch.on_event(model, e);
+  };
+  // The step ends are t0 + k h exactly (the last one cut at t_end).
+  unsigned last_loaded = 0;
+  long quiet = 0;
+  for (long k = 1; t < o.t_end; ++k) {
+    const double t1 = std::fmin(t0 + double(k) * h, o.t_end);
+    const Model::TimeStep step = model.time_step(t, t1 - t, z);
+    res.painleve_time += t1 - t;
+    t = t1;
+    ++res.painleve_steps;
+    if (!step.solved) {
+      res.note = why + "; no impulses solve the Moreau-Jean step's contact problem at t = " + number_text(t, 12) + " s";
+      return false;
+    }
+    watch.step_rows(t, mode, z);
+    watch.track(t, z);
+    if (rotation({z[Model::kQw], z[Model::kQx], z[Model::kQy], z[Model::kQz]})[2][2] <= 0) {
+      event(Body3dEventKind::Overturn, Model::Mode{BodyContact::Flight}, true);
+      return false;
+    }
+    quiet = step.loaded == last_loaded ? quiet + 1 : 0;
+    last_loaded = step.loaded;
+    if (quiet >= kPainleveQuietSteps)
+      if (const auto next = model.resume_contact(t, z, step.loaded)) {
+        event(Body3dEventKind(next->kind), next->next, false);
+        mode = next->next;
+        return true;
+      }
+    if (t - t0 > kPainleveSpan * unit) {
+      res.note = why + "; Moreau-Jean steps of " + number_text(h, 6) + " s across it found no consistent contact in " +
+                 number_text(t - t0, 6) + " s";
+      return false;
+    }
+  }
+  return false;
+}
 
 }  // namespace
 
@@ -189,12 +263,20 @@ Body3dResult simulate_body3d(const BodyOnGround& model, BodyOnGround::State z, c
     if (Body3dWatch::slipping(start.next)) res.first_slide_time = 0;
     watch.slide_changes(Model::Mode{}, start.next, z);
     mode = start.next;
-    Simulation<Model> sim(model, o.integ, t, mode, z);
-    res.run_status = sim.advance(o.t_end, watch);
-    res.stats = sim.stats();
-    t = sim.t();
-    mode = sim.mode();
-    z = sim.state();
+    // Event-driven legs; a box's inconsistent contact is crossed by Moreau-Jean steps between them.
+    for (;;) {
+      Simulation<Model> sim(model, o.integ, t, mode, z);
+      res.run_status = sim.advance(o.t_end, watch);
+      add(res.stats, sim.stats());
+      t = sim.t();
+      mode = sim.mode();
+      z = sim.state();
+      if (!watch.inconsistent || !o.painleve_steps || model.body().shape != BodyShape3d::Box) break;
+      watch.inconsistent = false;
+      if (cross_painleve_span(model, o, watch, res, t, mode, z)) continue;
+      if (res.note.empty()) res.run_status = RunStatus::ReachedEnd;
+      break;
+    }
     res.status = res.overturn_time >= 0                    ? SimStatus::Overturned
                  : res.run_status == RunStatus::ReachedEnd ? SimStatus::TEnd
                                                            : SimStatus::Invalid;

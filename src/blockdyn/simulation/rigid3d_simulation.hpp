@@ -41,7 +41,17 @@ struct Body3dRunOptions {
   std::function<void(const Body3dSample&)> on_sample;  // rows (null: none)
   EventSink<Body3dEventRecord>* events = nullptr;      // as they happen (null: kept in the result)
   long max_events = 1'000'000;  // kept in the result's list (a run's memory bounded); further ones counted only
+  // Where no contact state is consistent at the acceleration level (Painleve; or an edge and a
+  // corner taking turns at one instant, impacts that do not end), a box's run goes on by
+  // Moreau-Jean steps of this length (s; 0: kPainleveStep sqrt(size / g)) until the contact the
+  // steps leave is consistent (BodyOnGround::time_step); false: the run stops there (invalid).
+  bool painleve_steps = true;
+  double painleve_step = 0;
 };
+
+// The default Moreau-Jean step across a Painleve span, and the longest span (in sqrt(size / g)).
+inline constexpr double kPainleveStep = 1e-6;
+inline constexpr double kPainleveSpan = 0.5;
 
 // status: t_end, overturned or invalid (note: why an invalid run stopped).
 struct Body3dResult : RunResult {
@@ -55,6 +65,9 @@ struct Body3dResult : RunResult {
   double initial_energy = 0;                          // of the closed balance (J)
   std::vector<Body3dEventRecord> events;              // when no sink is given (at most max_events)
   long event_count = 0;                               // all of them, kept or not
+  // The Painleve spans crossed by Moreau-Jean steps: how many, their time (s) and steps.
+  long painleve_spans = 0, painleve_steps = 0;
+  double painleve_time = 0;
 };
 
 // The direction the body leans to (deg from the world's x axis towards y): the azimuth of e3.

@@ -4,12 +4,23 @@
 #include "blockdyn/simulation/rigid3d_simulation.hpp"
 #include "blockdyn/simulation/rigid_simulation.hpp"
 
+#include <memory>
+#include <string>
 #include <vector>
+
+#include "blockdyn/excitation/accelerogram.hpp"
 
 namespace blockdyn::test {
 
 // Standard gravity (m/s^2), the bodies' default g.
 inline constexpr double kG = 9.81;
+
+// The 60 s synthetic record of tests/fixtures, read once.
+inline std::shared_ptr<const Accelerogram> fixture_record() {
+  static const auto rec = std::make_shared<const Accelerogram>(
+      load_accelerogram(std::string(BLOCKDYN_SOURCE_DIR) + "/tests/fixtures/synthetic_60s.AT2", "record"));
+  return rec;
+}
 
 inline BodyOnGroundOptions friction(double mu_s, double mu_k) {
   BodyOnGroundOptions o;

@@ -26,12 +26,7 @@ Body3d box(double b, double d, double h) { return blockdyn::box_body(b, d, h, 40
 
 Body3d cylinder(double a, double h) { return blockdyn::cylinder_body(a, h, 120); }
 
-// The 60 s synthetic record of tests/fixtures, read once.
-std::shared_ptr<const blockdyn::Accelerogram> fixture_record() {
-  static const auto rec = std::make_shared<const blockdyn::Accelerogram>(
-      blockdyn::load_accelerogram(std::string(BLOCKDYN_SOURCE_DIR) + "/tests/fixtures/synthetic_60s.AT2", "record"));
-  return rec;
-}
+using blockdyn::test::fixture_record;
 
 // The fixture along 30 degrees (times h_scale) and, once, across it: two components.
 blockdyn::GroundMotion3d fixture_along_30_and_across(double h_scale) {
@@ -388,28 +383,6 @@ TEST(Rigid3dContact, TheEventListKeptIsBoundedAndTheCountComplete) {
   EXPECT_EQ(few.events.size(), 3u);
   EXPECT_EQ(few.event_count, all.event_count);
   EXPECT_EQ(few.z, all.z);
-}
-
-TEST(Rigid3dContact, PainleveStopsTheRunWithItsReason) {
-  // A square column under 2.5 times the fixture along 30 degrees and across, mu 0.7: its edge,
-  // sticking, reaches the friction limit at one end where no state of the contact is consistent
-  // (either end or both slipping make a load negative or accelerate against their slip, either
-  // corner alone lets the other sink): Painleve's paradox of the rigid contact. The run stops
-  // there with the reason, its balance closed up to it.
-  const blockdyn::GroundMotion3d g = fixture_along_30_and_across(2.5);
-  blockdyn::BodyOnGroundOptions o;
-  o.mu_s = 0.7;
-  o.mu_k = 0.7;
-  o.impact = blockdyn::Body3dImpactLaw::Housner;
-  const BodyOnGround m(blockdyn::box_body(0.4, 0.4, 1.2, 300), g, o);
-  const Body3dResult r = run(m, {}, 30.0);
-  EXPECT_STREQ(to_string(r.status), "invalid");
-  EXPECT_NE(r.note.find("Painleve"), std::string::npos) << r.note;
-  ASSERT_FALSE(r.events.empty());
-  EXPECT_EQ(r.events.back().kind, Body3dEventKind::Painleve);
-  EXPECT_EQ(r.events.back().from, BodyContact::Line);
-  EXPECT_EQ(r.events.back().from_slipping, 0);
-  EXPECT_LT(r.max_abs_energy_error, 1e-9 * m.body().mass * m.body().g * m.body().height);
 }
 
 }  // namespace

@@ -210,8 +210,7 @@ TEST(Rigid3dRimSlip, TheLandingConvergesUnderRefinement) {
 TEST(Rigid3dRimSlip, TwoRecordComponentsSlipOnTheRimWithTheBalanceClosed) {
   blockdyn::GroundMotion3d g;
   g.azimuth = 30;
-  g.h.record = g.h2.record = std::make_shared<const blockdyn::Accelerogram>(
-      blockdyn::load_accelerogram(std::string(BLOCKDYN_SOURCE_DIR) + "/tests/fixtures/synthetic_60s.AT2", "record"));
+  g.h.record = g.h2.record = blockdyn::test::fixture_record();
   g.h.scale = 2.0;
   // Just above the friction at which the base would slide before it rocks (2 a / h = 0.4).
   const BodyOnGround m = cylinder(0.41, g);

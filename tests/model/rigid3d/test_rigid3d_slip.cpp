@@ -246,8 +246,7 @@ TEST(Rigid3dSlip, SlipOnsetAndImpactsConvergeUnderRefinement) {
 TEST(Rigid3dSlip, TwoRecordComponentsSlipWithTheBalanceClosed) {
   // A square column under the fixture record along 30 degrees (x 2) and
   // across it: its edges and corners stick and slip; the friction's work enters the balance.
-  const auto rec = std::make_shared<const blockdyn::Accelerogram>(
-      blockdyn::load_accelerogram(std::string(BLOCKDYN_SOURCE_DIR) + "/tests/fixtures/synthetic_60s.AT2", "record"));
+  const auto rec = blockdyn::test::fixture_record();
   blockdyn::GroundMotion3d g;
   g.azimuth = 30;
   g.h.record = g.h2.record = rec;

@@ -48,6 +48,7 @@ ForcedModel forced_body3d_model(const Body3d& body, const BodyOnGroundOptions& f
                     {"mu_s", friction.mu_s},
                     {"mu_k", mu_k},
                     {"impact", to_string(friction.impact)},
+                    {"painleve", "step"},
                     {"incidence_deg", incidence_deg},
                     {"alpha", fm.alpha},
                     {"p", fm.p}};

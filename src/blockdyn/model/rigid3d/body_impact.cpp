@@ -142,7 +142,7 @@ Tr BodyOnGround::contact_after_impact(double t, const Mode& from, State& z, int)
 Tr BodyOnGround::housner_impact(double t, const Mode& from, State& z) const {
   const Mat3 r = rotation(quat_at(z, S::kQw));
   const Vec3 x = vec_at(z, kX);
-  const double ke = energy(z) - body_.mass * body_.g * z[kZ];
+  const double e_before = energy(z);
   const double w_before = std::sqrt(dot(vec_at(z, kWx), vec_at(z, kWx)));
   Mode next;
   std::vector<int> fresh, others;
@@ -187,8 +187,8 @@ Tr BodyOnGround::housner_impact(double t, const Mode& from, State& z) const {
       if (sinking() >= 0) return settle(t, z = before);
     }
   }
-  z[kWorkImpact] += energy(z) - body_.mass * body_.g * z[kZ] - ke;
   complete(next, z);
+  z[kWorkImpact] += energy(z) - e_before;  // the loss, and the height the completion gives up
   return after_impact(t, from, next, z, w_before);
 }
 

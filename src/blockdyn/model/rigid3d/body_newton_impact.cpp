@@ -129,6 +129,28 @@ Tr BodyOnGround::newton_rim_impact(double t, const Mode& from, State& z) const {
   return {next, false, int(Body3dEventKind::Impact)};
 }
 
+SpatialContactProblem BodyOnGround::corner_problem(const Mat3& r, const Vec3& v, const Vec3& w, const int* corners,
+                                                   int n, Vec3* arm) const {
+  const Mat3 inv = world_inverse_inertia(r);
+  SpatialContactProblem pr;
+  pr.n = n;
+  pr.mu_s = opt_.mu_s;
+  pr.mu_k = mu_k_;
+  for (int i = 0; i < n; ++i) {
+    arm[i] = r * corner(corners[i]);
+    const Vec3 u = plus(v, cross(w, arm[i]));
+    for (int c = 0; c < 3; ++c) pr.q[std::size_t(3 * i + c)] = u[std::size_t(c)];
+  }
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) {
+      const Mat3 k = product(cross_matrix(arm[i]), product(inv, cross_matrix(arm[j])));
+      for (int a = 0; a < 3; ++a)
+        for (int b = 0; b < 3; ++b)
+          pr.w[std::size_t((3 * i + a) * 3 * n + 3 * j + b)] = (a == b ? 1.0 / body_.mass : 0.0) - k[a][b];
+    }
+  return pr;
+}
+
 Tr BodyOnGround::newton_impact(double t, const Mode& from, State& z) const {
   const Mat3 r = rotation(quat_at(z, S::kQw));
   const Vec3 x = vec_at(z, kX), v = vec_at(z, kVx), w = vec_at(z, kWx);
@@ -139,23 +161,11 @@ Tr BodyOnGround::newton_impact(double t, const Mode& from, State& z) const {
   if (n == 0 || (n >= 3 && from.contact == BodyContact::Flight)) return landed_flat(t, z);
   const Mat3 inv = world_inverse_inertia(r);
   Vec3 arm[4];
-  SpatialContactProblem pr;
-  pr.n = n;
-  pr.mu_s = opt_.mu_s;
-  pr.mu_k = mu_k_;
+  SpatialContactProblem pr = corner_problem(r, v, w, touching, n, arm);
   for (int i = 0; i < n; ++i) {
-    arm[i] = r * corner(touching[i]);
-    const Vec3 u = plus(v, cross(w, arm[i]));
-    for (int c = 0; c < 3; ++c) pr.q[std::size_t(3 * i + c)] = u[std::size_t(c)];
-    pr.v_normal[std::size_t(i)] = u[2] < 0 ? -opt_.restitution * u[2] : 0.0;
+    const double u = pr.q[std::size_t(3 * i + 2)];
+    pr.v_normal[std::size_t(i)] = u < 0 ? -opt_.restitution * u : 0.0;
   }
-  for (int i = 0; i < n; ++i)
-    for (int j = 0; j < n; ++j) {
-      const Mat3 k = product(cross_matrix(arm[i]), product(inv, cross_matrix(arm[j])));
-      for (int a = 0; a < 3; ++a)
-        for (int b = 0; b < 3; ++b)
-          pr.w[std::size_t((3 * i + a) * 3 * n + 3 * j + b)] = (a == b ? 1.0 / body_.mass : 0.0) - k[a][b];
-    }
   // No corner moving into the ground: a touch at the end of an accumulation (the swings at a
   // rounding's size), at rest; else a graze, the motion goes on.
   double speed = 0;
@@ -175,7 +185,8 @@ Tr BodyOnGround::newton_impact(double t, const Mode& from, State& z) const {
     sol = solve_spatial_contact(frictionless);
   }
   if (!sol.solved) return housner_impact(t, from, z);  // not even the normal impulses: Housner's
-  const double ke = energy(z) - body_.mass * body_.g * z[kZ];
+  // The impulses' loss, and the height the contact's completion gives up (its rounding).
+  const double before = energy(z);
   const double w_before = std::sqrt(dot(w, w));
   Vec3 force{}, moment{};
   for (int i = 0; i < n; ++i) {
@@ -193,7 +204,7 @@ Tr BodyOnGround::newton_impact(double t, const Mode& from, State& z) const {
     if (sol.u[std::size_t(3 * i + 2)] <= kImpactLeaving * scale) stay[m++] = touching[i];
   if (m >= 3) return landed_flat(t, z);  // the base stays flat: at rest
   if (m == 0) {
-    z[kWorkImpact] += energy(z) - body_.mass * body_.g * z[kZ] - ke;
+    z[kWorkImpact] += energy(z) - before;
     return {Mode{BodyContact::Flight}, false, int(Body3dEventKind::Impact)};
   }
   Mode c = m == 2 ? line_mode(r, x, corner(stay[0]), corner(stay[1]), stay[0], stay[1])
@@ -205,7 +216,7 @@ Tr BodyOnGround::newton_impact(double t, const Mode& from, State& z) const {
   // Its points slipping the way the impulses left them moving (at rest: sticking).
   const Mode next = moving_contact(c, z);
   complete(next, z);
-  z[kWorkImpact] += energy(z) - body_.mass * body_.g * z[kZ] - ke;
+  z[kWorkImpact] += energy(z) - before;
   return after_impact(t, from, next, z, w_before);
 }
 

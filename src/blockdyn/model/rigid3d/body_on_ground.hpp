@@ -27,6 +27,7 @@
 #include "blockdyn/model/rigid3d/contact_slip.hpp"
 #include "blockdyn/model/rigid3d/disc_slide.hpp"
 #include "blockdyn/model/rigid3d/rim_rolling.hpp"
+#include "blockdyn/numerics/spatial_contact.hpp"
 
 namespace blockdyn {
 
@@ -194,10 +195,28 @@ class BodyOnGround {
   // ground slip, else the contact takes the velocities it allows). Throws std::invalid_argument
   // for a body below the ground.
   Mode mode_of(double t, const State& z, bool slipping = false) const;
+  // A box's edge or corner contact at z: its points moving along the ground slipping (`slipping`,
+  // unless friction would stop them at once), else sticking or slipping as friction decides; a
+  // stop where no state of the contact is consistent (Painleve).
+  Transition<Mode> contact_motion(double t, const Mode& contact, const State& z, bool slipping) const;
   // The start: the mode of z; where a box starts on an edge or a corner with a corner moving into
   // the ground (Newton's law, `slipping`: a velocity given), an impact at t first
   // (body_newton_impact.cpp: z jumps).
   Transition<Mode> start(double t, State& z, bool slipping = false) const;
+
+  // A Moreau-Jean step of the box from t to t + h (body_time_step.cpp): the stepping strategy across
+  // a span where no contact state is consistent (Painleve). `loaded`: the corners whose normal
+  // impulse is positive; `solved` false where not even the normal impulses solve the problem;
+  // `frictionless` where only they did.
+  struct TimeStep {
+    unsigned loaded = 0;
+    bool solved = false, frictionless = false;
+  };
+  TimeStep time_step(double t, double h, State& z) const;
+  // Where the events can take over after a step that left the corners `loaded` carrying the body:
+  // the contact they make, consistent at the acceleration level, its state completed onto it
+  // (what that changes booked as impact work); none where it is not consistent, or the base flat.
+  std::optional<Transition<Mode>> resume_contact(double t, State& z, unsigned loaded) const;
 
   const Body3d& body() const { return body_; }
   const GroundMotion3d& ground() const { return ground_; }
@@ -225,6 +244,10 @@ class BodyOnGround {
   // The same for a cylinder's rim landing on a rim point: one point's impulse in Coulomb's cone
   // (numerics/spatial_contact.hpp), then the rim point at rest, slipping, or bouncing off.
   Transition<Mode> newton_rim_impact(double t, const Mode& from, State& z) const;
+  // The velocity-level contact problem of the base corners `corners` (n of them) at orientation r
+  // and velocities (v, w): W, q and the friction; their arms (world) in `arm`; v_normal left zero.
+  SpatialContactProblem corner_problem(const Mat3& r, const Vec3& v, const Vec3& w, const int* corners, int n,
+                                       Vec3* arm) const;
   // J^-1 in the world's axes, R diag(1/I) R^T.
   Mat3 world_inverse_inertia(const Mat3& r) const;
   // Housner's law in 3D: the new contact sticks, the angular momentum about it conserved.

@@ -135,25 +135,32 @@ BodyOnGroundMode BodyOnGround::mode_of(double t, const State& z, bool slipping) 
   const Mode contact = touching.size() == 2
                            ? line_mode(r, x, corner(touching[0]), corner(touching[1]), touching[0], touching[1])
                            : point_mode(r, x, corner(touching[0]), touching[0]);
+  const Tr tr = contact_motion(t, contact, z, slipping);
+  return tr.stop ? contact : tr.next;
+}
+
+Tr BodyOnGround::contact_motion(double t, const Mode& contact, const State& z, bool slipping) const {
+  const Mat3 r = rotation(quat_at(z, S::kQw));
+  const Vec3 x = vec_at(z, kX);
+  const bool line = contact.contact == BodyContact::Line;
   // Its points moving along the ground: they slip from the start, on the edge or on either of its
   // corners (the other rising), the first consistent; unless friction would stop them at once (in
   // less than kInstantSlip sqrt(size / g) at mu_k g: the limit of a sticking contact, whose slip is
   // too stiff to follow), where the start takes the velocities the contact allows.
   const Mode candidates[3] = {contact, point_mode(r, x, contact.point_a, contact.corner_a),
                               point_mode(r, x, contact.point_b, contact.corner_b)};
-  for (int i = 0; i < (!slipping ? 0 : touching.size() == 2 ? 3 : 1); ++i) {
+  for (int i = 0; i < (!slipping ? 0 : line ? 3 : 1); ++i) {
     const Mode moving = moving_contact(candidates[i], z);
     if (!moving.slips() || slip_stops_at_once(moving, z)) break;
     State on = z;
     complete(moving, on);
     const int lifted = i == 0 ? -1 : i == 1 ? contact.corner_b : contact.corner_a;
-    if (consistent_contact(t, moving, on, lifted)) return moving;
+    if (consistent_contact(t, moving, on, lifted)) return {moving, false, int(Body3dEventKind::Mode)};
   }
   // Else (docs/3d.md) it slips if friction cannot hold it.
   State still = z;
   complete(contact, still);
-  const Tr tr = stick_or_slip(t, contact, still, int(Body3dEventKind::Mode));
-  return tr.stop ? contact : tr.next;
+  return stick_or_slip(t, contact, still, int(Body3dEventKind::Mode));
 }
 
 bool BodyOnGround::slip_stops_at_once(const Mode& m, const State& z) const {

@@ -1,0 +1,144 @@
+// SPDX-License-Identifier: Apache-2.0
+// A box's Moreau-Jean step (body_on_ground.hpp, docs/3d.md): the stepping strategy that crosses a
+// span where no state of the contact is consistent at the acceleration level (Painleve: with two
+// contact points this happens at moderate friction, e.g. a slender box's edge rocking and
+// twisting at mu 0.7, whose sticking needs more than mu_s while every slip makes a load negative).
+// There the rigid body's motion has impulsive contact forces (Stewart, SIAM Review 42, 2000), and
+// the velocity-level step, whose frictional contact problem has a solution, converges to it as
+// the step shrinks. Per step of length h from (t, z):
+//   free velocities    v' = v + h f(t + h/2),  w' = w + h J^-1 (J w x w)
+//   impulses p_i       at the base corners near the ground: the problem of the Newton impact
+//                      (numerics/spatial_contact.hpp), e = the options' restitution for a corner
+//                      approaching, 0 for one at rest
+//   velocities         v+ = v' + sum p_i / m,  w+ = w' + J^-1 sum a_i x p_i
+//   positions          the centroid by h (v + v+) / 2, the orientation by the rotation h (w + w+) / 2
+// The work of the ground on the centroid m (f + g Z) . h (v + v+) / 2 and the contact's p_i . u_i at
+// the corner's mean velocity keep the balance to the step's own error, O(h^2) a step.
+#include <cmath>
+
+#include "blockdyn/model/rigid3d/body_on_ground.hpp"
+#include "blockdyn/model/rigid3d/body_pivot.hpp"
+#include "blockdyn/model/rigid3d/body_state.hpp"
+#include "blockdyn/numerics/spatial_contact.hpp"
+
+namespace blockdyn {
+
+namespace {
+
+using S = BodyOnGround;
+using Tr = Transition<BodyOnGroundMode>;
+
+// A corner whose height, a step ahead at its velocity, is below this (in body sizes) takes part in
+// the step's contact problem.
+constexpr double kStepTouch = 1e-9;
+
+}  // namespace
+
+BodyOnGround::TimeStep BodyOnGround::time_step(double t, double h, State& z) const {
+  const Mat3 r = rotation(quat_at(z, S::kQw));
+  const Vec3 v = vec_at(z, kVx), w = vec_at(z, kWx), f = specific_force(t + 0.5 * h);
+  const Vec3 vf = plus(v, scaled(f, h)), wf = plus(w, scaled(free_angular_acceleration(inertia_, r, w), h));
+  int touching[4], n = 0;
+  for (int i = 0; i < 4; ++i) {
+    const Vec3 a = r * corner(i);
+    const double approach = plus(v, cross(w, a))[2];
+    if (z[kZ] + a[2] + h * std::fmin(0.0, approach) <= kStepTouch * size_) touching[n++] = i;
+  }
+  // The corners' problem at the free velocities; a corner approaching bounces by e.
+  Vec3 arm[4];
+  SpatialContactProblem pr = corner_problem(r, vf, wf, touching, n, arm);
+  for (int i = 0; i < n; ++i) {
+    const double approach = plus(v, cross(w, arm[i]))[2];
+    pr.v_normal[std::size_t(i)] = approach < 0 ? -opt_.restitution * approach : 0.0;
+  }
+  const Mat3 inv = world_inverse_inertia(r);
+  TimeStep out;
+  SpatialContactSolution sol;
+  if (pr.n > 0) {
+    sol = solve_spatial_contact(pr);
+    if (!sol.solved) {
+      // No impulses in the cones (Painleve at the impulse level): the normal ones alone.
+      SpatialContactProblem frictionless = pr;
+      frictionless.mu_s = frictionless.mu_k = 0;
+      sol = solve_spatial_contact(frictionless);
+      out.frictionless = true;
+    }
+    if (!sol.solved) return {0, false, true};
+  }
+  Vec3 force{}, moment{};
+  for (int i = 0; i < pr.n; ++i) {
+    const Vec3 p{sol.p[std::size_t(3 * i)], sol.p[std::size_t(3 * i + 1)], sol.p[std::size_t(3 * i + 2)]};
+    force = plus(force, p);
+    moment = plus(moment, cross(arm[i], p));
+    if (p[2] > 0) out.loaded |= 1u << unsigned(touching[i]);
+  }
+  const Vec3 v1 = plus(vf, scaled(force, 1.0 / body_.mass)), w1 = plus(wf, inv * moment);
+  const Vec3 vm = scaled(plus(v, v1), 0.5), wm = scaled(plus(w, w1), 0.5);
+  // The contact's work at each corner's mean velocity: its normal part as impact, the rest friction.
+  for (int i = 0; i < pr.n; ++i) {
+    const Vec3 p{sol.p[std::size_t(3 * i)], sol.p[std::size_t(3 * i + 1)], sol.p[std::size_t(3 * i + 2)]};
+    const Vec3 u = plus(vm, cross(wm, arm[i]));
+    z[kWorkImpact] += p[2] * u[2];
+    z[kWorkFriction] += p[0] * u[0] + p[1] * u[1];
+  }
+  z[kWorkGround] += h * body_.mass * (f[0] * vm[0] + f[1] * vm[1] + (f[2] + body_.g) * vm[2]);
+  set_vec_at(z, kX, plus(vec_at(z, kX), scaled(vm, h)));
+  const double turn = std::sqrt(dot(wm, wm)) * h;
+  if (turn > 0) set_quat_at(z, kQw, normalized(axis_angle(scaled(wm, h / turn), turn) * quat_at(z, S::kQw)));
+  set_vec_at(z, kVx, v1);
+  set_vec_at(z, kWx, w1);
+  out.solved = true;
+  return out;
+}
+
+std::optional<Tr> BodyOnGround::resume_contact(double t, State& z, unsigned loaded) const {
+  // The contact the step left loaded, where the events can take over: its points slipping the way
+  // they move (faster than friction would stop at once; the start's rule) or sticking, consistent
+  // at the acceleration level, and no other corner at the ground accelerating into it. No search
+  // for a slip's start: where that is needed the state is the Painleve one, and the steps go on.
+  const Mat3 r = rotation(quat_at(z, S::kQw));
+  const Vec3 x = vec_at(z, kX);
+  int corners[4], n = 0;
+  for (int i = 0; i < 4; ++i)
+    if (loaded & (1u << unsigned(i))) corners[n++] = i;
+  if (n == 0) {
+    // Free of the ground: flight, unless a corner is below it (the step's drift).
+    if (z[kZ] - lowest_point(body_, r).depth < -kStepTouch * size_) return std::nullopt;
+    return Tr{Mode{BodyContact::Flight}, false, int(Body3dEventKind::LiftOff)};
+  }
+  if (n >= 3) {
+    // Flat: the base as a landing leaves it (at rest, its exit from rest, or sliding on).
+    State flat = z;
+    const double before = energy(flat);
+    set_quat_at(flat, kQw, axis_angle({0, 0, 1}, std::atan2(r[1][0], r[0][0])));
+    flat[kZ] = body_.half_height();
+    flat[kVz] = flat[kWx] = flat[kWy] = 0;
+    flat[kWorkImpact] += energy(flat) - before;
+    const Tr tr = landed_flat(t, flat);
+    if (tr.stop) return std::nullopt;
+    z = flat;
+    return tr;
+  }
+  const Mode contact = n == 2 ? line_mode(r, x, corner(corners[0]), corner(corners[1]), corners[0], corners[1])
+                              : point_mode(r, x, corner(corners[0]), corners[0]);
+  Mode next = moving_contact(contact, z);
+  if (next.slips() && slip_stops_at_once(next, z)) next = contact;
+  State on = z;
+  complete(next, on);
+  if (!consistent_contact(t, next, on, -1)) return std::nullopt;
+  State dz{};
+  rhs(t, next, on, dz);
+  const Mat3 ro = rotation(quat_at(on, S::kQw));
+  for (int i = 0; i < 4; ++i) {
+    if (i == next.corner_a || (next.contact == BodyContact::Line && i == next.corner_b)) continue;
+    const Vec3 arm = ro * corner(i);
+    if (on[kZ] + arm[2] > kStepTouch * size_) continue;
+    if (point_acceleration(on, dz, arm)[2] < -kLoadTie * body_.g) return std::nullopt;
+  }
+  const double before = energy(z);
+  z = on;
+  z[kWorkImpact] += energy(z) - before;  // the contact's velocities the step's rounding left
+  return Tr{next, false, int(next.slips() ? Body3dEventKind::Slip : Body3dEventKind::Mode)};
+}
+
+}  // namespace blockdyn
