@@ -9,9 +9,8 @@
 namespace blockdyn {
 
 std::array<double, 3> GroundMotion3d::at(double t) const {
-  const double a = azimuth * (M_PI / 180), c = std::cos(a), s = std::sin(a);
-  const double x = h.at(t), y = h2.at(t);
-  return {c * x - s * y, s * x + c * y, v.at(t)};
+  const double a = azimuth * (M_PI / 180);
+  return at(t, std::cos(a), std::sin(a));
 }
 
 GroundMotion3d record_components(std::shared_ptr<const Accelerogram> h, std::shared_ptr<const Accelerogram> h2,

@@ -21,6 +21,11 @@ struct GroundMotion3d {
   double next_break(double t) const { return std::fmin(std::fmin(h.next_break(t), h2.next_break(t)), v.next_break(t)); }
   // The ground's acceleration in the world frame (x, y, z), in g.
   std::array<double, 3> at(double t) const;
+  // The same with h's direction given (cos, sin of the azimuth: a model computes them once).
+  std::array<double, 3> at(double t, double cos_az, double sin_az) const {
+    const double x = h.at(t), y = h2.at(t);
+    return {cos_az * x - sin_az * y, sin_az * x + cos_az * y, v.at(t)};
+  }
 };
 
 // A record in up to three components (h2 and v may be null), every one at `scale`, h along

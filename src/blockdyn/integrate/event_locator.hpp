@@ -110,9 +110,9 @@ class EventLocator {
       if (!armed_[i]) continue;
       const double g0 = g_start_[i], g1 = g_end_[i];
       auto gi = [&](double tt) {
-        Events ge;
-        g_all(tt, ge);
-        return ge[i];
+        State yy;
+        seg.eval(tt, yy);
+        return complete_and_event(model_, std::fmin(tt, *t_clamp_), mode, yy, int(i));
       };
       // A function at or below zero at the step start (one that just fired, or any other at a
       // restart) fires there unless it rises first.
@@ -198,9 +198,7 @@ class EventLocator {
   void polish(double t, double t_next, int index, const Mode& mode, double& te, State& ze,
               const DenseSegment<N>& seg) const {
     auto g_at = [&](double tt, State y) {
-      Events ge;
-      complete_and_events(model_, std::fmin(tt, *t_clamp_), mode, y, ge);
-      return ge[std::size_t(index)];
+      return complete_and_event(model_, std::fmin(tt, *t_clamp_), mode, y, index);
     };
     double g_e = g_at(te, ze);
     const double reach = 1e-3 * (te - t), t_fresh = te;

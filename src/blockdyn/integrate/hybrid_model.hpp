@@ -116,6 +116,22 @@ void complete_and_events(const M& m, double t, const typename M::Mode& mode, Vec
   }
 }
 
+// Completes z and evaluates event function `index` alone, for the root search on it. A model may
+// give one function cheaper than all of them (`double event_value(double t, const Mode&, const
+// State& z, int index) const`, optional, equal to events()[index] bit for bit): a search on a
+// contact's height then does not solve its reactions at every point it looks at.
+template <class M>
+double complete_and_event(const M& m, double t, const typename M::Mode& mode, Vec<M::kDim>& z, int index) {
+  if constexpr (requires { m.event_value(t, mode, z, index); }) {
+    m.complete(mode, z);
+    return m.event_value(t, mode, z, index);
+  } else {
+    std::array<double, M::kNumEvents> g;
+    complete_and_events(m, t, mode, z, g);
+    return g[std::size_t(index)];
+  }
+}
+
 template <class Mode, std::size_t N>
 struct EventInfo {
   double t;

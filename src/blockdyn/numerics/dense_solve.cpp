@@ -7,11 +7,15 @@
 
 namespace blockdyn {
 
-bool solve_dense_least_norm(int n, const double* A, const double* b, double* x) {
-  if (n == 0) return true;
-  if (n < 0 || n > kMaxDenseUnknowns) return false;
-  using Mat = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, kMaxDenseUnknowns, kMaxDenseUnknowns>;
-  using Vec = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kMaxDenseUnknowns, 1>;
+namespace {
+
+// The solve on storage for at most `Max` unknowns: the same algorithm at every Max, so that a
+// small system (a few contact points' 3n unknowns) does not pay for clearing and copying the
+// largest storage (80 x 80 doubles, 51 kB, at every call).
+template <int Max>
+bool least_norm(int n, const double* A, const double* b, double* x) {
+  using Mat = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, Max, Max>;
+  using Vec = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, Max, 1>;
   Mat M(n, n);
   Vec r(n);
   for (int k = 0; k < n; ++k) {
@@ -38,6 +42,16 @@ bool solve_dense_least_norm(int n, const double* A, const double* b, double* x) 
     if (!std::isfinite(x[k])) return false;
   }
   return true;
+}
+
+constexpr int kSmallUnknowns = 12;
+
+}  // namespace
+
+bool solve_dense_least_norm(int n, const double* A, const double* b, double* x) {
+  if (n == 0) return true;
+  if (n < 0 || n > kMaxDenseUnknowns) return false;
+  return n <= kSmallUnknowns ? least_norm<kSmallUnknowns>(n, A, b, x) : least_norm<kMaxDenseUnknowns>(n, A, b, x);
 }
 
 }  // namespace blockdyn

@@ -79,12 +79,14 @@ BodyOnGround::BodyOnGround(const Body3d& body, const GroundMotion3d& ground, con
     throw std::invalid_argument("mu-k = " + number_text(opt_.mu_k) + " is out of range: finite and >= 0");
   reach_ = body_.shape == BodyShape3d::Box ? base_reach(body_.width, body_.depth) : body_.radius;
   forced_ = !ground_.is_zero();
+  azimuth_cos_ = std::cos(ground_.azimuth * (M_PI / 180));
+  azimuth_sin_ = std::sin(ground_.azimuth * (M_PI / 180));
   rest_search_ = BodyRestSearch(body_, opt_.mu_s, ground_, opt_.rest_yaw);
 }
 
 Vec3 BodyOnGround::specific_force(double t) const {
   if (!forced_) return {0, 0, -body_.g};
-  const std::array<double, 3> a = ground_.at(t);
+  const std::array<double, 3> a = ground_.at(t, azimuth_cos_, azimuth_sin_);
   return {-body_.g * a[0], -body_.g * a[1], -body_.g * (1 + a[2])};
 }
 
@@ -162,18 +164,37 @@ void BodyOnGround::events(double t, const Mode& m, const State& z, std::array<do
       g[kEvLoadA] = kRimMomentTolerance - std::sqrt(dot(pm.moment, pm.moment)) / (weight * size_);
     g[kEvSlipA] = slip(pm.force, weight);
   }
-  // Heights above the contact point (on the ground): no cancellation against the centroid's
-  // height, so swings far below its rounding stay resolved (the tail of an accumulation).
   const Vec3& up = r[2];
   if (body_.shape == BodyShape3d::Box) {
     for (int i = 0; i < 4; ++i)
-      if (i != m.corner_a && i != m.corner_b)
-        g[kEvTouch0 + i] = dot(up, minus(corner(i), m.point_a)) +
-                           (i == m.released && t - m.released_t < window_ ? kReleasedAllowance * size_ : 0.0);
+      if (i != m.corner_a && i != m.corner_b) g[kEvTouch0 + i] = corner_height(t, m, up, i);
   } else {
     g[kEvTouch0] = dot(up, {-2 * m.point_a[0], -2 * m.point_a[1], 0});
   }
   g[kEvOverturn] = up[2];
+}
+
+double BodyOnGround::corner_height(double t, const Mode& m, const Vec3& up, int i) const {
+  // Heights above the contact point (on the ground): no cancellation against the centroid's
+  // height, so swings far below its rounding stay resolved (the tail of an accumulation).
+  return dot(up, minus(corner(i), m.point_a)) +
+         (i == m.released && t - m.released_t < window_ ? kReleasedAllowance * size_ : 0.0);
+}
+
+double BodyOnGround::event_value(double t, const Mode& m, const State& z, int index) const {
+  // A box rocking on an edge or pivoting on a corner: its other corners' heights and the
+  // overturn alone, without the reactions (the impacts' searches); else all of them.
+  const bool pivot = m.contact == BodyContact::Line || m.contact == BodyContact::Point;
+  const bool cheap = index == kEvOverturn || (index >= kEvTouch0 && index <= kEvTouch3);
+  if (body_.shape == BodyShape3d::Box && pivot && !m.slips() && cheap) {
+    const Vec3 up = rotation(quat_at(z, S::kQw))[2];
+    if (index == kEvOverturn) return up[2];
+    const int i = index - kEvTouch0;
+    return i == m.corner_a || i == m.corner_b ? 1.0 : corner_height(t, m, up, i);
+  }
+  std::array<double, kNumEvents> g;
+  events(t, m, z, g);
+  return g[std::size_t(index)];
 }
 
 void BodyOnGround::complete(const Mode& m, State& z) const {

@@ -166,6 +166,8 @@ class BodyOnGround {
 
   void rhs(double t, const Mode& m, const State& z, State& dz) const;
   void events(double t, const Mode& m, const State& z, std::array<double, kNumEvents>& g) const;
+  // events()[index] alone, bit for bit: cheaper for a pivot's corner heights and the overturn.
+  double event_value(double t, const Mode& m, const State& z, int index) const;
   void complete(const Mode& m, State& z) const;
   Transition<Mode> transition(double t, const Mode& m, State& z, int event) const;
   // Mode changes repeating at one instant (an edge and a corner taking turns: the contact would
@@ -230,6 +232,9 @@ class BodyOnGround {
   // The rates every moving mode shares: position, orientation and the ground's work on the centroid.
   void set_kinematic_rates(double t, const State& z, State& dz) const;
   Vec3 corner(int i) const;  // body frame
+  // Corner i's height above the pivot's contact point m.point_a (a released corner's allowance
+  // added inside its window), the base's up `up`.
+  double corner_height(double t, const Mode& m, const Vec3& up, int i) const;
   bool rest_holds(double t, double yaw) const;
   Mode line_mode(const Mat3& r, const Vec3& x, const Vec3& pa, const Vec3& pb, int ca, int cb) const;
   Mode point_mode(const Mat3& r, const Vec3& x, const Vec3& p, int c) const;
@@ -401,7 +406,8 @@ class BodyOnGround {
   BodyOnGroundOptions opt_;
   Vec3 inertia_;
   double size_, step_, window_;
-  double mu_k_ = 0, reach_ = 0;  // the kinetic friction; the base's half diagonal (box) or radius
+  double mu_k_ = 0, reach_ = 0;               // the kinetic friction; the base's half diagonal (box) or radius
+  double azimuth_cos_ = 1, azimuth_sin_ = 0;  // the ground's h direction, computed once
   State scale_;
   bool forced_ = false;
   BodyRestSearch rest_search_;
