@@ -164,4 +164,31 @@ TEST(Rigid3dNewton, AStartWithACornerMovingIntoTheGroundIsAnImpact) {
   }
 }
 
+TEST(Rigid3dNewton, ACornerArrivingAtRestOnATiltedBodyJoinsTheContactWithoutAnImpact) {
+  // Tilted on its +x edge and turning about it, the box's edge hands over to one end (the other
+  // lifted at rounding), and that end touches again at once, at rest: no impact (no corner moves
+  // into the ground), the edge takes over - the tilt, the velocities and the energy unchanged,
+  // not the base put flat (the end of an accumulation, which this is not).
+  using S = BodyOnGround;
+  const BodyOnGround m(box_body(0.4, 0.3, 1.0, 400), {}, test::friction(5.0, 5.0));
+  Body3dStart s;
+  s.tilt = 0.6;
+  s.angular_velocity = {0.0, 0.4, 0.0};  // falling further towards +x
+  S::State z = initial_state(m.body(), s);
+  auto edge = m.start(0.0, z, false);
+  ASSERT_FALSE(edge.stop);
+  ASSERT_EQ(edge.next.contact, BodyContact::Line);
+  const auto pivot = m.transition(0.0, edge.next, z, S::kEvLoadA);
+  ASSERT_FALSE(pivot.stop);
+  ASSERT_EQ(pivot.next.contact, BodyContact::Point);
+  const int lifted = pivot.next.released;
+  ASSERT_GE(lifted, 0);
+  const S::State before = z;
+  const auto joined = m.transition(0.0, pivot.next, z, S::kEvTouch0 + lifted);
+  ASSERT_FALSE(joined.stop);
+  EXPECT_EQ(joined.next.contact, BodyContact::Line);
+  for (std::size_t k = S::kX; k <= S::kWz; ++k) EXPECT_NEAR(z[k], before[k], 1e-12) << k;
+  EXPECT_NEAR(m.balance(z), m.balance(before), 1e-12 * 400 * m.body().g);
+}
+
 }  // namespace blockdyn::rigid3d_newton_test

@@ -154,9 +154,14 @@ SpatialContactProblem BodyOnGround::corner_problem(const Mat3& r, const Vec3& v,
 Tr BodyOnGround::newton_impact(double t, const Mode& from, State& z) const {
   const Mat3 r = rotation(quat_at(z, S::kQw));
   const Vec3 x = vec_at(z, kX), v = vec_at(z, kVx), w = vec_at(z, kWx);
+  // Touching: at the ground, or with the lowest corner where a contact left it above it (a
+  // contact is kept where it touched, within the stepping's tolerance after a Moreau-Jean span).
+  double level = INFINITY;
+  for (int i = 0; i < 4; ++i) level = std::fmin(level, z[kZ] + dot(r[2], corner(i)));
+  level = std::fmax(level, 0.0) + kImpactTouch * size_;
   int touching[4], n = 0;
   for (int i = 0; i < 4; ++i)
-    if (z[kZ] + dot(r[2], corner(i)) <= kImpactTouch * size_) touching[n++] = i;
+    if (z[kZ] + dot(r[2], corner(i)) <= level) touching[n++] = i;
   // A base landing flat from flight: plastic, at rest (as Housner's law has it).
   if (n == 0 || (n >= 3 && from.contact == BodyContact::Flight)) return landed_flat(t, z);
   const Mat3 inv = world_inverse_inertia(r);
@@ -166,15 +171,22 @@ Tr BodyOnGround::newton_impact(double t, const Mode& from, State& z) const {
     const double u = pr.q[std::size_t(3 * i + 2)];
     pr.v_normal[std::size_t(i)] = u < 0 ? -opt_.restitution * u : 0.0;
   }
-  // No corner moving into the ground: a touch at the end of an accumulation (the swings at a
-  // rounding's size), at rest; else a graze, the motion goes on.
+  // No corner moving into the ground: the base flat at the end of an accumulation (the swings at a
+  // rounding's size), at rest; a tilted body's corner arriving at rest (an edge's end that lifted
+  // at rounding, the body turning about the edge) makes the contact the events can go on with;
+  // else a graze, the motion goes on.
   double speed = 0;
   bool hits = false;
   for (int i = 0; i < n; ++i) hits = hits || pr.q[std::size_t(3 * i + 2)] < 0;
   for (int k = 0; k < 3 * n; ++k) speed = std::fmax(speed, std::fabs(pr.q[std::size_t(k)]));
-  if (!hits)
-    return speed <= kNewtonStill * std::sqrt(body_.g * size_) ? settle(t, z)
-                                                              : Tr{from, false, int(Body3dEventKind::Mode)};
+  if (!hits) {
+    if (speed > kNewtonStill * std::sqrt(body_.g * size_)) return Tr{from, false, int(Body3dEventKind::Mode)};
+    if (n >= 3) return settle(t, z);
+    unsigned mask = 0;
+    for (int i = 0; i < n; ++i) mask |= 1u << unsigned(touching[i]);
+    if (auto joined = resume_contact(t, z, mask)) return *joined;
+    return Tr{from, false, int(Body3dEventKind::Mode)};
+  }
   SpatialContactSolution sol = solve_spatial_contact(pr);
   if (!sol.solved) {
     // No impulses in Coulomb's cones (Painleve at the impulse level, seen where a slender body's

@@ -219,6 +219,11 @@ class BodyOnGround {
   // the contact they make, consistent at the acceleration level, its state completed onto it
   // (what that changes booked as impact work); none where it is not consistent, or the base flat.
   std::optional<Transition<Mode>> resume_contact(double t, State& z, unsigned loaded) const;
+  // The events taking over on `contact` (stick or slip as its points move) where that is
+  // consistent: z completed onto it.
+  std::optional<Transition<Mode>> resume_on(double t, State& z, const Mode& contact) const;
+  // No corner of the base at the ground (within kStepTouch) outside m's contact accelerating down.
+  bool others_rise(double t, const Mode& m, const State& z) const;
 
   const Body3d& body() const { return body_; }
   const GroundMotion3d& ground() const { return ground_; }

@@ -91,11 +91,52 @@ BodyOnGround::TimeStep BodyOnGround::time_step(double t, double h, State& z) con
   return out;
 }
 
+std::optional<Tr> BodyOnGround::resume_on(double t, State& z, const Mode& contact) const {
+  // Its points sticking, or slipping the way they move; the start's rule first (a slip friction
+  // would stop at once sticks), the other where that is not consistent (an end the step loads at
+  // rounding, its friction at the cone's edge, slips on a large mu_s). Consistent at the
+  // acceleration level, and no other corner at the ground accelerating into it.
+  // The contact's lowest corner put on the ground (the steps leave it within kStepTouch of it):
+  // the events measure heights from the contact, an impact from the ground.
+  State at_ground = z;
+  const Mat3 r = rotation(quat_at(z, S::kQw));
+  double lowest = dot(r[2], corner(contact.corner_a));
+  if (contact.contact == BodyContact::Line) lowest = std::fmin(lowest, dot(r[2], corner(contact.corner_b)));
+  at_ground[kZ] = -lowest;
+  Mode at = contact;
+  at.pivot[2] -= z[kZ] - at_ground[kZ];
+  const Mode moving = moving_contact(at, at_ground);
+  const bool stops = moving.slips() && slip_stops_at_once(moving, at_ground);
+  const Mode tries[2] = {stops ? at : moving, stops ? moving : at};
+  for (int k = 0; k < (moving.slips() ? 2 : 1); ++k) {
+    const Mode& next = tries[k];
+    State on = at_ground;
+    complete(next, on);
+    if (!consistent_contact(t, next, on, -1) || !others_rise(t, next, on)) continue;
+    const double before = energy(z);
+    z = on;
+    z[kWorkImpact] += energy(z) - before;  // the contact's velocities the step's rounding left
+    return Tr{next, false, int(next.slips() ? Body3dEventKind::Slip : Body3dEventKind::Mode)};
+  }
+  return std::nullopt;
+}
+
+bool BodyOnGround::others_rise(double t, const Mode& m, const State& z) const {
+  State dz{};
+  rhs(t, m, z, dz);
+  const Mat3 r = rotation(quat_at(z, S::kQw));
+  for (int i = 0; i < 4; ++i) {
+    if (i == m.corner_a || (m.contact == BodyContact::Line && i == m.corner_b)) continue;
+    const Vec3 arm = r * corner(i);
+    if (z[kZ] + arm[2] > kStepTouch * size_) continue;
+    if (point_acceleration(z, dz, arm)[2] < -kLoadTie * body_.g) return false;
+  }
+  return true;
+}
+
 std::optional<Tr> BodyOnGround::resume_contact(double t, State& z, unsigned loaded) const {
-  // The contact the step left loaded, where the events can take over: its points slipping the way
-  // they move (faster than friction would stop at once; the start's rule) or sticking, consistent
-  // at the acceleration level, and no other corner at the ground accelerating into it. No search
-  // for a slip's start: where that is needed the state is the Painleve one, and the steps go on.
+  // The contact the step left loaded, where the events can take over. No search for a slip's
+  // start: where that is needed the state is the Painleve one, and the steps go on.
   const Mat3 r = rotation(quat_at(z, S::kQw));
   const Vec3 x = vec_at(z, kX);
   int corners[4], n = 0;
@@ -119,26 +160,18 @@ std::optional<Tr> BodyOnGround::resume_contact(double t, State& z, unsigned load
     z = flat;
     return tr;
   }
-  const Mode contact = n == 2 ? line_mode(r, x, corner(corners[0]), corner(corners[1]), corners[0], corners[1])
-                              : point_mode(r, x, corner(corners[0]), corners[0]);
-  Mode next = moving_contact(contact, z);
-  if (next.slips() && slip_stops_at_once(next, z)) next = contact;
-  State on = z;
-  complete(next, on);
-  if (!consistent_contact(t, next, on, -1)) return std::nullopt;
-  State dz{};
-  rhs(t, next, on, dz);
-  const Mat3 ro = rotation(quat_at(on, S::kQw));
-  for (int i = 0; i < 4; ++i) {
-    if (i == next.corner_a || (next.contact == BodyContact::Line && i == next.corner_b)) continue;
-    const Vec3 arm = ro * corner(i);
-    if (on[kZ] + arm[2] > kStepTouch * size_) continue;
-    if (point_acceleration(on, dz, arm)[2] < -kLoadTie * body_.g) return std::nullopt;
+  if (n == 1) return resume_on(t, z, point_mode(r, x, corner(corners[0]), corners[0]));
+  if (auto edge = resume_on(t, z, line_mode(r, x, corner(corners[0]), corner(corners[1]), corners[0], corners[1])))
+    return edge;
+  // An edge whose one end the step loads only through friction's coupling (a load at rounding,
+  // its friction at the cone's edge; large mu_s) pivots on the other end: each end alone.
+  for (int j = 0; j < 2; ++j) {
+    Mode end = point_mode(r, x, corner(corners[j]), corners[j]);
+    end.released = corners[1 - j];  // at the ground: its touch looked for below the rounding
+    end.released_t = t;
+    if (auto point = resume_on(t, z, end)) return point;
   }
-  const double before = energy(z);
-  z = on;
-  z[kWorkImpact] += energy(z) - before;  // the contact's velocities the step's rounding left
-  return Tr{next, false, int(next.slips() ? Body3dEventKind::Slip : Body3dEventKind::Mode)};
+  return std::nullopt;
 }
 
 }  // namespace blockdyn
