@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 // Issue 40 benchmark: the rigid3d box under the 60 s synthetic record (6000 samples, every one a
 // breakpoint) along its x axis, beside Housner's planar block of the same width and height under
-// the same record (the planar limit: the same impacts), the box with Housner's law at the impacts
+// the same record (the planar limit: the same impacts) and the planar 3-DOF `rigid` block (the
+// issue's reference), the box with Housner's law at the impacts
 // instead of Newton's (the default), and the box under the record in two horizontal components at
 // once. Counters: steps, impacts, ns per step.
 #include <benchmark/benchmark.h>
@@ -85,6 +86,31 @@ static void BM_HousnerSameBlockSameRecord(benchmark::State& state) {
   state.SetLabel(to_string(r.status));
 }
 BENCHMARK(BM_HousnerSameBlockSameRecord)->Arg(10)->Arg(20)->Unit(benchmark::kMicrosecond);
+
+// The planar 3-DOF `rigid` block of the box's section, the issue's reference: the same friction
+// (sticking) and Newton's law with e = 0 at the impacts, as the box has them.
+static void BM_RigidSameBlockSameRecord(benchmark::State& state) {
+  GroundMotion g;
+  g.horizontal.record = fixture();
+  g.horizontal.scale = double(state.range(0)) / 10.0;
+  RigidBlockParams p;
+  p.shape = BlockShape{0.3, 1.2, 500, 9.81};
+  p.interface = {1e3, 1e3};  // sticking (the planar model's largest friction)
+  p.impact = ImpactLaw::Newton;
+  RigidRunOptions o;
+  o.t_end = 60;
+  o.record_events = false;
+  o.track_energy = false;
+  RigidResult r;
+  for (auto _ : state) {
+    r = simulate_rigid(p, g, {}, o);
+    benchmark::DoNotOptimize(r.t_final);
+  }
+  state.counters["steps"] = double(r.stats.accepted);
+  state.counters["impacts"] = double(r.impacts);
+  state.SetLabel(to_string(r.status));
+}
+BENCHMARK(BM_RigidSameBlockSameRecord)->Arg(10)->Arg(20)->Unit(benchmark::kMicrosecond);
 
 static void BM_Rigid3dBoxRecordTwoComponents(benchmark::State& state) { run_box(state, 0.6); }
 BENCHMARK(BM_Rigid3dBoxRecordTwoComponents)->Arg(10)->Arg(20)->Unit(benchmark::kMicrosecond);

@@ -19,6 +19,16 @@ std::vector<std::string> joined(std::vector<std::string> a, const std::vector<st
   return a;
 }
 
+// `count` generated two-component records (strong, 15 s) in dir/suite.
+void generate_two_component_suite(const std::string& dir, int count) {
+  const auto gen = run_cli({"motion",  "generate", "--components", "2",   "--count", std::to_string(count),
+                            "--arias", "1.5",      "--h2-arias",   "0.8", "--d5-95", "8",
+                            "--t-mid", "5",        "--f-mid",      "2.5", "--t-end", "15",
+                            "--out",   "suite",    "--quiet"},
+                           dir);
+  ASSERT_EQ(gen.code, 0) << gen.err;
+}
+
 TEST(CliRigid3d, JsonContractOfAFreeRockingBox) {
   TmpDir d("rigid3d_json");
   const json j = cli_json(joined(box(), {"--tilt", "0.12", "--t-end", "2", "--json"}), d.path);
@@ -159,11 +169,7 @@ TEST(CliRigid3d, ACylinderLeavesRestUnderTwoDifferentComponents) {
   // the rolling contact started below the landing's tilt landed at once and the run stopped at
   // the rest's exit ("the contact changes mode repeatedly at one instant", tilt 0).
   TmpDir d("rigid3d_cyl_two");
-  const auto gen = run_cli({"motion",  "generate",   "--components", "2",       "--count", "5",       "--arias",
-                            "1.5",     "--h2-arias", "0.8",          "--d5-95", "8",       "--t-mid", "5",
-                            "--f-mid", "2.5",        "--t-end",      "15",      "--out",   "suite",   "--quiet"},
-                           d.path);
-  ASSERT_EQ(gen.code, 0) << gen.err;
+  ASSERT_NO_FATAL_FAILURE(generate_two_component_suite(d.path, 5));
   for (const char* k : {"0001", "0005"}) {
     const std::string h1 = std::string("suite/rezaeian_") + k + "_h1.AT2",
                       h2 = std::string("suite/rezaeian_") + k + "_h2.AT2";
@@ -223,11 +229,7 @@ TEST(CliRigid3d, AnEdgeAndACornerTakingTurnsAreSteppedAcrossToo) {
   // steps cross both and the run reaches its end (just before the column overturns), the balance
   // closed.
   TmpDir d("rigid3d_turns");
-  const auto gen = run_cli({"motion",  "generate",   "--components", "2",       "--count", "8",       "--arias",
-                            "1.5",     "--h2-arias", "0.8",          "--d5-95", "8",       "--t-mid", "5",
-                            "--f-mid", "2.5",        "--t-end",      "15",      "--out",   "suite",   "--quiet"},
-                           d.path);
-  ASSERT_EQ(gen.code, 0) << gen.err;
+  ASSERT_NO_FATAL_FAILURE(generate_two_component_suite(d.path, 8));
   const auto r = run_cli({"simulate",
                           "--model",
                           "rigid3d",

@@ -94,6 +94,15 @@ struct StepperStats {
   long rhs_evals = 0;
   long stiff_steps = 0;          // DOP853: accepted steps whose stiffness estimate h|lambda| exceeded 6.1
   long rejected_at_restart = 0;  // rejections before the first accepted step after a restart
+  // A run of several legs (simulations one after another) counts them all.
+  StepperStats& operator+=(const StepperStats& b) {
+    accepted += b.accepted;
+    rejected += b.rejected;
+    rhs_evals += b.rhs_evals;
+    stiff_steps += b.stiff_steps;
+    rejected_at_restart += b.rejected_at_restart;
+    return *this;
+  }
 };
 
 }  // namespace blockdyn

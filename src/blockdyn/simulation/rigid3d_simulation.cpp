@@ -165,14 +165,6 @@ class Body3dWatch final : public Observer<Model> {
 // sequence of the steps' own contact changes).
 constexpr long kPainleveQuietSteps = 10;
 
-void add(StepperStats& a, const StepperStats& b) {
-  a.accepted += b.accepted;
-  a.rejected += b.rejected;
-  a.rhs_evals += b.rhs_evals;
-  a.stiff_steps += b.stiff_steps;
-  a.rejected_at_restart += b.rejected_at_restart;
-}
-
 // Moreau-Jean steps from the Painleve state (t, mode, z) until the contact they leave loaded is
 // consistent (true: the events take over from (t, mode, z)); false where the run ends inside the
 // span: at t_end, overturned, or (invalid, res.note says why) the steps fail or the span's limit.
@@ -267,7 +259,7 @@ Body3dResult simulate_body3d(const BodyOnGround& model, BodyOnGround::State z, c
     for (;;) {
       Simulation<Model> sim(model, o.integ, t, mode, z);
       res.run_status = sim.advance(o.t_end, watch);
-      add(res.stats, sim.stats());
+      res.stats += sim.stats();
       t = sim.t();
       mode = sim.mode();
       z = sim.state();
