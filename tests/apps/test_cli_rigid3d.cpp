@@ -261,6 +261,53 @@ TEST(CliRigid3d, AnEdgeAndACornerTakingTurnsAreSteppedAcrossToo) {
   EXPECT_LT(j["max_abs_energy_error"].get<double>(), 1e-9 * 100 * 9.81 * 1.2);
 }
 
+TEST(CliRigid3d, ACylinderTippedFromExactlyFlatOntoARollStopsWithItsReason) {
+  // A cylinder under 1.5 times a generated two-component record: its slide ends in slips and
+  // landings taking turns, and the base, exactly flat, tips onto a rim point that needs a moment
+  // to hold: rolling would start where the rim's lowest point is not defined (the rolling's
+  // equations divide by the tilt's sine). Before, the state turned NaN there and the run ended on
+  // a step underflow; now it stops at that instant with the reason, its state finite, its balance
+  // closed.
+  TmpDir d("rigid3d_cyl_flat_roll");
+  ASSERT_NO_FATAL_FAILURE(generate_two_component_suite(d.path, 8));
+  const auto r = run_cli({"simulate",
+                          "--model",
+                          "rigid3d",
+                          "--shape",
+                          "cylinder",
+                          "--radius",
+                          "0.2",
+                          "--height",
+                          "1",
+                          "--mass",
+                          "100",
+                          "--mu-s",
+                          "0.5",
+                          "--t-end",
+                          "15",
+                          "--ground-h-record",
+                          "suite/rezaeian_0007_h1.AT2",
+                          "--ground-h-scale",
+                          "1.5",
+                          "--ground-h2-record",
+                          "suite/rezaeian_0007_h2.AT2",
+                          "--ground-h2-scale",
+                          "1.5",
+                          "--output-interval",
+                          "0",
+                          "--json"},
+                         d.path);
+  ASSERT_EQ(r.code, 0) << r.err;
+  const json j = json::parse(r.out);
+  EXPECT_EQ(j["status"], "invalid");
+  EXPECT_NE(j["stop_reason"].get<std::string>().find("exactly flat"), std::string::npos) << j["stop_reason"];
+  EXPECT_EQ(j["events"].back()["kind"], "not_modelled");
+  EXPECT_EQ(j["events"].back()["from"], "rim");
+  EXPECT_EQ(j["events"].back()["tilt"].get<double>(), 0.0);
+  for (const json& v : j["final_state"]) EXPECT_TRUE(v.is_number()) << v;  // NaN is written as null
+  EXPECT_LT(j["max_abs_energy_error"].get<double>(), 1e-9 * 100 * 9.81 * 1.0);
+}
+
 TEST(CliRigid3d, UsageErrorsNameTheOption) {
   TmpDir d("rigid3d_usage");
   const std::vector<std::string> m{"simulate", "--model", "rigid3d"};

@@ -180,6 +180,9 @@ std::string BodyOnGround::stop_reason(const Mode& from, int event, Body3dEventKi
                           "needs more than mu_s or pulls on the ground, slipping or lifting a point makes a load "
                           "negative or sinks it)";
   if (kind != Body3dEventKind::NotModelled) return "";
+  if (event == kEvLoadA && from.contact == BodyContact::Line && from.half_length == 0)
+    return "a cylinder tipped from its base exactly flat onto a rim point that needs a moment would roll from flat, "
+           "where its rolling contact is not defined (not modelled)";
   if (event < 0)
     return "the contact changes mode repeatedly at one instant (an edge and a corner, or a rim point, taking turns: "
            "it would need the contact problem of both at once, not modelled yet)";
@@ -243,8 +246,14 @@ Tr BodyOnGround::after_load_zero(double t, const Mode& m, State& z, int event) c
     }
     return {Mode{BodyContact::Flight}, false, int(Body3dEventKind::LiftOff)};
   }
-  // A rim point that would need a moment: the contact starts rolling along the rim.
-  if (m.half_length == 0) return {roll_mode(z, false), false, int(Body3dEventKind::Mode)};
+  // A rim point that would need a moment: the contact starts rolling along the rim; not from a
+  // base exactly flat, whose lowest point is not defined (the rolling's equations divide by the
+  // tilt's sine: the state would turn NaN).
+  if (m.half_length == 0) {
+    const Mat3 r = rotation(quat_at(z, S::kQw));
+    if (!(std::hypot(r[2][0], r[2][1]) > 0)) return stop(m, Body3dEventKind::NotModelled);
+    return {roll_mode(z, false), false, int(Body3dEventKind::Mode)};
+  }
   // One end of the line lifts: the body pivots on the other, unless that one pulls away too.
   const Mat3 r = rotation(quat_at(z, S::kQw));
   const Vec3 x = vec_at(z, kX);
