@@ -263,7 +263,10 @@ Body3dResult simulate_body3d(const BodyOnGround& model, BodyOnGround::State z, c
       t = sim.t();
       mode = sim.mode();
       z = sim.state();
-      if (!watch.inconsistent || !o.painleve_steps || model.body().shape != BodyShape3d::Box) break;
+      // A stiff slip (tiny loads against a large mu_s) can underflow the events' steps too.
+      const bool underflow = res.run_status == RunStatus::StepUnderflow;
+      if (underflow) res.note = "the events' steps underflowed in the contact's stiff slip";
+      if (!(watch.inconsistent || underflow) || !o.painleve_steps || model.body().shape != BodyShape3d::Box) break;
       watch.inconsistent = false;
       if (cross_painleve_span(model, o, watch, res, t, mode, z)) continue;
       if (res.note.empty()) res.run_status = RunStatus::ReachedEnd;
