@@ -396,9 +396,9 @@ const std::vector<StudyOption>& rigid3d_options() {
         {"angular-velocity", "rigid3d: initial angular velocity WX,WY,WZ [rad/s] (world frame)"},
         {"lift", "rigid3d: start in flight this high above the ground [m] (default 0)"},
         {"painleve",
-         "rigid3d: where no contact state is consistent (a box: Painleve, or an edge and a corner taking turns at one "
-         "instant): step (Moreau-Jean steps across the span, then the events again) or stop (the run ends there, "
-         "invalid)",
+         "rigid3d: where no contact state is consistent (Painleve, an edge and a corner taking turns at one instant, "
+         "a cylinder's flat base tipping onto a roll) or the events' steps underflow: step (Moreau-Jean steps across "
+         "the span, then the events again) or stop (the run ends there, invalid)",
          "step"},
         {"painleve-step", "rigid3d: the Moreau-Jean step across a Painleve span [s] (default 1e-6 sqrt(size / g))"},
     };

@@ -255,7 +255,7 @@ Body3dResult simulate_body3d(const BodyOnGround& model, BodyOnGround::State z, c
     if (Body3dWatch::slipping(start.next)) res.first_slide_time = 0;
     watch.slide_changes(Model::Mode{}, start.next, z);
     mode = start.next;
-    // Event-driven legs; a box's inconsistent contact is crossed by Moreau-Jean steps between them.
+    // Event-driven legs; an inconsistent contact is crossed by Moreau-Jean steps between them.
     for (;;) {
       Simulation<Model> sim(model, o.integ, t, mode, z);
       res.run_status = sim.advance(o.t_end, watch);
@@ -266,7 +266,7 @@ Body3dResult simulate_body3d(const BodyOnGround& model, BodyOnGround::State z, c
       // A stiff slip (tiny loads against a large mu_s) can underflow the events' steps too.
       const bool underflow = res.run_status == RunStatus::StepUnderflow;
       if (underflow) res.note = "the events' steps underflowed in the contact's stiff slip";
-      if (!(watch.inconsistent || underflow) || !o.painleve_steps || model.body().shape != BodyShape3d::Box) break;
+      if (!(watch.inconsistent || underflow) || !o.painleve_steps) break;
       watch.inconsistent = false;
       if (cross_painleve_span(model, o, watch, res, t, mode, z)) continue;
       if (res.note.empty()) res.run_status = RunStatus::ReachedEnd;

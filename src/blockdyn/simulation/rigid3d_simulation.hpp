@@ -42,9 +42,10 @@ struct Body3dRunOptions {
   EventSink<Body3dEventRecord>* events = nullptr;      // as they happen (null: kept in the result)
   long max_events = 1'000'000;  // kept in the result's list (a run's memory bounded); further ones counted only
   // Where no contact state is consistent at the acceleration level (Painleve; or an edge and a
-  // corner taking turns at one instant, impacts that do not end), a box's run goes on by
-  // Moreau-Jean steps of this length (s; 0: kPainleveStep sqrt(size / g)) until the contact the
-  // steps leave is consistent (BodyOnGround::time_step); false: the run stops there (invalid).
+  // corner taking turns at one instant, impacts that do not end, a cylinder's flat base tipping
+  // onto a roll) or the events' steps underflow in a stiff slip, the run goes on by Moreau-Jean
+  // steps of this length (s; 0: kPainleveStep sqrt(size / g)) until the contact the steps leave
+  // is consistent (BodyOnGround::time_step); false: the run stops there (invalid).
   bool painleve_steps = true;
   double painleve_step = 0;
 };

@@ -129,15 +129,15 @@ Tr BodyOnGround::newton_rim_impact(double t, const Mode& from, State& z) const {
   return {next, false, int(Body3dEventKind::Impact)};
 }
 
-SpatialContactProblem BodyOnGround::corner_problem(const Mat3& r, const Vec3& v, const Vec3& w, const int* corners,
-                                                   int n, Vec3* arm) const {
+SpatialContactProblem BodyOnGround::point_problem(const Mat3& r, const Vec3& v, const Vec3& w, const Vec3* points,
+                                                  int n, Vec3* arm) const {
   const Mat3 inv = world_inverse_inertia(r);
   SpatialContactProblem pr;
   pr.n = n;
   pr.mu_s = opt_.mu_s;
   pr.mu_k = mu_k_;
   for (int i = 0; i < n; ++i) {
-    arm[i] = r * corner(corners[i]);
+    arm[i] = r * points[i];
     const Vec3 u = plus(v, cross(w, arm[i]));
     for (int c = 0; c < 3; ++c) pr.q[std::size_t(3 * i + c)] = u[std::size_t(c)];
   }
@@ -149,6 +149,13 @@ SpatialContactProblem BodyOnGround::corner_problem(const Mat3& r, const Vec3& v,
           pr.w[std::size_t((3 * i + a) * 3 * n + 3 * j + b)] = (a == b ? 1.0 / body_.mass : 0.0) - k[a][b];
     }
   return pr;
+}
+
+SpatialContactProblem BodyOnGround::corner_problem(const Mat3& r, const Vec3& v, const Vec3& w, const int* corners,
+                                                   int n, Vec3* arm) const {
+  Vec3 points[4];
+  for (int i = 0; i < n; ++i) points[i] = corner(corners[i]);
+  return point_problem(r, v, w, points, n, arm);
 }
 
 Tr BodyOnGround::newton_impact(double t, const Mode& from, State& z) const {

@@ -206,10 +206,10 @@ class BodyOnGround {
   // (body_newton_impact.cpp: z jumps).
   Transition<Mode> start(double t, State& z, bool slipping = false) const;
 
-  // A Moreau-Jean step of the box from t to t + h (body_time_step.cpp): the stepping strategy across
-  // a span where no contact state is consistent (Painleve). `loaded`: the corners whose normal
-  // impulse is positive; `solved` false where not even the normal impulses solve the problem;
-  // `frictionless` where only they did.
+  // A Moreau-Jean step of the body from t to t + h (body_time_step.cpp): the stepping strategy
+  // across a span where no contact state is consistent (Painleve). `loaded`: the base points
+  // (base_points) whose normal impulse is positive; `solved` false where not even the normal
+  // impulses solve the problem; `frictionless` where only they did.
   struct TimeStep {
     unsigned loaded = 0;
     bool solved = false, frictionless = false;
@@ -224,6 +224,13 @@ class BodyOnGround {
   std::optional<Transition<Mode>> resume_on(double t, State& z, const Mode& contact) const;
   // No corner of the base at the ground (within kStepTouch) outside m's contact accelerating down.
   bool others_rise(double t, const Mode& m, const State& z) const;
+  // The base's points a time step's contact problem takes (body frame, at orientation r): a box's
+  // four corners; a cylinder's rim at its lowest point and a quarter, a half and three quarters
+  // of a turn from it (the support of the base when flat). Returns their count.
+  int base_points(const Mat3& r, Vec3* points) const;
+  // A cylinder's rim point p (body frame) taking over from the steps: put on the ground, rocking
+  // or rolling on it (sticking, or slipping the way it moves), where that is consistent.
+  std::optional<Transition<Mode>> resume_on_rim(double t, State& z, const Vec3& p) const;
 
   const Body3d& body() const { return body_; }
   const GroundMotion3d& ground() const { return ground_; }
@@ -256,6 +263,8 @@ class BodyOnGround {
   Transition<Mode> newton_rim_impact(double t, const Mode& from, State& z) const;
   // The velocity-level contact problem of the base corners `corners` (n of them) at orientation r
   // and velocities (v, w): W, q and the friction; their arms (world) in `arm`; v_normal left zero.
+  SpatialContactProblem point_problem(const Mat3& r, const Vec3& v, const Vec3& w, const Vec3* points, int n,
+                                      Vec3* arm) const;
   SpatialContactProblem corner_problem(const Mat3& r, const Vec3& v, const Vec3& w, const int* corners, int n,
                                        Vec3* arm) const;
   // J^-1 in the world's axes, R diag(1/I) R^T.

@@ -34,19 +34,39 @@ constexpr double kStepTouch = 1e-9;
 
 }  // namespace
 
+int BodyOnGround::base_points(const Mat3& r, Vec3* points) const {
+  if (body_.shape == BodyShape3d::Box) {
+    for (int i = 0; i < 4; ++i) points[i] = corner(i);
+    return 4;
+  }
+  // The lowest rim point: opposite the world's up seen in the base's plane (any where flat).
+  const double ux = r[2][0], uy = r[2][1];
+  const double lowest = std::hypot(ux, uy) > 0 ? std::atan2(-uy, -ux) : 0.0;
+  for (int i = 0; i < 4; ++i) {
+    const double phi = lowest + 0.5 * M_PI * i;
+    points[i] = {body_.radius * std::cos(phi), body_.radius * std::sin(phi), -body_.half_height()};
+  }
+  return 4;
+}
+
 BodyOnGround::TimeStep BodyOnGround::time_step(double t, double h, State& z) const {
   const Mat3 r = rotation(quat_at(z, S::kQw));
   const Vec3 v = vec_at(z, kVx), w = vec_at(z, kWx), f = specific_force(t + 0.5 * h);
   const Vec3 vf = plus(v, scaled(f, h)), wf = plus(w, scaled(free_angular_acceleration(inertia_, r, w), h));
+  Vec3 base[4], near[4];
+  const int count = base_points(r, base);
   int touching[4], n = 0;
-  for (int i = 0; i < 4; ++i) {
-    const Vec3 a = r * corner(i);
+  for (int i = 0; i < count; ++i) {
+    const Vec3 a = r * base[i];
     const double approach = plus(v, cross(w, a))[2];
-    if (z[kZ] + a[2] + h * std::fmin(0.0, approach) <= kStepTouch * size_) touching[n++] = i;
+    if (z[kZ] + a[2] + h * std::fmin(0.0, approach) <= kStepTouch * size_) {
+      near[n] = base[i];
+      touching[n++] = i;
+    }
   }
-  // The corners' problem at the free velocities; a corner approaching bounces by e.
+  // The points' problem at the free velocities; a point approaching bounces by e.
   Vec3 arm[4];
-  SpatialContactProblem pr = corner_problem(r, vf, wf, touching, n, arm);
+  SpatialContactProblem pr = point_problem(r, vf, wf, near, n, arm);
   for (int i = 0; i < n; ++i) {
     const double approach = plus(v, cross(w, arm[i]))[2];
     pr.v_normal[std::size_t(i)] = approach < 0 ? -opt_.restitution * approach : 0.0;
@@ -134,6 +154,39 @@ bool BodyOnGround::others_rise(double t, const Mode& m, const State& z) const {
   return true;
 }
 
+std::optional<Tr> BodyOnGround::resume_on_rim(double t, State& z, const Vec3& p) const {
+  // As the rim's Newton impact leaves its point: slipping the way it moves where friction would
+  // not stop that at once (the start's rule), else rocking or rolling on it, sticking if friction
+  // holds it (else the slip it starts); not where it pulls on the ground, nor with the base flat
+  // (no lowest point: the steps go on).
+  State on = z;
+  const Mat3 r = rotation(quat_at(z, S::kQw));
+  if (!(std::hypot(r[2][0], r[2][1]) > 0)) return std::nullopt;
+  on[kZ] = -dot(r[2], p);
+  const Vec3 u = plus(vec_at(on, kVx), cross(vec_at(on, kWx), r * p));
+  const Vec3 slip{u[0], u[1], 0};
+  const double speed = std::sqrt(dot(slip, slip));
+  Mode next;
+  if (speed >= instant_slip()) {
+    next = roll_mode(on, true);
+    next.point_a = p;
+    next.slip_ref = scaled(slip, 1.0 / speed);
+    complete(next, on);
+    const RimSlip rs = rim_slipping(t, next, on);
+    if (rs.force[2] < 0 || !(rs.consistency > 0)) return std::nullopt;
+  } else {
+    const Mode still = rim_or_roll(on, p);
+    complete(still, on);
+    const Tr tr = rim_contact_holds_or_slips(t, still, on, int(Body3dEventKind::Mode), true);
+    if (tr.stop || tr.next.contact == BodyContact::Flight) return std::nullopt;
+    next = tr.next;
+  }
+  const double before = energy(z);
+  z = on;
+  z[kWorkImpact] += energy(z) - before;  // the contact's velocities the step's rounding left
+  return Tr{next, false, int(next.slips() ? Body3dEventKind::Slip : Body3dEventKind::Mode)};
+}
+
 std::optional<Tr> BodyOnGround::resume_contact(double t, State& z, unsigned loaded) const {
   // The contact the step left loaded, where the events can take over. No search for a slip's
   // start: where that is needed the state is the Painleve one, and the steps go on.
@@ -147,8 +200,16 @@ std::optional<Tr> BodyOnGround::resume_contact(double t, State& z, unsigned load
     if (z[kZ] - lowest_point(body_, r).depth < -kStepTouch * size_) return std::nullopt;
     return Tr{Mode{BodyContact::Flight}, false, int(Body3dEventKind::LiftOff)};
   }
-  if (n >= 3) {
-    // Flat: the base as a landing leaves it (at rest, its exit from rest, or sliding on).
+  // A cylinder on its rim's lowest point alone rocks or rolls on it; on another rim point (the
+  // lowest then within kStepTouch of the ground too: the base near flat), or on several, it lands.
+  if (body_.shape != BodyShape3d::Box && n == 1 && corners[0] == 0) {
+    Vec3 rim[4];
+    base_points(r, rim);
+    return resume_on_rim(t, z, rim[0]);
+  }
+  if (n >= 3 || body_.shape != BodyShape3d::Box) {
+    // Flat (a box on three corners, a cylinder near flat): the base as a landing leaves it (at
+    // rest, its exit from rest, or sliding on).
     State flat = z;
     const double before = energy(flat);
     set_quat_at(flat, kQw, axis_angle({0, 0, 1}, std::atan2(r[1][0], r[0][0])));
