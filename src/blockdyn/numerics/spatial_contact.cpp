@@ -86,6 +86,7 @@ bool solve_contact_3x3(const double* w, const double* q, double v_normal, double
       const bool lo_neg = s_lo.cross <= 0;
       for (int it = 0; it < kSlipAngleBisections && b - a > 1e-17; ++it) {
         const double mid = 0.5 * (a + b);
+        if (mid == a || mid == b) break;  // adjacent doubles: every further bisection keeps them
         const SpatialSlipTrial sm = spatial_slip_at(w, q, v_normal, mu_k, mid, trial);
         if ((sm.cross <= 0) == lo_neg)
           a = mid;
@@ -102,6 +103,13 @@ bool solve_contact_3x3(const double* w, const double* q, double v_normal, double
     }
     lo = hi;
     s_lo = s_hi;
+    // A root in the first interval lies nearer the start than any other but one in the last
+    // interval (the circle closing): only that one is left to look at.
+    if (k == 1 && !std::isnan(best)) {
+      k = kSlipAngleSamples - 1;
+      lo = phi0 + 2 * M_PI * k / kSlipAngleSamples;
+      s_lo = spatial_slip_at(w, q, v_normal, mu_k, lo, trial);
+    }
   }
   if (std::isnan(best)) return false;
   spatial_slip_at(w, q, v_normal, mu_k, best, p);
