@@ -37,8 +37,6 @@ constexpr double kMarginTie = 1e-9;
 // A point carrying less than this share of the weight is not checked for sticking (as the
 // sticking contacts' rule: it is about to lift).
 constexpr double kUncheckedShare = 1e-2;
-// A corner this close to the ground (in size) touches it.
-constexpr double kFlatTouch = 1e-12;
 
 Vec3 ground_part(Vec3 v) {
   v[2] = 0;
@@ -304,14 +302,14 @@ bool BodyOnGround::consistent_contact(double t, const Mode& m, const State& z, i
   return true;
 }
 
-bool BodyOnGround::flat_corners_rise(double t, const Mode& m, const State& z) const {
+bool BodyOnGround::other_corners_rise(double t, const Mode& m, const State& z, double touch) const {
   State dz{};
   rhs(t, m, z, dz);
   const Mat3 r = rotation(quat_at(z, S::kQw));
   for (int i = 0; i < 4; ++i) {
     if (i == m.corner_a || i == m.corner_b) continue;
     const Vec3 arm = r * corner(i);
-    if (z[kZ] + arm[2] > kFlatTouch * size_) continue;
+    if (z[kZ] + arm[2] > touch * size_) continue;
     if (point_acceleration(z, dz, arm)[2] < -kLoadTie * body_.g) return false;
   }
   return true;

@@ -163,12 +163,12 @@ Tr BodyOnGround::newton_impact(double t, const Mode& from, State& z) const {
   const Vec3 x = vec_at(z, kX), v = vec_at(z, kVx), w = vec_at(z, kWx);
   // Touching: at the ground, or with the lowest corner where a contact left it above it (a
   // contact is kept where it touched, within the stepping's tolerance after a Moreau-Jean span).
-  double level = INFINITY;
-  for (int i = 0; i < 4; ++i) level = std::fmin(level, z[kZ] + dot(r[2], corner(i)));
+  double height[4], level = INFINITY;
+  for (int i = 0; i < 4; ++i) level = std::fmin(level, height[i] = z[kZ] + dot(r[2], corner(i)));
   level = std::fmax(level, 0.0) + kImpactTouch * size_;
   int touching[4], n = 0;
   for (int i = 0; i < 4; ++i)
-    if (z[kZ] + dot(r[2], corner(i)) <= level) touching[n++] = i;
+    if (height[i] <= level) touching[n++] = i;
   // A base landing flat from flight: plastic, at rest (as Housner's law has it).
   if (n == 0 || (n >= 3 && from.contact == BodyContact::Flight)) return landed_flat(t, z);
   const Mat3 inv = world_inverse_inertia(r);

@@ -153,6 +153,8 @@ class BodyOnGround {
   // slower than kImpactLeaving (relative to the impact's velocity scale) stays in contact: both
   // impact laws.
   static constexpr double kImpactTouch = 1e-12;
+  // A corner this close to the ground (in size) touches it where a flat base tips.
+  static constexpr double kFlatTouch = 1e-12;
   // Loads, friction margins (in m g) and a lifted corner's acceleration (in g) this far below zero
   // still count as consistent (the rounding of a switch).
   static constexpr double kLoadTie = 1e-9;
@@ -222,8 +224,6 @@ class BodyOnGround {
   // The events taking over on `contact` (stick or slip as its points move) where that is
   // consistent: z completed onto it.
   std::optional<Transition<Mode>> resume_on(double t, State& z, const Mode& contact) const;
-  // No corner of the base at the ground (within kStepTouch) outside m's contact accelerating down.
-  bool others_rise(double t, const Mode& m, const State& z) const;
   // The base's points a time step's contact problem takes (body frame, at orientation r): a box's
   // four corners; a cylinder's rim at its lowest point and a quarter, a half and three quarters
   // of a turn from it (the support of the base when flat). Returns their count.
@@ -387,9 +387,12 @@ class BodyOnGround {
   // Whether contact m is consistent at z (loads, friction, the slip's directions; `lifted` a
   // corner that leaves the ground, rising).
   bool consistent_contact(double t, const Mode& m, const State& z, int lifted) const;
-  // The corners off m's contact that touch the ground (flat: a base tipping) do not accelerate
-  // into it.
-  bool flat_corners_rise(double t, const Mode& m, const State& z) const;
+  // The corners off m's contact at the ground (within `touch` sizes: a flat base tipping, or a
+  // time step's drift) do not accelerate into it.
+  bool other_corners_rise(double t, const Mode& m, const State& z, double touch) const;
+  // The events handed `next` on state `on` (completed onto it) from z: what the completion changed
+  // booked with the impacts.
+  Transition<Mode> hand_back(State& z, const State& on, const Mode& next) const;
   // m's sticking points' friction margins (mu_s N - |T|, in m g): a and b (1 where none).
   std::array<double, 2> stick_margins(double t, const Mode& m, const State& z) const;
   // Housner's law in 3D: the angular momentum about the new contact m conserved.

@@ -186,7 +186,7 @@ Tr BodyOnGround::tip_from_slide(double t, const Mode& m, const State& z, const i
   }
   for (int i = 0; i < count; ++i) {
     const Tr tr = stick_or_slip(t, moving_contact(candidates[i], z), z, int(Body3dEventKind::Mode));
-    if (!tr.stop && flat_corners_rise(t, tr.next, z)) return tr;
+    if (!tr.stop && other_corners_rise(t, tr.next, z, kFlatTouch)) return tr;
   }
   return {m, true, int(Body3dEventKind::Painleve)};
 }

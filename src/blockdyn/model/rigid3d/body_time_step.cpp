@@ -143,26 +143,17 @@ std::optional<Tr> BodyOnGround::resume_on(double t, State& z, const Mode& contac
     const Mode& next = tries[k];
     State on = at_ground;
     complete(next, on);
-    if (!consistent_contact(t, next, on, -1) || !others_rise(t, next, on)) continue;
-    const double before = energy(z);
-    z = on;
-    z[kWorkImpact] += energy(z) - before;  // the contact's velocities the step's rounding left
-    return Tr{next, false, int(next.slips() ? Body3dEventKind::Slip : Body3dEventKind::Mode)};
+    if (consistent_contact(t, next, on, -1) && other_corners_rise(t, next, on, kStepTouch))
+      return hand_back(z, on, next);
   }
   return std::nullopt;
 }
 
-bool BodyOnGround::others_rise(double t, const Mode& m, const State& z) const {
-  State dz{};
-  rhs(t, m, z, dz);
-  const Mat3 r = rotation(quat_at(z, S::kQw));
-  for (int i = 0; i < 4; ++i) {
-    if (i == m.corner_a || (m.contact == BodyContact::Line && i == m.corner_b)) continue;
-    const Vec3 arm = r * corner(i);
-    if (z[kZ] + arm[2] > kStepTouch * size_) continue;
-    if (point_acceleration(z, dz, arm)[2] < -kLoadTie * body_.g) return false;
-  }
-  return true;
+Tr BodyOnGround::hand_back(State& z, const State& on, const Mode& next) const {
+  const double before = energy(z);
+  z = on;
+  z[kWorkImpact] += energy(z) - before;  // the contact's velocities the step's rounding left
+  return Tr{next, false, int(next.slips() ? Body3dEventKind::Slip : Body3dEventKind::Mode)};
 }
 
 std::optional<Tr> BodyOnGround::resume_on_rim(double t, State& z, const Vec3& p) const {
@@ -192,10 +183,7 @@ std::optional<Tr> BodyOnGround::resume_on_rim(double t, State& z, const Vec3& p)
     if (tr.stop || tr.next.contact == BodyContact::Flight) return std::nullopt;
     next = tr.next;
   }
-  const double before = energy(z);
-  z = on;
-  z[kWorkImpact] += energy(z) - before;  // the contact's velocities the step's rounding left
-  return Tr{next, false, int(next.slips() ? Body3dEventKind::Slip : Body3dEventKind::Mode)};
+  return hand_back(z, on, next);
 }
 
 std::optional<Tr> BodyOnGround::resume_contact(double t, State& z, unsigned loaded) const {

@@ -211,7 +211,8 @@ Tr BodyOnGround::leave_rest(double t, const State& z) const {
   const Tr tr = stick_or_slip(t, pivot, z, mode);
   // A pivot that cannot hold and whose slip would press the other corners into the ground: the
   // base slides flat instead (the slide's own events tip it where its loads say so).
-  if (!tr.stop && tr.next.slips() && !flat_corners_rise(t, tr.next, z)) return start_slide(t, z, f.towards);
+  if (!tr.stop && tr.next.slips() && !other_corners_rise(t, tr.next, z, kFlatTouch))
+    return start_slide(t, z, f.towards);
   return tr;
 }
 
