@@ -5,6 +5,7 @@
 #include "blockdyn/simulation/rigid_simulation.hpp"
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -54,8 +55,10 @@ inline Body3dResult run_body(const BodyOnGround& m, const Body3dStart& s, double
 // The planar 3-DOF block of a b x h section (mass, friction, impact law) under g from init, at
 // the same tight tolerances: the planar limit's reference.
 inline RigidResult planar_block_run(double b, double h, double mass, double mu_s, double mu_k, const GroundMotion& g,
-                                    const RigidInitial& init, double t_end, ImpactLaw impact = ImpactLaw::Housner) {
+                                    const RigidInitial& init, double t_end, ImpactLaw impact = ImpactLaw::Housner,
+                                    std::optional<double> restitution = std::nullopt) {
   RigidBlockParams p;
+  p.restitution = restitution;
   p.shape.width = b;
   p.shape.height = h;
   p.shape.mass = mass;

@@ -193,8 +193,12 @@ BodyOnGroundMode BodyOnGround::slipping_contact(double t, const Mode& base, cons
   for (int i = 0; i < n; ++i)
     if (!(mask & bit(i)) && (base.slipping & bit(i) || !base.slips()) && mask != 0)
       m.pivot = plus(vec_at(z, kX), r * (i == 0 ? m.point_a : m.point_b));
-  // Each fresh point's direction in turn (the others held), to agreement.
-  for (int k = 0; k < kStartIterations && fresh; ++k) {
+  // Each fresh point's direction in turn (the others held), to agreement. A point alone needs one
+  // pass: its roots do not depend on the direction it started from. More passes could only move
+  // it off the root nearest the friction it needed by rounding (at an onset where its slip's
+  // acceleration there is still zero, a later pass may reject that root and take another).
+  const int passes = fresh == 3 ? kStartIterations : 1;
+  for (int k = 0; k < passes && fresh; ++k) {
     double change = 0;
     for (int i = 0; i < n; ++i) {
       if (!(fresh & bit(i))) continue;

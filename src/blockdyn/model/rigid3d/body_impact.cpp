@@ -206,9 +206,12 @@ Tr BodyOnGround::after_impact(double t, const Mode& from, const Mode& next, Stat
     return slip.stop || !slip.next.slips() ? Tr{from, true, int(Body3dEventKind::Painleve)} : slip;
   }
   // Impacts accumulate in finite time (a geometric series of swings shrinking by e each): once
-  // the time they have left is below the accumulation horizon, the body is at rest.
+  // the time they have left is below the accumulation horizon, or the old edge leaves too slowly
+  // to rise kUnresolvedRise of the size (below the rounding of the centroid's height, as the
+  // planar `rigid` block's), the body is at rest.
   if (from.contact == BodyContact::Line && next.contact == BodyContact::Line && w_before > 0) {
     const Vec3 w = vec_at(z, kWx);
+    if (old_edge_rise_unresolved(from, next, z)) return settle(t, z);
     const double e = std::sqrt(dot(w, w)) / w_before;
     State still = z;
     set_vec_at(still, kWx, {0, 0, 0});
@@ -221,6 +224,20 @@ Tr BodyOnGround::after_impact(double t, const Mode& from, const Mode& next, Stat
   }
   // The new contact, at rest after the impact, sticks if friction holds it, else slips.
   return stick_or_slip(t, next, z, int(Body3dEventKind::Impact));
+}
+
+bool BodyOnGround::old_edge_rise_unresolved(const Mode& from, const Mode& next, const State& z) const {
+  if (from.corner_a < 0 || from.corner_b < 0) return false;  // a box's edge only
+  const Mat3 r = rotation(quat_at(z, S::kQw));
+  const Vec3 w = vec_at(z, kWx);
+  const double v_rise = std::sqrt(2 * body_.g * kUnresolvedRise * size_);
+  int leaving = 0;
+  for (const int c : {from.corner_a, from.corner_b}) {
+    if (holds(next, c)) continue;  // the old edge's impact followed: it stays
+    if (z[kVz] + cross(w, r * corner(c))[2] >= v_rise) return false;
+    ++leaving;
+  }
+  return leaving > 0;
 }
 
 BodyOnGround::State initial_state(const Body3d& b, const Body3dStart& s) {

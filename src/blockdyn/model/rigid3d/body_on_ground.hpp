@@ -144,6 +144,9 @@ class BodyOnGround {
   // The accumulation of impacts ends at rest once the time its remaining impacts take is below
   // kAccumulationTime sqrt(size / g) (as Housner's model's).
   static constexpr double kAccumulationTime = 1e-9;
+  // ... or once the edge it leaves would rise less than this (in size) before landing again; a
+  // corner's bounce (Newton's e > 0) that would rise less is plastic.
+  static constexpr double kUnresolvedRise = 1e-12;
   // Impacts this close in time (relative to t, at least 1 s: a few hundred ulps) count as one
   // instant; more than kMaxRapid of them in a row stop the run (a corner sequence that does not
   // end) instead of looping. An accumulation's impacts stay farther apart (kAccumulationTime).
@@ -274,6 +277,9 @@ class BodyOnGround {
   // After an impact: the contact's consistency (a pull: flight or a slip, else Painleve), the
   // accumulation of impacts, then sticking or slipping as friction decides.
   Transition<Mode> after_impact(double t, const Mode& from, const Mode& next, State& z, double w_before) const;
+  // Whether the edge the impact left (from's, not next's) rises too slowly to resolve
+  // (kUnresolvedRise).
+  bool old_edge_rise_unresolved(const Mode& from, const Mode& next, const State& z) const;
   Transition<Mode> after_load_zero(double t, const Mode& m, State& z, int event) const;
   Transition<Mode> settle(double t, State& z) const;
   Transition<Mode> landed_flat(double t, State& z) const;
