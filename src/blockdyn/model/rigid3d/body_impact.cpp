@@ -211,7 +211,7 @@ Tr BodyOnGround::after_impact(double t, const Mode& from, const Mode& next, Stat
   // planar `rigid` block's), the body is at rest.
   if (from.contact == BodyContact::Line && next.contact == BodyContact::Line && w_before > 0) {
     const Vec3 w = vec_at(z, kWx);
-    if (old_edge_rise_unresolved(from, next, z)) return settle(t, z);
+    if (old_edge_rise_unresolved(from, next, z)) return impact_at_rest(t, z);
     const double e = std::sqrt(dot(w, w)) / w_before;
     State still = z;
     set_vec_at(still, kWx, {0, 0, 0});
@@ -220,10 +220,18 @@ Tr BodyOnGround::after_impact(double t, const Mode& from, const Mode& next, Stat
     const double sense = dot(w, next.axis) >= 0 ? 1.0 : -1.0;
     const double decel = -sense * dot(vec_at(d, kWx), next.axis);
     const double horizon = std::fmax(kAccumulationTime * std::sqrt(size_ / body_.g), 1e-12 * std::fabs(t) / (1 - e));
-    if (e < 1 && decel > 0 && 2 * std::sqrt(dot(w, w)) / (decel * (1 - e)) < horizon) return settle(t, z);
+    if (e < 1 && decel > 0 && 2 * std::sqrt(dot(w, w)) / (decel * (1 - e)) < horizon) return impact_at_rest(t, z);
   }
   // The new contact, at rest after the impact, sticks if friction holds it, else slips.
   return stick_or_slip(t, next, z, int(Body3dEventKind::Impact));
+}
+
+Tr BodyOnGround::impact_at_rest(double t, State& z) const {
+  // The impact that ends an accumulation is an impact (counted, as the planar blocks count it)
+  // whose contact is the base at rest.
+  Tr tr = settle(t, z);
+  if (!tr.stop) tr.kind = int(Body3dEventKind::Impact);
+  return tr;
 }
 
 bool BodyOnGround::old_edge_rise_unresolved(const Mode& from, const Mode& next, const State& z) const {

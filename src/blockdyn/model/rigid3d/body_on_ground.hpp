@@ -68,7 +68,7 @@ enum class Body3dEventKind : int {
   Mode = 0,     // a mode change (a corner lifts, rest ends)
   Impact,       // a base point hits the ground
   LiftOff,      // the body leaves the ground
-  Rest,         // an accumulation of impacts ends at rest
+  Rest,         // the base comes to rest flat without an impact (an accumulation's last impact is an Impact to rest)
   Overturn,     // the base stands vertical
   NotModelled,  // rolling on the rim, a chatter it cannot resolve (the run stops)
   GroundBreak,  // a breakpoint of the ground motion
@@ -277,6 +277,8 @@ class BodyOnGround {
   // After an impact: the contact's consistency (a pull: flight or a slip, else Painleve), the
   // accumulation of impacts, then sticking or slipping as friction decides.
   Transition<Mode> after_impact(double t, const Mode& from, const Mode& next, State& z, double w_before) const;
+  // The last impact of an accumulation: the base at rest after it (settle), reported as an impact.
+  Transition<Mode> impact_at_rest(double t, State& z) const;
   // Whether the edge the impact left (from's, not next's) rises too slowly to resolve
   // (kUnresolvedRise).
   bool old_edge_rise_unresolved(const Mode& from, const Mode& next, const State& z) const;
