@@ -206,12 +206,13 @@ Tr BodyOnGround::after_impact(double t, const Mode& from, const Mode& next, Stat
     return slip.stop || !slip.next.slips() ? Tr{from, true, int(Body3dEventKind::Painleve)} : slip;
   }
   // Impacts accumulate in finite time (a geometric series of swings shrinking by e each): once
-  // the time they have left is below the accumulation horizon, or the old edge leaves too slowly
-  // to rise kUnresolvedRise of the size (below the rounding of the centroid's height, as the
-  // planar `rigid` block's), the body is at rest.
+  // the time they have left is below the accumulation horizon, the body is at rest. Each law ends
+  // them as its planar reference does: Newton's also once the old edge leaves too slowly to rise
+  // kUnresolvedRise of the size (below the rounding of the centroid's height: the 3-DOF block's
+  // rule), Housner's by the horizon alone (Housner's block's, which resolves the swings below).
   if (from.contact == BodyContact::Line && next.contact == BodyContact::Line && w_before > 0) {
     const Vec3 w = vec_at(z, kWx);
-    if (old_edge_rise_unresolved(from, next, z)) return impact_at_rest(t, z);
+    if (opt_.impact == Body3dImpactLaw::Newton && old_edge_rise_unresolved(from, next, z)) return impact_at_rest(t, z);
     const double e = std::sqrt(dot(w, w)) / w_before;
     State still = z;
     set_vec_at(still, kWx, {0, 0, 0});

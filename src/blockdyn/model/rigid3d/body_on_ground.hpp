@@ -144,8 +144,8 @@ class BodyOnGround {
   // The accumulation of impacts ends at rest once the time its remaining impacts take is below
   // kAccumulationTime sqrt(size / g) (as Housner's model's).
   static constexpr double kAccumulationTime = 1e-9;
-  // ... or once the edge it leaves would rise less than this (in size) before landing again; a
-  // corner's bounce (Newton's e > 0) that would rise less is plastic.
+  // ... or, under Newton's law, once the edge it leaves would rise less than this (in size)
+  // before landing again; a corner's bounce (e > 0) that would rise less is plastic.
   static constexpr double kUnresolvedRise = 1e-12;
   // Impacts this close in time (relative to t, at least 1 s: a few hundred ulps) count as one
   // instant; more than kMaxRapid of them in a row stop the run (a corner sequence that does not
