@@ -67,17 +67,31 @@ blockdyn::RigidResult housner(double b, double h, double w0, const blockdyn::Gro
   return blockdyn::simulate_housner(s, std::nullopt, g, init, o);
 }
 
+// A box of 0.4 x 0.3 x 1.2 m released from 0.12 rad about its +x edge under `law`, and Housner's
+// block of its section from the same tilt: the box's run and the block's impacts.
+struct FreeRelease {
+  Body3dResult box;
+  blockdyn::RigidResult block;
+  std::vector<const blockdyn::RigidEventRecord*> block_impacts;
+};
+constexpr double kReleaseB = 0.4, kReleaseH = 1.2, kReleaseTilt = 0.12;
+FreeRelease free_release(const BodyOnGround& m) {
+  blockdyn::Body3dStart s;
+  s.tilt = kReleaseTilt;
+  FreeRelease f{run(m, s, 6.0), housner(kReleaseB, kReleaseH, kReleaseTilt, {}, 6.0), {}};
+  for (const auto& e : f.block.events)
+    if (e.kind == blockdyn::RigidEventKind::Impact) f.block_impacts.push_back(&e);
+  return f;
+}
+
 TEST(Rigid3dContact, FreeRockingOnAnEdgeIsHousnersPlanarRocking) {
   // A box tilted about its +x edge rocks in the x-z plane; its depth plays no role.
-  const double b = 0.4, d = 0.3, h = 1.2, w0 = 0.12;
-  const BodyOnGround m(box(b, d, h));
-  blockdyn::Body3dStart s;
-  s.tilt = w0;
-  const Body3dResult r = run(m, s, 6.0);
-  const blockdyn::RigidResult ref = housner(b, h, w0, {}, 6.0);
-  std::vector<const blockdyn::RigidEventRecord*> ref_impacts;
-  for (const auto& e : ref.events)
-    if (e.kind == blockdyn::RigidEventKind::Impact) ref_impacts.push_back(&e);
+  const double b = kReleaseB, h = kReleaseH, w0 = kReleaseTilt;
+  const BodyOnGround m(box(b, 0.3, h));
+  const FreeRelease f = free_release(m);
+  const Body3dResult& r = f.box;
+  const blockdyn::RigidResult& ref = f.block;
+  const auto& ref_impacts = f.block_impacts;
   const auto mine = impacts(r);
   // Impact for impact through the accumulation until the box's swings rise less than 1e-12 h
   // (Newton's law, the default, ends it there, as the 3-DOF block does): that impact ends it at
@@ -123,28 +137,22 @@ TEST(Rigid3dContact, UnderHousnersLawFreeRockingIsHousnersBlockToItsRest) {
   // block's own rule (the remaining time below a horizon), so impact for impact through the whole
   // accumulation, then rest at the same time; the two horizons may differ by the last swings,
   // far below 1e-9 s.
-  const double b = 0.4, d = 0.3, h = 1.2, w0 = 0.12;
   blockdyn::BodyOnGroundOptions o;
   o.impact = blockdyn::Body3dImpactLaw::Housner;
-  const BodyOnGround m(box(b, d, h), {}, o);
-  blockdyn::Body3dStart s;
-  s.tilt = w0;
-  const Body3dResult r = run(m, s, 6.0);
-  const blockdyn::RigidResult ref = housner(b, h, w0, {}, 6.0);
-  std::vector<const blockdyn::RigidEventRecord*> ref_impacts;
-  for (const auto& e : ref.events)
-    if (e.kind == blockdyn::RigidEventKind::Impact) ref_impacts.push_back(&e);
-  const auto mine = impacts(r);
-  ASSERT_GE(ref_impacts.size(), 100u);
-  ASSERT_NEAR(double(mine.size()), double(ref_impacts.size()), 3.0);
-  for (std::size_t i = 0; i + 1 < std::min(mine.size(), ref_impacts.size()); ++i) {
-    EXPECT_NEAR(mine[i].t, ref_impacts[i]->t, 1e-9) << "impact " << i;
-    EXPECT_NEAR(rate(mine[i].z), std::fabs(ref_impacts[i]->vw_after), 1e-9) << "impact " << i;
+  const BodyOnGround m(box(kReleaseB, 0.3, kReleaseH), {}, o);
+  const FreeRelease f = free_release(m);
+  const auto mine = impacts(f.box);
+  const std::size_t n = std::min(mine.size(), f.block_impacts.size());
+  ASSERT_GE(f.block_impacts.size(), 100u);
+  ASSERT_NEAR(double(mine.size()), double(f.block_impacts.size()), 3.0);
+  for (std::size_t i = 0; i + 1 < n; ++i) {
+    EXPECT_NEAR(mine[i].t, f.block_impacts[i]->t, 1e-9) << "impact " << i;
+    EXPECT_NEAR(rate(mine[i].z), std::fabs(f.block_impacts[i]->vw_after), 1e-9) << "impact " << i;
   }
-  ASSERT_EQ(r.events.back().to, BodyContact::Rest);
-  EXPECT_EQ(ref.final_mode, blockdyn::Mechanism::Rest);
-  EXPECT_NEAR(r.events.back().t, ref.events.back().t, 1e-9);
-  EXPECT_LT(r.max_abs_energy_error, 1e-9 * m.body().mass * m.body().g * h);
+  ASSERT_EQ(f.box.events.back().to, BodyContact::Rest);
+  EXPECT_EQ(f.block.final_mode, blockdyn::Mechanism::Rest);
+  EXPECT_NEAR(f.box.events.back().t, f.block.events.back().t, 1e-9);
+  EXPECT_LT(f.box.max_abs_energy_error, 1e-9 * m.body().mass * m.body().g * kReleaseH);
 }
 
 TEST(Rigid3dContact, HarmonicRockingFromRestIsHousnersPlanarRocking) {
