@@ -8,6 +8,7 @@
 #include <random>
 #include <vector>
 
+#include "blockdyn/numerics/dense_solve.hpp"
 #include "blockdyn/numerics/redundant_solve.hpp"
 
 namespace {
@@ -88,6 +89,20 @@ TEST(RedundantSolve, DependentRowsGetZeroUnknownsAndConsistentSolutions) {
       EXPECT_EQ(scratch[m - 1], 1);
     }
     EXPECT_LT((a * sol - b).norm(), 1e-10 * b.norm()) << solver;
+  }
+}
+
+TEST(DenseLeastNorm, RowsDependentBelowTheThresholdGiveTheLeastNormSolution) {
+  // [[1, 1], [1, 1 + 1e-13]] x = [1, 1]: full rank to rounding, rank one at the solve's threshold
+  // (1e-11). The least-norm solution of the rank-one system is (1/2, 1/2); before, the threshold
+  // was set after the decomposition, which had not been completed for rank one, and the solve
+  // read coefficients never computed (valgrind: uninitialised; results varied with the stack).
+  for (const double d : {1e-13, -3e-14, 0.0}) {
+    const double a[4] = {1, 1, 1, 1 + d}, b[2] = {1, 1};
+    double x[2] = {-7, -7};
+    ASSERT_TRUE(blockdyn::solve_dense_least_norm(2, a, b, x)) << d;
+    EXPECT_NEAR(x[0], 0.5, 1e-12) << d;
+    EXPECT_NEAR(x[1], 0.5, 1e-12) << d;
   }
 }
 

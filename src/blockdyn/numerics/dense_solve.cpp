@@ -33,8 +33,11 @@ bool least_norm(int n, const double* A, const double* b, double* x) {
   if (lo > 1e-10 * hi) {
     sol = lu.solve(r);
   } else {
-    Eigen::CompleteOrthogonalDecomposition<Mat> cod(M);
+    // The threshold before the decomposition: set after it, the solve takes a smaller rank than
+    // the decomposition was completed for and reads Householder coefficients never computed.
+    Eigen::CompleteOrthogonalDecomposition<Mat> cod(n, n);
     cod.setThreshold(1e-11);
+    cod.compute(M);
     sol = cod.solve(r);
   }
   for (int k = 0; k < n; ++k) {
