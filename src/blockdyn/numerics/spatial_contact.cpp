@@ -4,6 +4,7 @@
 #include <cfloat>
 #include <cmath>
 
+#include "blockdyn/numerics/circle_root.hpp"
 #include "blockdyn/numerics/dense_solve.hpp"
 
 namespace blockdyn {
@@ -75,42 +76,17 @@ bool solve_contact_3x3(const double* w, const double* q, double v_normal, double
   // Slip: the root of d x u_T(d) with u_T . d >= 0 nearest the sticking impulse's opposite.
   // (The scan starts half a sample before it: a root there, the usual case, falls inside an interval.)
   const double phi0 = std::atan2(-stick[1], -stick[0]) - M_PI / kSlipAngleSamples;
-  double best = NAN, best_gap = INFINITY, trial[3];
-  double lo = phi0;
-  SpatialSlipTrial s_lo = spatial_slip_at(w, q, v_normal, mu_k, lo, trial);
-  for (int k = 1; k <= kSlipAngleSamples; ++k) {
-    const double hi = phi0 + 2 * M_PI * k / kSlipAngleSamples;
-    const SpatialSlipTrial s_hi = spatial_slip_at(w, q, v_normal, mu_k, hi, trial);
-    if (s_lo.valid && s_hi.valid && (s_lo.cross <= 0) != (s_hi.cross <= 0)) {
-      double a = lo, b = hi;
-      const bool lo_neg = s_lo.cross <= 0;
-      for (int it = 0; it < kSlipAngleBisections && b - a > 1e-17; ++it) {
-        const double mid = 0.5 * (a + b);
-        if (mid == a || mid == b) break;  // adjacent doubles: every further bisection keeps them
-        const SpatialSlipTrial sm = spatial_slip_at(w, q, v_normal, mu_k, mid, trial);
-        if ((sm.cross <= 0) == lo_neg)
-          a = mid;
-        else
-          b = mid;
-      }
-      const double root = 0.5 * (a + b);
-      const SpatialSlipTrial sr = spatial_slip_at(w, q, v_normal, mu_k, root, trial);
-      const double gap = std::fmin(root - phi0, phi0 + 2 * M_PI - root);
-      if (sr.valid && sr.along >= 0 && gap < best_gap) {
-        best = root;
-        best_gap = gap;
-      }
-    }
-    lo = hi;
-    s_lo = s_hi;
-    // A root in the first interval lies nearer the start than any other but one in the last
-    // interval (the circle closing): only that one is left to look at.
-    if (k == 1 && !std::isnan(best)) {
-      k = kSlipAngleSamples - 1;
-      lo = phi0 + 2 * M_PI * k / kSlipAngleSamples;
-      s_lo = spatial_slip_at(w, q, v_normal, mu_k, lo, trial);
-    }
-  }
+  double trial[3];
+  auto sample = [&](double phi) {
+    const SpatialSlipTrial s = spatial_slip_at(w, q, v_normal, mu_k, phi, trial);
+    return CircleSample{s.cross, s.valid};
+  };
+  auto accept = [&](double root) {
+    const SpatialSlipTrial s = spatial_slip_at(w, q, v_normal, mu_k, root, trial);
+    return s.valid && s.along >= 0;
+  };
+  const double best =
+      nearest_circle_root(phi0, CircleRootScan{kSlipAngleSamples, kSlipAngleBisections, 1e-17}, sample, accept);
   if (std::isnan(best)) return false;
   spatial_slip_at(w, q, v_normal, mu_k, best, p);
   return true;

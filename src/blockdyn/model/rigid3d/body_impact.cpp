@@ -239,11 +239,10 @@ bool BodyOnGround::old_edge_rise_unresolved(const Mode& from, const Mode& next, 
   if (from.corner_a < 0 || from.corner_b < 0) return false;  // a box's edge only
   const Mat3 r = rotation(quat_at(z, S::kQw));
   const Vec3 w = vec_at(z, kWx);
-  const double v_rise = std::sqrt(2 * body_.g * kUnresolvedRise * size_);
   int leaving = 0;
   for (const int c : {from.corner_a, from.corner_b}) {
     if (holds(next, c)) continue;  // the old edge's impact followed: it stays
-    if (z[kVz] + cross(w, r * corner(c))[2] >= v_rise) return false;
+    if (z[kVz] + cross(w, r * corner(c))[2] >= v_unresolved_) return false;
     ++leaving;
   }
   return leaving > 0;

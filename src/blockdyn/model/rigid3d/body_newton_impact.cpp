@@ -176,10 +176,9 @@ Tr BodyOnGround::newton_impact(double t, const Mode& from, State& z) const {
   SpatialContactProblem pr = corner_problem(r, v, w, touching, n, arm);
   // A bounce that would rise less than kUnresolvedRise of the size (below the rounding of the
   // centroid's height) is plastic, as the planar `rigid` block's: an accumulation of bounces ends.
-  const double v_rise = std::sqrt(2 * body_.g * kUnresolvedRise * size_);
   for (int i = 0; i < n; ++i) {
     const double u = pr.q[std::size_t(3 * i + 2)], bounce = -opt_.restitution * u;
-    pr.v_normal[std::size_t(i)] = u < 0 && bounce >= v_rise ? bounce : 0.0;
+    pr.v_normal[std::size_t(i)] = u < 0 && bounce >= v_unresolved_ ? bounce : 0.0;
   }
   // No corner moving into the ground: the base flat at the end of an accumulation (the swings at a
   // rounding's size), at rest; a tilted body's corner arriving at rest (an edge's end that lifted

@@ -72,6 +72,7 @@ BodyOnGround::BodyOnGround(const Body3d& body, const GroundMotion3d& ground, con
   size_ = std::fmax(len, body_.height);
   step_ = 0.05 * std::sqrt(size_ / body_.g);
   window_ = kReleasedWindow * std::sqrt(size_ / body_.g);
+  v_unresolved_ = std::sqrt(2 * body_.g * kUnresolvedRise * size_);
   const double v = std::sqrt(body_.g * size_), w = std::sqrt(body_.g / size_), e = body_.mass * body_.g * size_;
   scale_ = {size_, size_, size_, 1, 1, 1, 1, v, v, v, w, w, w, e, e, e};
   mu_k_ = opt_.mu_k < 0 ? opt_.mu_s : opt_.mu_k;

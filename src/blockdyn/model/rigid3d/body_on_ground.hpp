@@ -431,6 +431,7 @@ class BodyOnGround {
   BodyOnGroundOptions opt_;
   Vec3 inertia_;
   double size_, step_, window_;
+  double v_unresolved_;                       // the speed that rises kUnresolvedRise of the size
   double mu_k_ = 0, reach_ = 0;               // the kinetic friction; the base's half diagonal (box) or radius
   double azimuth_cos_ = 1, azimuth_sin_ = 0;  // the ground's h direction, computed once
   State scale_;

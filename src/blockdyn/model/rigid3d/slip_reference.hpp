@@ -6,11 +6,10 @@
 // (the friction reverses there: a stick, located like any other event), and a slip that turns by
 // 60 degrees from its reference takes a new one (an event without a mode change), so that
 // u . ref reaches zero only where u does.
-#include <algorithm>
-#include <array>
 #include <cmath>
 
 #include "blockdyn/model/rigid3d/quaternion.hpp"
+#include "blockdyn/numerics/circle_root.hpp"
 
 namespace blockdyn::slip_reference {
 
@@ -95,54 +94,21 @@ constexpr int kDirectionBisections = 60;
 constexpr double kRootSine = 1e-6;
 template <class AccelOf>
 Vec3 slip_start_root(AccelOf&& accel_of, const Vec3& ref) {
-  const double phi0 = std::atan2(ref[1], ref[0]);
-  double size_a = 0, along_d = 0;  // |a| and a . d at the last angle evaluated
-  auto at = [&](double phi) {
+  auto residual = [&](double phi, double* along, double* size) {
     const Vec3 d = {std::cos(phi), std::sin(phi), 0};
     const Vec3 a = accel_of(d);
-    along_d = dot(a, d);
-    size_a = std::sqrt(dot(a, a));
+    *along = dot(a, d);
+    *size = std::sqrt(dot(a, a));
     return d[0] * a[1] - d[1] * a[0];
   };
-  // The samples, evaluated when an interval needs them.
-  std::array<double, kDirectionSamples + 1> sample;
-  sample.fill(NAN);
-  auto sample_at = [&](int k) {
-    if (std::isnan(sample[std::size_t(k)])) sample[std::size_t(k)] = at(phi0 + 2 * M_PI * k / kDirectionSamples);
-    return sample[std::size_t(k)];
+  double along = 0, size = 0;
+  auto sample = [&](double phi) { return CircleSample{residual(phi, &along, &size), true}; };
+  auto accept = [&](double root) {
+    const double f = residual(root, &along, &size);
+    return along > 0 && std::fabs(f) <= kRootSine * size;
   };
-  // The intervals nearest ref first (k = 1, N, 2, N - 1, ...): once an interval lies farther
-  // from ref than the best root so far, no later one can hold a nearer root. Ties go to the
-  // smaller k, as a scan in order would have them.
-  double best = NAN, best_gap = INFINITY;
-  int best_k = 0;
-  const double width = 2 * M_PI / kDirectionSamples, margin = 1e-12;
-  for (int step = 0; step < kDirectionSamples; ++step) {
-    const int k = step % 2 == 0 ? 1 + step / 2 : kDirectionSamples - step / 2;
-    if (std::min(k - 1, kDirectionSamples - k) * width - margin > best_gap) break;
-    const double f_lo = sample_at(k - 1), f_hi = sample_at(k);
-    if ((f_lo <= 0) == (f_hi <= 0)) continue;
-    double lo = phi0 + 2 * M_PI * (k - 1) / kDirectionSamples;
-    double hi = phi0 + 2 * M_PI * k / kDirectionSamples, flo = f_lo;
-    for (int b = 0; b < kDirectionBisections && hi - lo > 1e-16; ++b) {
-      const double mid = 0.5 * (lo + hi);
-      if (mid == lo || mid == hi) break;  // adjacent doubles: nothing left to halve
-      const double fm = at(mid);
-      if ((fm <= 0) == (flo <= 0)) {
-        lo = mid;
-        flo = fm;
-      } else {
-        hi = mid;
-      }
-    }
-    const double root = 0.5 * (lo + hi), f_root = at(root);
-    const double gap = std::fmin(root - phi0, phi0 + 2 * M_PI - root);
-    if (along_d > 0 && std::fabs(f_root) <= kRootSine * size_a && (gap < best_gap || (gap == best_gap && k < best_k))) {
-      best = root;
-      best_gap = gap;
-      best_k = k;
-    }
-  }
+  const double best = nearest_circle_root(
+      std::atan2(ref[1], ref[0]), CircleRootScan{kDirectionSamples, kDirectionBisections, 1e-16}, sample, accept);
   if (std::isnan(best)) return ref;
   return {std::cos(best), std::sin(best), 0};
 }
